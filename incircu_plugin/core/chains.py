@@ -1,0 +1,325 @@
+"""Boundary chains: validation, polygon splitting and orientation of bank lines.
+
+A *chain* is an ``(n, 2)`` float array of vertices with no zero-length segment. The engine takes two chains
+``c1`` and ``c2`` running in the same direction, from one end of the centerline to the other.
+"""
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, Point, Polygon
+
+from .errors import (
+    ChainError,
+    CrossingLinesError,
+    InvalidGeometryError,
+    SplitPointError,
+    format_point,
+)
+
+#: Relative tolerance (of the data's extent) under which two vertices are the same point.
+COINCIDENCE_TOLERANCE = 1e-12
+
+#: ``|sin|`` of the turn under which two consecutive segments pointing in opposite directions fold back.
+FOLD_SINE_TOLERANCE = 1e-9
+
+
+def extent_of(*arrays):
+    """Return the diagonal of the bounding box of all given coordinate arrays.
+
+    Parameters
+    ----------
+    *arrays : ndarray of shape (n, 2)
+        Coordinates, CRS units.
+
+    Returns
+    -------
+    float
+        Bounding-box diagonal, CRS units; at least the smallest positive float, so it can divide.
+    """
+    points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
+    diagonal = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
+    return max(diagonal, np.finfo(float).tiny)
+
+
+def as_coordinates(geometry, name="line"):
+    """Return the vertices of a line as a float array, rejecting empty or non-finite input.
+
+    Parameters
+    ----------
+    geometry : LineString, LinearRing or array_like of shape (n, 2)
+        The line; extra dimensions (z, m) are dropped.
+    name : str
+        How messages call this line.
+
+    Returns
+    -------
+    ndarray of shape (n, 2)
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty, not a line, or has NaN or infinite coordinates.
+    """
+    if geometry is None:
+        raise InvalidGeometryError("The {} is null (no geometry).".format(name))
+    if isinstance(geometry, shapely.Geometry):
+        if geometry.is_empty:
+            raise InvalidGeometryError("The {} is empty.".format(name))
+        if geometry.geom_type not in ("LineString", "LinearRing"):
+            raise InvalidGeometryError(
+                "The {} must be a single line, not a {}.".format(name, geometry.geom_type)
+            )
+        coordinates = shapely.get_coordinates(geometry)
+    else:
+        coordinates = np.asarray(geometry, dtype=float)
+        if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
+            raise InvalidGeometryError("The {} must be an (n, 2) coordinate array.".format(name))
+        coordinates = coordinates[:, :2]
+    if not np.all(np.isfinite(coordinates)):
+        bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
+        raise InvalidGeometryError(
+            "The {} has a NaN or infinite coordinate: {}.".format(name, tuple(bad.tolist()))
+        )
+    return np.array(coordinates, dtype=float)
+
+
+def clean_chain(coordinates, name="chain", tolerance=None):
+    """Drop zero-length segments and check that a chain neither degenerates nor folds back.
+
+    Parameters
+    ----------
+    coordinates : ndarray of shape (n, 2)
+        Vertices, CRS units.
+    name : str
+        How messages call this chain.
+    tolerance : float, optional
+        Distance, CRS units, under which consecutive vertices are merged; default
+        ``COINCIDENCE_TOLERANCE`` times the chain's extent.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+        The vertices with consecutive duplicates removed.
+
+    Raises
+    ------
+    ChainError
+        If fewer than two distinct points remain, or the chain folds back over itself.
+    """
+    if tolerance is None:
+        tolerance = COINCIDENCE_TOLERANCE * extent_of(coordinates)
+    step = np.hypot(*np.diff(coordinates, axis=0).T)
+    keep = np.concatenate([[True], step > tolerance])
+    chain = coordinates[keep]
+    if len(chain) < 2:
+        raise ChainError("The {} has fewer than 2 distinct points.".format(name))
+    direction = np.diff(chain, axis=0)
+    incoming, outgoing = direction[:-1], direction[1:]
+    cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
+    dot = np.einsum("ij,ij->i", incoming, outgoing)
+    norms = np.hypot(*incoming.T) * np.hypot(*outgoing.T)
+    folds = np.flatnonzero((dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
+    if len(folds):
+        raise ChainError(
+            "The {} folds back over itself at {}.".format(name, format_point(chain[folds[0] + 1]))
+        )
+    return chain
+
+
+def find_self_crossing(chain):
+    """Return a point where a chain touches or crosses itself, or None.
+
+    Parameters
+    ----------
+    chain : ndarray of shape (n, 2)
+        Vertices without zero-length segments, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (2,) or None
+    """
+    segments = shapely.linestrings(np.stack([chain[:-1], chain[1:]], axis=1))
+    tree = shapely.STRtree(segments)
+    first, second = tree.query(segments, predicate="intersects")
+    apart = second > first + 1
+    if not np.any(apart):
+        return None
+    i, j = first[apart][0], second[apart][0]
+    return shapely.get_coordinates(shapely.intersection(segments[i], segments[j]))[0]
+
+
+def ensure_simple(chain, name):
+    """Raise :class:`ChainError` if a chain touches or crosses itself.
+
+    Parameters
+    ----------
+    chain : ndarray of shape (n, 2)
+        Vertices, CRS units.
+    name : str
+        How messages call this chain.
+    """
+    crossing = find_self_crossing(chain)
+    if crossing is not None:
+        raise ChainError("The {} crosses itself at {}.".format(name, format_point(crossing)))
+
+
+def validate_polygon(polygon):
+    """Check that a polygon is a non-empty, finite, valid single polygon.
+
+    Parameters
+    ----------
+    polygon : Polygon
+
+    Raises
+    ------
+    InvalidGeometryError
+        With the reason and location GEOS reports for an invalid polygon.
+    """
+    if polygon is None:
+        raise InvalidGeometryError("The polygon is null (no geometry).")
+    if not isinstance(polygon, Polygon):
+        kind = getattr(polygon, "geom_type", type(polygon).__name__)
+        raise InvalidGeometryError("Expected a single polygon, got a {}.".format(kind))
+    if polygon.is_empty:
+        raise InvalidGeometryError("The polygon is empty.")
+    if not np.all(np.isfinite(shapely.get_coordinates(polygon))):
+        raise InvalidGeometryError("The polygon has a NaN or infinite coordinate.")
+    if not polygon.is_valid:
+        raise InvalidGeometryError(
+            "The polygon is not valid: {}. Repair it first (e.g. QGIS 'Fix geometries').".format(
+                shapely.is_valid_reason(polygon)
+            )
+        )
+
+
+def _ring_positions(ring):
+    """Return the cumulative arc length at each vertex of a closed ring."""
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(ring, axis=0).T))])
+
+
+def _insert_at(ring, positions, position, point, tolerance):
+    """Insert ``point`` at arc length ``position`` into a closed ring unless a vertex is already there."""
+    if np.min(np.abs(positions[:-1] - position)) <= tolerance:
+        return ring, positions
+    index = int(np.searchsorted(positions, position, side="right"))
+    return np.insert(ring, index, point, axis=0), np.insert(positions, index, position)
+
+
+def split_polygon(polygon, split_points, tolerance=None):
+    """Split a polygon's exterior ring into the two chains between two split points.
+
+    Each split point is snapped to the nearest point of the exterior ring and inserted as a vertex when it
+    falls inside an edge.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon; its holes are ignored here.
+    split_points : sequence of two Point or (x, y)
+        The ends of the centerline.
+    tolerance : float, optional
+        Largest distance, CRS units, between a split point and the ring; default ``1e-6`` of the polygon's
+        extent.
+
+    Returns
+    -------
+    c1, c2 : ndarray of shape (n, 2)
+        Both chains run from the first split point to the second; ``c1`` follows the ring counter-clockwise.
+
+    Raises
+    ------
+    SplitPointError
+        If there are not exactly two points, a point is farther than ``tolerance`` from the ring, or both
+        snap to the same place.
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> c1, c2 = split_polygon(box(0, 0, 10, 2), [(0, 1), (10, 1)])
+    >>> c1.tolist()
+    [[0.0, 1.0], [0.0, 0.0], [10.0, 0.0], [10.0, 1.0]]
+    """
+    validate_polygon(polygon)
+    points = [] if split_points is None else list(split_points)
+    if len(points) != 2:
+        raise SplitPointError(
+            "A polygon needs exactly 2 split points on its boundary, got {}.".format(len(points))
+        )
+    points = [np.asarray(p.coords[0] if isinstance(p, Point) else p, dtype=float)[:2] for p in points]
+    if not all(np.all(np.isfinite(p)) for p in points):
+        raise SplitPointError("A split point has a NaN or infinite coordinate.")
+    exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
+    ring = shapely.get_coordinates(exterior)
+    extent = extent_of(ring)
+    if tolerance is None:
+        tolerance = 1e-6 * extent
+    merge = COINCIDENCE_TOLERANCE * extent
+    ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", merge), ring[:1]])
+    exterior = LineString(ring)
+    positions = _ring_positions(ring)
+    along = []
+    for point in points:
+        distance = exterior.distance(Point(point))
+        if distance > tolerance:
+            raise SplitPointError(
+                "Split point {} is {:.6g} away from the polygon's boundary; the snap tolerance is {:.6g}."
+                " Move the point onto the boundary or raise the tolerance.".format(
+                    format_point(point), distance, tolerance
+                )
+            )
+        along.append(exterior.project(Point(point)))
+    perimeter = positions[-1]
+    along = [0.0 if position >= perimeter - merge else position for position in along]
+    gap = abs(along[0] - along[1])
+    if min(gap, perimeter - gap) <= max(tolerance, merge):
+        raise SplitPointError(
+            "Both split points snap to the same place {} of the boundary.".format(format_point(points[0]))
+        )
+    for position in along:
+        point = np.asarray(exterior.interpolate(position).coords[0])
+        ring, positions = _insert_at(ring, positions, position, point, merge)
+    start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
+    loop = ring[:-1]
+    n = len(loop)
+    forward = [(start + i) % n for i in range((end - start) % n + 1)]
+    backward = [(start - i) % n for i in range((start - end) % n + 1)]
+    return loop[forward].copy(), loop[backward].copy()
+
+
+def orient_bank_lines(line_a, line_b):
+    """Validate two bank lines and orient them so their starts face each other.
+
+    Parameters
+    ----------
+    line_a, line_b : LineString or array_like of shape (n, 2)
+        The two lines bounding the region, CRS units.
+
+    Returns
+    -------
+    c1, c2 : ndarray of shape (n, 2)
+        ``c1`` is ``line_a`` as given; ``c2`` is ``line_b``, reversed when that makes the starts face each
+        other (smaller sum of the distances between matching ends).
+
+    Raises
+    ------
+    InvalidGeometryError, ChainError, CrossingLinesError
+    """
+    a = as_coordinates(line_a, "first line")
+    b = as_coordinates(line_b, "second line")
+    merge = COINCIDENCE_TOLERANCE * extent_of(a, b)
+    a = clean_chain(a, "first line", merge)
+    b = clean_chain(b, "second line", merge)
+    ensure_simple(a, "first line")
+    ensure_simple(b, "second line")
+    touching = shapely.intersection(LineString(a), LineString(b))
+    if not touching.is_empty:
+        raise CrossingLinesError(
+            "The two lines cross or touch at {}; they must bound a region between them.".format(
+                format_point(shapely.get_coordinates(touching)[0])
+            )
+        )
+    same = np.hypot(*(a[0] - b[0])) + np.hypot(*(a[-1] - b[-1]))
+    swapped = np.hypot(*(a[0] - b[-1])) + np.hypot(*(a[-1] - b[0]))
+    if swapped < same:
+        b = b[::-1].copy()
+    return a, b

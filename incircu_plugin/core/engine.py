@@ -1,0 +1,490 @@
+"""The IncirCu engine: incircles between two boundary chains, ordered into one centerline.
+
+For every sample ``P`` of a chain with inward direction ``b`` the engine grows the family of disks that
+touch the chain only at ``P`` (centre ``P + t*b``, radius ``k*t``; ``k = 1`` on an edge or at a reflex
+vertex, ``k = sin(alpha/2)`` on the bisector of a convex vertex of interior angle ``alpha``) and finds the
+first ``t`` at which the disk touches any other part of the boundary, in closed form per segment. When that
+first contact lies on the *other* chain the disk is a maximal empty disk touching both chains, so its
+centre lies on the medial axis between them; when it lies on the sample's own chain the centre would be on
+a side branch and the sample is skipped. Both chains are sampled, and the union is ordered by the arc-length
+positions of the touching points, which grow monotonically along the axis between the chains.
+
+Candidate segments come from a shapely ``STRtree`` queried in bulk with the bounding box of a trial disk;
+a sample is settled once its first contact lies inside the trial disk, otherwise the trial radius grows to
+the best contact found so far. Work is done in chunks of samples, so memory stays bounded.
+"""
+
+from dataclasses import dataclass
+from typing import Callable, Optional
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString
+
+from .chains import COINCIDENCE_TOLERANCE, extent_of
+from .errors import IncirCuError
+
+#: Default spacing as a fraction of the typical width (see :func:`default_spacing`).
+DEFAULT_SPACING_PER_WIDTH = 1.0 / 20.0
+
+#: Largest angle, radians, between two normals of the fan at a reflex vertex.
+MAX_FAN_STEP = np.radians(5.0)
+
+#: Most directions in the fan of one reflex vertex.
+MAX_FAN_DIRECTIONS = 256
+
+#: Most samples one call accepts (about 1 GiB of working memory).
+MAX_SAMPLES = 20_000_000
+
+#: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
+TIE_TOLERANCE = 1e-10
+
+_CHUNK = 16_384
+
+
+class Cancelled(Exception):
+    """Raised when the progress callback asks the engine to stop."""
+
+
+@dataclass(frozen=True)
+class CenterlineResult:
+    """A centerline with the incircle of each of its vertices.
+
+    Attributes
+    ----------
+    line : LineString
+        The centerline, one simple chain from one end to the other, CRS units.
+    radii : ndarray of shape (n,)
+        Incircle radius at each vertex, CRS units (metres for geographic input); ``0`` at a split point, half
+        the gap at an open end.
+    foot_a, foot_b : ndarray of shape (n, 2)
+        For each vertex, a point where its incircle touches the first and the second chain.
+    ends_found : bool
+        True when the ends were found automatically rather than given.
+    """
+
+    line: LineString
+    radii: np.ndarray
+    foot_a: np.ndarray
+    foot_b: np.ndarray
+    ends_found: bool = False
+
+    @property
+    def widths(self):
+        """ndarray of shape (n,): local width (incircle diameter) at each vertex, CRS units."""
+        return 2.0 * self.radii
+
+    @property
+    def length(self):
+        """float: length of the centerline, CRS units."""
+        return self.line.length
+
+
+@dataclass(frozen=True)
+class _Samples:
+    """Samples of one chain: the disk family of sample ``i`` has centre ``point + t*direction``, radius
+    ``scale*t``; segments ``first_own..last_own`` (global indices) touch it by construction."""
+
+    point: np.ndarray
+    direction: np.ndarray
+    scale: np.ndarray
+    position: np.ndarray
+    foot: np.ndarray
+    first_own: np.ndarray
+    last_own: np.ndarray
+
+
+class _Boundary:
+    """The segments of both chains, with a spatial index."""
+
+    def __init__(self, chains):
+        starts, ends, chain_ids, offsets, positions = [], [], [], [], []
+        count = 0
+        for chain_id, chain in enumerate(chains):
+            starts.append(chain[:-1])
+            ends.append(chain[1:])
+            chain_ids.append(np.full(len(chain) - 1, chain_id))
+            offsets.append(count)
+            count += len(chain) - 1
+            lengths = np.hypot(*np.diff(chain, axis=0).T)
+            positions.append(np.concatenate([[0.0], np.cumsum(lengths)]))
+        self.start = np.concatenate(starts)
+        self.end = np.concatenate(ends)
+        self.chain_id = np.concatenate(chain_ids)
+        self.offset = offsets
+        self.position = positions
+        self.segment_position = np.concatenate([p[:-1] for p in positions])
+        delta = self.end - self.start
+        self.length = np.hypot(*delta.T)
+        self.unit = delta / self.length[:, None]
+        self.tree = shapely.STRtree(shapely.linestrings(np.stack([self.start, self.end], axis=1)))
+
+
+def _left_normal(vectors):
+    return np.stack([-vectors[:, 1], vectors[:, 0]], axis=1)
+
+
+def _rotate(vectors, angles):
+    cos, sin = np.cos(angles), np.sin(angles)
+    return np.stack(
+        [cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1
+    )
+
+
+def _sample_chain(chain, positions, side, spacing, offset, fan_step):
+    """Sample one chain: equidistant edge points plus every interior vertex (a fan at reflex ones).
+
+    ``side`` is +1 when the region lies left of the chain, -1 when right.
+    """
+    n_segments = len(chain) - 1
+    unit = np.diff(chain, axis=0) / np.diff(positions)[:, None]
+    normal = side * _left_normal(unit)
+    total = positions[-1]
+    merge = COINCIDENCE_TOLERANCE * max(total, 1.0)
+
+    stations = np.arange(1, int(np.ceil(total / spacing))) * spacing
+    stations = stations[stations < total - merge]
+    segment = np.clip(np.searchsorted(positions, stations, side="right") - 1, 0, n_segments - 1)
+    off_vertex = (stations - positions[segment] > merge) & (positions[segment + 1] - stations > merge)
+    stations, segment = stations[off_vertex], segment[off_vertex]
+    edge_point = chain[segment] + (stations - positions[segment])[:, None] * unit[segment]
+
+    inner = np.arange(1, n_segments)
+    incoming, outgoing = unit[inner - 1], unit[inner]
+    turn = np.arctan2(
+        incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
+        np.einsum("ij,ij->i", incoming, outgoing),
+    )
+    convex = side * turn > 0
+    bisector = normal[inner - 1] + normal[inner]
+    bisector /= np.linalg.norm(bisector, axis=1, keepdims=True)
+    interior_angle = np.pi - side * turn
+
+    fan_vertex = inner[~convex]
+    fan_turn = turn[~convex]
+    fan_count = np.where(
+        np.abs(fan_turn) > 1e-12,
+        np.minimum(np.ceil(np.abs(fan_turn) / fan_step), MAX_FAN_DIRECTIONS - 1).astype(int) + 1,
+        1,
+    )
+    fan_owner = np.repeat(np.arange(len(fan_vertex)), fan_count)
+    first_of_fan = np.repeat(np.cumsum(fan_count) - fan_count, fan_count)
+    fan_index = np.arange(len(fan_owner)) - first_of_fan
+    fraction = np.where(fan_count[fan_owner] > 1, fan_index / np.maximum(fan_count[fan_owner] - 1, 1), 0.5)
+    fan_direction = _rotate(normal[fan_vertex - 1][fan_owner], fan_turn[fan_owner] * fraction)
+    fan_vertex = fan_vertex[fan_owner]
+
+    convex_vertex = inner[convex]
+    half_angle = interior_angle[convex] / 2.0
+    tangent_point = chain[convex_vertex] - incoming[convex] * (np.cos(half_angle))[:, None]
+
+    point = np.concatenate([edge_point, chain[fan_vertex], chain[convex_vertex]])
+    return _Samples(
+        point=point,
+        direction=np.concatenate([normal[segment], fan_direction, bisector[convex]]),
+        scale=np.concatenate([np.ones(len(segment) + len(fan_vertex)), np.sin(half_angle)]),
+        position=np.concatenate([stations, positions[fan_vertex], positions[convex_vertex]]),
+        foot=np.concatenate([edge_point, chain[fan_vertex], tangent_point]),
+        first_own=offset + np.concatenate([segment, fan_vertex - 1, convex_vertex - 1]),
+        last_own=offset + np.concatenate([segment, fan_vertex, convex_vertex]),
+    )
+
+
+def _first_contacts(point, direction, scale, boundary, segment):
+    """First contact of each (sample, segment) pair.
+
+    Returns ``t`` (inf when the disk family never touches the segment), the contact point and its arc
+    length along the segment's chain.
+    """
+    start, unit, length = boundary.start[segment], boundary.unit[segment], boundary.length[segment]
+    end = boundary.end[segment]
+    squeeze = 1.0 - scale * scale
+
+    def through_vertex(vertex):
+        offset = point - vertex
+        beta = np.einsum("ij,ij->i", direction, offset)
+        squared = np.einsum("ij,ij->i", offset, offset)
+        disc = beta * beta - squeeze * squared
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = squared / (np.sqrt(np.maximum(disc, 0.0)) - beta)
+        return np.where((beta < 0) & (disc >= 0), t, np.inf)
+
+    t_start = through_vertex(start)
+    t_end = through_vertex(end)
+
+    normal = _left_normal(unit)
+    height = np.einsum("ij,ij->i", normal, point - start)
+    flip = np.where(height < 0, -1.0, 1.0)
+    height *= flip
+    normal *= flip[:, None]
+    denominator = scale - np.einsum("ij,ij->i", normal, direction)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_tangent = height / denominator
+    centre = point + t_tangent[:, None] * direction
+    touch = centre - (scale * t_tangent)[:, None] * normal
+    along = np.einsum("ij,ij->i", touch - start, unit)
+    valid = (height > 0) & (denominator > 1e-12) & (along >= 0) & (along <= length)
+    t_tangent = np.where(valid, t_tangent, np.inf)
+
+    t = np.minimum(np.minimum(t_start, t_end), t_tangent)
+    contact = np.where((t == t_tangent)[:, None], touch, np.where((t == t_start)[:, None], start, end))
+    along = np.where(t == t_tangent, along, np.where(t == t_start, 0.0, length))
+    return t, contact, boundary.segment_position[segment] + along
+
+
+def _group_minimum(group, values, size):
+    """Minimum of ``values`` per group id (``group`` sorted ascending); inf for empty groups."""
+    result = np.full(size, np.inf)
+    if len(group):
+        starts = np.flatnonzero(np.concatenate([[True], group[1:] != group[:-1]]))
+        result[group[starts]] = np.minimum.reduceat(values, starts)
+    return result
+
+
+def _solve_chunk(samples, index, boundary, own_chain, trial_radius, limit, floor):
+    """Settle the samples ``index``; return (accepted sample indices, t, contact, contact position)."""
+    point, direction = samples.point[index], samples.direction[index]
+    scale = samples.scale[index]
+    radius = np.full(len(index), trial_radius)
+    active = np.arange(len(index))
+    found = {"sample": [], "t": [], "contact": [], "position": []}
+    while len(active):
+        centre = point[active] + radius[active, None] * direction[active]
+        reach = scale[active] * radius[active] * (1.0 + 1e-9)
+        low = np.minimum(centre - reach[:, None], point[active])
+        high = np.maximum(centre + reach[:, None], point[active])
+        query, segment = boundary.tree.query(shapely.box(low[:, 0], low[:, 1], high[:, 0], high[:, 1]))
+        pair = active[query]
+        sample = index[pair]
+        t, contact, position = _first_contacts(
+            point[pair], direction[pair], scale[pair], boundary, segment
+        )
+        own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
+        t[own_segment | (t <= floor)] = np.inf
+        on_own = boundary.chain_id[segment] == own_chain
+        t_own = np.where(on_own, t, np.inf)
+        t_other = np.where(on_own, np.inf, t)
+
+        best_own = _group_minimum(pair, t_own, len(index))
+        best_other = _group_minimum(pair, t_other, len(index))
+        best = np.minimum(best_own[active], best_other[active])
+        settled = best <= radius[active]
+
+        winner = np.isfinite(t_other) & (t_other == best_other[pair])
+        winner &= t_other <= best_own[pair] * (1.0 + TIE_TOLERANCE)
+        winner &= settled[np.searchsorted(active, pair)]
+        winner_pair = np.flatnonzero(winner)
+        _, first = np.unique(pair[winner_pair], return_index=True)
+        chosen = winner_pair[first]
+        found["sample"].append(index[pair[chosen]])
+        found["t"].append(t[chosen])
+        found["contact"].append(contact[chosen])
+        found["position"].append(position[chosen])
+
+        pending = active[~settled]
+        best = best[~settled]
+        radius[pending] = np.where(np.isfinite(best), best, radius[pending] * 4.0)
+        active = pending[radius[pending] <= limit]
+    return tuple(np.concatenate(found[key]) for key in ("sample", "t", "contact", "position"))
+
+
+def _distinct(points, tolerance):
+    """Mask keeping both ends and every point farther than ``tolerance`` from the last kept one."""
+    step = np.hypot(*np.diff(points, axis=0).T)
+    keep = np.concatenate([[True], step > tolerance])
+    keep[-1] = True
+    kept = np.flatnonzero(keep)
+    if len(kept) > 2 and np.hypot(*(points[kept[-2]] - points[-1])) <= tolerance:
+        keep[kept[-2]] = False
+    return keep
+
+
+def _signed_area(ring):
+    x, y = ring[:, 0], ring[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def typical_width(c1, c2):
+    """Area between the chains divided by their mean length.
+
+    Parameters
+    ----------
+    c1, c2 : ndarray of shape (n, 2)
+        The chains, running in the same direction, CRS units.
+
+    Returns
+    -------
+    float
+        Typical width, CRS units (for a long rectangle, its width).
+    """
+    area = abs(_signed_area(np.concatenate([c1, c2[::-1]])))
+    mean_length = 0.5 * (LineString(c1).length + LineString(c2).length)
+    return area / mean_length if mean_length > 0 else 0.0
+
+
+def default_spacing(c1, c2):
+    """Sample spacing used when none is given: the typical width divided by 20.
+
+    A polyline through points of an axis of curvature radius ``R`` spaced ``h`` apart deviates from it by
+    at most ``h**2 / (8 R)``. The axis of a region of width ``w`` bends no tighter than ``R = w / 2``
+    (tighter, the inner bank would fold), so ``h = w / 20`` bounds the deviation by ``w / 1600`` and its
+    mean by about ``4e-4 w``: below ``1e-3`` of the width.
+
+    Parameters
+    ----------
+    c1, c2 : ndarray of shape (n, 2)
+        The chains, CRS units.
+
+    Returns
+    -------
+    float
+        Spacing, CRS units.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> default_spacing(np.array([[0.0, 0], [100, 0]]), np.array([[0.0, 10], [100, 10]]))
+    0.5
+    """
+    width = typical_width(c1, c2)
+    if not width > 0:
+        width = 1e-3 * extent_of(c1, c2)
+    return DEFAULT_SPACING_PER_WIDTH * width
+
+
+def centerline_from_chains(
+    c1,
+    c2,
+    spacing=None,
+    *,
+    samples_per_chain=None,
+    progress: Optional[Callable[[float], bool]] = None,
+):
+    """Compute the IncirCu centerline between two boundary chains.
+
+    Parameters
+    ----------
+    c1, c2 : ndarray of shape (n, 2)
+        Cleaned chains (see :mod:`.chains`) running in the same direction. When they share both end
+        points (a polygon split at two points) the centerline runs between those points; otherwise it
+        runs between the midpoints of the two end gaps.
+    spacing : float, optional
+        Distance between equidistant samples along each chain, CRS units; default
+        :func:`default_spacing`. Every vertex of both chains is sampled as well.
+    samples_per_chain : int, optional
+        Instead of ``spacing``: this many equidistant samples on each chain.
+    progress : callable, optional
+        Called with the fraction done (0 to 1); when it returns False the engine raises
+        :class:`Cancelled`.
+
+    Returns
+    -------
+    CenterlineResult
+
+    Raises
+    ------
+    IncirCuError
+        If the spacing is not positive or would need more than ``MAX_SAMPLES`` samples.
+    Cancelled
+        If ``progress`` returned False.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> bank_a = np.array([[0.0, 0.0], [10.0, 0.0]])
+    >>> bank_b = np.array([[0.0, 2.0], [10.0, 2.0]])
+    >>> result = centerline_from_chains(bank_a, bank_b, spacing=1.0)
+    >>> sorted({round(y, 9) for y in result.line.xy[1]})
+    [1.0]
+    """
+    chains = [np.asarray(c1, dtype=float), np.asarray(c2, dtype=float)]
+    extent = extent_of(*chains)
+    lengths = [float(np.hypot(*np.diff(c, axis=0).T).sum()) for c in chains]
+    if samples_per_chain is not None:
+        if int(samples_per_chain) < 1:
+            raise IncirCuError("The number of samples per chain must be at least 1.")
+        spacings = [length / (int(samples_per_chain) + 1) for length in lengths]
+    else:
+        if spacing is None or spacing == 0:
+            spacing = default_spacing(*chains)
+        if not spacing > 0 or not np.isfinite(spacing):
+            raise IncirCuError("The spacing must be a positive distance, got {!r}.".format(spacing))
+        spacings = [float(spacing)] * 2
+    planned = sum(length / s for length, s in zip(lengths, spacings)) + sum(len(c) for c in chains)
+    if planned > MAX_SAMPLES:
+        raise IncirCuError(
+            "A spacing of {:.6g} would need about {:.3g} samples (at most {:.3g}); use a larger spacing.".format(
+                min(spacings), planned, MAX_SAMPLES
+            )
+        )
+
+    origin = 0.5 * (np.min(np.concatenate(chains), axis=0) + np.max(np.concatenate(chains), axis=0))
+    local = [c - origin for c in chains]
+    merge = COINCIDENCE_TOLERANCE * extent
+    closed = bool(
+        np.hypot(*(local[0][0] - local[1][0])) <= merge and np.hypot(*(local[0][-1] - local[1][-1])) <= merge
+    )
+    side = 1.0 if _signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
+    boundary = _Boundary(local)
+    width = max(typical_width(*local), merge)
+    fan_step = min(MAX_FAN_STEP, 2.0 * min(spacings) / width)
+    trial_radius = 0.5 * width
+    limit = 4.0 * extent
+    floor = 1e-12 * extent
+
+    sampled = [
+        _sample_chain(
+            local[i], boundary.position[i], side if i == 0 else -side, spacings[i], boundary.offset[i], fan_step
+        )
+        for i in (0, 1)
+    ]
+    total = sum(len(s.point) for s in sampled)
+    done = 0
+    pieces = []
+    for own in (0, 1):
+        samples = sampled[own]
+        for begin in range(0, len(samples.point), _CHUNK):
+            index = np.arange(begin, min(begin + _CHUNK, len(samples.point)))
+            sample, t, contact, position = _solve_chunk(
+                samples, index, boundary, own, trial_radius, limit, floor
+            )
+            centre = samples.point[sample] + t[:, None] * samples.direction[sample]
+            radius = samples.scale[sample] * t
+            own_foot, own_position = samples.foot[sample], samples.position[sample]
+            if own == 0:
+                pieces.append((centre, radius, own_foot, contact, own_position, position))
+            else:
+                pieces.append((centre, radius, contact, own_foot, position, own_position))
+            done += len(index)
+            if progress is not None and progress(done / max(total, 1)) is False:
+                raise Cancelled()
+
+    centre, radius, foot_a, foot_b, position_a, position_b = (
+        np.concatenate([piece[k] for piece in pieces]) if pieces else np.empty((0, 2) if k in (0, 2, 3) else 0)
+        for k in range(6)
+    )
+    order = np.argsort(position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge), kind="stable")
+    centre, radius, foot_a, foot_b = centre[order], radius[order], foot_a[order], foot_b[order]
+
+    if closed:
+        ends = [(local[0][0], 0.0, local[0][0], local[0][0]), (local[0][-1], 0.0, local[0][-1], local[0][-1])]
+    else:
+        ends = [
+            (0.5 * (local[0][i] + local[1][i]), 0.5 * np.hypot(*(local[0][i] - local[1][i])), local[0][i], local[1][i])
+            for i in (0, -1)
+        ]
+    centre = np.concatenate([ends[0][0][None], centre, ends[1][0][None]])
+    radius = np.concatenate([[ends[0][1]], radius, [ends[1][1]]])
+    foot_a = np.concatenate([ends[0][2][None], foot_a, ends[1][2][None]])
+    foot_b = np.concatenate([ends[0][3][None], foot_b, ends[1][3][None]])
+
+    keep = _distinct(centre, 1e-9 * extent)
+    centre, radius, foot_a, foot_b = centre[keep], radius[keep], foot_a[keep], foot_b[keep]
+    if len(centre) < 2:
+        raise IncirCuError("The chains are too close together or too short to carry a centerline.")
+    return CenterlineResult(
+        line=LineString(centre + origin),
+        radii=radius,
+        foot_a=foot_a + origin,
+        foot_b=foot_b + origin,
+    )
