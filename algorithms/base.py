@@ -1,0 +1,174 @@
+"""Base class of the IncirCu algorithms: translation, instances, help, icon and shared parameters."""
+
+from pathlib import Path
+
+from qgis.core import (
+    QgsProcessing,
+    QgsProcessingAlgorithm,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterDistance,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingUtils,
+)
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+
+from .dependencies import shared
+
+ICON_PATH = Path(__file__).resolve().parent.parent / "icons"
+
+
+class IncirCuAlgorithm(QgsProcessingAlgorithm):
+    """Common behaviour of the IncirCu Processing algorithms.
+
+    Subclasses define ``name``, ``displayName``, ``shortHelpString`` and ``initAlgorithm`` and add their
+    parameters with :meth:`add_parameter`, which also records the parameter's help text.
+    """
+
+    SPACING = "SPACING"
+    ADD_M = "ADD_M"
+    TRANSECT_INTERVAL = "TRANSECT_INTERVAL"
+    OUTPUT = "OUTPUT"
+    OUTPUT_VERTICES = "OUTPUT_VERTICES"
+    OUTPUT_CIRCLES = "OUTPUT_CIRCLES"
+    OUTPUT_TRANSECTS = "OUTPUT_TRANSECTS"
+    CENTERLINE_COUNT = "CENTERLINE_COUNT"
+    SKIPPED_COUNT = "SKIPPED_COUNT"
+
+    #: File name of the algorithm's icon under ``icons/``.
+    ICON = "incircu.svg"
+
+    def __init__(self):
+        super().__init__()
+        self.parameter_help = {}
+
+    def tr(self, text):
+        """Translate ``text`` with the class name as context."""
+        return QCoreApplication.translate(type(self).__name__, text)
+
+    def createInstance(self):  # noqa: N802 - QGIS API name
+        return type(self)()
+
+    def group(self):
+        return shared("Centerlines")
+
+    def groupId(self):  # noqa: N802 - QGIS API name
+        return "centerlines"
+
+    def icon(self):
+        return QIcon(self.svgIconPath())
+
+    def svgIconPath(self):  # noqa: N802 - QGIS API name
+        return str(ICON_PATH / self.ICON)
+
+    def helpString(self):  # noqa: N802 - QGIS API name
+        help_map = {"ALG_DESC": self.shortHelpString(), "ALG_CREATOR": "IncirCu", **self.parameter_help}
+        return QgsProcessingUtils.formatHelpMapAsHtml(help_map, self)
+
+    def add_parameter(self, parameter, help_text, advanced=False):
+        """Add a parameter with its help text (tooltip in the dialog, section of the help page).
+
+        Parameters
+        ----------
+        parameter : QgsProcessingParameterDefinition
+        help_text : str
+            Short, exact description, already translated.
+        advanced : bool
+            Show the parameter under "Advanced parameters".
+        """
+        if advanced:
+            parameter.setFlags(parameter.flags() | parameter.Flag.FlagAdvanced)
+        if hasattr(parameter, "setHelp"):
+            parameter.setHelp(help_text)
+        self.parameter_help[parameter.name()] = help_text
+        self.addParameter(parameter)
+
+    def add_output(self, output, help_text):
+        """Declare a non-layer output with its help text."""
+        self.parameter_help[output.name()] = help_text
+        self.addOutput(output)
+
+    def add_spacing_parameter(self, parent_name):
+        """Add ``SPACING`` (distance between centerline samples, units of ``parent_name``'s layer)."""
+        spacing = QgsProcessingParameterDistance(
+            self.SPACING, shared("Distance between centerline vertices (0 = automatic)"), 0.0, parent_name, minValue=0.0
+        )
+        self.add_parameter(
+            spacing,
+            shared(
+                "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
+                "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline."
+            ),
+        )
+
+    def add_result_parameters(self, parent_name):
+        """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.ADD_M, shared("Store the local width as M value"), True),
+            shared("Write the incircle diameter (local width, layer units or metres) as M value of each vertex."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT, shared("Centerlines"), QgsProcessing.SourceType.TypeVectorLine
+            ),
+            shared(
+                "Line layer: input attributes plus length, width_min, width_mean, width_max (incircle "
+                "diameters over the vertices with a positive width), n_vertices and ends_found."
+            ),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT_VERTICES,
+                shared("Centerline vertices"),
+                QgsProcessing.SourceType.TypeVectorPoint,
+                optional=True,
+                createByDefault=False,
+            ),
+            shared("Optional point layer: every centerline vertex with its chainage, incircle radius and width."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT_CIRCLES,
+                shared("Incircles"),
+                QgsProcessing.SourceType.TypeVectorPolygon,
+                optional=True,
+                createByDefault=False,
+            ),
+            shared("Optional polygon layer: the incircle of every vertex, with its radius and chainage."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT_TRANSECTS,
+                shared("Transects"),
+                QgsProcessing.SourceType.TypeVectorLine,
+                optional=True,
+                createByDefault=False,
+            ),
+            shared(
+                "Optional line layer: cross-sections from bank to bank through the centerline, every "
+                "TRANSECT_INTERVAL, with their width and chainage."
+            ),
+        )
+        self.add_parameter(
+            QgsProcessingParameterDistance(
+                self.TRANSECT_INTERVAL,
+                shared("Distance between transects (0 = mean width)"),
+                0.0,
+                parent_name,
+                minValue=0.0,
+            ),
+            shared(
+                "Distance along the centerline between two transects, layer units (metres for a layer in "
+                "degrees); 0 uses the mean width of each centerline."
+            ),
+            advanced=True,
+        )
+        self.add_output(
+            QgsProcessingOutputNumber(self.CENTERLINE_COUNT, shared("Number of centerlines")),
+            shared("Number of centerline features written."),
+        )
+        self.add_output(
+            QgsProcessingOutputNumber(self.SKIPPED_COUNT, shared("Number of skipped features")),
+            shared("Number of input features (or parts) skipped with a warning."),
+        )

@@ -1,0 +1,75 @@
+"""Import of the geometry core, with an actionable message when Shapely 2 is missing or too old."""
+
+import importlib
+
+from qgis.core import QgsProcessingException
+from qgis.PyQt.QtCore import QCoreApplication
+
+#: Oldest Shapely release the core works with.
+MINIMUM_SHAPELY = (2, 0)
+
+INSTALL_HINT = (
+    "Install it into the Python that QGIS runs, then restart QGIS: "
+    "on Windows/macOS open the OSGeo4W shell or the QGIS Python console environment and run "
+    "'python -m pip install \"shapely>=2\"'; on Debian/Ubuntu run "
+    "'python3 -m pip install --user --break-system-packages \"shapely>=2\"'."
+)
+
+
+def shared(text):
+    """Translate a string shared by every IncirCu algorithm (context ``IncirCuAlgorithm``)."""
+    return QCoreApplication.translate("IncirCuAlgorithm", text)
+
+
+def version_tuple(version):
+    """Return the leading numeric parts of a version string, e.g. ``"2.0.1"`` -> ``(2, 0, 1)``."""
+    parts = []
+    for piece in str(version).split("."):
+        digits = "".join(character for character in piece if character.isdigit())
+        if not digits:
+            break
+        parts.append(int(digits))
+        if digits != piece:
+            break
+    return tuple(parts)
+
+
+def shapely_problem():
+    """Say what is wrong with the installed Shapely, or ``None`` when it is usable.
+
+    Returns
+    -------
+    str or None
+        A user-facing message naming the installed version and how to install Shapely 2.
+    """
+    try:
+        shapely = importlib.import_module("shapely")
+    except ImportError:
+        return shared("IncirCu needs the Python package Shapely 2, which is not installed.") + " " + INSTALL_HINT
+    version = getattr(shapely, "__version__", "0")
+    if version_tuple(version) < MINIMUM_SHAPELY:
+        return (
+            shared("IncirCu needs Shapely 2.0 or newer, but Shapely {} is installed.").format(version)
+            + " "
+            + INSTALL_HINT
+        )
+    return None
+
+
+def require_core():
+    """Import and return the geometry core package.
+
+    Returns
+    -------
+    module
+        ``incircu_plugin.core`` of this plugin.
+
+    Raises
+    ------
+    QgsProcessingException
+        When Shapely is missing or older than 2.0 (message says what to install and how).
+    """
+    problem = shapely_problem()
+    if problem is not None:
+        raise QgsProcessingException(problem)
+    return importlib.import_module("..incircu_plugin.core", __package__)

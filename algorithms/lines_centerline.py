@@ -1,0 +1,159 @@
+"""Processing algorithm ``incircu:linescenterline``: the centerline between two bank lines."""
+
+from qgis.core import (
+    QgsFeatureRequest,
+    QgsGeometry,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingParameterFeatureSource,
+    QgsProcessingParameterField,
+    QgsWkbTypes,
+)
+
+from .base import IncirCuAlgorithm
+from .running import FeatureRun
+
+
+class LinesCenterlineAlgorithm(IncirCuAlgorithm):
+    """Centerline between the lines of two layers, paired by attribute or one line per layer."""
+
+    LINES_A = "LINES_A"
+    LINES_B = "LINES_B"
+    PAIR_FIELD_A = "PAIR_FIELD_A"
+    PAIR_FIELD_B = "PAIR_FIELD_B"
+
+    ICON = "linescenterline.svg"
+
+    def name(self):
+        return "linescenterline"
+
+    def displayName(self):  # noqa: N802 - QGIS API name
+        return self.tr("Centerline between two lines (IncirCu)")
+
+    def tags(self):
+        return self.tr("centerline,centreline,medial axis,banks,river,road,width,incircle").split(",")
+
+    def shortHelpString(self):  # noqa: N802 - QGIS API name
+        return self.tr(
+            "Computes one unbranched centerline between two lines (for example the two banks of a river) "
+            "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
+            "are paired by equal values of PAIR_FIELD_A and PAIR_FIELD_B; without them each layer holds one "
+            "line (its features and parts are merged). The lines must not cross. The M value of each vertex "
+            "is the local width. LINES_B is reprojected to the CRS of LINES_A; geographic layers are "
+            "computed in a local metric projection and distances are then in metres."
+        )
+
+    def initAlgorithm(self, configuration=None):  # noqa: N802 - QGIS API name
+        line = [QgsProcessing.SourceType.TypeVectorLine]
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(self.LINES_A, self.tr("First lines (bank A)"), line),
+            self.tr("Line layer of one side; the output has its CRS and its attributes."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(self.LINES_B, self.tr("Second lines (bank B)"), line),
+            self.tr("Line layer of the other side; reprojected to the CRS of LINES_A when needed."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(
+                self.PAIR_FIELD_A, self.tr("Pairing field of the first lines"), parentLayerParameterName=self.LINES_A,
+                optional=True,
+            ),
+            self.tr("Optional; a line of LINES_A is paired with the line of LINES_B having the same value."),
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(
+                self.PAIR_FIELD_B, self.tr("Pairing field of the second lines"), parentLayerParameterName=self.LINES_B,
+                optional=True,
+            ),
+            self.tr("Optional; required together with PAIR_FIELD_A."),
+        )
+        self.add_spacing_parameter(self.LINES_A)
+        self.add_result_parameters(self.LINES_A)
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 - QGIS API name
+        run = FeatureRun(self, parameters, context, feedback)
+        line_type = QgsWkbTypes.GeometryType.LineGeometry
+        source_a = run.source(self.LINES_A, line_type)
+        source_b = run.source(self.LINES_B, line_type)
+        field_a = self.parameterAsString(parameters, self.PAIR_FIELD_A, context)
+        field_b = self.parameterAsString(parameters, self.PAIR_FIELD_B, context)
+        if bool(field_a) != bool(field_b):
+            raise QgsProcessingException(
+                self.tr("Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).")
+            )
+        spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
+        crs = source_a.sourceCrs()
+        run.open_outputs(source_a.fields(), crs, multi=False)
+
+        groups_a = self.group_features(source_a, field_a, QgsFeatureRequest())
+        request_b = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
+        groups_b = self.group_features(source_b, field_b, request_b)
+        if not field_a:
+            for name, groups in ((self.LINES_A, groups_a), (self.LINES_B, groups_b)):
+                if not groups:
+                    raise QgsProcessingException(self.tr("{} holds no line.").format(name))
+                merged = self.merged_line(groups[None][1])
+                if merged.isMultipart() and len(merged.asGeometryCollection()) > 1:
+                    raise QgsProcessingException(
+                        self.tr(
+                            "{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and "
+                            "PAIR_FIELD_B to pair them, or merge them into one line."
+                        ).format(name, len(merged.asGeometryCollection()))
+                    )
+
+        run.progress_step = 100.0 / max(len(groups_a), 1)
+        for current, (key, (first, geometries)) in enumerate(groups_a.items()):
+            if feedback.isCanceled():
+                break
+            run.progress_base = current * run.progress_step
+            feedback.setProgress(run.progress_base)
+            if key not in groups_b:
+                run.skip(first.id(), self.tr("no line in LINES_B has {} = {!r}").format(field_b, key))
+                continue
+            line_a = self.merged_line(geometries)
+            line_b = self.merged_line(groups_b[key][1])
+            if line_a.isMultipart() and len(line_a.asGeometryCollection()) > 1:
+                run.skip(first.id(), self.tr("the lines of LINES_A with this pairing value do not join into one"))
+                continue
+            if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
+                run.skip(first.id(), self.tr("the lines of LINES_B with this pairing value do not join into one"))
+                continue
+            run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
+            result = run.compute(
+                first.id(),
+                None,
+                run.core.lines_centerline,
+                run.frame.to_core(line_a),
+                run.frame.to_core(line_b),
+                spacing=spacing,
+            )
+            run.write(first, [] if result is None else [(0, result)])
+        for key, (first, _) in groups_b.items():
+            if key not in groups_a:
+                run.warn(self.tr("No line in LINES_A has {} = {!r}; line {} of LINES_B unused.").format(
+                    field_a, key, first.id()
+                ))
+        return run.finish()
+
+    @staticmethod
+    def group_features(source, field_name, request):
+        """Group the line geometries of a layer by the value of ``field_name`` (one group when empty).
+
+        Returns
+        -------
+        dict
+            Value -> (first feature, list of QgsGeometry), in the order values first appear.
+        """
+        groups = {}
+        index = source.fields().lookupField(field_name) if field_name else -1
+        for feature in source.getFeatures(request):
+            if not feature.hasGeometry() or feature.geometry().isEmpty():
+                continue
+            key = feature.attributes()[index] if index >= 0 else None
+            groups.setdefault(key, (feature, []))[1].append(feature.geometry())
+        return groups
+
+    @staticmethod
+    def merged_line(geometries):
+        """Merge line geometries (and multi-line parts) into as few lines as they form when joined end to end."""
+        return QgsGeometry.collectGeometry(geometries).mergeLines()

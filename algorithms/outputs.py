@@ -1,0 +1,239 @@
+"""Output layers of the IncirCu algorithms: fields, statistics and the writing of core results."""
+
+import math
+
+from qgis.core import (
+    Qgis,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsPointXY,
+    QgsProcessingUtils,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtCore import QVariant
+
+from .convert import collect_lines, from_shapely, line_with_m
+
+if Qgis.QGIS_VERSION_INT >= 33800:
+    from qgis.PyQt.QtCore import QMetaType
+
+    DOUBLE, INTEGER, BOOLEAN = QMetaType.Type.Double, QMetaType.Type.Int, QMetaType.Type.Bool
+else:
+    DOUBLE, INTEGER, BOOLEAN = QVariant.Double, QVariant.Int, QVariant.Bool
+
+
+def make_fields(definitions):
+    """Build a ``QgsFields`` from ``(name, type)`` pairs."""
+    fields = QgsFields()
+    for name, field_type in definitions:
+        fields.append(QgsField(name, field_type))
+    return fields
+
+
+#: Fields added to the input attributes on every centerline (lengths and widths in layer units, metres when geographic).
+CENTERLINE_FIELDS = (
+    ("length", DOUBLE),
+    ("width_min", DOUBLE),
+    ("width_mean", DOUBLE),
+    ("width_max", DOUBLE),
+    ("n_vertices", INTEGER),
+    ("ends_found", BOOLEAN),
+)
+VERTEX_FIELDS = (
+    ("source_fid", INTEGER),
+    ("part", INTEGER),
+    ("vertex", INTEGER),
+    ("chainage", DOUBLE),
+    ("radius", DOUBLE),
+    ("width", DOUBLE),
+)
+CIRCLE_FIELDS = (
+    ("source_fid", INTEGER),
+    ("part", INTEGER),
+    ("vertex", INTEGER),
+    ("chainage", DOUBLE),
+    ("radius", DOUBLE),
+)
+TRANSECT_FIELDS = (
+    ("source_fid", INTEGER),
+    ("part", INTEGER),
+    ("chainage", DOUBLE),
+    ("width", DOUBLE),
+)
+
+
+def chainages(coordinates):
+    """Return the distance along a polyline of each of its vertices.
+
+    Parameters
+    ----------
+    coordinates : sequence of (x, y)
+        Vertices, CRS units.
+
+    Returns
+    -------
+    list of float
+        Cumulative length at each vertex, CRS units; starts at 0.
+    """
+    distances = [0.0]
+    for (x0, y0), (x1, y1) in zip(coordinates[:-1], coordinates[1:]):
+        distances.append(distances[-1] + math.hypot(x1 - x0, y1 - y0))
+    return distances
+
+
+def width_statistics(results):
+    """Summarise one or several centerline results for the attribute table.
+
+    The ends of a centerline lie on the outline, where the width is zero; statistics are taken over the
+    vertices with a positive width.
+
+    Parameters
+    ----------
+    results : sequence of CenterlineResult
+        Results of the parts of one output feature.
+
+    Returns
+    -------
+    dict
+        ``length`` (sum), ``width_min``, ``width_mean`` (mean over vertices), ``width_max``, ``n_vertices``
+        (sum), ``ends_found`` (True when every part had automatic ends); lengths in working-frame units.
+    """
+    widths = [float(w) for result in results for w in result.widths if w > 0]
+    return {
+        "length": float(sum(result.length for result in results)),
+        "width_min": min(widths) if widths else None,
+        "width_mean": sum(widths) / len(widths) if widths else None,
+        "width_max": max(widths) if widths else None,
+        "n_vertices": int(sum(len(result.line.coords) for result in results)),
+        "ends_found": all(bool(result.ends_found) for result in results),
+    }
+
+
+def automatic_interval(results):
+    """Return the default transect interval: the mean width of the centerlines (working-frame units)."""
+    widths = [float(w) for result in results for w in result.widths if w > 0]
+    return sum(widths) / len(widths) if widths else 0.0
+
+
+class CenterlineWriter:
+    """Creates the output sinks of an algorithm and writes centerline results into them.
+
+    Parameters
+    ----------
+    algorithm : IncirCuAlgorithm
+        The running algorithm (parameter lookup).
+    parameters, context : dict, QgsProcessingContext
+        As passed to ``processAlgorithm``.
+    input_fields : QgsFields
+        Attributes copied from the input features.
+    crs : QgsCoordinateReferenceSystem
+        CRS of every output.
+    multi : bool
+        Write MultiLineString centerlines (one feature per input feature).
+    add_m : bool
+        Store the local width as M value.
+    transect_interval : float
+        Spacing of the transects, working-frame units; 0 = the mean width of each centerline.
+    """
+
+    def __init__(self, algorithm, parameters, context, input_fields, crs, multi, add_m, transect_interval):
+        self.add_m = add_m
+        self.multi = multi
+        self.transect_interval = transect_interval
+        line_type = QgsWkbTypes.Type.MultiLineString if multi else QgsWkbTypes.Type.LineString
+        if add_m:
+            line_type = QgsWkbTypes.addM(line_type)
+        self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(CENTERLINE_FIELDS))
+        self.sink, self.sink_id = algorithm.parameterAsSink(
+            parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
+        )
+        self.vertices, self.vertices_id = algorithm.parameterAsSink(
+            parameters, algorithm.OUTPUT_VERTICES, context, make_fields(VERTEX_FIELDS), QgsWkbTypes.Type.Point, crs
+        )
+        self.circles, self.circles_id = algorithm.parameterAsSink(
+            parameters, algorithm.OUTPUT_CIRCLES, context, make_fields(CIRCLE_FIELDS), QgsWkbTypes.Type.Polygon, crs
+        )
+        self.transects, self.transects_id = algorithm.parameterAsSink(
+            parameters,
+            algorithm.OUTPUT_TRANSECTS,
+            context,
+            make_fields(TRANSECT_FIELDS),
+            QgsWkbTypes.Type.LineString,
+            crs,
+        )
+        self.centerline_count = 0
+
+    def destinations(self):
+        """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
+        return {
+            "OUTPUT": self.sink_id,
+            "OUTPUT_VERTICES": self.vertices_id,
+            "OUTPUT_CIRCLES": self.circles_id,
+            "OUTPUT_TRANSECTS": self.transects_id,
+        }
+
+    def write(self, attributes, source_fid, parts, frame, core):
+        """Write the centerline(s) of one input feature and its optional outputs.
+
+        Parameters
+        ----------
+        attributes : list
+            Attribute values of the input feature.
+        source_fid : int
+            Id of the input feature (for the optional outputs).
+        parts : sequence of (int, CenterlineResult)
+            Part index and result of every successful part.
+        frame : WorkingFrame
+            Frame the results are expressed in.
+        core : module
+            The geometry core (incircle and transect helpers).
+        """
+        if not parts:
+            return
+        groups = [parts] if self.multi else [[part] for part in parts]
+        for group in groups:
+            lines = []
+            for _, result in group:
+                coordinates = list(result.line.coords)
+                lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
+            geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
+            statistics = width_statistics([result for _, result in group])
+            feature = QgsFeature(self.fields)
+            feature.setGeometry(frame.to_layer(geometry))
+            feature.setAttributes(list(attributes) + [statistics[name] for name, _ in CENTERLINE_FIELDS])
+            self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
+            self.centerline_count += 1
+        for part_index, result in parts:
+            self._write_extras(source_fid, part_index, result, frame, core)
+
+    def _write_extras(self, source_fid, part_index, result, frame, core):
+        coordinates = list(result.line.coords)
+        distances = chainages(coordinates)
+        if self.vertices is not None:
+            for index, ((x, y), chainage, radius) in enumerate(zip(coordinates, distances, result.radii)):
+                point = QgsFeature()
+                point.setGeometry(frame.to_layer(QgsGeometry.fromPointXY(QgsPointXY(x, y))))
+                point.setAttributes([source_fid, part_index, index, chainage, float(radius), 2.0 * float(radius)])
+                self.vertices.addFeature(point, QgsFeatureSink.Flag.FastInsert)
+        if self.circles is not None:
+            for index, (circle, chainage, radius) in enumerate(
+                zip(core.incircle_polygons(result), distances, result.radii)
+            ):
+                if circle.is_empty or radius <= 0:
+                    continue
+                disc = QgsFeature()
+                disc.setGeometry(frame.to_layer(from_shapely(circle)))
+                disc.setAttributes([source_fid, part_index, index, chainage, float(radius)])
+                self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
+        if self.transects is not None:
+            interval = self.transect_interval or automatic_interval([result])
+            if interval <= 0:
+                return
+            for transect in core.transects(result, interval):
+                section = QgsFeature()
+                section.setGeometry(frame.to_layer(from_shapely(transect.line)))
+                section.setAttributes([source_fid, part_index, float(transect.chainage), float(transect.width)])
+                self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)

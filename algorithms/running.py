@@ -1,0 +1,168 @@
+"""Per-feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts."""
+
+from qgis.core import QgsProcessingException, QgsWkbTypes
+
+from .dependencies import require_core, shared
+
+GEOMETRY_TYPE_NAMES = {
+    QgsWkbTypes.GeometryType.PointGeometry: "point",
+    QgsWkbTypes.GeometryType.LineGeometry: "line",
+    QgsWkbTypes.GeometryType.PolygonGeometry: "polygon",
+}
+
+
+class FeatureRun:
+    """State of one run of an IncirCu algorithm.
+
+    Construction imports the geometry core (raising an actionable ``QgsProcessingException`` when Shapely 2
+    is missing). Per-feature problems become warnings naming the feature id (and part) and are counted in
+    ``SKIPPED_COUNT``; layer-level problems raise ``QgsProcessingException``.
+
+    Parameters
+    ----------
+    algorithm : IncirCuAlgorithm
+    parameters : dict
+    context : QgsProcessingContext
+    feedback : QgsProcessingFeedback
+    """
+
+    def __init__(self, algorithm, parameters, context, feedback):
+        self.core = require_core()
+        from .convert import WorkingFrame
+        from .outputs import CenterlineWriter
+
+        self.writer_class = CenterlineWriter
+        self.frame_class = WorkingFrame
+        self.algorithm = algorithm
+        self.parameters = parameters
+        self.context = context
+        self.feedback = feedback
+        self.frame = None
+        self.writer = None
+        self.skipped = 0
+        self.progress_base = 0.0
+        self.progress_step = 100.0
+
+    def source(self, name, geometry_type):
+        """Return the feature source of parameter ``name`` after checking its geometry type.
+
+        Raises
+        ------
+        QgsProcessingException
+            When the layer cannot be opened or holds another geometry type.
+        """
+        source = self.algorithm.parameterAsSource(self.parameters, name, self.context)
+        if source is None:
+            raise QgsProcessingException(self.algorithm.invalidSourceError(self.parameters, name))
+        actual = QgsWkbTypes.geometryType(source.wkbType())
+        if actual != geometry_type:
+            raise QgsProcessingException(
+                shared("{} must be a {} layer, but '{}' holds {} geometries.").format(
+                    name,
+                    GEOMETRY_TYPE_NAMES[geometry_type],
+                    source.sourceName(),
+                    GEOMETRY_TYPE_NAMES.get(actual, "no"),
+                )
+            )
+        return source
+
+    def open_outputs(self, fields, crs, multi):
+        """Create the output sinks and the working frame of the layer's CRS."""
+        algorithm, parameters, context = self.algorithm, self.parameters, self.context
+        interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
+        add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
+        self.writer = self.writer_class(algorithm, parameters, context, fields, crs, multi, add_m, interval)
+        if self.writer.sink is None:
+            raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
+        self.frame = self.frame_class(crs, context.transformContext())
+
+    def features(self, source, request=None):
+        """Yield the features of ``source`` with progress, stopping when the user cancels.
+
+        Features without geometry are skipped with a warning.
+        """
+        total = source.featureCount()
+        self.progress_step = 100.0 / total if total > 0 else 0.0
+        features = source.getFeatures(request) if request is not None else source.getFeatures()
+        for current, feature in enumerate(features):
+            if self.feedback.isCanceled():
+                break
+            self.progress_base = current * self.progress_step
+            self.feedback.setProgress(self.progress_base)
+            if not feature.hasGeometry() or feature.geometry().isEmpty():
+                self.skip(feature.id(), shared("the feature has no geometry"))
+                continue
+            yield feature
+
+    def report_progress(self, fraction):
+        """Progress callback for the core: ``fraction`` of the current feature done; False cancels."""
+        self.feedback.setProgress(self.progress_base + fraction * self.progress_step)
+        return not self.feedback.isCanceled()
+
+    def skip(self, feature_id, reason, part_index=None):
+        """Warn that a feature (or one of its parts) is skipped, and count it."""
+        self.skipped += 1
+        self.warn(shared("Feature {} skipped: {}").format(self.where(feature_id, part_index), reason))
+
+    def note(self, feature_id, message, part_index=None):
+        """Tell the user something about a feature that is still processed."""
+        self.feedback.pushInfo(shared("Feature {}: {}").format(self.where(feature_id, part_index), message))
+
+    def warn(self, message):
+        """Show a warning in the log (``pushWarning`` where QGIS has it)."""
+        if hasattr(self.feedback, "pushWarning"):
+            self.feedback.pushWarning(message)
+        else:
+            self.feedback.reportError(message, False)
+
+    @staticmethod
+    def where(feature_id, part_index):
+        """Return ``"7"`` or ``"7 (part 1)"`` for messages."""
+        if part_index is None:
+            return str(feature_id)
+        return shared("{} (part {})").format(feature_id, part_index)
+
+    def core_parts(self, shape):
+        """Return the polygons of a Shapely (multi)polygon, in their stored order."""
+        import shapely
+
+        return list(shapely.get_parts(shape))
+
+    def compute(self, feature_id, part_index, function, *args, **kwargs):
+        """Call a core function for one feature (part); a core error becomes a skip warning.
+
+        Returns
+        -------
+        CenterlineResult or None
+            ``None`` when the feature (part) was skipped or the user cancelled.
+        """
+        try:
+            return function(*args, progress=self.report_progress, **kwargs)
+        except self.core.Cancelled:
+            return None
+        except self.core.IncirCuError as error:
+            self.skip(feature_id, str(error), part_index)
+        except Exception as error:  # noqa: BLE001 - one bad feature must not abort a run of thousands
+            self.skip(
+                feature_id,
+                shared("unexpected {}: {} (please report this with the feature)").format(type(error).__name__, error),
+                part_index,
+            )
+        return None
+
+    def write(self, feature, parts):
+        """Write the results of one input feature."""
+        self.writer.write(feature.attributes(), feature.id(), parts, self.frame, self.core)
+
+    def finish(self):
+        """Return the algorithm's result map and report the totals."""
+        self.feedback.setProgress(100.0)
+        self.feedback.pushInfo(
+            shared("{} centerlines written, {} features or parts skipped.").format(
+                self.writer.centerline_count, self.skipped
+            )
+        )
+        results = {name: value for name, value in self.writer.destinations().items() if value}
+        results[self.algorithm.CENTERLINE_COUNT] = self.writer.centerline_count
+        results[self.algorithm.SKIPPED_COUNT] = self.skipped
+        return results

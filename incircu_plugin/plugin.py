@@ -1,0 +1,44 @@
+"""The QGIS plugin object: registers the IncirCu Processing provider and its translations."""
+
+from pathlib import Path
+
+from qgis.core import QgsApplication, QgsSettings
+from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+
+from .provider import IncirCuProvider
+
+I18N_FOLDER = Path(__file__).resolve().parent.parent / "i18n"
+
+
+def user_locale():
+    """Return the two-letter language code QGIS runs in (``"en"`` when unset)."""
+    locale = QgsSettings().value("locale/userLocale", "") or "en"
+    return str(locale)[:2]
+
+
+class IncirCuPlugin:
+    """Plugin object created by ``classFactory``; ``iface`` is only used from ``initGui``."""
+
+    def __init__(self, iface):
+        self.iface = iface
+        self.provider = None
+        self.translator = QTranslator()
+        if self.translator.load(str(I18N_FOLDER / f"incircu_{user_locale()}.qm")):
+            QCoreApplication.installTranslator(self.translator)
+
+    def initProcessing(self):  # noqa: N802 - QGIS API name
+        """Register the Processing provider (called by QGIS, also under ``qgis_process``)."""
+        if self.provider is None:
+            self.provider = IncirCuProvider()
+            QgsApplication.processingRegistry().addProvider(self.provider)
+
+    def initGui(self):  # noqa: N802 - QGIS API name
+        """Desktop start-up: the toolbox entries are the whole user interface."""
+        self.initProcessing()
+
+    def unload(self):
+        """Remove the provider and the translator."""
+        if self.provider is not None:
+            QgsApplication.processingRegistry().removeProvider(self.provider)
+            self.provider = None
+        QCoreApplication.removeTranslator(self.translator)

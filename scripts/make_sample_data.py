@@ -1,0 +1,256 @@
+"""Write the bundled sample data (``scripts/data``), the test fixtures (``tests/data``) and the test model.
+
+Run from the repository root with the project's Python: ``.venv/bin/python scripts/make_sample_data.py``.
+The shapes are analytic (sine meanders, a straight channel with an island), so the files are small and
+reproducible; coordinates are rounded to 1 cm (EPSG:2180) or 1e-8 degree (EPSG:4326).
+"""
+
+import json
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+import pyproj
+import shapely
+from shapely.geometry import LineString, MultiLineString, Point, Polygon, mapping
+
+ROOT = Path(__file__).resolve().parent.parent
+SAMPLE_FOLDER = ROOT / "scripts" / "data"
+FIXTURE_FOLDER = ROOT / "tests" / "data"
+
+#: Projected CRS of the data (Poland CS92, metres) and the origin of the shapes in it.
+PROJECTED = 2180
+ORIGIN = (500_000.0, 400_000.0)
+
+#: Half-width of the meandering river, metres.
+RIVER_HALF_WIDTH = 20.0
+#: Distance the split points lie outside the river's end caps, metres (snapped with tolerance 1 m).
+SPLIT_POINT_OFFSET = 0.4
+
+
+def shifted(geometry, dx=0.0, dy=0.0):
+    """Move a geometry from shape coordinates to CRS coordinates."""
+    return shapely.affinity.translate(geometry, ORIGIN[0] + dx, ORIGIN[1] + dy)
+
+
+def meander_axis(length=1200.0, amplitude=110.0, wavelength=600.0, samples=97):
+    """Return a sine meander as a LineString starting at (0, 0), metres."""
+    t = np.linspace(0.0, length, samples)
+    return LineString(np.column_stack([t, amplitude * np.sin(2.0 * math.pi * t / wavelength)]))
+
+
+def river(axis, half_width):
+    """Return the polygon of a river of constant width around ``axis`` (flat ends)."""
+    return shapely.simplify(axis.buffer(half_width, cap_style="flat", join_style="round", quad_segs=4), 0.02)
+
+
+def end_points(axis, offset):
+    """Return the two axis ends pushed ``offset`` outwards along the axis (as split points)."""
+    coords = np.asarray(axis.coords)
+    start_direction = coords[0] - coords[1]
+    end_direction = coords[-1] - coords[-2]
+    start = coords[0] + offset * start_direction / np.linalg.norm(start_direction)
+    end = coords[-1] + offset * end_direction / np.linalg.norm(end_direction)
+    return Point(start), Point(end)
+
+
+def island_channel():
+    """Return a straight channel 800 m x 120 m with an elliptic island 40 m above its middle line."""
+    channel = Polygon([(0, -60), (800, -60), (800, 60), (0, 60)])
+    island = shapely.affinity.scale(Point(400, 20).buffer(1.0, quad_segs=8), 110.0, 15.0)
+    return Polygon(channel.exterior.coords, [island.exterior.coords])
+
+
+def write_layer(path, features, epsg):
+    """Write features ``[(id, geometry, properties)]`` as a GeoJSON file with its CRS."""
+    digits = 2 if epsg != 4326 else 8
+    collection = {"type": "FeatureCollection", "name": path.stem}
+    if epsg != 4326:
+        collection["crs"] = {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::{}".format(epsg)}}
+    collection["features"] = [
+        {
+            "type": "Feature",
+            "id": feature_id,
+            "properties": properties,
+            "geometry": mapping(_round(geometry, digits)),
+        }
+        for feature_id, geometry, properties in features
+    ]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(collection, separators=(",", ":")) + "\n", encoding="utf-8")
+
+
+def _round(geometry, digits):
+    """Round every coordinate of a geometry to ``digits`` decimals."""
+    return shapely.transform(geometry, lambda xy: np.round(xy, digits))
+
+
+def to_geographic(geometry):
+    """Transform a geometry from EPSG:2180 to EPSG:4326 (longitude, latitude)."""
+    transformer = pyproj.Transformer.from_crs(PROJECTED, 4326, always_xy=True)
+    return shapely.transform(geometry, lambda xy: np.column_stack(transformer.transform(xy[:, 0], xy[:, 1])))
+
+
+def sample_layers():
+    """Return the layers shared by the demo and the tests: ``{name: [(id, geometry, properties)]}``."""
+    axis = meander_axis()
+    start, end = end_points(axis, SPLIT_POINT_OFFSET)
+    island = island_channel()
+    bank_axis = meander_axis(length=900.0, amplitude=80.0, wavelength=450.0, samples=73)
+    bank_a = bank_axis.offset_curve(25.0, quad_segs=4)
+    bank_b = bank_axis.offset_curve(-25.0, quad_segs=4)
+    second_axis = LineString([(0, 0), (600, 40)])
+    second_a = second_axis.offset_curve(15.0)
+    second_b_coords = np.asarray(second_axis.offset_curve(-15.0).coords)
+    middle = 0.5 * (second_b_coords[0] + second_b_coords[-1])
+    second_b = MultiLineString([[second_b_coords[0], middle], [middle, second_b_coords[-1]]])
+    return {
+        "river": [
+            (1, shifted(river(axis, RIVER_HALF_WIDTH)), {"name": "Meander", "kind": "river"}),
+            (2, shifted(island, dy=600.0), {"name": "Island channel", "kind": "river"}),
+        ],
+        "split_points": [
+            (1, shifted(start), {"role": "start"}),
+            (2, shifted(end), {"role": "end"}),
+        ],
+        "banks_a": [
+            (1, shifted(bank_a, dy=-600.0), {"reach": "R1", "side": "left"}),
+            (2, shifted(second_a, dy=-1000.0), {"reach": "R2", "side": "left"}),
+        ],
+        "banks_b": [
+            (1, shifted(second_b, dy=-1000.0), {"reach": "R2", "side": "right"}),
+            (2, shifted(bank_b.reverse(), dy=-600.0), {"reach": "R1", "side": "right"}),
+        ],
+    }
+
+
+def bad_layers():
+    """Return the layers of the bad-input tests."""
+    bowtie = Polygon([(0, 0), (200, 60), (200, 0), (0, 60)])
+    straight = Polygon([(0, 0), (300, 0), (300, 40), (0, 40)])
+    good = Polygon([(0, 0), (300, 0), (300, 40), (0, 40)])
+    return {
+        "bad_polygons": [
+            (1, shifted(bowtie, dy=2000.0), {"name": "bowtie"}),
+            (2, shifted(straight, dy=2100.0), {"name": "three split points"}),
+            (3, shifted(good, dy=2200.0), {"name": "good"}),
+        ],
+        "bad_split_points": [
+            (1, shifted(Point(0, 20), dy=2100.0), {}),
+            (2, shifted(Point(300, 20), dy=2100.0), {}),
+            (3, shifted(Point(150, 0), dy=2100.0), {}),
+            (4, shifted(Point(0, 20), dy=2200.0), {}),
+            (5, shifted(Point(300, 20), dy=2200.0), {}),
+        ],
+        "crossing_a": [(1, shifted(LineString([(0, 0), (400, 100)]), dy=3000.0), {})],
+        "crossing_b": [(1, shifted(LineString([(0, 100), (400, 0)]), dy=3000.0), {})],
+        "multipart": [
+            (
+                1,
+                shifted(
+                    shapely.MultiPolygon(
+                        [
+                            Polygon([(0, 0), (400, 0), (400, 50), (0, 50)]),
+                            Polygon([(0, 200), (400, 200), (400, 230), (0, 230)]),
+                        ]
+                    ),
+                    dy=4000.0,
+                ),
+                {"name": "two reaches"},
+            )
+        ],
+    }
+
+
+def write_model(path):
+    """Write the graphical model "Fix geometries -> IncirCu -> Smooth" used by the tests."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from qgis.core import (
+        QgsApplication,
+        QgsProcessingModelAlgorithm,
+        QgsProcessingModelChildAlgorithm,
+        QgsProcessingModelChildParameterSource,
+        QgsProcessingModelOutput,
+        QgsProcessingModelParameter,
+        QgsProcessingParameterFeatureSource,
+        QgsProcessing,
+    )
+    from qgis.PyQt.QtCore import QPointF
+
+    application = QgsApplication([], False)
+    application.initQgis()
+    model = QgsProcessingModelAlgorithm("Fix, centerline, smooth", "IncirCu tests", "incircutests")
+    for name, label, kind, optional in (
+        ("polygons", "Polygons", QgsProcessing.SourceType.TypeVectorPolygon, False),
+        ("split_points", "Split points", QgsProcessing.SourceType.TypeVectorPoint, True),
+    ):
+        parameter = QgsProcessingParameterFeatureSource(name, label, [kind], optional=optional)
+        model.addModelParameter(parameter, QgsProcessingModelParameter(name))
+
+    def child(child_id, algorithm_id, sources, position):
+        step = QgsProcessingModelChildAlgorithm(algorithm_id)
+        step.setChildId(child_id)
+        step.setDescription(child_id)
+        step.setPosition(QPointF(*position))
+        for parameter_name, source in sources.items():
+            step.addParameterSources(parameter_name, [source])
+        return step
+
+    fixed = child(
+        "fix",
+        "native:fixgeometries",
+        {"INPUT": QgsProcessingModelChildParameterSource.fromModelParameter("polygons")},
+        (200, 100),
+    )
+    centerline = child(
+        "centerline",
+        "incircu:polygoncenterline",
+        {
+            "INPUT": QgsProcessingModelChildParameterSource.fromChildOutput("fix", "OUTPUT"),
+            "SPLIT_POINTS": QgsProcessingModelChildParameterSource.fromModelParameter("split_points"),
+            "SNAP_TOLERANCE": QgsProcessingModelChildParameterSource.fromStaticValue(1.0),
+            "SPACING": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
+            "ADD_M": QgsProcessingModelChildParameterSource.fromStaticValue(False),
+        },
+        (200, 200),
+    )
+    smooth = child(
+        "smooth",
+        "native:smoothgeometry",
+        {
+            "INPUT": QgsProcessingModelChildParameterSource.fromChildOutput("centerline", "OUTPUT"),
+            "ITERATIONS": QgsProcessingModelChildParameterSource.fromStaticValue(2),
+            "OFFSET": QgsProcessingModelChildParameterSource.fromStaticValue(0.25),
+            "MAX_ANGLE": QgsProcessingModelChildParameterSource.fromStaticValue(180.0),
+        },
+        (200, 300),
+    )
+    output = QgsProcessingModelOutput("smoothed", "Smoothed centerlines")
+    output.setChildOutputName("OUTPUT")
+    output.setChildId("smooth")
+    smooth.setModelOutputs({"smoothed": output})
+    for step in (fixed, centerline, smooth):
+        model.addChildAlgorithm(step)
+    model.updateDestinationParameters()
+    if not model.toFile(str(path)):
+        raise RuntimeError("could not write {}".format(path))
+    application.exitQgis()
+
+
+def main():
+    """Write every file."""
+    samples = sample_layers()
+    for name, features in samples.items():
+        write_layer(SAMPLE_FOLDER / "{}.geojson".format(name), features, PROJECTED)
+        write_layer(FIXTURE_FOLDER / "{}_2180.geojson".format(name), features, PROJECTED)
+    for name in ("river", "split_points", "banks_b"):
+        geographic = [(fid, to_geographic(geometry), props) for fid, geometry, props in samples[name]]
+        write_layer(FIXTURE_FOLDER / "{}_4326.geojson".format(name), geographic, 4326)
+    for name, features in bad_layers().items():
+        write_layer(FIXTURE_FOLDER / "{}_2180.geojson".format(name), features, PROJECTED)
+    write_model(FIXTURE_FOLDER / "fix_centerline_smooth.model3")
+
+
+if __name__ == "__main__":
+    main()

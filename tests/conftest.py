@@ -1,0 +1,118 @@
+"""Shared fixtures of the plugin tests: the plugin loaded exactly as QGIS loads it, and its provider.
+
+pytest-qgis starts a ``QgsApplication`` before this file is imported (offscreen when ``QT_QPA_PLATFORM`` is
+``offscreen``, which ``make test`` sets). The repository root is the plugin folder; QGIS imports it as the
+package ``incircu``, so the fixtures put a folder holding an ``incircu`` symlink to the repository on the
+plugin path and ``sys.path``.
+"""
+
+import configparser
+import os
+import shutil
+import subprocess
+import sys
+import sysconfig
+from pathlib import Path
+
+import pytest
+
+REPOSITORY = Path(__file__).resolve().parent.parent
+DATA = REPOSITORY / "tests" / "data"
+ARTIFACTS = REPOSITORY / "tests" / "artifacts"
+PLUGIN_NAME = "incircu"
+
+
+def metadata():
+    """Return the ``[general]`` section of the repository's ``metadata.txt``."""
+    parser = configparser.ConfigParser(interpolation=None)
+    parser.read(REPOSITORY / "metadata.txt", encoding="utf-8")
+    return parser["general"]
+
+
+def version_number(text):
+    """Turn ``"3.22"`` or ``"3.22.16-Białowieża"`` into QGIS's integer form (32200, 32216)."""
+    numbers = [int("".join(c for c in piece if c.isdigit()) or 0) for piece in text.split("-")[0].split(".")]
+    numbers += [0] * (3 - len(numbers))
+    return numbers[0] * 10000 + numbers[1] * 100 + numbers[2]
+
+
+@pytest.fixture(scope="session")
+def plugin_folder(tmp_path_factory):
+    """A folder holding only an ``incircu`` symlink to the repository (what ``QGIS_PLUGINPATH`` points at)."""
+    folder = tmp_path_factory.mktemp("plugins")
+    (folder / PLUGIN_NAME).symlink_to(REPOSITORY, target_is_directory=True)
+    return folder
+
+
+@pytest.fixture(scope="session")
+def loaded_plugin(qgis_app, qgis_processing, qgis_iface, plugin_folder):  # noqa: ARG001 - fixtures start QGIS
+    """The IncirCu plugin object, imported and started by ``qgis.utils`` as the QGIS desktop does."""
+    import qgis.utils
+
+    sys.path.insert(0, str(plugin_folder))
+    qgis.utils.plugin_paths.insert(0, str(plugin_folder))
+    qgis.utils.iface = qgis_iface
+    qgis.utils.updateAvailablePlugins()
+    assert PLUGIN_NAME in qgis.utils.available_plugins
+    assert qgis.utils.loadPlugin(PLUGIN_NAME)
+    assert qgis.utils.startPlugin(PLUGIN_NAME)
+    yield qgis.utils.plugins[PLUGIN_NAME]
+    qgis.utils.unloadPlugin(PLUGIN_NAME)
+
+
+@pytest.fixture(scope="session")
+def provider(loaded_plugin):  # noqa: ARG001 - the plugin registers the provider
+    """The registered IncirCu Processing provider."""
+    from qgis.core import QgsApplication
+
+    registered = QgsApplication.processingRegistry().providerById(PLUGIN_NAME)
+    assert registered is not None
+    return registered
+
+
+@pytest.fixture(scope="session")
+def artifacts():
+    """Folder for files a person may want to look at after the tests (dialog screenshots)."""
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    return ARTIFACTS
+
+
+def qgis_process_executable():
+    """Return the ``qgis_process`` binary (Debian's wrapper script is broken, its ``.bin`` works)."""
+    for name in ("qgis_process.bin", "qgis_process"):
+        found = shutil.which(name)
+        if found:
+            return found
+    raise RuntimeError("qgis_process is not installed: run `make setup`")
+
+
+@pytest.fixture(scope="session")
+def qgis_process(plugin_folder, tmp_path_factory):
+    """Run ``qgis_process`` with the plugin enabled in an isolated profile.
+
+    Returns
+    -------
+    callable
+        ``run(*arguments)`` -> ``subprocess.CompletedProcess`` (text output, never raising on failure).
+    """
+    profile = tmp_path_factory.mktemp("qgis_profile")
+    environment = dict(os.environ)
+    site_packages = sysconfig.get_paths()["purelib"]
+    environment.update(
+        {
+            "QT_QPA_PLATFORM": "offscreen",
+            "QGIS_CUSTOM_CONFIG_PATH": str(profile),
+            "QGIS_PLUGINPATH": str(plugin_folder),
+            "PYTHONPATH": os.pathsep.join(filter(None, [site_packages, os.environ.get("PYTHONPATH")])),
+        }
+    )
+    executable = qgis_process_executable()
+
+    def run(*arguments):
+        return subprocess.run(
+            [executable, *arguments], env=environment, capture_output=True, text=True, timeout=600, check=False
+        )
+
+    enabled = run("plugins", "enable", PLUGIN_NAME)
+    assert enabled.returncode == 0, enabled.stdout + enabled.stderr
+    return run
