@@ -1,22 +1,41 @@
 """IncirCu geometry core: the Curve of Incircles, an unbranched subset of the medial axis.
 
 Imports only numpy, shapely (>= 2.0) and pyproj; never QGIS.
+
+Example
+-------
+>>> from shapely.geometry import box
+>>> from incircu_plugin.core import polygon_centerline
+>>> result = polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)])
+>>> result.line.length, float(result.widths.max())
+(100.0, 10.0)
 """
 
+from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_centerlines, polygon_centerline
 from .chains import orient_bank_lines, split_polygon
+from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
+from .geodesy import LocalProjection
 
 __all__ = [
+    "ISLAND_MODES",
     "Cancelled",
     "CenterlineResult",
     "ChainError",
     "CrossingLinesError",
+    "EndsResult",
     "IncirCuError",
     "InvalidGeometryError",
+    "LocalProjection",
+    "PartOutcome",
     "SplitPointError",
     "centerline_from_chains",
     "default_spacing",
+    "find_ends",
+    "lines_centerline",
+    "multipolygon_centerlines",
     "orient_bank_lines",
+    "polygon_centerline",
     "split_polygon",
 ]

@@ -61,6 +61,8 @@ class CenterlineResult:
         For each vertex, a point where its incircle touches the first and the second chain.
     ends_found : bool
         True when the ends were found automatically rather than given.
+    notes : tuple of str
+        Things the user should know about this result (e.g. the shape is not elongated).
     """
 
     line: LineString
@@ -68,6 +70,7 @@ class CenterlineResult:
     foot_a: np.ndarray
     foot_b: np.ndarray
     ends_found: bool = False
+    notes: tuple = ()
 
     @property
     def widths(self):
@@ -117,6 +120,8 @@ class _Boundary:
         delta = self.end - self.start
         self.length = np.hypot(*delta.T)
         self.unit = delta / self.length[:, None]
+        self.start_x, self.start_y = self.start[:, 0].copy(), self.start[:, 1].copy()
+        self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
         self.tree = shapely.STRtree(shapely.linestrings(np.stack([self.start, self.end], axis=1)))
 
 
@@ -190,46 +195,46 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     )
 
 
-def _first_contacts(point, direction, scale, boundary, segment):
-    """First contact of each (sample, segment) pair.
+def _first_contacts(px, py, bx, by, scale, boundary, segment):
+    """First contact ``t`` of each (sample, segment) pair, inf when the disk family never touches it.
 
-    Returns ``t`` (inf when the disk family never touches the segment), the contact point and its arc
-    length along the segment's chain.
+    ``(px, py)`` is the sample point, ``(bx, by)`` its unit direction, ``scale`` the radius per unit of
+    ``t``. Returns ``t`` and where on the segment the contact is, as a length from its start.
     """
-    start, unit, length = boundary.start[segment], boundary.unit[segment], boundary.length[segment]
-    end = boundary.end[segment]
+    ax, ay = boundary.start_x[segment], boundary.start_y[segment]
+    ux, uy = boundary.unit_x[segment], boundary.unit_y[segment]
+    length = boundary.length[segment]
     squeeze = 1.0 - scale * scale
+    dx, dy = px - ax, py - ay
+    along_p = dx * ux + dy * uy
+    height = dx * -uy + dy * ux
 
-    def through_vertex(vertex):
-        offset = point - vertex
-        beta = np.einsum("ij,ij->i", direction, offset)
-        squared = np.einsum("ij,ij->i", offset, offset)
+    def through_vertex(offset_along):
+        # Offset of the point from the vertex, in the segment's frame: (along_p - offset_along, height).
+        ox = along_p - offset_along
+        beta = (bx * ux + by * uy) * ox + (by * ux - bx * uy) * height
+        squared = ox * ox + height * height
         disc = beta * beta - squeeze * squared
         with np.errstate(divide="ignore", invalid="ignore"):
             t = squared / (np.sqrt(np.maximum(disc, 0.0)) - beta)
         return np.where((beta < 0) & (disc >= 0), t, np.inf)
 
-    t_start = through_vertex(start)
-    t_end = through_vertex(end)
+    t_start = through_vertex(0.0)
+    t_end = through_vertex(length)
 
-    normal = _left_normal(unit)
-    height = np.einsum("ij,ij->i", normal, point - start)
-    flip = np.where(height < 0, -1.0, 1.0)
-    height *= flip
-    normal *= flip[:, None]
-    denominator = scale - np.einsum("ij,ij->i", normal, direction)
+    side = np.where(height < 0, -1.0, 1.0)
+    normal_b = side * (by * ux - bx * uy)
+    distance = side * height
+    denominator = scale - normal_b
     with np.errstate(divide="ignore", invalid="ignore"):
-        t_tangent = height / denominator
-    centre = point + t_tangent[:, None] * direction
-    touch = centre - (scale * t_tangent)[:, None] * normal
-    along = np.einsum("ij,ij->i", touch - start, unit)
-    valid = (height > 0) & (denominator > 1e-12) & (along >= 0) & (along <= length)
+        t_tangent = distance / denominator
+        along = along_p + t_tangent * (bx * ux + by * uy)
+    valid = (distance > 0) & (denominator > 1e-12) & (along >= 0) & (along <= length)
     t_tangent = np.where(valid, t_tangent, np.inf)
 
     t = np.minimum(np.minimum(t_start, t_end), t_tangent)
-    contact = np.where((t == t_tangent)[:, None], touch, np.where((t == t_start)[:, None], start, end))
     along = np.where(t == t_tangent, along, np.where(t == t_start, 0.0, length))
-    return t, contact, boundary.segment_position[segment] + along
+    return t, along
 
 
 def _group_minimum(group, values, size):
@@ -250,14 +255,13 @@ def _solve_chunk(samples, index, boundary, own_chain, trial_radius, limit, floor
     found = {"sample": [], "t": [], "contact": [], "position": []}
     while len(active):
         centre = point[active] + radius[active, None] * direction[active]
-        reach = scale[active] * radius[active] * (1.0 + 1e-9)
-        low = np.minimum(centre - reach[:, None], point[active])
-        high = np.maximum(centre + reach[:, None], point[active])
-        query, segment = boundary.tree.query(shapely.box(low[:, 0], low[:, 1], high[:, 0], high[:, 1]))
+        query, segment = boundary.tree.query(
+            shapely.points(centre), predicate="dwithin", distance=radius[active] * (1.0 + 1e-9)
+        )
         pair = active[query]
         sample = index[pair]
-        t, contact, position = _first_contacts(
-            point[pair], direction[pair], scale[pair], boundary, segment
+        t, along = _first_contacts(
+            point[pair, 0], point[pair, 1], direction[pair, 0], direction[pair, 1], scale[pair], boundary, segment
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
         t[own_segment | (t <= floor)] = np.inf
@@ -276,10 +280,13 @@ def _solve_chunk(samples, index, boundary, own_chain, trial_radius, limit, floor
         winner_pair = np.flatnonzero(winner)
         _, first = np.unique(pair[winner_pair], return_index=True)
         chosen = winner_pair[first]
+        chosen_segment = segment[chosen]
         found["sample"].append(index[pair[chosen]])
         found["t"].append(t[chosen])
-        found["contact"].append(contact[chosen])
-        found["position"].append(position[chosen])
+        found["contact"].append(
+            boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
+        )
+        found["position"].append(boundary.segment_position[chosen_segment] + along[chosen])
 
         pending = active[~settled]
         best = best[~settled]
@@ -428,7 +435,7 @@ def centerline_from_chains(
     boundary = _Boundary(local)
     width = max(typical_width(*local), merge)
     fan_step = min(MAX_FAN_STEP, 2.0 * min(spacings) / width)
-    trial_radius = 0.5 * width
+    trial_radius = 0.625 * width
     limit = 4.0 * extent
     floor = 1e-12 * extent
 

@@ -1,0 +1,199 @@
+"""Public entry points: the centerline of a polygon, of a multipart polygon, and between two lines."""
+
+from dataclasses import dataclass, replace
+from typing import Optional
+
+import numpy as np
+import shapely
+from shapely.geometry import MultiPolygon, Point, Polygon
+
+from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
+from .engine import CenterlineResult, centerline_from_chains
+from .ends import find_ends
+from .errors import IncirCuError, InvalidGeometryError, SplitPointError
+
+#: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
+#: or islands are ignored (the line may cross them).
+ISLAND_MODES = ("main_channel", "ignore")
+
+
+def polygon_centerline(
+    polygon,
+    split_points=None,
+    *,
+    spacing=None,
+    samples_per_chain=None,
+    snap_tolerance=None,
+    islands="main_channel",
+    progress=None,
+):
+    """Centerline of a polygon between two points of its boundary.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units; holes are islands.
+    split_points : sequence of two Point or (x, y), optional
+        The ends of the centerline, on the exterior ring. None or empty: found by :func:`find_ends`.
+    spacing : float, optional
+        Distance between samples along the boundary, CRS units; None or 0: :func:`default_spacing`.
+    samples_per_chain : int, optional
+        Instead of ``spacing``, this many equidistant samples on each side.
+    snap_tolerance : float, optional
+        Largest distance, CRS units, between a split point and the exterior ring; default ``1e-6`` of
+        the polygon's extent.
+    islands : {"main_channel", "ignore"}
+        ``"main_channel"``: the line goes around every island on the side of the wider channel (each island
+        joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped.
+    progress : callable, optional
+        See :func:`centerline_from_chains`.
+
+    Returns
+    -------
+    CenterlineResult
+        ``foot_a`` lies on the boundary counter-clockwise from the first split point.
+
+    Raises
+    ------
+    InvalidGeometryError, SplitPointError, ChainError, IncirCuError
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> result = polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=1.0)
+    >>> result.line.coords[0], result.line.coords[-1], float(result.widths.max())
+    ((0.0, 5.0), (100.0, 5.0), 10.0)
+    """
+    validate_polygon(polygon)
+    if islands not in ISLAND_MODES:
+        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    notes = []
+    ends_found = split_points is None or len(split_points) == 0
+    if ends_found:
+        ends = find_ends(polygon)
+        split_points = (ends.start, ends.end)
+        if not ends.elongated:
+            notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
+    c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
+    if islands == "main_channel" and polygon.interiors:
+        from .islands import bridge_islands
+
+        c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
+    result = centerline_from_chains(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress
+    )
+    return replace(result, ends_found=ends_found, notes=tuple(notes))
+
+
+def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):
+    """Centerline between two lines, such as the two banks of a river.
+
+    The lines are oriented so their starts face each other; the centerline runs from the midpoint of the
+    gap between their starts to the midpoint of the gap between their ends.
+
+    Parameters
+    ----------
+    line_a, line_b : LineString or array_like of shape (n, 2)
+        The two lines, CRS units; they must not cross or touch.
+    spacing, samples_per_chain, progress
+        See :func:`polygon_centerline`.
+
+    Returns
+    -------
+    CenterlineResult
+        ``foot_a`` lies on ``line_a``, ``foot_b`` on ``line_b``.
+
+    Raises
+    ------
+    InvalidGeometryError, ChainError, CrossingLinesError
+
+    Examples
+    --------
+    >>> result = lines_centerline([(0, 0), (100, 0)], [(100, 8), (0, 8)], spacing=1.0)
+    >>> result.line.coords[0], float(result.radii.max())
+    ((0.0, 4.0), 4.0)
+    """
+    c1, c2 = orient_bank_lines(line_a, line_b)
+    return centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+
+
+@dataclass(frozen=True)
+class PartOutcome:
+    """What became of one part of a (multi)polygon.
+
+    Attributes
+    ----------
+    part_index : int
+        Index of the part in the input, from 0.
+    result : CenterlineResult or None
+        The centerline, or None when the part failed.
+    error : IncirCuError or None
+        Why the part failed.
+    """
+
+    part_index: int
+    result: Optional[CenterlineResult]
+    error: Optional[IncirCuError]
+
+
+def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None, **options):
+    """Centerline of each part of a polygon or multipolygon.
+
+    Each part takes the split points lying within ``snap_tolerance`` of its exterior ring: two of them are
+    its ends; none means its ends are found automatically; one or more than two is an error for that part.
+    A part that fails does not stop the others.
+
+    Parameters
+    ----------
+    geometry : Polygon or MultiPolygon
+        CRS units.
+    split_points : sequence of Point or (x, y), optional
+        Candidate split points for all parts; None: every part finds its ends.
+    snap_tolerance : float, optional
+        CRS units; default ``1e-6`` of the geometry's extent.
+    **options
+        Passed to :func:`polygon_centerline` (``spacing``, ``islands``, ``progress``, ...).
+
+    Returns
+    -------
+    list of PartOutcome
+        One per part, in input order.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+
+    Examples
+    --------
+    >>> from shapely.geometry import MultiPolygon, box
+    >>> parts = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
+    >>> outcomes = multipolygon_centerlines(parts, [(0, 2), (50, 2), (0, 12), (50, 12)], spacing=1.0)
+    >>> [round(o.result.length, 6) for o in outcomes]
+    [50.0, 50.0]
+    """
+    if geometry is None or geometry.is_empty:
+        raise InvalidGeometryError("The polygon is empty or null.")
+    if isinstance(geometry, Polygon):
+        parts = [geometry]
+    elif isinstance(geometry, MultiPolygon):
+        parts = list(geometry.geoms)
+    else:
+        raise InvalidGeometryError("Expected a polygon or multipolygon, got a {}.".format(geometry.geom_type))
+    if snap_tolerance is None:
+        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
+    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    outcomes = []
+    for index, part in enumerate(parts):
+        try:
+            mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
+            if len(mine) not in (0, 2):
+                raise SplitPointError(
+                    "Part {} has {} split points within {:.6g} of its boundary; it needs 2 (or none, to find"
+                    " its ends automatically).".format(index, len(mine), snap_tolerance)
+                )
+            result = polygon_centerline(part, mine or None, snap_tolerance=snap_tolerance, **options)
+            outcomes.append(PartOutcome(index, result, None))
+        except IncirCuError as error:
+            outcomes.append(PartOutcome(index, None, error))
+    return outcomes
