@@ -6,23 +6,30 @@ meandering river gets its two tips, a Y-shaped one the tips of its two longest a
 
 Rule, step by step (deterministic, about O(n log n) in the number ``n`` of boundary samples):
 
-1. **Skeleton.** The boundary (exterior and holes) is densified to a step of one eighth of the typical
-   width ``2 * area / perimeter`` (never more than ``MAX_SAMPLES`` samples). The Voronoi edges of these
-   samples that lie strictly inside the polygon form a graph close to the medial axis; edges that touch
-   the boundary or an island are dropped, so every path in the graph stays in the region and goes around
-   the islands.
-2. **Longest path.** A double sweep of Dijkstra (from the widest node to the farthest node ``a``, then from
+1. **Skeleton.** The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` and densified to
+   ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (never more than
+   ``MAX_SAMPLES`` samples), then triangulated with its edges as constraints (constrained Delaunay), so no
+   triangle crosses the boundary or lies on an island. The dual graph of the triangles, each placed at its
+   circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the skeleton: every
+   path in it stays in the region and goes around the islands.
+2. **Longest path.** A double sweep of Dijkstra (from the first node to the farthest node ``a``, then from
    ``a`` to the farthest node ``b``) gives the longest skeleton path ``a -> b``; it is exact when the
    skeleton is a tree (a polygon without holes) and a close approximation around islands.
 3. **Cap centring.** Near each end the path runs into a corner or a rounded cap, not to the middle of the
    end. Walking inward from the tip, ``d`` is the distance travelled (plus the tip's own clearance) and
-   ``r`` the radius of the largest inscribed disk there. While ``d <= CAP_REACH * r`` the disk still
-   reaches back to the tip: the path is inside the end cap (a corner of 80 degrees or blunter, or a rounded
-   cap). The *last trunk point* ``T`` is where ``d`` first exceeds ``CAP_REACH * r``. The end is where the
-   trunk's continuation leaves the polygon's exterior ring: the ray from ``T`` in the direction of the trunk (from the
-   trunk point one radius further in, through ``T``) meets the boundary there. For a rectangle this is the
-   midpoint of the short side, for a flat-capped channel the middle of the cap, for a rounded cap its apex
-   and for a pointed end the point itself.
+   ``r`` the radius of the largest inscribed disk there. The *last trunk point* ``T`` is the widest
+   skeleton junction (a triangle with no side on the boundary: where the branches from the two corners of a
+   flat cap, or the fan of a rounded cap, meet the trunk) with ``d <= CAP_WINDOW * r``. Without such a
+   junction (a pointed end), ``T`` is where ``d`` first exceeds ``CAP_REACH * r``: up to there the disk
+   still reaches back to the tip, so the path is in the end cap. Its disk touches the
+   two banks at ``L`` and ``R`` (the boundary points nearest to ``T +- r * n``, ``n`` normal to the trunk),
+   and the trunk's continuation (the ray from ``T`` perpendicular to ``L - R``, the medial-axis tangent)
+   leaves the exterior ring at ``X``. The *end cap* is the arc of the exterior ring from ``R`` to ``L``
+   through ``X`` (``X`` itself is the end if that arc were over half the ring). Its *corners* are the
+   vertices where the boundary turns by ``CORNER_TURN`` or more towards the inside. The end is the
+   arc-length midpoint between the first and last corner (a flat or oblique cut: the middle of the cut,
+   the midpoint of a rectangle's short side), the corner itself when there is one (a pointed end), or the
+   arc-length midpoint of the whole cap when there is none (a rounded cap: its apex).
 
 The *start* is the end with the smaller ``x`` (then smaller ``y``) coordinate, so the answer does not depend
 on where the ring starts or which way it turns.
@@ -30,7 +37,6 @@ on where the ring starts or which way it turns.
 
 import heapq
 from dataclasses import dataclass
-from typing import Optional
 
 import numpy as np
 import shapely
@@ -42,12 +48,24 @@ from .errors import InvalidGeometryError
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
 SAMPLES_PER_WIDTH = 8
 
+#: Tolerance of the simplification before sampling, as a fraction of the typical width (it bounds the
+#: error this adds to the ends, and keeps densely digitised outlines fast).
+SIMPLIFY_FRACTION = 1e-3
+
 #: Upper bound on the number of boundary samples (the step grows when the boundary is longer).
 MAX_SAMPLES = 200_000
 
 #: ``d / r`` below which a skeleton point still belongs to the end cap: ``1 / sin(40 deg)``, so corners of
 #: 80 degrees or blunter (a flat cap meets its banks at about 90 degrees) and rounded caps are centred.
 CAP_REACH = 1.0 / np.sin(np.radians(40.0))
+
+#: Left turn of a counter-clockwise exterior ring at which a vertex of an end cap counts as a corner
+#: (an interior angle of 140 degrees or sharper), radians.
+CORNER_TURN = np.radians(40.0)
+
+#: Reach, in radii of the inscribed disk, of the window next to a tip in which the skeleton junction where
+#: the corner branches of an end cap meet is looked for (a right-angled corner's branch meets at 1.41).
+CAP_WINDOW = 3.0
 
 #: Ratio of the longest skeleton path to the largest inscribed diameter under which a shape is not
 #: elongated (a circle scores 1, a square about 1.4, a 2:1 rectangle about 2.4).
@@ -75,7 +93,7 @@ class EndsResult:
     start: Point
     end: Point
     elongated: bool
-    trunk: Optional[LineString] = None
+    trunk: LineString = None
 
 
 def find_ends(polygon):
@@ -109,22 +127,20 @@ def find_ends(polygon):
     validate_polygon(polygon)
     bounds = np.asarray(polygon.bounds, dtype=float)
     origin = (bounds[:2] + bounds[2:]) / 2.0
-    local = shapely.transform(polygon, lambda xy: xy - origin)
+    local = shapely.geometry.polygon.orient(shapely.transform(polygon, lambda xy: xy - origin), 1.0)
     extent = extent_of(bounds.reshape(2, 2))
-    samples, segments = _boundary_samples(local)
-    nodes, edges = _skeleton_graph(local, samples)
+    nodes, edges, step = _skeleton_graph(local)
     if len(edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
-    radii = shapely.STRtree(segments).query_nearest(
-        shapely.points(nodes), return_distance=True, all_matches=False
-    )[1]
-    path = _longest_path(nodes, edges, radii)
+    path = _longest_path(nodes, edges)
     trunk = nodes[path]
-    trunk_radii = radii[path]
+    trunk_radii = _clearance(local, trunk)
+    junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
     along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trunk, axis=0).T))])
-    step = _step(local)
-    first = _centred_end(local, trunk, trunk_radii, along, extent, step)
-    second = _centred_end(local, trunk[::-1], trunk_radii[::-1], along[-1] - along[::-1], extent, step)
+    first = _centred_end(local, trunk, trunk_radii, junction, along, extent, step)
+    second = _centred_end(
+        local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], extent, step
+    )
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
     elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
@@ -137,15 +153,20 @@ def find_ends(polygon):
     )
 
 
-def _step(polygon):
-    """Return the densification step, CRS units, for a polygon centred on the origin."""
-    perimeter = polygon.length
-    width = 2.0 * polygon.area / perimeter
-    return max(width / SAMPLES_PER_WIDTH, perimeter / MAX_SAMPLES)
+def _typical_width(polygon):
+    """Return ``2 * area / perimeter``, CRS units: about the width of an elongated polygon."""
+    return 2.0 * polygon.area / polygon.length
 
 
-def _boundary_samples(polygon):
-    """Return the densified boundary: unique sample points and the boundary's segments.
+def _skeleton_graph(polygon):
+    """Return a skeleton of the polygon: the dual graph of a constrained Delaunay triangulation.
+
+    The boundary is simplified by ``SIMPLIFY_FRACTION`` of the typical width (topology preserved), then
+    densified to ``1 / SAMPLES_PER_WIDTH`` of it, and triangulated with its edges as constraints, so every
+    triangle lies in the polygon and none in a hole. Each triangle is a node placed at its circumcentre (a
+    Voronoi vertex of the samples, on the approximate medial axis), or at its centroid when the circumcentre
+    falls outside the polygon; two nodes are linked when their triangles share a side. The graph is
+    connected because the polygon is.
 
     Parameters
     ----------
@@ -154,53 +175,60 @@ def _boundary_samples(polygon):
 
     Returns
     -------
-    samples : ndarray of shape (m, 2)
-        Vertices of every ring after densification, without the closing duplicates.
-    segments : ndarray of LineString
-        The segments of every ring (their union is the boundary).
+    nodes : ndarray of shape (k, 2)
+        Skeleton vertices, CRS units.
+    edges : ndarray of shape (e, 2) of int
+        Node indices of each skeleton edge.
+    step : float
+        Densification step, CRS units.
     """
-    dense = shapely.segmentize(polygon, _step(polygon))
-    rings = [dense.exterior, *dense.interiors]
-    samples = []
-    segments = []
-    for ring in rings:
-        coordinates = shapely.get_coordinates(ring)
-        samples.append(coordinates[:-1])
-        segments.append(shapely.linestrings(np.stack([coordinates[:-1], coordinates[1:]], axis=1)))
-    return np.unique(np.concatenate(samples), axis=0), np.concatenate(segments)
+    width = _typical_width(polygon)
+    simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True)
+    step = max(width / SAMPLES_PER_WIDTH, simplified.length / MAX_SAMPLES)
+    dense = shapely.segmentize(simplified, step)
+    triangles = shapely.get_parts(shapely.constrained_delaunay_triangles(dense))
+    corners = shapely.get_coordinates(triangles).reshape(-1, 4, 2)[:, :3]
+    nodes = _circumcentres(corners)
+    shapely.prepare(polygon)
+    outside = ~shapely.contains_xy(polygon, nodes[:, 0], nodes[:, 1])
+    nodes[outside] = corners[outside].mean(axis=1)
+    vertex_ids = np.unique(corners.reshape(-1, 2), axis=0, return_inverse=True)[1].reshape(-1, 3)
+    sides = np.sort(
+        np.stack([vertex_ids[:, [0, 1]], vertex_ids[:, [1, 2]], vertex_ids[:, [2, 0]]], axis=1), axis=2
+    )
+    keys = (sides[..., 0].astype(np.int64) * (int(vertex_ids.max()) + 1) + sides[..., 1]).ravel()
+    owner = np.repeat(np.arange(len(corners)), 3)
+    order = np.argsort(keys, kind="stable")
+    keys, owner = keys[order], owner[order]
+    shared = np.flatnonzero(keys[1:] == keys[:-1])
+    edges = np.stack([owner[shared], owner[shared + 1]], axis=1)
+    return nodes, edges, step
 
 
-def _skeleton_graph(polygon, samples):
-    """Return the Voronoi skeleton of the boundary samples that lies strictly inside the polygon.
+def _circumcentres(corners):
+    """Return the circumcentres of triangles.
 
     Parameters
     ----------
-    polygon : Polygon
-        Valid polygon, CRS units.
-    samples : ndarray of shape (m, 2)
-        Boundary samples.
+    corners : ndarray of shape (t, 3, 2)
+        Triangle corners, CRS units (near the origin for accuracy).
 
     Returns
     -------
-    nodes : ndarray of shape (k, 2)
-        Skeleton vertices, sorted lexicographically.
-    edges : ndarray of shape (e, 2) of int
-        Node indices of each skeleton edge.
+    ndarray of shape (t, 2)
+        Circumcentres, CRS units; a flat triangle gets its centroid.
     """
-    voronoi = shapely.voronoi_polygons(shapely.multipoints(samples), only_edges=True)
-    ends = shapely.get_coordinates(shapely.get_parts(voronoi)).reshape(-1, 2, 2)
-    shapely.prepare(polygon)
-    inside = shapely.contains_xy(polygon, ends[:, 0, 0], ends[:, 0, 1]) & shapely.contains_xy(
-        polygon, ends[:, 1, 0], ends[:, 1, 1]
-    )
-    ends = ends[inside]
-    boundary = polygon.boundary
-    shapely.prepare(boundary)
-    ends = ends[~shapely.intersects(boundary, shapely.linestrings(ends))]
-    nodes, inverse = np.unique(ends.reshape(-1, 2), axis=0, return_inverse=True)
-    edges = inverse.reshape(-1, 2)
-    edges = edges[edges[:, 0] != edges[:, 1]]
-    return nodes, edges
+    a = corners[:, 0]
+    b = corners[:, 1] - a
+    c = corners[:, 2] - a
+    determinant = 2.0 * (b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0])
+    b2 = np.einsum("ij,ij->i", b, b)
+    c2 = np.einsum("ij,ij->i", c, c)
+    flat = np.abs(determinant) <= 1e-12 * np.maximum(b2, c2)
+    safe = np.where(flat, 1.0, determinant)
+    offset = np.stack([(c[:, 1] * b2 - b[:, 1] * c2) / safe, (b[:, 0] * c2 - c[:, 0] * b2) / safe], axis=1)
+    offset[flat] = ((b + c) / 3.0)[flat]
+    return a + offset
 
 
 def _dijkstra(adjacency, weights, source):
@@ -239,7 +267,18 @@ def _dijkstra(adjacency, weights, source):
     return np.asarray(distance), np.asarray(predecessor)
 
 
-def _longest_path(nodes, edges, radii):
+def _clearance(polygon, points):
+    """Return the distance of each point to the polygon's boundary (exterior and holes), CRS units."""
+    rings = [polygon.exterior, *polygon.interiors]
+    segments = []
+    for ring in rings:
+        coordinates = shapely.get_coordinates(ring)
+        segments.append(shapely.linestrings(np.stack([coordinates[:-1], coordinates[1:]], axis=1)))
+    tree = shapely.STRtree(np.concatenate(segments))
+    return tree.query_nearest(shapely.points(points), return_distance=True, all_matches=False)[1]
+
+
+def _longest_path(nodes, edges):
     """Return the node indices of the longest skeleton path found by a double Dijkstra sweep.
 
     Parameters
@@ -248,9 +287,6 @@ def _longest_path(nodes, edges, radii):
         Skeleton vertices, CRS units.
     edges : ndarray of shape (e, 2) of int
         Skeleton edges.
-    radii : ndarray of shape (k,)
-        Distance of each node to the boundary, CRS units; the sweep starts at the widest node (first one on
-        ties), so it runs in the main component of the skeleton.
 
     Returns
     -------
@@ -265,8 +301,7 @@ def _longest_path(nodes, edges, radii):
         weights[u].append(length)
         adjacency[v].append(u)
         weights[v].append(length)
-    source = int(np.argmax(radii))
-    distance, _ = _dijkstra(adjacency, weights, source)
+    distance, _ = _dijkstra(adjacency, weights, 0)
     first = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
     distance, predecessor = _dijkstra(adjacency, weights, first)
     last = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
@@ -285,7 +320,7 @@ def _interpolate(points, along, position):
     return points[index] + fraction * (points[index + 1] - points[index])
 
 
-def _centred_end(polygon, trunk, radii, along, extent, step):
+def _centred_end(polygon, trunk, radii, junction, along, extent, step):
     """Return the end at the start of ``trunk``, centred in its end cap (see the module docstring).
 
     Parameters
@@ -296,48 +331,136 @@ def _centred_end(polygon, trunk, radii, along, extent, step):
         Longest skeleton path, starting at the end to centre.
     radii : ndarray of shape (k,)
         Clearance of each trunk vertex, CRS units.
+    junction : ndarray of shape (k,) of bool
+        Whether each trunk vertex is a junction of the skeleton (three neighbours).
     along : ndarray of shape (k,)
         Arc length of each trunk vertex from the start, CRS units.
     extent : float
         Bounding-box diagonal of the polygon, CRS units (length of the ray).
     step : float
-        Densification step, CRS units (smallest look-back for the trunk direction).
+        Densification step, CRS units (smallest look-back and reach).
 
     Returns
     -------
     ndarray of shape (2,)
-        The end, on the polygon's boundary, CRS units.
+        The end, on the polygon's exterior ring, CRS units.
     """
     if len(trunk) < 2:
         return _nearest_boundary_point(polygon, trunk[0])
-    travelled = radii[0] + along
-    excess = travelled - CAP_REACH * radii
-    half = along[-1] / 2.0
-    outside = np.flatnonzero((excess > 0.0) & (along <= half))
-    if len(outside) == 0:
-        position = half
-    else:
-        index = int(outside[0])
-        if index == 0:
-            position = 0.0
-        else:
-            before, after = excess[index - 1], excess[index]
-            position = along[index - 1] + (along[index] - along[index - 1]) * (-before) / (after - before)
+    position = _last_trunk_position(radii, along, junction)
     last_trunk_point = _interpolate(trunk, along, position)
-    look_back = max(float(np.interp(position, along, radii)), 2.0 * step)
-    inward = _interpolate(trunk, along, position + look_back)
-    direction = last_trunk_point - inward
-    norm = float(np.hypot(*direction))
-    if norm <= 0.0:
-        direction = trunk[0] - inward
-        norm = float(np.hypot(*direction))
-    if norm <= 0.0:
+    radius = max(float(np.interp(position, along, radii)), step)
+    chord = last_trunk_point - _interpolate(trunk, along, position + max(radius, 2.0 * step))
+    if not np.any(chord):
+        chord = trunk[0] - last_trunk_point
+    if not np.any(chord):
         return _nearest_boundary_point(polygon, last_trunk_point)
-    ray = LineString([last_trunk_point, last_trunk_point + direction / norm * 2.0 * extent])
+    chord = chord / np.hypot(*chord)
+    normal = np.array([-chord[1], chord[0]])
+    left = _nearest_boundary_point(polygon, last_trunk_point + radius * normal)
+    right = _nearest_boundary_point(polygon, last_trunk_point - radius * normal)
+    tangent = np.array([left[1] - right[1], right[0] - left[0]])
+    tangent_norm = float(np.hypot(*tangent))
+    if tangent_norm <= 1e-9 * extent:
+        tangent = chord
+    else:
+        tangent = tangent / tangent_norm * np.sign(np.dot(tangent, chord) or 1.0)
+    ray = LineString([last_trunk_point, last_trunk_point + tangent * 2.0 * extent])
     hits = shapely.get_coordinates(shapely.intersection(ray, polygon.exterior))
     if len(hits) == 0:
         return _nearest_boundary_point(polygon, last_trunk_point)
-    return hits[int(np.argmin(np.hypot(*(hits - last_trunk_point).T)))]
+    exit_point = hits[int(np.argmin(np.hypot(*(hits - last_trunk_point).T)))]
+    return _cap_middle(polygon.exterior, left, right, exit_point)
+
+
+def _last_trunk_position(radii, along, junction):
+    """Return the arc length of the last trunk point ``T`` seen from the tip at ``along == 0``.
+
+    ``T`` is the widest junction of the skeleton (a triangle with no side on the boundary, where a corner
+    branch meets the trunk) within ``CAP_WINDOW`` radii of the tip; without one, the point where ``d`` first
+    exceeds ``CAP_REACH * r``.
+
+    Parameters
+    ----------
+    radii : ndarray of shape (k,)
+        Clearance of each trunk vertex, CRS units.
+    along : ndarray of shape (k,)
+        Arc length of each trunk vertex from the tip, CRS units.
+    junction : ndarray of shape (k,) of bool
+        Whether each trunk vertex is a junction of the skeleton.
+
+    Returns
+    -------
+    float
+        Arc length of ``T``, CRS units; at most half the path.
+    """
+    travelled = radii[0] + along
+    half = along[-1] / 2.0
+    candidates = np.flatnonzero(junction & (travelled <= CAP_WINDOW * radii) & (along <= half))
+    if len(candidates):
+        return float(along[candidates[int(np.argmax(radii[candidates]))]])
+    excess = travelled - CAP_REACH * radii
+    beyond = np.flatnonzero((excess > 0.0) & (along <= half))
+    if len(beyond) == 0:
+        return half
+    index = int(beyond[0])
+    if index == 0:
+        return 0.0
+    before, after = excess[index - 1], excess[index]
+    return float(along[index - 1] + (along[index] - along[index - 1]) * (-before) / (after - before))
+
+
+def _cap_middle(exterior, left, right, exit_point):
+    """Return the middle of the end cap: the ring arc from ``right`` to ``left`` through the exit.
+
+    Corners are the arc's vertices where a counter-clockwise ring turns left by ``CORNER_TURN`` or more.
+    With two or more corners (a flat or oblique cut) the end is the arc-length midpoint between the first
+    and the last corner; with one (a pointed end) it is that corner; with none (a rounded cap) it is the
+    arc-length midpoint of the whole arc.
+
+    Parameters
+    ----------
+    exterior : LinearRing
+        The polygon's exterior ring, counter-clockwise, CRS units.
+    left, right : ndarray of shape (2,)
+        Where the last trunk point's disk touches the two banks, CRS units.
+    exit_point : ndarray of shape (2,)
+        Where the trunk's continuation leaves the polygon, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (2,)
+        The end, CRS units; ``exit_point`` itself when the arc is more than half the ring.
+    """
+    perimeter = exterior.length
+    at_left, at_right, at_exit = (exterior.project(Point(xy)) for xy in (left, right, exit_point))
+    forward = (at_left - at_right) % perimeter
+    if (at_exit - at_right) % perimeter <= forward:
+        start, length = at_right, forward
+    else:
+        start, length = at_left, perimeter - forward
+    if length > perimeter / 2.0:
+        return exit_point
+    ring = shapely.get_coordinates(exterior)
+    step = np.diff(ring, axis=0)
+    keep = np.hypot(*step.T) > 0.0
+    vertices = ring[:-1][keep]
+    positions = np.concatenate([[0.0], np.cumsum(np.hypot(*step.T))])[:-1][keep]
+    incoming = vertices - np.roll(vertices, 1, axis=0)
+    outgoing = np.roll(vertices, -1, axis=0) - vertices
+    turn = np.arctan2(
+        incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
+        np.einsum("ij,ij->i", incoming, outgoing),
+    )
+    offset = (positions - start) % perimeter
+    corners = np.sort(offset[(offset > 0.0) & (offset < length) & (turn >= CORNER_TURN)])
+    if len(corners) == 1:
+        target = corners[0]
+    elif len(corners) > 1:
+        target = (corners[0] + corners[-1]) / 2.0
+    else:
+        target = length / 2.0
+    return np.asarray(exterior.interpolate((start + target) % perimeter).coords[0])
 
 
 def _nearest_boundary_point(polygon, xy):
