@@ -1,0 +1,361 @@
+"""Islands without loops: join every hole of a polygon to one of the two boundary chains.
+
+IncirCu needs exactly two chains. A polygon with islands (holes) has more boundary than that, so each island
+is joined to one chain through a *slit*: a zero-width cut from a point ``F`` of the chain (the slit's foot,
+inserted as a vertex of the chain) to a point ``Q`` of the island. The joined chain runs along its bank to
+``F``, out along the slit to ``Q``, once around the island back to ``Q``, back along the slit to ``F`` and on
+along its bank. For the engine the island is then part of that chain, so:
+
+* the narrow channel between the island and the chain it joined lies between two parts of the *same*
+  chain; no incircle there touches the other chain without crossing its own, so the centerline does not
+  enter it;
+* the centerline passes through the channel between the island and the *other* chain, stays one line from
+  end to end, never crosses the island, and every vertex's incircle is empty of the island too.
+
+Rule (documented, deterministic):
+
+1. Each island joins the chain it is nearer to (smallest distance between the island and the chain), so
+   the centerline goes around it on the side of the wider channel. When both distances are equal within
+   ``TIE_TOLERANCE`` of the extent, the island joins ``c1``.
+2. The slit is the shortest segment from the island to that chain which crosses no other island, neither
+   chain (it only touches its own chain at ``F``) and no earlier slit. Candidates are the nearest chain
+   points of every vertex of the island (its ring densified to ``1 / SLIT_CANDIDATES`` of its perimeter),
+   tried shortest first; if none is free, the other chain is tried.
+3. Islands are inserted in the order of their feet along the chain, so the chain stays ordered from its
+   start to its end. The island is traversed so that the region stays on the same side as along the
+   chain's bank (clockwise when the region is on the chain's left).
+
+The returned chains contain the slit twice, back and forth (coincident segments in opposite directions),
+so they touch themselves along the slit; they have no zero-length segments.
+"""
+
+import numpy as np
+import shapely
+from shapely.geometry import LinearRing, LineString, Polygon
+
+from .chains import COINCIDENCE_TOLERANCE, extent_of
+from .errors import IncirCuError, InvalidGeometryError, format_point
+
+#: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
+TIE_TOLERANCE = 1e-9
+
+#: Number of candidate slit starts spread along each island's ring (its vertices are always candidates).
+SLIT_CANDIDATES = 256
+
+
+def bridge_islands(c1, c2, holes):
+    """Join each island to the chain it is nearer to through a zero-width slit.
+
+    See the module docstring for the rule.
+
+    Parameters
+    ----------
+    c1, c2 : ndarray of shape (n, 2) or LineString
+        The two boundary chains, running in the same direction (as :func:`~.chains.split_polygon` or
+        :func:`~.chains.orient_bank_lines` return them), CRS units.
+    holes : sequence of (ndarray of shape (m, 2), LinearRing or Polygon)
+        The islands: rings (closed or not) or polygons (their exterior is used), CRS units. They must lie
+        between the chains and not touch each other.
+
+    Returns
+    -------
+    c1_bridged, c2_bridged : ndarray of shape (k, 2)
+        The chains with their islands spliced in, CRS units; same start and end points as the input.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If an island has fewer than 3 distinct points or non-finite coordinates.
+    IncirCuError
+        If an island cannot be reached from either chain without crossing another island or slit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> c1 = np.array([[0.0, 5.0], [0.0, 0.0], [100.0, 0.0], [100.0, 5.0]])
+    >>> c2 = np.array([[0.0, 5.0], [0.0, 10.0], [100.0, 10.0], [100.0, 5.0]])
+    >>> island = [(40.0, 2.0), (60.0, 2.0), (60.0, 4.0), (40.0, 4.0)]
+    >>> bridged_a, bridged_b = bridge_islands(c1, c2, [island])
+    >>> bridged_a[:6].tolist()
+    [[0.0, 5.0], [0.0, 0.0], [40.0, 0.0], [40.0, 2.0], [40.0, 4.0], [60.0, 4.0]]
+    >>> len(bridged_b) == len(c2)
+    True
+    """
+    chains = [_as_array(c1), _as_array(c2)]
+    rings = [_island_ring(hole, index) for index, hole in enumerate(holes)]
+    if not rings:
+        return chains[0].copy(), chains[1].copy()
+    extent = extent_of(*chains, *rings)
+    merge = COINCIDENCE_TOLERANCE * extent
+    region_on_left = _signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
+    lines = [LineString(chain) for chain in chains]
+    islands = shapely.polygons(rings)
+    count = len(rings)
+    # Hosts: 0 and 1 are the chains, 2 + j is island j once it has joined.
+    distance = np.full((count, count + 2), np.inf)
+    distance[:, 0] = shapely.distance(islands, lines[0])
+    distance[:, 1] = shapely.distance(islands, lines[1])
+    component = np.full(count + 2, -1)
+    component[:2] = (0, 1)
+    walks = [None] * count
+    joins = [[] for _ in range(count + 2)]
+    slits = []
+    for _ in range(count):
+        island_index, host, slit = _next_join(distance, component, islands, lines, slits, rings, walks, extent, merge)
+        island_point, foot = slit
+        slits.append(LineString([island_point, foot]))
+        component[2 + island_index] = component[host]
+        clockwise = region_on_left if component[host] == 0 else not region_on_left
+        walks[island_index] = _around(rings[island_index], island_point, clockwise, merge)
+        path = chains[host] if host < 2 else walks[host - 2]
+        joins[host].append((LineString(path).project(shapely.points(foot)), island_index, foot))
+        distance[island_index, :] = np.inf
+        unjoined = component[2:] < 0
+        distance[unjoined, 2 + island_index] = shapely.distance(islands[unjoined], islands[island_index])
+    detours = {}
+    for island_index in _reverse_join_order(joins, count):
+        walk = _splice(walks[island_index], joins[2 + island_index], detours, merge)
+        detours[island_index] = walk
+    return _splice(chains[0], joins[0], detours, merge), _splice(chains[1], joins[1], detours, merge)
+
+
+def _next_join(distance, component, islands, lines, slits, rings, walks, extent, merge):
+    """Pick the next island to join, its host and its slit (the nearest free pair, ties to ``c1``).
+
+    Parameters
+    ----------
+    distance : ndarray of shape (k, k + 2)
+        Distance, CRS units, from each island not yet joined to each host (the chains, then the joined
+        islands); ``inf`` elsewhere. Pairs whose every slit is blocked are set to ``inf`` here.
+    component : ndarray of shape (k + 2,)
+        Chain (0 or 1) each host belongs to, -1 for islands not yet joined.
+    islands : ndarray of Polygon
+        All islands.
+    lines : list of two LineString
+        The chains.
+    slits : list of LineString
+        Slits made so far.
+    rings : list of ndarray
+        Closed rings of the islands, CRS units.
+    walks : list of ndarray or None
+        Walk around each joined island.
+    extent : float
+        Extent of the data, CRS units (scale of the tie tolerance).
+    merge : float
+        Distance, CRS units, under which two points are the same.
+
+    Returns
+    -------
+    island_index : int
+    host : int
+        0 or 1 for a chain, ``2 + j`` for island ``j``.
+    slit : (ndarray of shape (2,), ndarray of shape (2,))
+        The slit's point on the island and its foot on the host.
+
+    Raises
+    ------
+    IncirCuError
+        If no island left can be joined without crossing something.
+    """
+    while True:
+        best = float(distance.min())
+        if not np.isfinite(best):
+            left = np.flatnonzero(component[2:] < 0)
+            where = islands[left[0]].representative_point().coords[0]
+            raise IncirCuError(
+                f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
+                " use the option to ignore islands."
+            )
+        islands_tied, hosts_tied = np.nonzero(distance <= best + TIE_TOLERANCE * extent)
+        pick = np.lexsort((islands_tied, hosts_tied, component[hosts_tied]))[0]
+        island_index, host = int(islands_tied[pick]), int(hosts_tied[pick])
+        if host < 2:
+            target = lines[host]
+            inside = None
+        else:
+            target = LineString(walks[host - 2])
+            inside = islands[host - 2]
+        others = [islands[j] for j in range(len(islands)) if j != island_index and j + 2 != host]
+        obstacles = others + [lines[c] for c in (0, 1) if c != host] + slits
+        slit = _free_slit(rings[island_index], islands[island_index], target, inside, obstacles, merge)
+        if slit is not None:
+            return island_index, host, slit
+        distance[island_index, host] = np.inf
+
+
+def _reverse_join_order(joins, count):
+    """Return island indices so that every island comes after the islands joined to it."""
+    order = []
+    stack = [entry[1] for host in (0, 1) for entry in joins[host]]
+    while stack:
+        island_index = stack.pop()
+        order.append(island_index)
+        stack.extend(entry[1] for entry in joins[2 + island_index])
+    return order[::-1]
+
+
+def _as_array(chain):
+    """Return a chain's vertices as a float array of shape (n, 2)."""
+    if isinstance(chain, shapely.Geometry):
+        return shapely.get_coordinates(chain).astype(float)
+    return np.asarray(chain, dtype=float)[:, :2].copy()
+
+
+def _island_ring(hole, index):
+    """Return an island's ring as a closed (m + 1, 2) array without zero-length segments.
+
+    Parameters
+    ----------
+    hole : ndarray of shape (m, 2), LinearRing or Polygon
+        The island, CRS units.
+    index : int
+        Its position in the input (for messages).
+
+    Returns
+    -------
+    ndarray of shape (m + 1, 2)
+        First vertex repeated at the end.
+    """
+    if isinstance(hole, Polygon):
+        hole = hole.exterior
+    if isinstance(hole, shapely.Geometry):
+        coordinates = shapely.get_coordinates(hole)
+    else:
+        coordinates = np.asarray(hole, dtype=float)[:, :2]
+    if len(coordinates) == 0 or not np.all(np.isfinite(coordinates)):
+        raise InvalidGeometryError(f"Island {index} is empty or has a NaN or infinite coordinate.")
+    if np.array_equal(coordinates[0], coordinates[-1]):
+        coordinates = coordinates[:-1]
+    step = np.hypot(*np.diff(np.concatenate([coordinates, coordinates[:1]]), axis=0).T)
+    coordinates = coordinates[step > 0.0]
+    if len(coordinates) < 3:
+        raise InvalidGeometryError(f"Island {index} has fewer than 3 distinct points.")
+    return np.concatenate([coordinates, coordinates[:1]])
+
+
+def _signed_area(ring):
+    """Return the signed area of a ring given as an (n, 2) array (closed or not): positive when counter-clockwise."""
+    x, y = ring[:, 0], ring[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def _free_slit(ring, island, target, inside, obstacles, merge):
+    """Return the shortest free slit from an island to its host, or None.
+
+    Parameters
+    ----------
+    ring : ndarray of shape (m + 1, 2)
+        The island's closed ring, CRS units.
+    island : Polygon
+        The island.
+    target : LineString
+        Where the slit may end: the host chain, or the walk around the host island.
+    inside : Polygon or None
+        The host island, whose inside the slit must not enter; None for a chain.
+    obstacles : list of Geometry
+        What the slit must not touch at all: other islands, the other chain, earlier slits.
+    merge : float
+        Distance, CRS units, under which two points are the same.
+
+    Returns
+    -------
+    (ndarray of shape (2,), ndarray of shape (2,)) or None
+        The slit's point ``Q`` on the island and its foot ``F`` on the host.
+    """
+    outline = LinearRing(ring)
+    dense = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
+    shortest = shapely.get_coordinates(shapely.shortest_line(outline, target))
+    starts = np.concatenate([shortest[:1], dense])
+    feet = shapely.get_coordinates(shapely.shortest_line(shapely.points(starts), target))[1::2]
+    feet[0] = shortest[1]
+    lengths = np.hypot(*(feet - starts).T)
+    order = np.argsort(lengths, kind="stable")
+    starts, feet, lengths = starts[order], feet[order], lengths[order]
+    long_enough = lengths > 2.0 * merge
+    direction = np.zeros_like(starts)
+    direction[long_enough] = (feet - starts)[long_enough] / lengths[long_enough, None]
+    inner = shapely.linestrings(np.stack([starts + merge * direction, feet - merge * direction], axis=1))
+    blocked = shapely.intersects(inner, island) | shapely.intersects(inner, target)
+    if inside is not None:
+        blocked |= shapely.intersects(inner, inside)
+    blocked &= long_enough
+    whole = shapely.linestrings(np.stack([starts, feet], axis=1))
+    whole[~long_enough] = shapely.points(feet[~long_enough])
+    if obstacles:
+        hit = shapely.STRtree(obstacles).query(whole, predicate="intersects")[0]
+        blocked[hit] = True
+    free = np.flatnonzero(~blocked)
+    if len(free) == 0:
+        return None
+    return starts[free[0]], feet[free[0]]
+
+
+def _splice(path, joins, detours, merge):
+    """Insert island detours into a path (a chain or the walk around an island) at their slit feet.
+
+    Parameters
+    ----------
+    path : ndarray of shape (n, 2)
+        The chain or walk, CRS units.
+    joins : list of (float, int, ndarray)
+        For each island joined to this path: its foot's arc length along the path, the island's index and
+        the foot ``F``.
+    detours : dict of int to ndarray
+        For each island, its complete walk from ``Q`` around (with its own islands spliced in) back to ``Q``.
+    merge : float
+        Distance, CRS units, under which two points are the same.
+
+    Returns
+    -------
+    ndarray of shape (k, 2)
+        Without zero-length segments.
+    """
+    if not joins:
+        return path.copy()
+    positions = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
+    pieces = []
+    done = 0
+    for position, island_index, foot in sorted(joins, key=lambda join: (join[0], join[1])):
+        after = min(max(int(np.searchsorted(positions, position, side="right")), done), len(path))
+        pieces.append(path[done:after])
+        done = after
+        pieces.append(np.concatenate([foot[None], detours[island_index], foot[None]]))
+    pieces.append(path[done:])
+    joined = np.concatenate(pieces)
+    step = np.hypot(*np.diff(joined, axis=0).T)
+    return joined[np.concatenate([[True], step > merge])]
+
+
+def _around(ring, start, clockwise, merge):
+    """Return an island's ring as a closed walk from ``start`` back to ``start`` in the asked direction.
+
+    Parameters
+    ----------
+    ring : ndarray of shape (m + 1, 2)
+        Closed ring of the island, CRS units.
+    start : ndarray of shape (2,)
+        A point on the ring (the slit's end ``Q``).
+    clockwise : bool
+        Direction of the walk.
+    merge : float
+        Distance, CRS units, under which ``start`` is an existing vertex.
+
+    Returns
+    -------
+    ndarray of shape (p, 2)
+        First and last rows equal ``start``.
+    """
+    if (_signed_area(ring) < 0.0) != clockwise:
+        ring = ring[::-1]
+    loop = ring[:-1]
+    line = LinearRing(ring)
+    position = line.project(shapely.points(start))
+    edges = np.hypot(*np.diff(ring, axis=0).T)
+    cumulative = np.concatenate([[0.0], np.cumsum(edges)])
+    nearest = int(np.argmin(np.hypot(*(loop - start).T)))
+    if np.hypot(*(loop[nearest] - start)) <= merge:
+        rolled = np.roll(loop, -nearest, axis=0)
+        return np.concatenate([rolled, rolled[:1]])
+    edge = int(np.clip(np.searchsorted(cumulative, position, side="right") - 1, 0, len(loop) - 1))
+    rolled = np.roll(loop, -(edge + 1), axis=0)
+    return np.concatenate([start[None], rolled, start[None]])
