@@ -138,9 +138,7 @@ def find_ends(polygon):
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
     along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trunk, axis=0).T))])
     first = _centred_end(local, trunk, trunk_radii, junction, along, extent, step)
-    second = _centred_end(
-        local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], extent, step
-    )
+    second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], extent, step)
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
     elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
@@ -193,9 +191,7 @@ def _skeleton_graph(polygon):
     outside = ~shapely.contains_xy(polygon, nodes[:, 0], nodes[:, 1])
     nodes[outside] = corners[outside].mean(axis=1)
     vertex_ids = np.unique(corners.reshape(-1, 2), axis=0, return_inverse=True)[1].reshape(-1, 3)
-    sides = np.sort(
-        np.stack([vertex_ids[:, [0, 1]], vertex_ids[:, [1, 2]], vertex_ids[:, [2, 0]]], axis=1), axis=2
-    )
+    sides = np.sort(np.stack([vertex_ids[:, [0, 1]], vertex_ids[:, [1, 2]], vertex_ids[:, [2, 0]]], axis=1), axis=2)
     keys = (sides[..., 0].astype(np.int64) * (int(vertex_ids.max()) + 1) + sides[..., 1]).ravel()
     owner = np.repeat(np.arange(len(corners)), 3)
     order = np.argsort(keys, kind="stable")

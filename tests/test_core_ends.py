@@ -1,0 +1,224 @@
+"""Automatic ends (``incircu_plugin.core.ends.find_ends``): the tips a person would name, found exactly.
+
+Every expected end is known by construction (the ends of the line that was buffered, the midpoints of the
+cut caps, the split points of the analytic cases). Tolerances are fractions of the width of the known end,
+the only length that sets how far a reasonable "end" can be from the true one.
+"""
+
+import math
+import warnings
+
+import geometry_cases
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
+from shapely.geometry.polygon import orient
+from shapely.ops import unary_union
+
+from incircu_plugin.core import find_ends
+from incircu_plugin.core.errors import InvalidGeometryError
+
+#: Fraction of the channel width within which a found end must match a flat cap's midpoint. A flat cap is
+#: centred exactly by construction (midpoint between its two corners); what remains is the simplification
+#: of the outline before sampling (1e-3 of the width) and rounding.
+FLAT_CAP_TOLERANCE = 0.01
+
+#: Fraction of the width within which a rounded cap's apex must be matched: the buffer approximates the
+#: half circle by chords (8 per quarter), whose midpoint can miss the true apex by a chord's sagitta,
+#: ``(1 - cos(pi / 16)) / 2`` of the width, about 0.0096.
+ROUND_CAP_TOLERANCE = 0.02
+
+
+def found_pair(polygon):
+    """Return the two found ends as a (2, 2) array and the result."""
+    ends = find_ends(polygon)
+    return np.array([ends.start.coords[0], ends.end.coords[0]]), ends
+
+
+def pair_error(found, expected):
+    """Largest distance between two unordered pairs of points, CRS units."""
+    expected = np.asarray(expected, dtype=float)
+    straight = np.hypot(*(found - expected).T).max()
+    swapped = np.hypot(*(found - expected[::-1]).T).max()
+    return min(straight, swapped)
+
+
+def channel(points, width, cap_style="flat"):
+    """A channel of constant ``width`` around a polyline, with flat or round ends."""
+    return LineString(points).buffer(width / 2.0, cap_style=cap_style, join_style="mitre")
+
+
+@pytest.mark.parametrize("case", geometry_cases.analytic_cases(), ids=lambda case: case.name)
+def test_analytic_cases_find_their_split_points(case):
+    found, ends = found_pair(case.polygon)
+    assert ends.elongated
+    assert pair_error(found, case.split_points) <= FLAT_CAP_TOLERANCE * case.width
+
+
+def test_rectangle_ends_are_the_short_side_midpoints_not_corners():
+    found, _ = found_pair(box(0.0, 0.0, 120.0, 8.0))
+    assert pair_error(found, [(0.0, 4.0), (120.0, 4.0)]) <= FLAT_CAP_TOLERANCE * 8.0
+
+
+def test_u_shape_gets_its_two_tips_not_the_farthest_pair():
+    width = 10.0
+    polygon = channel([(0.0, 100.0), (0.0, 0.0), (60.0, 0.0), (60.0, 100.0)], width)
+    found, ends = found_pair(polygon)
+    assert ends.elongated
+    assert pair_error(found, [(0.0, 100.0), (60.0, 100.0)]) <= FLAT_CAP_TOLERANCE * width
+
+
+def test_flat_capped_s_meander_gets_the_middle_of_each_cap():
+    width = 20.0
+    x = np.linspace(0.0, 1200.0, 1201)
+    axis = np.c_[x, 80.0 * np.sin(2.0 * math.pi * x / 600.0 + 0.4)]
+    found, ends = found_pair(channel(axis, width))
+    assert ends.elongated
+    assert pair_error(found, [axis[0], axis[-1]]) <= FLAT_CAP_TOLERANCE * width
+
+
+def test_round_capped_s_meander_gets_the_apex_of_each_cap():
+    width = 20.0
+    x = np.linspace(0.0, 1200.0, 1201)
+    axis = np.c_[x, 80.0 * np.sin(2.0 * math.pi * x / 600.0 + 0.4)]
+    found, _ = found_pair(channel(axis, width, cap_style="round"))
+    apexes = []
+    for tip, inner in ((axis[0], axis[1]), (axis[-1], axis[-2])):
+        outward = (tip - inner) / np.hypot(*(tip - inner))
+        apexes.append(tip + width / 2.0 * outward)
+    assert pair_error(found, apexes) <= ROUND_CAP_TOLERANCE * width
+
+
+def test_spiral_gets_its_inner_and_outer_tips():
+    width = 6.0
+    turns = np.linspace(0.0, 6.0 * math.pi, 900)
+    radius = 10.0 + 5.0 * turns
+    axis = np.c_[radius * np.cos(turns), radius * np.sin(turns)]
+    found, ends = found_pair(channel(axis, width))
+    assert ends.elongated
+    assert pair_error(found, [axis[0], axis[-1]]) <= FLAT_CAP_TOLERANCE * width
+
+
+def test_l_shape_gets_the_ends_of_both_legs():
+    width = 10.0
+    found, _ = found_pair(channel([(0.0, 100.0), (0.0, 0.0), (60.0, 0.0)], width))
+    assert pair_error(found, [(0.0, 100.0), (60.0, 0.0)]) <= FLAT_CAP_TOLERANCE * width
+
+
+def test_y_shape_picks_the_longest_pair_of_arms():
+    width = 10.0
+    tips = [(0.0, -100.0), (-50.0, 60.0), (55.0, 30.0)]
+    polygon = unary_union([channel([(0.0, 0.0), tip], width) for tip in tips])
+    lengths = [math.hypot(*tip) for tip in tips]
+    longest_two = [tips[i] for i in np.argsort(lengths)[::-1][:2]]
+    found, ends = found_pair(polygon)
+    assert ends.elongated
+    assert pair_error(found, longest_two) <= FLAT_CAP_TOLERANCE * width
+    shortest = np.asarray(tips[int(np.argmin(lengths))])
+    assert np.hypot(*(found - shortest).T).min() > 5.0 * width
+
+
+def test_y_shape_follows_the_arms_when_the_lengths_change():
+    width = 10.0
+    tips = [(0.0, -60.0), (-50.0, 60.0), (70.0, 40.0)]
+    polygon = unary_union([channel([(0.0, 0.0), tip], width) for tip in tips])
+    found, _ = found_pair(polygon)
+    assert pair_error(found, [tips[1], tips[2]]) <= FLAT_CAP_TOLERANCE * width
+
+
+def test_near_circle_does_not_crash_and_is_not_elongated():
+    rng = np.random.default_rng(7)
+    angles = np.linspace(0.0, 2.0 * math.pi, 240, endpoint=False)
+    radii = 10.0 * (1.0 + 0.02 * rng.standard_normal(len(angles)))
+    polygon = Polygon(np.c_[radii * np.cos(angles), radii * np.sin(angles)])
+    found, ends = found_pair(polygon)
+    assert not ends.elongated
+    assert polygon.exterior.distance(ends.start) <= 1e-9 * 20.0
+    assert polygon.exterior.distance(ends.end) <= 1e-9 * 20.0
+    assert np.hypot(*(found[0] - found[1])) > 0.0
+
+
+def test_square_is_not_elongated_but_a_three_to_one_rectangle_is():
+    assert not find_ends(box(0.0, 0.0, 10.0, 10.0)).elongated
+    assert find_ends(box(0.0, 0.0, 30.0, 10.0)).elongated
+
+
+def test_pointed_ends_are_the_points():
+    found, _ = found_pair(Polygon([(0.0, 0.0), (50.0, 5.0), (100.0, 0.0), (50.0, -5.0)]))
+    assert pair_error(found, [(0.0, 0.0), (100.0, 0.0)]) <= FLAT_CAP_TOLERANCE * 10.0
+
+
+def test_oblique_cut_ends_are_the_middles_of_the_cuts():
+    found, _ = found_pair(Polygon([(0.0, 0.0), (100.0, 0.0), (110.0, 10.0), (10.0, 10.0)]))
+    cut = math.hypot(10.0, 10.0)
+    assert pair_error(found, [(5.0, 5.0), (105.0, 5.0)]) <= FLAT_CAP_TOLERANCE * cut
+
+
+def test_the_skeleton_path_goes_around_an_island():
+    island = box(30.0, 4.0, 70.0, 16.0)
+    polygon = Polygon(box(0.0, 0.0, 100.0, 20.0).exterior.coords, [island.exterior.coords])
+    found, ends = found_pair(polygon)
+    assert pair_error(found, [(0.0, 10.0), (100.0, 10.0)]) <= FLAT_CAP_TOLERANCE * 20.0
+    assert not ends.trunk.intersects(island.buffer(-1e-6))
+    assert polygon.buffer(1e-9).covers(ends.trunk)
+
+
+@pytest.mark.parametrize("name", sorted(geometry_cases.PLACEMENTS))
+def test_result_does_not_depend_on_ring_start_or_orientation(name):
+    placement = geometry_cases.PLACEMENTS[name]
+    case = geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0, placement=placement)
+    reference, _ = found_pair(case.polygon)
+    ring = np.asarray(case.polygon.exterior.coords)[:-1]
+    for variant in (
+        Polygon(np.roll(ring, 137, axis=0)),
+        orient(case.polygon, -1.0),
+        Polygon(np.roll(ring[::-1], 41, axis=0)),
+    ):
+        found, _ = found_pair(variant)
+        assert pair_error(found, reference) <= FLAT_CAP_TOLERANCE * case.width
+
+
+def test_same_input_gives_the_same_answer():
+    polygon = channel([(0.0, 0.0), (40.0, 30.0), (90.0, 10.0)], 8.0)
+    first, _ = found_pair(polygon)
+    second, _ = found_pair(polygon)
+    assert np.array_equal(first, second)
+
+
+def test_ends_lie_on_the_exterior_ring():
+    case = geometry_cases.gambia()
+    ends = find_ends(case.polygon)
+    tolerance = 1e-9 * case.extent
+    assert case.polygon.exterior.distance(ends.start) <= tolerance
+    assert case.polygon.exterior.distance(ends.end) <= tolerance
+    assert ends.start.distance(ends.end) > 0.5 * case.extent
+
+
+def polygon_with_nan():
+    """A triangle with a NaN coordinate (shapely warns while building it)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return Polygon([(0.0, 0.0), (float("nan"), 0.0), (1.0, 1.0)])
+
+
+BAD_INPUTS = {
+    "empty": Polygon,
+    "multipolygon": lambda: MultiPolygon([box(0, 0, 10, 1), box(0, 5, 10, 6)]),
+    "bowtie": lambda: Polygon([(0, 0), (10, 10), (10, 0), (0, 10)]),
+    "nan": polygon_with_nan,
+    "null": lambda: None,
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD_INPUTS))
+def test_bad_input_gets_a_typed_error(name):
+    with pytest.raises(InvalidGeometryError):
+        find_ends(BAD_INPUTS[name]())
+
+
+def test_trunk_is_longer_than_the_straight_distance_in_a_u_shape():
+    polygon = channel([(0.0, 100.0), (0.0, 0.0), (60.0, 0.0), (60.0, 100.0)], 10.0)
+    ends = find_ends(polygon)
+    assert ends.trunk.length > 2.0 * shapely.distance(ends.start, ends.end)
+    assert isinstance(ends.start, Point) and isinstance(ends.end, Point)
