@@ -117,6 +117,10 @@ class Case:
         docstring); 0 only when the polygon is exact and its coordinates are exactly representable.
     placement : Placement
         How the local frame was placed.
+    axis_end_margin : float
+        The analytic axis is exact only farther than this from both split points, CRS units: near a cap
+        the medial axis between the chains bends to the junction of the cap's corner branches (annulus,
+        meander); 0 when it is exact up to the split points (rectangle, tapered channel).
     """
 
     name: str
@@ -131,6 +135,15 @@ class Case:
     axis_distance: Optional[Callable[[np.ndarray], np.ndarray]] = None
     axis_tolerance: float = 0.0
     placement: Placement = field(default_factory=Placement)
+    axis_end_margin: float = 0.0
+
+    def away_from_ends(self, points):
+        """Mask of the points farther than ``axis_end_margin`` from both split points."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        ends = np.asarray(self.split_points, dtype=float)
+        return (np.hypot(*(points - ends[0]).T) > self.axis_end_margin) & (
+            np.hypot(*(points - ends[1]).T) > self.axis_end_margin
+        )
 
     @property
     def extent(self):
@@ -173,6 +186,7 @@ def channel_case(
     axis_distance_local=None,
     axis_tolerance_local=0.0,
     validate=True,
+    axis_end_margin_local=0.0,
 ):
     """Build a :class:`Case` from two banks given in a local frame.
 
@@ -194,6 +208,8 @@ def channel_case(
         Polygonisation bound on the axis position, local units.
     validate : bool
         Check that the polygon is valid (skip for very large benchmark rivers).
+    axis_end_margin_local : float
+        See :attr:`Case.axis_end_margin`, local units.
 
     Returns
     -------
@@ -230,6 +246,7 @@ def channel_case(
         axis_distance=axis_distance,
         axis_tolerance=axis_tolerance_local * placement.scale + 8.0 * ulp,
         placement=placement,
+        axis_end_margin=axis_end_margin_local * placement.scale,
     )
 
 
@@ -374,6 +391,7 @@ def annulus_sector(r_inner=40.0, r_outer=60.0, angle_start=0.0, angle_end=math.p
         axis_local=axis,
         axis_distance_local=distance,
         axis_tolerance_local=sagitta,
+        axis_end_margin_local=r_outer - r_inner,
     )
 
 
@@ -450,6 +468,7 @@ def meander(length=2000.0, width=20.0, amplitude=60.0, wavelength=400.0, n=1166,
         axis_local=axis,
         axis_distance_local=distance,
         axis_tolerance_local=0.5 * (sagittas[0] + sagittas[1]),
+        axis_end_margin_local=width,
     )
 
 
