@@ -3,11 +3,12 @@
 import shapely
 from qgis.core import (
     QgsCoordinateReferenceSystem,
-    QgsCoordinateTransform,
     QgsGeometry,
     QgsLineString,
     QgsMultiLineString,
 )
+
+from ..incircu_plugin.core.geodesy import LocalProjection
 
 
 def to_shapely(geometry):
@@ -85,23 +86,31 @@ def collect_lines(lines):
 class WorkingFrame:
     """The coordinate frame the core computes in, and the way back to the layer's CRS.
 
-    Projected layers are used as they are. A geographic layer (degrees) is computed in an azimuthal
-    equidistant projection centred on each feature, so lengths, widths, ``SPACING`` and
-    ``SNAP_TOLERANCE`` are in metres and distortion stays negligible at the scale of one river reach.
+    Projected layers are used as they are. A geographic layer (degrees) is computed in the core's
+    :class:`LocalProjection`, an azimuthal equidistant projection centred on each feature, so lengths,
+    widths, ``SPACING`` and ``SNAP_TOLERANCE`` are in metres.
 
     Parameters
     ----------
     crs : QgsCoordinateReferenceSystem
         CRS of the layer.
-    transform_context : QgsCoordinateTransformContext
     """
 
-    def __init__(self, crs, transform_context):
-        self.crs = crs
-        self.transform_context = transform_context
-        self.is_geographic = crs.isGeographic()
-        self.forward = None
-        self.backward = None
+    def __init__(self, crs):
+        self.geographic_crs = None
+        if crs.isGeographic():
+            authority = crs.authid()
+            self.geographic_crs = (
+                authority
+                if authority.upper().startswith("EPSG:")
+                else crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT2_2019)
+            )
+        self.projection = None
+
+    @property
+    def is_geographic(self):
+        """True when the layer is in degrees and results are computed in metres."""
+        return self.geographic_crs is not None
 
     def centre_on(self, geometry):
         """Centre the local projection on a geometry of the layer (no effect for projected layers).
@@ -111,28 +120,15 @@ class WorkingFrame:
         geometry : QgsGeometry
             Geometry in the layer's CRS (degrees for geographic layers).
         """
-        if not self.is_geographic:
-            return
-        centre = geometry.boundingBox().center()
-        local = QgsCoordinateReferenceSystem.fromProj(
-            "+proj=aeqd +lat_0={:.9f} +lon_0={:.9f} +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs".format(
-                centre.y(), centre.x()
-            )
-        )
-        self.forward = QgsCoordinateTransform(self.crs, local, self.transform_context)
-        self.backward = QgsCoordinateTransform(local, self.crs, self.transform_context)
+        if self.is_geographic:
+            centre = geometry.boundingBox().center()
+            self.projection = LocalProjection(self.geographic_crs, centre.x(), centre.y())
 
     def to_core(self, geometry):
         """Return a QGIS geometry of the layer as a Shapely geometry in the working frame."""
-        if self.forward is None:
-            return to_shapely(geometry)
-        moved = QgsGeometry(geometry)
-        moved.transform(self.forward)
-        return to_shapely(moved)
+        shape = to_shapely(geometry)
+        return shape if self.projection is None else self.projection.to_local(shape)
 
-    def to_layer(self, geometry):
-        """Return a QGIS geometry of the working frame in the layer's CRS (a new geometry)."""
-        moved = QgsGeometry(geometry)
-        if self.backward is not None:
-            moved.transform(self.backward)
-        return moved
+    def to_layer(self, shape):
+        """Return a Shapely geometry or ``(n, 2)`` array of the working frame in the layer's CRS."""
+        return shape if self.projection is None else self.projection.to_geographic(shape)

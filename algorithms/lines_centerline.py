@@ -5,6 +5,7 @@ from qgis.core import (
     QgsGeometry,
     QgsProcessing,
     QgsProcessingException,
+    QgsProcessingFeatureSource,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
     QgsWkbTypes,
@@ -146,7 +147,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         """
         groups = {}
         index = source.fields().lookupField(field_name) if field_name else -1
-        for feature in source.getFeatures(request):
+        for feature in source.getFeatures(request, QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks):
             if not feature.hasGeometry() or feature.geometry().isEmpty():
                 continue
             key = feature.attributes()[index] if index >= 0 else None

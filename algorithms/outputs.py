@@ -2,6 +2,8 @@
 
 import math
 
+import numpy as np
+
 from qgis.core import (
     Qgis,
     QgsFeature,
@@ -197,12 +199,12 @@ class CenterlineWriter:
         for group in groups:
             lines = []
             for _, result in group:
-                coordinates = list(result.line.coords)
+                coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
             statistics = width_statistics([result for _, result in group])
             feature = QgsFeature(self.fields)
-            feature.setGeometry(frame.to_layer(geometry))
+            feature.setGeometry(geometry)
             feature.setAttributes(list(attributes) + [statistics[name] for name, _ in CENTERLINE_FIELDS])
             self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
             self.centerline_count += 1
@@ -210,12 +212,12 @@ class CenterlineWriter:
             self._write_extras(source_fid, part_index, result, frame, core)
 
     def _write_extras(self, source_fid, part_index, result, frame, core):
-        coordinates = list(result.line.coords)
-        distances = chainages(coordinates)
+        distances = chainages(list(result.line.coords))
         if self.vertices is not None:
+            coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
             for index, ((x, y), chainage, radius) in enumerate(zip(coordinates, distances, result.radii)):
                 point = QgsFeature()
-                point.setGeometry(frame.to_layer(QgsGeometry.fromPointXY(QgsPointXY(x, y))))
+                point.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(float(x), float(y))))
                 point.setAttributes([source_fid, part_index, index, chainage, float(radius), 2.0 * float(radius)])
                 self.vertices.addFeature(point, QgsFeatureSink.Flag.FastInsert)
         if self.circles is not None:
@@ -225,7 +227,7 @@ class CenterlineWriter:
                 if circle.is_empty or radius <= 0:
                     continue
                 disc = QgsFeature()
-                disc.setGeometry(frame.to_layer(from_shapely(circle)))
+                disc.setGeometry(from_shapely(frame.to_layer(circle)))
                 disc.setAttributes([source_fid, part_index, index, chainage, float(radius)])
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
@@ -234,6 +236,6 @@ class CenterlineWriter:
                 return
             for transect in core.transects(result, interval):
                 section = QgsFeature()
-                section.setGeometry(frame.to_layer(from_shapely(transect.line)))
+                section.setGeometry(from_shapely(frame.to_layer(transect.line)))
                 section.setAttributes([source_fid, part_index, float(transect.chainage), float(transect.width)])
                 self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)

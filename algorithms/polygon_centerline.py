@@ -132,33 +132,31 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             shape = run.frame.to_core(geometry)
             margin = _layer_margin(snap_tolerance, geometry, crs.isGeographic())
             nearby = [points[i] for i in index.intersects(geometry.boundingBox().buffered(margin))]
-            candidates = [run.frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(point.x(), point.y()))) for point in nearby]
+            candidates = [
+                run.frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(point.x(), point.y()))) for point in nearby
+            ]
+            outcomes = run.compute(
+                feature.id(),
+                None,
+                run.core.multipolygon_centerlines,
+                shape,
+                candidates or None,
+                snap_tolerance=snap_tolerance or None,
+                spacing=spacing,
+                islands=islands,
+            )
+            several = len(outcomes or ()) > 1
             parts = []
-            for part_index, part in enumerate(run.core_parts(shape)):
-                ends = [point for point in candidates if part.exterior.distance(point) <= snap_tolerance]
-                if len(ends) not in (0, 2):
-                    run.skip(
-                        feature.id(),
-                        self.tr("{} split points lie within SNAP_TOLERANCE of part {}; give two or none.").format(
-                            len(ends), part_index
-                        ),
-                        part_index,
-                    )
+            for outcome in outcomes or ():
+                part_index = outcome.part_index if several else None
+                if outcome.error is not None:
+                    run.skip(feature.id(), str(outcome.error), part_index)
                     continue
-                if not ends and split_source is not None:
-                    run.note(feature.id(), self.tr("no split points, ends found automatically"), part_index)
-                result = run.compute(
-                    feature.id(),
-                    part_index,
-                    run.core.polygon_centerline,
-                    part,
-                    [(point.x, point.y) for point in ends] or None,
-                    spacing=spacing,
-                    snap_tolerance=snap_tolerance,
-                    islands=islands,
-                )
-                if result is not None:
-                    parts.append((part_index, result))
+                for note in getattr(outcome.result, "notes", ()):
+                    run.warn(self.tr("Feature {}: {}").format(run.where(feature.id(), part_index), note))
+                if outcome.result.ends_found and split_source is not None:
+                    run.note(feature.id(), self.tr("no split points given, ends found automatically"), part_index)
+                parts.append((outcome.part_index, outcome.result))
             run.write(feature, parts)
         return run.finish()
 

@@ -1,6 +1,6 @@
 """Per-feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts."""
 
-from qgis.core import QgsProcessingException, QgsWkbTypes
+from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsProcessingFeatureSource, QgsWkbTypes
 
 from .dependencies import require_core, shared
 
@@ -74,16 +74,19 @@ class FeatureRun:
         self.writer = self.writer_class(algorithm, parameters, context, fields, crs, multi, add_m, interval)
         if self.writer.sink is None:
             raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
-        self.frame = self.frame_class(crs, context.transformContext())
+        self.frame = self.frame_class(crs)
 
     def features(self, source, request=None):
         """Yield the features of ``source`` with progress, stopping when the user cancels.
 
-        Features without geometry are skipped with a warning.
+        Features without geometry are skipped with a warning. Processing's invalid-geometry filter is
+        bypassed: the core checks validity itself and the warning then says what is wrong and where.
         """
         total = source.featureCount()
         self.progress_step = 100.0 / total if total > 0 else 0.0
-        features = source.getFeatures(request) if request is not None else source.getFeatures()
+        features = source.getFeatures(
+            request or QgsFeatureRequest(), QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks
+        )
         for current, feature in enumerate(features):
             if self.feedback.isCanceled():
                 break
@@ -122,19 +125,13 @@ class FeatureRun:
             return str(feature_id)
         return shared("{} (part {})").format(feature_id, part_index)
 
-    def core_parts(self, shape):
-        """Return the polygons of a Shapely (multi)polygon, in their stored order."""
-        import shapely
-
-        return list(shapely.get_parts(shape))
-
     def compute(self, feature_id, part_index, function, *args, **kwargs):
         """Call a core function for one feature (part); a core error becomes a skip warning.
 
         Returns
         -------
-        CenterlineResult or None
-            ``None`` when the feature (part) was skipped or the user cancelled.
+        object or None
+            What ``function`` returns; ``None`` when the feature (part) was skipped or the user cancelled.
         """
         try:
             return function(*args, progress=self.report_progress, **kwargs)

@@ -8,6 +8,7 @@ reproducible; coordinates are rounded to 1 cm (EPSG:2180) or 1e-8 degree (EPSG:4
 import json
 import math
 import os
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -178,7 +179,7 @@ def write_model(path):
     )
     from qgis.PyQt.QtCore import QPointF
 
-    application = QgsApplication([], False)
+    application = QgsApplication([], False, tempfile.mkdtemp(prefix="incircu-model-"))
     application.initQgis()
     model = QgsProcessingModelAlgorithm("Fix, centerline, smooth", "IncirCu tests", "incircutests")
     for name, label, kind, optional in (

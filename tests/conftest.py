@@ -11,7 +11,6 @@ import os
 import shutil
 import subprocess
 import sys
-import sysconfig
 from pathlib import Path
 
 import pytest
@@ -20,6 +19,8 @@ REPOSITORY = Path(__file__).resolve().parent.parent
 DATA = REPOSITORY / "tests" / "data"
 ARTIFACTS = REPOSITORY / "tests" / "artifacts"
 PLUGIN_NAME = "incircu"
+#: Shapely built against the system GEOS for QGIS's own Python (``make setup``); numpy and pyproj come from Debian.
+QGIS_SITE = Path(os.environ.get("INCIRCU_QGIS_SITE", REPOSITORY / ".venv" / "qgis-site"))
 
 
 def metadata():
@@ -88,7 +89,10 @@ def qgis_process_executable():
 
 @pytest.fixture(scope="session")
 def qgis_process(plugin_folder, tmp_path_factory):
-    """Run ``qgis_process`` with the plugin enabled in an isolated profile.
+    """Run ``qgis_process`` with the plugin enabled in an isolated profile, as a user's QGIS would.
+
+    QGIS's embedded Python gets only ``QGIS_SITE`` on its path (no venv packages: wheels bundling GEOS or
+    PROJ clash with the libraries QGIS links).
 
     Returns
     -------
@@ -96,14 +100,14 @@ def qgis_process(plugin_folder, tmp_path_factory):
         ``run(*arguments)`` -> ``subprocess.CompletedProcess`` (text output, never raising on failure).
     """
     profile = tmp_path_factory.mktemp("qgis_profile")
+    assert (QGIS_SITE / "shapely").is_dir(), "Shapely for QGIS's Python is missing: run `make setup`"
     environment = dict(os.environ)
-    site_packages = sysconfig.get_paths()["purelib"]
     environment.update(
         {
             "QT_QPA_PLATFORM": "offscreen",
             "QGIS_CUSTOM_CONFIG_PATH": str(profile),
             "QGIS_PLUGINPATH": str(plugin_folder),
-            "PYTHONPATH": os.pathsep.join(filter(None, [site_packages, os.environ.get("PYTHONPATH")])),
+            "PYTHONPATH": str(QGIS_SITE),
         }
     )
     executable = qgis_process_executable()

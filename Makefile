@@ -1,0 +1,91 @@
+# IncirCu developer commands. `make demo` and `make test` do everything on a fresh Debian/Ubuntu machine.
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+
+PLUGIN := incircu
+VERSION := $(shell sed -n 's/^version=//p' metadata.txt)
+VENV := .venv
+PYTHON := $(VENV)/bin/python
+SYSTEM_PYTHON := /usr/bin/python3
+QGIS_PROCESS := $(shell command -v qgis_process.bin || command -v qgis_process)
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+DEBIAN_PACKAGES := qgis python3-qgis qgis-providers python3-numpy python3-pyproj python3-venv python3-pip python3-dev \
+	libgeos-dev build-essential pyqt5-dev-tools qttools5-dev-tools git make
+# Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely built against the system GEOS, since
+# the wheel's bundled GEOS clashes with the one QGIS links; numpy and pyproj come from Debian.
+QGIS_SITE := $(VENV)/qgis-site
+SHAPELY_PIN := $(shell grep -E '^shapely==' requirements.txt)
+PROFILE ?= default
+QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
+DIST := dist
+# What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip.
+RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n
+export QT_QPA_PLATFORM := offscreen
+# Keep the tests' and the demo's QGIS settings out of the user's profile.
+export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
+export PYTHONDONTWRITEBYTECODE := 1
+
+.PHONY: help setup system-packages demo test lint package deploy transup transcompile bench clean
+
+help:
+	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"
+	@echo "make demo         run IncirCu with qgis_process on the sample data; writes out/demo.gpkg and out/demo.png"
+	@echo "make test         run every test on a real, offscreen QGIS"
+	@echo "make lint         ruff"
+	@echo "make package      release zip in $(DIST)/ (git archive of HEAD)"
+	@echo "make deploy       copy the plugin into the QGIS profile $(PROFILE)"
+	@echo "make transup      update i18n/*.ts from the sources; make transcompile builds the .qm files"
+	@echo "make bench        benchmarks (bash benchmarks/run.sh)"
+
+setup: system-packages $(VENV)/.installed $(QGIS_SITE)/.installed
+
+system-packages:
+	@if ! $(SYSTEM_PYTHON) -c "import qgis.core, pyproj, numpy, venv, ensurepip" 2>/dev/null \
+	    || ! command -v qgis_process.bin >/dev/null 2>&1 || ! command -v lrelease >/dev/null 2>&1 \
+	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1; then \
+	  echo "Installing QGIS and tools from the distribution's packages"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -q && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES); \
+	fi
+
+$(VENV)/.installed: requirements.txt requirements-dev.txt
+	@[ -x $(PYTHON) ] || $(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
+	@touch $@
+
+$(QGIS_SITE)/.installed: requirements.txt
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
+	  --target $(QGIS_SITE) "$(SHAPELY_PIN)"
+	@touch $@
+
+demo: setup
+	$(PYTHON) scripts/demo.py
+
+test: setup
+	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests
+
+lint: setup
+	$(PYTHON) -m ruff check --line-length 120 --target-version py39 .
+
+package:
+	@mkdir -p $(DIST)
+	git archive --format=zip --prefix=$(PLUGIN)/ -o $(DIST)/$(PLUGIN)-$(VERSION).zip HEAD $(RELEASE_PATHS)
+	@echo "$(DIST)/$(PLUGIN)-$(VERSION).zip"
+
+deploy: package
+	@mkdir -p $(QGIS_PROFILE_DIR)/python/plugins
+	rm -rf $(QGIS_PROFILE_DIR)/python/plugins/$(PLUGIN)
+	cd $(QGIS_PROFILE_DIR)/python/plugins && $(SYSTEM_PYTHON) -m zipfile -e $(CURDIR)/$(DIST)/$(PLUGIN)-$(VERSION).zip .
+	@echo "Deployed to $(QGIS_PROFILE_DIR)/python/plugins/$(PLUGIN); enable IncirCu in the Plugin Manager."
+
+transup:
+	pylupdate5 -noobsolete incircu_plugin/plugin.py incircu_plugin/provider.py algorithms/*.py -ts i18n/incircu_pl.ts
+
+transcompile:
+	lrelease i18n/*.ts
+
+bench: setup
+	bash benchmarks/run.sh
+
+clean:
+	rm -rf $(DIST) out tests/artifacts

@@ -1,0 +1,395 @@
+"""In-process runs of both algorithms through ``processing.run`` on the committed fixtures.
+
+Expected values come from the analytic shapes the fixtures are made of (``scripts/make_sample_data.py``):
+constant-width meanders around a known axis, straight channels, offset bank lines.
+"""
+
+import importlib.util
+import sys
+
+import numpy as np
+import processing
+import pytest
+import shapely
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsCoordinateTransform,
+    QgsFeature,
+    QgsGeometry,
+    QgsProcessingException,
+    QgsProcessingFeedback,
+    QgsProject,
+    QgsVectorLayer,
+    QgsWkbTypes,
+)
+
+from conftest import DATA, REPOSITORY
+
+SPEC = importlib.util.spec_from_file_location("sample_data", REPOSITORY / "scripts" / "make_sample_data.py")
+sample_data = importlib.util.module_from_spec(SPEC)
+SPEC.loader.exec_module(sample_data)
+
+RIVER_WIDTH = 2.0 * sample_data.RIVER_HALF_WIDTH
+SNAP_TOLERANCE = 1.0
+
+
+class RecordingFeedback(QgsProcessingFeedback):
+    """Feedback that keeps the warnings and messages an algorithm pushes."""
+
+    def __init__(self):
+        super().__init__()
+        self.warnings = []
+        self.infos = []
+
+    def pushWarning(self, message):  # noqa: N802 - QGIS API name
+        self.warnings.append(message)
+
+    def reportError(self, message, fatalError=False):  # noqa: N802, N803 - QGIS API names
+        self.warnings.append(message)
+
+    def pushInfo(self, message):  # noqa: N802 - QGIS API name
+        self.infos.append(message)
+
+
+def run(algorithm, parameters, feedback=None):
+    """Run an IncirCu algorithm with memory outputs; return (results, feedback)."""
+    feedback = feedback or RecordingFeedback()
+    parameters = {"OUTPUT": "memory:", **parameters}
+    results = processing.run("incircu:" + algorithm, parameters, feedback=feedback)
+    return results, feedback
+
+
+def features_by(layer, field):
+    """Map the value of ``field`` to the feature of ``layer``."""
+    return {feature[field]: feature for feature in layer.getFeatures()}
+
+
+def as_shapely(geometry):
+    """2-D Shapely copy of a QGIS geometry."""
+    flat = QgsGeometry(geometry)
+    flat.get().dropMValue()
+    flat.get().dropZValue()
+    return shapely.from_wkb(bytes(flat.asWkb()))
+
+
+def shifted_axis(axis, dy=0.0):
+    """The analytic axis of a fixture in EPSG:2180."""
+    return sample_data.shifted(axis, dy=dy)
+
+
+def layer(name):
+    """Open a fixture layer."""
+    opened = QgsVectorLayer(str(DATA / name), name, "ogr")
+    assert opened.isValid(), name
+    return opened
+
+
+def fixture_polygon(name, file_name="river_2180.geojson"):
+    return as_shapely(features_by(layer(file_name), "name")[name].geometry())
+
+
+def m_values(geometry):
+    return [vertex.m() for vertex in geometry.vertices()]
+
+
+def test_polygon_centerline_in_projected_crs(provider):
+    results, feedback = run(
+        "polygoncenterline",
+        {
+            "INPUT": str(DATA / "river_2180.geojson"),
+            "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+            "SNAP_TOLERANCE": SNAP_TOLERANCE,
+        },
+    )
+    output = results["OUTPUT"]
+    assert output.crs().authid() == "EPSG:2180"
+    assert QgsWkbTypes.hasM(output.wkbType())
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert results["CENTERLINE_COUNT"] == 2
+    meander = features_by(output, "name")["Meander"]
+    assert meander["kind"] == "river"
+    assert not meander["ends_found"]
+    line = as_shapely(meander.geometry())
+    axis = shifted_axis(sample_data.meander_axis())
+    start, end = (sample_data.shifted(p) for p in sample_data.end_points(sample_data.meander_axis(), 0.0))
+    assert line.boundary.geoms[0].distance(start) <= SNAP_TOLERANCE
+    assert line.boundary.geoms[1].distance(end) <= SNAP_TOLERANCE
+    assert line.hausdorff_distance(axis) < 0.05 * RIVER_WIDTH
+    assert meander["length"] == pytest.approx(axis.length, rel=0.01)
+    assert meander["length"] == pytest.approx(line.length, rel=1e-9)
+    assert meander["width_mean"] == pytest.approx(RIVER_WIDTH, rel=0.02)
+    assert meander["width_min"] <= meander["width_mean"] <= meander["width_max"]
+    assert meander["width_max"] == pytest.approx(RIVER_WIDTH, rel=0.02)
+    assert meander["n_vertices"] == len(line.coords)
+    polygon = fixture_polygon("Meander")
+    assert polygon.buffer(1e-6 * RIVER_WIDTH).contains(line)
+    interior_m = m_values(meander.geometry())[1:-1]
+    assert min(interior_m) > 0.9 * RIVER_WIDTH
+    assert max(interior_m) < 1.1 * RIVER_WIDTH
+
+
+def test_island_channel_goes_round_the_island_on_the_wide_side(provider):
+    results, feedback = run("polygoncenterline", {"INPUT": str(DATA / "river_2180.geojson")})
+    channel = features_by(results["OUTPUT"], "name")["Island channel"]
+    assert channel["ends_found"]
+    line = as_shapely(channel.geometry())
+    polygon = fixture_polygon("Island channel")
+    island = shapely.Polygon(polygon.interiors[0])
+    assert not line.intersects(island)
+    island_bottom = island.bounds[1]
+    channel_bottom = polygon.bounds[1]
+    crossing = line.intersection(shapely.LineString([(island.centroid.x, channel_bottom), (island.centroid.x, island_bottom + 1)]))
+    assert not crossing.is_empty, "the line must pass below the island, in the wider channel"
+    wide_middle = 0.5 * (island_bottom + channel_bottom)
+    assert abs(crossing.centroid.y - wide_middle) < 0.1 * (island_bottom - channel_bottom)
+
+
+def test_geographic_layer_is_computed_in_metres(provider):
+    projected, _ = run(
+        "polygoncenterline",
+        {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "split_points_2180.geojson")},
+    )
+    geographic, feedback = run(
+        "polygoncenterline",
+        {"INPUT": str(DATA / "river_4326.geojson"), "SPLIT_POINTS": str(DATA / "split_points_4326.geojson")},
+    )
+    output = geographic["OUTPUT"]
+    assert output.crs().authid() == "EPSG:4326"
+    meander = features_by(output, "name")["Meander"]
+    reference = features_by(projected["OUTPUT"], "name")["Meander"]
+    assert meander["width_mean"] == pytest.approx(RIVER_WIDTH, rel=0.02)
+    assert meander["length"] == pytest.approx(reference["length"], rel=0.005)
+    box = output.extent()
+    assert -180 <= box.xMinimum() <= box.xMaximum() <= 180
+    assert -90 <= box.yMinimum() <= box.yMaximum() <= 90
+    back = QgsGeometry(meander.geometry())
+    back.transform(
+        QgsCoordinateTransform(
+            QgsCoordinateReferenceSystem("EPSG:4326"), QgsCoordinateReferenceSystem("EPSG:2180"), QgsProject.instance()
+        )
+    )
+    assert as_shapely(back).hausdorff_distance(as_shapely(reference.geometry())) < 0.05 * RIVER_WIDTH
+
+
+def test_split_points_in_another_crs_are_reprojected(provider):
+    results, feedback = run(
+        "polygoncenterline",
+        {
+            "INPUT": str(DATA / "river_2180.geojson"),
+            "SPLIT_POINTS": str(DATA / "split_points_4326.geojson"),
+            "SNAP_TOLERANCE": SNAP_TOLERANCE,
+        },
+    )
+    assert results["OUTPUT"].crs().authid() == "EPSG:2180"
+    meander = features_by(results["OUTPUT"], "name")["Meander"]
+    assert not meander["ends_found"]
+    line = as_shapely(meander.geometry())
+    start, _ = (sample_data.shifted(p) for p in sample_data.end_points(sample_data.meander_axis(), 0.0))
+    assert line.boundary.geoms[0].distance(start) <= SNAP_TOLERANCE
+
+
+def bank_axes():
+    return {
+        "R1": (shifted_axis(sample_data.meander_axis(900.0, 80.0, 450.0, 73), dy=-600.0), 50.0),
+        "R2": (shifted_axis(shapely.LineString([(0, 0), (600, 40)]), dy=-1000.0), 30.0),
+    }
+
+
+@pytest.mark.parametrize("banks_b", ["banks_b_2180.geojson", "banks_b_4326.geojson"])
+def test_lines_centerline_pairs_by_field(provider, banks_b):
+    results, feedback = run(
+        "linescenterline",
+        {
+            "LINES_A": str(DATA / "banks_a_2180.geojson"),
+            "LINES_B": str(DATA / banks_b),
+            "PAIR_FIELD_A": "reach",
+            "PAIR_FIELD_B": "reach",
+        },
+    )
+    assert results["CENTERLINE_COUNT"] == 2
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    output = results["OUTPUT"]
+    assert output.crs().authid() == "EPSG:2180"
+    for reach, feature in features_by(output, "reach").items():
+        axis, width = bank_axes()[reach]
+        assert feature["side"] == "left"
+        line = as_shapely(feature.geometry())
+        assert line.hausdorff_distance(axis) < 0.1 * width
+        assert feature["width_mean"] == pytest.approx(width, rel=0.02)
+
+
+def test_lines_without_pair_fields_use_one_line_per_layer(provider):
+    line_a, line_b = layer("banks_a_2180.geojson"), layer("banks_b_2180.geojson")
+    line_a.setSubsetString("\"reach\" = 'R2'")
+    line_b.setSubsetString("\"reach\" = 'R2'")
+    results, feedback = run("linescenterline", {"LINES_A": line_a, "LINES_B": line_b, "ADD_M": False})
+    assert results["CENTERLINE_COUNT"] == 1
+    feature = next(results["OUTPUT"].getFeatures())
+    assert not QgsWkbTypes.hasM(results["OUTPUT"].wkbType())
+    axis, width = bank_axes()["R2"]
+    assert as_shapely(feature.geometry()).hausdorff_distance(axis) < 0.1 * width
+
+
+def test_bad_features_are_skipped_with_their_id(provider):
+    results, feedback = run(
+        "polygoncenterline",
+        {
+            "INPUT": str(DATA / "bad_polygons_2180.geojson"),
+            "SPLIT_POINTS": str(DATA / "bad_split_points_2180.geojson"),
+        },
+    )
+    assert results["CENTERLINE_COUNT"] == 1
+    assert results["SKIPPED_COUNT"] == 2
+    assert [feature["name"] for feature in results["OUTPUT"].getFeatures()] == ["good"]
+    bowtie = [message for message in feedback.warnings if message.startswith("Feature 1 ")]
+    three = [message for message in feedback.warnings if message.startswith("Feature 2 ")]
+    assert len(bowtie) == 1 and len(three) == 1, feedback.warnings
+    assert "3 split points" in three[0]
+
+
+def test_feature_without_geometry_is_skipped(provider):
+    memory = QgsVectorLayer("Polygon?crs=EPSG:2180&field=name:string", "polygons", "memory")
+    empty = QgsFeature(memory.fields())
+    empty.setAttributes(["nothing"])
+    good = QgsFeature(memory.fields())
+    good.setAttributes(["good"])
+    good.setGeometry(QgsGeometry.fromWkt("POLYGON((0 0, 300 0, 300 40, 0 40, 0 0))"))
+    memory.dataProvider().addFeatures([empty, good])
+    results, feedback = run("polygoncenterline", {"INPUT": memory})
+    assert results["CENTERLINE_COUNT"] == 1
+    assert results["SKIPPED_COUNT"] == 1
+    assert any("no geometry" in message for message in feedback.warnings)
+
+
+def test_crossing_banks_are_skipped(provider):
+    results, feedback = run(
+        "linescenterline",
+        {"LINES_A": str(DATA / "crossing_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")},
+    )
+    assert results["CENTERLINE_COUNT"] == 0
+    assert results["SKIPPED_COUNT"] == 1
+    assert any(message.startswith("Feature 1 ") for message in feedback.warnings), feedback.warnings
+
+
+def test_unpaired_line_is_skipped(provider):
+    line_b = layer("banks_b_2180.geojson")
+    line_b.setSubsetString("\"reach\" = 'R1'")
+    results, feedback = run(
+        "linescenterline",
+        {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": line_b, "PAIR_FIELD_A": "reach", "PAIR_FIELD_B": "reach"},
+    )
+    assert results["CENTERLINE_COUNT"] == 1
+    assert results["SKIPPED_COUNT"] == 1
+    assert any("'R2'" in message for message in feedback.warnings), feedback.warnings
+
+
+@pytest.mark.parametrize(
+    "algorithm, parameters, message",
+    [
+        ("polygoncenterline", {"INPUT": str(DATA / "split_points_2180.geojson")}, "polygon"),
+        ("polygoncenterline", {"INPUT": str(DATA / "does_not_exist.geojson")}, ""),
+        (
+            "polygoncenterline",
+            {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "banks_a_2180.geojson")},
+            "point",
+        ),
+        ("linescenterline", {"LINES_A": str(DATA / "river_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")}, "line"),
+        (
+            "linescenterline",
+            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson"), "PAIR_FIELD_A": "reach"},
+            "PAIR_FIELD_B",
+        ),
+        (
+            "linescenterline",
+            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")},
+            "separate lines",
+        ),
+    ],
+)
+def test_layer_level_problems_raise(provider, algorithm, parameters, message):
+    with pytest.raises(QgsProcessingException) as raised:
+        run(algorithm, parameters)
+    assert message in str(raised.value)
+
+
+def test_multipart_polygon_gets_one_line_per_part(provider):
+    together, _ = run("polygoncenterline", {"INPUT": str(DATA / "multipart_2180.geojson")})
+    assert together["CENTERLINE_COUNT"] == 1
+    assert QgsWkbTypes.isMultiType(together["OUTPUT"].wkbType())
+    multi = as_shapely(next(together["OUTPUT"].getFeatures()).geometry())
+    assert len(multi.geoms) == 2
+    separate, _ = run("polygoncenterline", {"INPUT": str(DATA / "multipart_2180.geojson"), "SEPARATE_PARTS": True})
+    assert separate["CENTERLINE_COUNT"] == 2
+    assert not QgsWkbTypes.isMultiType(separate["OUTPUT"].wkbType())
+    polygon = as_shapely(next(layer("multipart_2180.geojson").getFeatures()).geometry())
+    for feature, part in zip(separate["OUTPUT"].getFeatures(), polygon.geoms):
+        width = part.bounds[3] - part.bounds[1]
+        length = part.bounds[2] - part.bounds[0]
+        assert feature["ends_found"]
+        assert length - width <= feature["length"] <= length + 0.01 * width
+        assert feature["width_max"] == pytest.approx(width, rel=0.02)
+
+
+def test_optional_outputs_describe_the_centerline(provider):
+    results, feedback = run(
+        "polygoncenterline",
+        {
+            "INPUT": str(DATA / "river_2180.geojson"),
+            "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+            "OUTPUT_VERTICES": "memory:",
+            "OUTPUT_CIRCLES": "memory:",
+            "OUTPUT_TRANSECTS": "memory:",
+            "TRANSECT_INTERVAL": 100.0,
+        },
+    )
+    meander = features_by(results["OUTPUT"], "name")["Meander"]
+    polygon = fixture_polygon("Meander")
+    vertices = [f for f in results["OUTPUT_VERTICES"].getFeatures() if f["source_fid"] == meander.id()]
+    assert len(vertices) == meander["n_vertices"]
+    chainage = np.array([f["chainage"] for f in vertices])
+    assert np.all(np.diff(chainage) >= 0)
+    assert chainage[-1] == pytest.approx(meander["length"], rel=1e-9)
+    for vertex in vertices:
+        assert vertex["width"] == pytest.approx(2 * vertex["radius"])
+        point = as_shapely(vertex.geometry())
+        assert point.distance(polygon.exterior) == pytest.approx(vertex["radius"], abs=0.01 * RIVER_WIDTH)
+    circles = [f for f in results["OUTPUT_CIRCLES"].getFeatures() if f["source_fid"] == meander.id()]
+    assert 0 < len(circles) <= len(vertices)
+    grown = polygon.buffer(0.01 * RIVER_WIDTH)
+    assert all(grown.contains(as_shapely(circle.geometry())) for circle in circles)
+    transects = [f for f in results["OUTPUT_TRANSECTS"].getFeatures() if f["source_fid"] == meander.id()]
+    assert len(transects) == pytest.approx(meander["length"] / 100.0, abs=1.5)
+    for transect in transects:
+        section = as_shapely(transect.geometry())
+        assert section.length == pytest.approx(transect["width"], rel=0.01)
+        assert transect["width"] == pytest.approx(RIVER_WIDTH, rel=0.05)
+        for end in section.boundary.geoms:
+            assert end.distance(polygon.exterior) < 0.01 * RIVER_WIDTH
+
+
+def test_cancel_stops_the_run(provider):
+    class CancelOnProgress(RecordingFeedback):
+        def setProgress(self, progress):  # noqa: N802 - QGIS API name
+            super().setProgress(progress)
+            if progress > 0:
+                self.cancel()
+
+    results, feedback = run(
+        "polygoncenterline",
+        {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "split_points_2180.geojson")},
+        CancelOnProgress(),
+    )
+    assert feedback.isCanceled()
+    assert results["CENTERLINE_COUNT"] == 0
+
+
+def test_missing_or_old_shapely_gives_an_install_message(provider, monkeypatch):
+    monkeypatch.setitem(sys.modules, "shapely", None)
+    with pytest.raises(QgsProcessingException) as raised:
+        run("polygoncenterline", {"INPUT": str(DATA / "river_2180.geojson")})
+    assert "pip install" in str(raised.value) and "not installed" in str(raised.value)
+    monkeypatch.setitem(sys.modules, "shapely", shapely)
+    monkeypatch.setattr(shapely, "__version__", "1.8.5")
+    with pytest.raises(QgsProcessingException) as raised:
+        run("linescenterline", {"LINES_A": str(DATA / "crossing_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")})
+    assert "1.8.5" in str(raised.value) and "pip install" in str(raised.value)
