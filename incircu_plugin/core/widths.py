@@ -1,0 +1,272 @@
+"""Width outputs of a centerline: its incircles as polygons, and cross-section transects at an interval.
+
+Both read a :class:`~.engine.CenterlineResult`: the centerline's vertices, the incircle radius of each
+vertex (the local half-width) and where each incircle touches the two sides (``foot_a``, ``foot_b``).
+*Chainage* is the distance along the centerline from its first vertex, CRS units.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, Polygon
+
+from .errors import IncirCuError
+
+
+@dataclass(frozen=True)
+class Incircle:
+    """One incircle of a centerline vertex.
+
+    Attributes
+    ----------
+    polygon : Polygon
+        The circle as a polygon (``4 * quad_segs`` sides, vertices on the circle), CRS units.
+    radius : float
+        Its radius, the local half-width, CRS units.
+    chainage : float
+        Distance of its centre along the centerline from the start, CRS units.
+    """
+
+    polygon: Polygon
+    radius: float
+    chainage: float
+
+
+@dataclass(frozen=True)
+class Transect:
+    """A cross-section of the channel at one station of the centerline.
+
+    Attributes
+    ----------
+    line : LineString
+        From the foot on side a, through the centerline point, to the foot on side b, CRS units.
+    width : float
+        Length of ``line`` (the diameter of the incircle there), CRS units.
+    chainage : float
+        Distance of the station along the centerline from the start, CRS units.
+    """
+
+    line: LineString
+    width: float
+    chainage: float
+
+
+def vertex_chainages(result):
+    """Return the distance of each centerline vertex from the start along the line.
+
+    Parameters
+    ----------
+    result : CenterlineResult
+
+    Returns
+    -------
+    ndarray of shape (n,)
+        Chainage of every vertex, CRS units; 0 at the first, the line's length at the last.
+    """
+    vertices = shapely.get_coordinates(result.line)
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(vertices, axis=0).T))])
+
+
+def incircle_polygons(result, quad_segs=16):
+    """Return the incircle of every centerline vertex as a polygon, with its radius and chainage.
+
+    Vertices with a zero radius (the split-point ends of a polygon's centerline) have no circle and are
+    left out.
+
+    Parameters
+    ----------
+    result : CenterlineResult
+        A centerline.
+    quad_segs : int
+        Segments per quarter circle of each polygon (at least 1).
+
+    Returns
+    -------
+    list of Incircle
+        In the order of the vertices along the line.
+
+    Raises
+    ------
+    IncirCuError
+        If ``quad_segs`` is smaller than 1.
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> from incircu_plugin.core import polygon_centerline
+    >>> result = polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=10.0)
+    >>> circles = incircle_polygons(result)
+    >>> all(abs(circle.radius - 5.0) < 1e-9 for circle in circles[1:-1])
+    True
+    """
+    if int(quad_segs) < 1:
+        raise IncirCuError(f"A circle needs at least 1 segment per quarter, got {quad_segs!r}.")
+    vertices = shapely.get_coordinates(result.line)
+    radii = np.asarray(result.radii, dtype=float)
+    chainages = vertex_chainages(result)
+    keep = np.flatnonzero(radii > 0.0)
+    circles = shapely.buffer(shapely.points(vertices[keep]), radii[keep], quad_segs=int(quad_segs))
+    return [
+        Incircle(polygon=circle, radius=float(radius), chainage=float(chainage))
+        for circle, radius, chainage in zip(circles, radii[keep], chainages[keep])
+    ]
+
+
+def transects(result, interval, chains=None):
+    """Return cross-sections at every multiple of ``interval`` along the centerline.
+
+    Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*. At a split
+    point (an end with zero radius) the line first runs through the end cap, about half a width long, where
+    the channel has no cross-section: the stretch starts at the innermost vertex whose incircle still
+    reaches that end (or the vertex next to it); at an open end it starts at the end. At a station
+    between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
+    linearly; each foot is the point at distance ``r`` from ``C`` towards the linearly interpolated foot of
+    that side (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case). When
+    ``chains`` are given, the feet are instead the nearest points of each chain to ``C``.
+
+    Parameters
+    ----------
+    result : CenterlineResult
+        A centerline.
+    interval : float
+        Distance between stations, CRS units; positive.
+    chains : (LineString or ndarray, LineString or ndarray), optional
+        The two sides (``c1`` touched by ``foot_a``, ``c2`` by ``foot_b``), CRS units.
+
+    Returns
+    -------
+    list of Transect
+        In the order of the stations.
+
+    Raises
+    ------
+    IncirCuError
+        If ``interval`` is not a positive finite number.
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> from incircu_plugin.core import polygon_centerline
+    >>> result = polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=1.0)
+    >>> cuts = transects(result, 25.0)
+    >>> [(cut.chainage, cut.width) for cut in cuts]
+    [(25.0, 10.0), (50.0, 10.0), (75.0, 10.0)]
+    >>> list(cuts[0].line.coords)
+    [(25.0, 0.0), (25.0, 5.0), (25.0, 10.0)]
+    """
+    try:
+        interval = float(interval)
+    except (TypeError, ValueError):
+        raise IncirCuError(f"The transect interval must be a distance, got {interval!r}.") from None
+    if not (interval > 0.0 and np.isfinite(interval)):
+        raise IncirCuError(f"The transect interval must be a positive distance, got {interval!r}.")
+    vertices = shapely.get_coordinates(result.line)
+    chainages = vertex_chainages(result)
+    length = float(chainages[-1])
+    radii = np.asarray(result.radii, dtype=float)
+    first, last = _measured_stretch(vertices, radii, chainages)
+    if first >= last:
+        return []
+    stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
+    stations = stations[(stations >= chainages[first]) & (stations <= chainages[last])]
+    segment = np.clip(np.searchsorted(chainages, stations, side="right") - 1, 0, len(vertices) - 2)
+    span = chainages[segment + 1] - chainages[segment]
+    fraction = np.where(span > 0.0, (stations - chainages[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
+    fraction = np.clip(fraction, 0.0, 1.0)[:, None]
+    centres = vertices[segment] + fraction * (vertices[segment + 1] - vertices[segment])
+    radius = radii[segment] + fraction[:, 0] * (radii[segment + 1] - radii[segment])
+    if chains is not None:
+        feet = [_nearest_points(chain, centres) for chain in chains]
+    else:
+        feet = [
+            _foot_towards(centres, radius, foot[segment] + fraction * (foot[segment + 1] - foot[segment]))
+            for foot in (np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float))
+        ]
+    lines = np.stack([feet[0], centres, feet[1]], axis=1)
+    widths = np.hypot(*(feet[0] - centres).T) + np.hypot(*(feet[1] - centres).T)
+    scale = max(length, float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
+    valid = np.isfinite(widths) & (widths > 1e-12 * scale)
+    return [
+        Transect(line=LineString(line), width=float(width), chainage=float(station))
+        for line, width, station in zip(lines[valid], widths[valid], stations[valid])
+    ]
+
+
+def _measured_stretch(vertices, radii, chainages):
+    """Return the indices of the first and last vertex of the measured stretch of a centerline.
+
+    At an end with a zero radius (a polygon's split point) the line first crosses the end cap: the stretch
+    starts at the innermost vertex, within the half of the line on that side, whose incircle reaches the end
+    point, or at the vertex next to the end when none does. At an end with a positive radius (the middle of
+    an open end gap) it starts at the end itself.
+
+    Parameters
+    ----------
+    vertices : ndarray of shape (n, 2)
+        Centerline vertices, CRS units.
+    radii : ndarray of shape (n,)
+        Incircle radii, CRS units.
+    chainages : ndarray of shape (n,)
+        Chainage of each vertex, CRS units.
+
+    Returns
+    -------
+    first, last : int
+        ``first >= last`` when nothing is left between them.
+    """
+    scale = max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
+    slack = 1e-9 * scale
+    half = chainages[-1] / 2.0
+    inner = np.arange(len(vertices))
+    inner = (inner > 0) & (inner < len(vertices) - 1)
+    first, last = 0, len(vertices) - 1
+    if radii[0] <= slack:
+        reaches = inner & (chainages <= half) & (np.hypot(*(vertices - vertices[0]).T) <= radii + slack)
+        first = int(np.max(np.flatnonzero(reaches), initial=1))
+    if radii[-1] <= slack:
+        reaches = inner & (chainages >= half) & (np.hypot(*(vertices - vertices[-1]).T) <= radii + slack)
+        last = int(np.min(np.flatnonzero(reaches), initial=len(vertices) - 2))
+    return first, last
+
+
+def _foot_towards(centres, radius, towards):
+    """Return the points at distance ``radius`` from each centre in the direction of ``towards``.
+
+    Parameters
+    ----------
+    centres, towards : ndarray of shape (m, 2)
+        CRS units.
+    radius : ndarray of shape (m,)
+        CRS units.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+        NaN where ``towards`` coincides with the centre (no direction).
+    """
+    offset = towards - centres
+    norm = np.hypot(*offset.T)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        unit = offset / norm[:, None]
+    unit[norm <= 0.0] = np.nan
+    return centres + radius[:, None] * unit
+
+
+def _nearest_points(chain, points):
+    """Return the nearest point of a chain to each of ``points``.
+
+    Parameters
+    ----------
+    chain : LineString or ndarray of shape (n, 2)
+        CRS units.
+    points : ndarray of shape (m, 2)
+        CRS units.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+    """
+    line = chain if isinstance(chain, shapely.Geometry) else LineString(np.asarray(chain, dtype=float)[:, :2])
+    shortest = shapely.shortest_line(shapely.points(points), line)
+    return shapely.get_coordinates(shortest)[1::2]

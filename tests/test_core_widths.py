@@ -1,0 +1,173 @@
+"""Width outputs (``incircu_plugin.core.widths``): incircle polygons and cross-section transects.
+
+The shapes have a known width everywhere (rectangle, annulus sector, constant-width meander), so every
+transect must measure it and every incircle must be the result's own circle. Tolerances: the engine places
+vertices and radii to 1e-9 of the extent (its proven invariant), and between two vertices the centerline is
+a chord of the true axis, off by at most its sagitta, which ``axis_tolerance`` of each case bounds.
+"""
+
+import math
+
+import geometry_cases
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import LineString, Point
+
+from incircu_plugin.core import IncirCuError, lines_centerline, polygon_centerline
+from incircu_plugin.core.widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
+
+#: Relative accuracy (of the extent) of the engine's vertices and radii.
+ENGINE_ACCURACY = 1e-9
+
+
+def centerline(case, divisions=10):
+    """The centerline of a case at a spacing of ``width / divisions``."""
+    return polygon_centerline(case.polygon, case.split_points, spacing=case.width / divisions)
+
+
+def chord_sagitta(result, curvature_radius):
+    """Largest distance, CRS units, between a chord of the centerline and an arc of the given radius."""
+    longest = float(np.max(np.hypot(*np.diff(shapely.get_coordinates(result.line), axis=0).T)))
+    return curvature_radius - math.sqrt(max(curvature_radius**2 - (longest / 2.0) ** 2, 0.0))
+
+
+@pytest.mark.parametrize("placement", sorted(geometry_cases.PLACEMENTS))
+def test_rectangle_transects_measure_its_width_straight_across(placement):
+    case = geometry_cases.rectangle(length=100.0, width=10.0, placement=geometry_cases.PLACEMENTS[placement])
+    result = centerline(case)
+    interval = case.width / 3.0
+    cuts = transects(result, interval)
+    tolerance = ENGINE_ACCURACY * case.extent + 8.0 * case.coordinate_ulp * 10.0
+    # Transects cover the stretch between the first and the last incircle: half a width from each end.
+    half_width = case.width / 2.0
+    length = result.line.length
+    stations = interval * np.arange(int(np.floor(length / interval)) + 1)
+    inner = stations[(stations >= half_width - tolerance) & (stations <= length - half_width + tolerance)]
+    assert [cut.chainage for cut in cuts] == pytest.approx(list(inner), abs=tolerance)
+    bank_a, bank_b = LineString(case.bank_a), LineString(case.bank_b)
+    for cut in cuts:
+        assert isinstance(cut, Transect)
+        assert cut.width == pytest.approx(case.width, abs=tolerance)
+        assert cut.line.length == pytest.approx(cut.width, abs=tolerance)
+        start, middle, end = (Point(xy) for xy in cut.line.coords)
+        assert bank_a.distance(start) <= tolerance
+        assert bank_b.distance(end) <= tolerance
+        assert result.line.interpolate(cut.chainage).distance(middle) <= tolerance
+        assert case.axis_distance(np.array([middle.coords[0]]))[0] <= tolerance + case.axis_tolerance
+
+
+def test_annulus_sector_transects_are_radial_and_as_wide_as_the_ring():
+    case = geometry_cases.annulus_sector(r_inner=40.0, r_outer=60.0)
+    result = centerline(case, divisions=20)
+    sagitta = chord_sagitta(result, 50.0)
+    tolerance = ENGINE_ACCURACY * case.extent + case.axis_tolerance + sagitta
+    cuts = transects(result, 7.0)
+    # No transects in the end caps, about half a width (10) long at each end.
+    assert len(cuts) >= int((result.line.length - 20.0) / 7.0) - 1
+    centre = np.zeros(2)
+    for cut in cuts:
+        foot_a, middle, foot_b = np.asarray(cut.line.coords)
+        assert cut.width == pytest.approx(20.0, abs=2.0 * tolerance)
+        radial = (middle - centre) / np.hypot(*middle)
+        for foot in (foot_a, foot_b):
+            offset = foot - middle
+            assert abs(offset[0] * radial[1] - offset[1] * radial[0]) <= tolerance
+        assert sorted([np.hypot(*foot_a), np.hypot(*foot_b)]) == pytest.approx([40.0, 60.0], abs=2.0 * tolerance)
+
+
+def test_transect_feet_lie_on_the_chains_when_the_chains_are_given():
+    case = geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0)
+    result = centerline(case)
+    chains = (LineString(case.chain_a), LineString(case.chain_b))
+    cuts = transects(result, 13.0, chains=chains)
+    tolerance = ENGINE_ACCURACY * case.extent
+    smallest_curvature_radius = (400.0 / (2.0 * math.pi)) ** 2 / 40.0
+    axis_error = case.axis_tolerance + chord_sagitta(result, smallest_curvature_radius - case.width / 2.0)
+    for cut in cuts:
+        foot_a, _, foot_b = (Point(xy) for xy in cut.line.coords)
+        assert chains[0].distance(foot_a) <= tolerance
+        assert chains[1].distance(foot_b) <= tolerance
+        assert cut.width == pytest.approx(case.width, abs=2.0 * axis_error + tolerance)
+
+
+def test_interpolated_and_chain_feet_agree_on_a_meander():
+    case = geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0)
+    result = centerline(case)
+    chains = (case.chain_a, case.chain_b)
+    interpolated = transects(result, 11.0)
+    exact = transects(result, 11.0, chains=chains)
+    assert [cut.chainage for cut in interpolated] == [cut.chainage for cut in exact]
+    spacing = float(np.max(np.hypot(*np.diff(shapely.get_coordinates(result.line), axis=0).T)))
+    for a, b in zip(interpolated, exact):
+        gap = np.hypot(*(np.asarray(a.line.coords) - np.asarray(b.line.coords)).T).max()
+        assert gap <= spacing
+
+
+@pytest.mark.parametrize("placement", sorted(geometry_cases.PLACEMENTS))
+def test_incircles_are_the_results_circles(placement):
+    case = geometry_cases.meander(
+        length=800.0, width=20.0, amplitude=40.0, wavelength=400.0, placement=geometry_cases.PLACEMENTS[placement]
+    )
+    result = centerline(case)
+    circles = incircle_polygons(result, quad_segs=8)
+    vertices = shapely.get_coordinates(result.line)
+    nonzero = np.flatnonzero(result.radii > 0.0)
+    assert len(circles) == len(nonzero)
+    chainages = vertex_chainages(result)
+    tolerance = ENGINE_ACCURACY * case.extent
+    for circle, index in zip(circles, nonzero):
+        assert isinstance(circle, Incircle)
+        assert circle.radius == result.radii[index]
+        assert circle.chainage == pytest.approx(chainages[index], abs=tolerance)
+        corners = shapely.get_coordinates(circle.polygon.exterior)[:-1]
+        assert len(corners) == 4 * 8
+        assert np.hypot(*(corners - vertices[index]).T) == pytest.approx(circle.radius, abs=tolerance)
+    assert np.all(np.diff([circle.chainage for circle in circles]) >= 0.0)
+
+
+def test_incircles_are_empty_circles_of_the_polygon():
+    case = geometry_cases.rectangle(length=100.0, width=10.0)
+    result = centerline(case)
+    tolerance = ENGINE_ACCURACY * case.extent
+    for circle in incircle_polygons(result):
+        assert case.polygon.buffer(tolerance).contains(circle.polygon)
+        assert circle.radius == pytest.approx(5.0, abs=tolerance)
+
+
+def test_chainage_of_the_last_vertex_is_the_line_length():
+    case = geometry_cases.tapered_channel()
+    result = centerline(case)
+    chainages = vertex_chainages(result)
+    assert chainages[0] == 0.0
+    assert chainages[-1] == pytest.approx(result.line.length, rel=1e-12)
+
+
+def test_tapered_channel_transects_narrow_with_the_channel():
+    case = geometry_cases.tapered_channel(length=100.0, width_start=20.0, width_end=5.0)
+    result = centerline(case)
+    widths = [cut.width for cut in transects(result, 10.0)]
+    assert len(widths) >= 8
+    assert np.all(np.diff(widths) < 0.0)
+
+
+@pytest.mark.parametrize("interval", [0.0, -1.0, float("nan"), float("inf"), "ten"])
+def test_bad_interval_is_a_typed_error(interval):
+    result = centerline(geometry_cases.rectangle())
+    with pytest.raises(IncirCuError):
+        transects(result, interval)
+
+
+def test_bad_circle_resolution_is_a_typed_error():
+    result = centerline(geometry_cases.rectangle())
+    with pytest.raises(IncirCuError):
+        incircle_polygons(result, quad_segs=0)
+
+
+def test_open_mode_transects_reach_both_open_ends():
+    gap = 8.0
+    result = lines_centerline([(0.0, 0.0), (100.0, 0.0)], [(0.0, gap), (100.0, gap)], spacing=1.0)
+    cuts = transects(result, 25.0)
+    tolerance = ENGINE_ACCURACY * 100.0
+    assert [cut.chainage for cut in cuts] == pytest.approx([0.0, 25.0, 50.0, 75.0, 100.0], abs=tolerance)
+    assert [cut.width for cut in cuts] == pytest.approx([gap] * 5, abs=tolerance)
