@@ -168,7 +168,7 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     fan_vertex = inner[~convex]
     fan_turn = turn[~convex]
     fan_count = np.where(
-        np.abs(fan_turn) > 1e-12,
+        np.abs(fan_turn) >= fan_step,
         np.minimum(np.ceil(np.abs(fan_turn) / fan_step), MAX_FAN_DIRECTIONS - 1).astype(int) + 1,
         1,
     )
@@ -183,15 +183,16 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     half_angle = interior_angle[convex] / 2.0
     tangent_point = chain[convex_vertex] - incoming[convex] * (np.cos(half_angle))[:, None]
 
-    point = np.concatenate([edge_point, chain[fan_vertex], chain[convex_vertex]])
+    position = np.concatenate([stations, positions[fan_vertex], positions[convex_vertex]])
+    order = np.argsort(position, kind="stable")
     return _Samples(
-        point=point,
-        direction=np.concatenate([normal[segment], fan_direction, bisector[convex]]),
-        scale=np.concatenate([np.ones(len(segment) + len(fan_vertex)), np.sin(half_angle)]),
-        position=np.concatenate([stations, positions[fan_vertex], positions[convex_vertex]]),
-        foot=np.concatenate([edge_point, chain[fan_vertex], tangent_point]),
-        first_own=offset + np.concatenate([segment, fan_vertex - 1, convex_vertex - 1]),
-        last_own=offset + np.concatenate([segment, fan_vertex, convex_vertex]),
+        point=np.concatenate([edge_point, chain[fan_vertex], chain[convex_vertex]])[order],
+        direction=np.concatenate([normal[segment], fan_direction, bisector[convex]])[order],
+        scale=np.concatenate([np.ones(len(segment) + len(fan_vertex)), np.sin(half_angle)])[order],
+        position=position[order],
+        foot=np.concatenate([edge_point, chain[fan_vertex], tangent_point])[order],
+        first_own=offset + np.concatenate([segment, fan_vertex - 1, convex_vertex - 1])[order],
+        last_own=offset + np.concatenate([segment, fan_vertex, convex_vertex])[order],
     )
 
 
@@ -246,17 +247,29 @@ def _group_minimum(group, values, size):
     return result
 
 
-def _solve_chunk(samples, index, boundary, own_chain, trial_radius, limit, floor):
-    """Settle the samples ``index``; return (accepted sample indices, t, contact, contact position)."""
+def _solve(samples, index, boundary, own_chain, trial, limit, floor):
+    """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
+
+    Returns arrays aligned with ``index``: ``first`` (parameter of the first contact with anything, inf
+    when none within ``limit``), ``accepted`` (first contact lies on the other chain), and for accepted
+    samples ``t``, the ``contact`` point and its arc-length ``position`` along the other chain.
+    """
+    count = len(index)
     point, direction = samples.point[index], samples.direction[index]
     scale = samples.scale[index]
-    radius = np.full(len(index), trial_radius)
-    active = np.arange(len(index))
-    found = {"sample": [], "t": [], "contact": [], "position": []}
+    radius = np.array(trial, dtype=float)
+    first = np.full(count, np.inf)
+    accepted = np.zeros(count, dtype=bool)
+    contact = np.zeros((count, 2))
+    position = np.zeros(count)
+    active = np.arange(count)
     while len(active):
         centre = point[active] + radius[active, None] * direction[active]
+        # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
+        # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
+        reach = radius[active] * (1.0 + 1e-9)
         query, segment = boundary.tree.query(
-            shapely.points(centre), predicate="dwithin", distance=radius[active] * (1.0 + 1e-9)
+            shapely.box(centre[:, 0] - reach, centre[:, 1] - reach, centre[:, 0] + reach, centre[:, 1] + reach)
         )
         pair = active[query]
         sample = index[pair]
@@ -269,30 +282,53 @@ def _solve_chunk(samples, index, boundary, own_chain, trial_radius, limit, floor
         t_own = np.where(on_own, t, np.inf)
         t_other = np.where(on_own, np.inf, t)
 
-        best_own = _group_minimum(pair, t_own, len(index))
-        best_other = _group_minimum(pair, t_other, len(index))
+        best_own = _group_minimum(pair, t_own, count)
+        best_other = _group_minimum(pair, t_other, count)
         best = np.minimum(best_own[active], best_other[active])
         settled = best <= radius[active]
+        first[active[settled]] = best[settled]
 
         winner = np.isfinite(t_other) & (t_other == best_other[pair])
         winner &= t_other <= best_own[pair] * (1.0 + TIE_TOLERANCE)
         winner &= settled[np.searchsorted(active, pair)]
         winner_pair = np.flatnonzero(winner)
-        _, first = np.unique(pair[winner_pair], return_index=True)
-        chosen = winner_pair[first]
-        chosen_segment = segment[chosen]
-        found["sample"].append(index[pair[chosen]])
-        found["t"].append(t[chosen])
-        found["contact"].append(
-            boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
-        )
-        found["position"].append(boundary.segment_position[chosen_segment] + along[chosen])
+        _, unique = np.unique(pair[winner_pair], return_index=True)
+        chosen = winner_pair[unique]
+        chosen_sample, chosen_segment = pair[chosen], segment[chosen]
+        accepted[chosen_sample] = True
+        first[chosen_sample] = t[chosen]
+        contact[chosen_sample] = boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
+        position[chosen_sample] = boundary.segment_position[chosen_segment] + along[chosen]
 
         pending = active[~settled]
         best = best[~settled]
         radius[pending] = np.where(np.isfinite(best), best, radius[pending] * 4.0)
         active = pending[radius[pending] <= limit]
-    return tuple(np.concatenate(found[key]) for key in ("sample", "t", "contact", "position"))
+    return first, accepted, contact, position
+
+
+def _solve_in_two_passes(samples, index, boundary, own_chain, trial_radius, limit, floor):
+    """Settle ``index`` (sorted by position): every 8th sample from a global trial radius, then the rest
+    from trial radii interpolated between those, which keeps the candidate boxes tight."""
+    coarse = np.zeros(len(index), dtype=bool)
+    coarse[::8] = True
+    results = [None, None]
+    results[0] = _solve(samples, index[coarse], boundary, own_chain, np.full(coarse.sum(), trial_radius), limit, floor)
+    known = np.isfinite(results[0][0])
+    fine = index[~coarse]
+    if np.any(known):
+        radius_known = samples.scale[index[coarse]][known] * results[0][0][known]
+        estimate = np.interp(samples.position[fine], samples.position[index[coarse]][known], radius_known)
+        trial = 1.05 * estimate / samples.scale[fine]
+    else:
+        trial = np.full(len(fine), trial_radius)
+    results[1] = _solve(samples, fine, boundary, own_chain, trial, limit, floor)
+    merged = []
+    for coarse_part, fine_part in zip(*results):
+        whole = np.empty((len(index),) + coarse_part.shape[1:], dtype=coarse_part.dtype)
+        whole[coarse], whole[~coarse] = coarse_part, fine_part
+        merged.append(whole)
+    return merged
 
 
 def _distinct(points, tolerance):
@@ -452,9 +488,10 @@ def centerline_from_chains(
         samples = sampled[own]
         for begin in range(0, len(samples.point), _CHUNK):
             index = np.arange(begin, min(begin + _CHUNK, len(samples.point)))
-            sample, t, contact, position = _solve_chunk(
+            t, accepted, contact, position = _solve_in_two_passes(
                 samples, index, boundary, own, trial_radius, limit, floor
             )
+            sample, t, contact, position = index[accepted], t[accepted], contact[accepted], position[accepted]
             centre = samples.point[sample] + t[:, None] * samples.direction[sample]
             radius = samples.scale[sample] * t
             own_foot, own_position = samples.foot[sample], samples.position[sample]
