@@ -89,7 +89,7 @@ def bridge_islands(c1, c2, holes):
     merge = COINCIDENCE_TOLERANCE * extent
     region_on_left = _signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
     lines = [LineString(chain) for chain in chains]
-    islands = shapely.polygons(rings)
+    islands = np.array([Polygon(ring) for ring in rings], dtype=object)
     count = len(rings)
     # Hosts: 0 and 1 are the chains, 2 + j is island j once it has joined.
     distance = np.full((count, count + 2), np.inf)
