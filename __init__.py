@@ -1,7 +1,7 @@
 """QGIS entry point of the IncirCu plugin (the repository root is the plugin folder ``incircu``)."""
 
 
-def classFactory(iface):  # noqa: N802 - name required by QGIS
+def classFactory(iface):
     """Create the plugin object; QGIS calls this when it loads the plugin.
 
     Parameters

@@ -14,8 +14,6 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
-from .dependencies import shared
-
 ICON_PATH = Path(__file__).resolve().parent.parent / "icons"
 
 
@@ -47,22 +45,22 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         """Translate ``text`` with the class name as context."""
         return QCoreApplication.translate(type(self).__name__, text)
 
-    def createInstance(self):  # noqa: N802 - QGIS API name
+    def createInstance(self):
         return type(self)()
 
     def group(self):
-        return shared("Centerlines")
+        return QCoreApplication.translate("IncirCuAlgorithm", "Centerlines")
 
-    def groupId(self):  # noqa: N802 - QGIS API name
+    def groupId(self):
         return "centerlines"
 
     def icon(self):
         return QIcon(self.svgIconPath())
 
-    def svgIconPath(self):  # noqa: N802 - QGIS API name
+    def svgIconPath(self):
         return str(ICON_PATH / self.ICON)
 
-    def helpString(self):  # noqa: N802 - QGIS API name
+    def helpString(self):
         help_map = {"ALG_DESC": self.shortHelpString(), "ALG_CREATOR": "IncirCu", **self.parameter_help}
         return QgsProcessingUtils.formatHelpMapAsHtml(help_map, self)
 
@@ -92,83 +90,110 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def add_spacing_parameter(self, parent_name):
         """Add ``SPACING`` (distance between centerline samples, units of ``parent_name``'s layer)."""
         spacing = QgsProcessingParameterDistance(
-            self.SPACING, shared("Distance between centerline vertices (0 = automatic)"), 0.0, parent_name, minValue=0.0
+            self.SPACING,
+            QCoreApplication.translate("IncirCuAlgorithm", "Distance between centerline vertices (0 = automatic)"),
+            0.0,
+            parent_name,
+            minValue=0.0,
         )
         self.add_parameter(
             spacing,
-            shared(
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
                 "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
-                "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline."
+                "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.",
             ),
         )
 
     def add_result_parameters(self, parent_name):
         """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
         self.add_parameter(
-            QgsProcessingParameterBoolean(self.ADD_M, shared("Store the local width as M value"), True),
-            shared("Write the incircle diameter (local width, layer units or metres) as M value of each vertex."),
+            QgsProcessingParameterBoolean(
+                self.ADD_M, QCoreApplication.translate("IncirCuAlgorithm", "Store the local width as M value"), True
+            ),
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
+                "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
-                self.OUTPUT, shared("Centerlines"), QgsProcessing.SourceType.TypeVectorLine
+                self.OUTPUT,
+                QCoreApplication.translate("IncirCuAlgorithm", "Centerlines"),
+                QgsProcessing.SourceType.TypeVectorLine,
             ),
-            shared(
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
                 "Line layer: input attributes plus length, width_min, width_mean, width_max (incircle "
-                "diameters over the vertices with a positive width), n_vertices and ends_found."
+                "diameters over the vertices with a positive width), n_vertices and ends_found.",
             ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_VERTICES,
-                shared("Centerline vertices"),
+                QCoreApplication.translate("IncirCuAlgorithm", "Centerline vertices"),
                 QgsProcessing.SourceType.TypeVectorPoint,
                 optional=True,
                 createByDefault=False,
             ),
-            shared("Optional point layer: every centerline vertex with its chainage, incircle radius and width."),
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
+                "Optional point layer: every centerline vertex with its chainage, incircle radius and width.",
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_CIRCLES,
-                shared("Incircles"),
+                QCoreApplication.translate("IncirCuAlgorithm", "Incircles"),
                 QgsProcessing.SourceType.TypeVectorPolygon,
                 optional=True,
                 createByDefault=False,
             ),
-            shared("Optional polygon layer: the incircle of every vertex, with its radius and chainage."),
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
+                "Optional polygon layer: the incircle of every vertex, with its radius and chainage.",
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_TRANSECTS,
-                shared("Transects"),
+                QCoreApplication.translate("IncirCuAlgorithm", "Transects"),
                 QgsProcessing.SourceType.TypeVectorLine,
                 optional=True,
                 createByDefault=False,
             ),
-            shared(
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
                 "Optional line layer: cross-sections from bank to bank through the centerline, every "
-                "TRANSECT_INTERVAL, with their width and chainage."
+                "TRANSECT_INTERVAL, with their width and chainage.",
             ),
         )
         self.add_parameter(
             QgsProcessingParameterDistance(
                 self.TRANSECT_INTERVAL,
-                shared("Distance between transects (0 = mean width)"),
+                QCoreApplication.translate("IncirCuAlgorithm", "Distance between transects (0 = mean width)"),
                 0.0,
                 parent_name,
                 minValue=0.0,
             ),
-            shared(
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
-                "degrees); 0 uses the mean width of each centerline."
+                "degrees); 0 uses the mean width of each centerline.",
             ),
             advanced=True,
         )
         self.add_output(
-            QgsProcessingOutputNumber(self.CENTERLINE_COUNT, shared("Number of centerlines")),
-            shared("Number of centerline features written."),
+            QgsProcessingOutputNumber(
+                self.CENTERLINE_COUNT, QCoreApplication.translate("IncirCuAlgorithm", "Number of centerlines")
+            ),
+            QCoreApplication.translate("IncirCuAlgorithm", "Number of centerline features written."),
         )
         self.add_output(
-            QgsProcessingOutputNumber(self.SKIPPED_COUNT, shared("Number of skipped features")),
-            shared("Number of input features (or parts) skipped with a warning."),
+            QgsProcessingOutputNumber(
+                self.SKIPPED_COUNT, QCoreApplication.translate("IncirCuAlgorithm", "Number of skipped features")
+            ),
+            QCoreApplication.translate(
+                "IncirCuAlgorithm", "Number of input features (or parts) skipped with a warning."
+            ),
         )

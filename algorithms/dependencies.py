@@ -16,11 +16,6 @@ INSTALL_HINT = (
 )
 
 
-def shared(text):
-    """Translate a string shared by every IncirCu algorithm (context ``IncirCuAlgorithm``)."""
-    return QCoreApplication.translate("IncirCuAlgorithm", text)
-
-
 def version_tuple(version):
     """Return the leading numeric parts of a version string, e.g. ``"2.0.1"`` -> ``(2, 0, 1)``."""
     parts = []
@@ -45,11 +40,19 @@ def shapely_problem():
     try:
         shapely = importlib.import_module("shapely")
     except ImportError:
-        return shared("IncirCu needs the Python package Shapely 2, which is not installed.") + " " + INSTALL_HINT
+        return (
+            QCoreApplication.translate(
+                "IncirCuAlgorithm", "IncirCu needs the Python package Shapely 2, which is not installed."
+            )
+            + " "
+            + INSTALL_HINT
+        )
     version = getattr(shapely, "__version__", "0")
     if version_tuple(version) < MINIMUM_SHAPELY:
         return (
-            shared("IncirCu needs Shapely 2.0 or newer, but Shapely {} is installed.").format(version)
+            QCoreApplication.translate(
+                "IncirCuAlgorithm", "IncirCu needs Shapely 2.0 or newer, but Shapely {} is installed."
+            ).format(version)
             + " "
             + INSTALL_HINT
         )

@@ -28,13 +28,13 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     def name(self):
         return "linescenterline"
 
-    def displayName(self):  # noqa: N802 - QGIS API name
+    def displayName(self):
         return self.tr("Centerline between two lines (IncirCu)")
 
     def tags(self):
         return self.tr("centerline,centreline,medial axis,banks,river,road,width,incircle").split(",")
 
-    def shortHelpString(self):  # noqa: N802 - QGIS API name
+    def shortHelpString(self):
         return self.tr(
             "Computes one unbranched centerline between two lines (for example the two banks of a river) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
@@ -44,7 +44,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             "computed in a local metric projection and distances are then in metres."
         )
 
-    def initAlgorithm(self, configuration=None):  # noqa: N802 - QGIS API name
+    def initAlgorithm(self, configuration=None):
         line = [QgsProcessing.SourceType.TypeVectorLine]
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.LINES_A, self.tr("First lines (bank A)"), line),
@@ -56,14 +56,18 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterField(
-                self.PAIR_FIELD_A, self.tr("Pairing field of the first lines"), parentLayerParameterName=self.LINES_A,
+                self.PAIR_FIELD_A,
+                self.tr("Pairing field of the first lines"),
+                parentLayerParameterName=self.LINES_A,
                 optional=True,
             ),
             self.tr("Optional; a line of LINES_A is paired with the line of LINES_B having the same value."),
         )
         self.add_parameter(
             QgsProcessingParameterField(
-                self.PAIR_FIELD_B, self.tr("Pairing field of the second lines"), parentLayerParameterName=self.LINES_B,
+                self.PAIR_FIELD_B,
+                self.tr("Pairing field of the second lines"),
+                parentLayerParameterName=self.LINES_B,
                 optional=True,
             ),
             self.tr("Optional; required together with PAIR_FIELD_A."),
@@ -71,7 +75,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_spacing_parameter(self.LINES_A)
         self.add_result_parameters(self.LINES_A)
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 - QGIS API name
+    def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)
         line_type = QgsWkbTypes.GeometryType.LineGeometry
         source_a = run.source(self.LINES_A, line_type)
@@ -131,9 +135,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             run.write(first, [] if result is None else [(0, result)])
         for key, (first, _) in groups_b.items():
             if key not in groups_a:
-                run.warn(self.tr("No line in LINES_A has {} = {!r}; line {} of LINES_B unused.").format(
-                    field_a, key, first.id()
-                ))
+                run.warn(
+                    self.tr("No line in LINES_A has {} = {!r}; line {} of LINES_B unused.").format(
+                        field_a, key, first.id()
+                    )
+                )
         return run.finish()
 
     @staticmethod

@@ -1,9 +1,6 @@
 """Output layers of the IncirCu algorithms: fields, statistics and the writing of core results."""
 
-import math
-
 import numpy as np
-
 from qgis.core import (
     Qgis,
     QgsFeature,
@@ -17,6 +14,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
 from .convert import collect_lines, from_shapely, line_with_m
 
 if Qgis.QGIS_VERSION_INT >= 33800:
@@ -55,7 +53,6 @@ VERTEX_FIELDS = (
 CIRCLE_FIELDS = (
     ("source_fid", INTEGER),
     ("part", INTEGER),
-    ("vertex", INTEGER),
     ("chainage", DOUBLE),
     ("radius", DOUBLE),
 )
@@ -65,25 +62,6 @@ TRANSECT_FIELDS = (
     ("chainage", DOUBLE),
     ("width", DOUBLE),
 )
-
-
-def chainages(coordinates):
-    """Return the distance along a polyline of each of its vertices.
-
-    Parameters
-    ----------
-    coordinates : sequence of (x, y)
-        Vertices, CRS units.
-
-    Returns
-    -------
-    list of float
-        Cumulative length at each vertex, CRS units; starts at 0.
-    """
-    distances = [0.0]
-    for (x0, y0), (x1, y1) in zip(coordinates[:-1], coordinates[1:]):
-        distances.append(distances[-1] + math.hypot(x1 - x0, y1 - y0))
-    return distances
 
 
 def width_statistics(results):
@@ -177,7 +155,7 @@ class CenterlineWriter:
             "OUTPUT_TRANSECTS": self.transects_id,
         }
 
-    def write(self, attributes, source_fid, parts, frame, core):
+    def write(self, attributes, source_fid, parts, frame):
         """Write the centerline(s) of one input feature and its optional outputs.
 
         Parameters
@@ -190,8 +168,6 @@ class CenterlineWriter:
             Part index and result of every successful part.
         frame : WorkingFrame
             Frame the results are expressed in.
-        core : module
-            The geometry core (incircle and transect helpers).
         """
         if not parts:
             return
@@ -209,33 +185,32 @@ class CenterlineWriter:
             self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
             self.centerline_count += 1
         for part_index, result in parts:
-            self._write_extras(source_fid, part_index, result, frame, core)
+            self._write_extras(source_fid, part_index, result, frame)
 
-    def _write_extras(self, source_fid, part_index, result, frame, core):
-        distances = chainages(list(result.line.coords))
+    def _write_extras(self, source_fid, part_index, result, frame):
         if self.vertices is not None:
             coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
-            for index, ((x, y), chainage, radius) in enumerate(zip(coordinates, distances, result.radii)):
+            for index, ((x, y), chainage, radius) in enumerate(
+                zip(coordinates, vertex_chainages(result), result.radii)
+            ):
                 point = QgsFeature()
                 point.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(float(x), float(y))))
-                point.setAttributes([source_fid, part_index, index, chainage, float(radius), 2.0 * float(radius)])
+                point.setAttributes(
+                    [source_fid, part_index, index, float(chainage), float(radius), 2.0 * float(radius)]
+                )
                 self.vertices.addFeature(point, QgsFeatureSink.Flag.FastInsert)
         if self.circles is not None:
-            for index, (circle, chainage, radius) in enumerate(
-                zip(core.incircle_polygons(result), distances, result.radii)
-            ):
-                if circle.is_empty or radius <= 0:
-                    continue
+            for circle in incircle_polygons(result):
                 disc = QgsFeature()
-                disc.setGeometry(from_shapely(frame.to_layer(circle)))
-                disc.setAttributes([source_fid, part_index, index, chainage, float(radius)])
+                disc.setGeometry(from_shapely(frame.to_layer(circle.polygon)))
+                disc.setAttributes([source_fid, part_index, circle.chainage, circle.radius])
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
             interval = self.transect_interval or automatic_interval([result])
             if interval <= 0:
                 return
-            for transect in core.transects(result, interval):
+            for transect in transects(result, interval):
                 section = QgsFeature()
                 section.setGeometry(from_shapely(frame.to_layer(transect.line)))
-                section.setAttributes([source_fid, part_index, float(transect.chainage), float(transect.width)])
+                section.setAttributes([source_fid, part_index, transect.chainage, transect.width])
                 self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)

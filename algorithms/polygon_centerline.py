@@ -37,13 +37,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     def name(self):
         return "polygoncenterline"
 
-    def displayName(self):  # noqa: N802 - QGIS API name
+    def displayName(self):
         return self.tr("Centerline of polygons (IncirCu)")
 
     def tags(self):
         return self.tr("centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle").split(",")
 
-    def shortHelpString(self):  # noqa: N802 - QGIS API name
+    def shortHelpString(self):
         return self.tr(
             "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
@@ -54,7 +54,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             "A polygon that cannot be processed is skipped with a warning naming its id and the reason."
         )
 
-    def initAlgorithm(self, configuration=None):  # noqa: N802 - QGIS API name
+    def initAlgorithm(self, configuration=None):
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
                 self.INPUT, self.tr("Polygon layer"), [QgsProcessing.SourceType.TypeVectorPolygon]
@@ -64,7 +64,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
                 self.SPLIT_POINTS,
-                self.tr("Split points (optional)"),
+                self.tr("Split points"),
                 [QgsProcessing.SourceType.TypeVectorPoint],
                 optional=True,
             ),
@@ -105,7 +105,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_result_parameters(self.INPUT)
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 - QGIS API name
+    def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)
         source = run.source(self.INPUT, QgsWkbTypes.GeometryType.PolygonGeometry)
         crs = source.sourceCrs()

@@ -1,8 +1,9 @@
 """Per-feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts."""
 
 from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsProcessingFeatureSource, QgsWkbTypes
+from qgis.PyQt.QtCore import QCoreApplication
 
-from .dependencies import require_core, shared
+from .dependencies import require_core
 
 GEOMETRY_TYPE_NAMES = {
     QgsWkbTypes.GeometryType.PointGeometry: "point",
@@ -57,7 +58,9 @@ class FeatureRun:
         actual = QgsWkbTypes.geometryType(source.wkbType())
         if actual != geometry_type:
             raise QgsProcessingException(
-                shared("{} must be a {} layer, but '{}' holds {} geometries.").format(
+                QCoreApplication.translate(
+                    "IncirCuAlgorithm", "{} must be a {} layer, but '{}' holds {} geometries."
+                ).format(
                     name,
                     GEOMETRY_TYPE_NAMES[geometry_type],
                     source.sourceName(),
@@ -93,7 +96,7 @@ class FeatureRun:
             self.progress_base = current * self.progress_step
             self.feedback.setProgress(self.progress_base)
             if not feature.hasGeometry() or feature.geometry().isEmpty():
-                self.skip(feature.id(), shared("the feature has no geometry"))
+                self.skip(feature.id(), QCoreApplication.translate("IncirCuAlgorithm", "the feature has no geometry"))
                 continue
             yield feature
 
@@ -105,11 +108,19 @@ class FeatureRun:
     def skip(self, feature_id, reason, part_index=None):
         """Warn that a feature (or one of its parts) is skipped, and count it."""
         self.skipped += 1
-        self.warn(shared("Feature {} skipped: {}").format(self.where(feature_id, part_index), reason))
+        self.warn(
+            QCoreApplication.translate("IncirCuAlgorithm", "Feature {} skipped: {}").format(
+                self.where(feature_id, part_index), reason
+            )
+        )
 
     def note(self, feature_id, message, part_index=None):
         """Tell the user something about a feature that is still processed."""
-        self.feedback.pushInfo(shared("Feature {}: {}").format(self.where(feature_id, part_index), message))
+        self.feedback.pushInfo(
+            QCoreApplication.translate("IncirCuAlgorithm", "Feature {}: {}").format(
+                self.where(feature_id, part_index), message
+            )
+        )
 
     def warn(self, message):
         """Show a warning in the log (``pushWarning`` where QGIS has it)."""
@@ -123,7 +134,7 @@ class FeatureRun:
         """Return ``"7"`` or ``"7 (part 1)"`` for messages."""
         if part_index is None:
             return str(feature_id)
-        return shared("{} (part {})").format(feature_id, part_index)
+        return QCoreApplication.translate("IncirCuAlgorithm", "{} (part {})").format(feature_id, part_index)
 
     def compute(self, feature_id, part_index, function, *args, **kwargs):
         """Call a core function for one feature (part); a core error becomes a skip warning.
@@ -142,22 +153,24 @@ class FeatureRun:
         except Exception as error:  # noqa: BLE001 - one bad feature must not abort a run of thousands
             self.skip(
                 feature_id,
-                shared("unexpected {}: {} (please report this with the feature)").format(type(error).__name__, error),
+                QCoreApplication.translate(
+                    "IncirCuAlgorithm", "unexpected {}: {} (please report this with the feature)"
+                ).format(type(error).__name__, error),
                 part_index,
             )
         return None
 
     def write(self, feature, parts):
         """Write the results of one input feature."""
-        self.writer.write(feature.attributes(), feature.id(), parts, self.frame, self.core)
+        self.writer.write(feature.attributes(), feature.id(), parts, self.frame)
 
     def finish(self):
         """Return the algorithm's result map and report the totals."""
         self.feedback.setProgress(100.0)
         self.feedback.pushInfo(
-            shared("{} centerlines written, {} features or parts skipped.").format(
-                self.writer.centerline_count, self.skipped
-            )
+            QCoreApplication.translate(
+                "IncirCuAlgorithm", "{} centerlines written, {} features or parts skipped."
+            ).format(self.writer.centerline_count, self.skipped)
         )
         results = {name: value for name, value in self.writer.destinations().items() if value}
         results[self.algorithm.CENTERLINE_COUNT] = self.writer.centerline_count

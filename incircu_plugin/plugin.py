@@ -3,7 +3,7 @@
 from pathlib import Path
 
 from qgis.core import QgsApplication, QgsSettings
-from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+from qgis.PyQt.QtCore import QCoreApplication, QLocale, QTranslator
 
 from .provider import IncirCuProvider
 
@@ -11,9 +11,8 @@ I18N_FOLDER = Path(__file__).resolve().parent.parent / "i18n"
 
 
 def user_locale():
-    """Return the two-letter language code QGIS runs in (``"en"`` when unset)."""
-    locale = QgsSettings().value("locale/userLocale", "") or "en"
-    return str(locale)[:2]
+    """Return the two-letter code of the language QGIS runs in (``locale/userLocale``, else the system's)."""
+    return str(QgsSettings().value("locale/userLocale", "") or QLocale.system().name())[:2]
 
 
 class IncirCuPlugin:
@@ -26,13 +25,13 @@ class IncirCuPlugin:
         if self.translator.load(str(I18N_FOLDER / f"incircu_{user_locale()}.qm")):
             QCoreApplication.installTranslator(self.translator)
 
-    def initProcessing(self):  # noqa: N802 - QGIS API name
+    def initProcessing(self):
         """Register the Processing provider (called by QGIS, also under ``qgis_process``)."""
         if self.provider is None:
             self.provider = IncirCuProvider()
             QgsApplication.processingRegistry().addProvider(self.provider)
 
-    def initGui(self):  # noqa: N802 - QGIS API name
+    def initGui(self):
         """Desktop start-up: the toolbox entries are the whole user interface."""
         self.initProcessing()
 

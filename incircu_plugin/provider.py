@@ -25,25 +25,25 @@ def plugin_metadata():
 class IncirCuProvider(QgsProcessingProvider):
     """Holds the IncirCu algorithms in the Processing registry."""
 
-    def id(self):  # noqa: A003 - QGIS API name
+    def id(self):
         return "incircu"
 
     def name(self):
         return "IncirCu"
 
-    def longName(self):  # noqa: N802 - QGIS API name
+    def longName(self):
         return f"IncirCu {self.versionInfo()}"
 
     def icon(self):
         return QIcon(str(PLUGIN_FOLDER / "icons" / "incircu.svg"))
 
-    def svgIconPath(self):  # noqa: N802 - QGIS API name
+    def svgIconPath(self):
         return str(PLUGIN_FOLDER / "icons" / "incircu.svg")
 
-    def versionInfo(self):  # noqa: N802 - QGIS API name
+    def versionInfo(self):
         return plugin_metadata()["version"]
 
-    def loadAlgorithms(self):  # noqa: N802 - QGIS API name
+    def loadAlgorithms(self):
         from ..algorithms.lines_centerline import LinesCenterlineAlgorithm
         from ..algorithms.polygon_centerline import PolygonCenterlineAlgorithm
 

@@ -68,7 +68,7 @@ def write_layer(path, features, epsg):
     digits = 2 if epsg != 4326 else 8
     collection = {"type": "FeatureCollection", "name": path.stem}
     if epsg != 4326:
-        collection["crs"] = {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::{}".format(epsg)}}
+        collection["crs"] = {"type": "name", "properties": {"name": f"urn:ogc:def:crs:EPSG::{epsg}"}}
     collection["features"] = [
         {
             "type": "Feature",
@@ -169,13 +169,13 @@ def write_model(path):
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     from qgis.core import (
         QgsApplication,
+        QgsProcessing,
         QgsProcessingModelAlgorithm,
         QgsProcessingModelChildAlgorithm,
         QgsProcessingModelChildParameterSource,
         QgsProcessingModelOutput,
         QgsProcessingModelParameter,
         QgsProcessingParameterFeatureSource,
-        QgsProcessing,
     )
     from qgis.PyQt.QtCore import QPointF
 
@@ -235,7 +235,7 @@ def write_model(path):
         model.addChildAlgorithm(step)
     model.updateDestinationParameters()
     if not model.toFile(str(path)):
-        raise RuntimeError("could not write {}".format(path))
+        raise RuntimeError(f"could not write {path}")
     application.exitQgis()
 
 
@@ -243,13 +243,13 @@ def main():
     """Write every file."""
     samples = sample_layers()
     for name, features in samples.items():
-        write_layer(SAMPLE_FOLDER / "{}.geojson".format(name), features, PROJECTED)
-        write_layer(FIXTURE_FOLDER / "{}_2180.geojson".format(name), features, PROJECTED)
+        write_layer(SAMPLE_FOLDER / f"{name}.geojson", features, PROJECTED)
+        write_layer(FIXTURE_FOLDER / f"{name}_2180.geojson", features, PROJECTED)
     for name in ("river", "split_points", "banks_b"):
         geographic = [(fid, to_geographic(geometry), props) for fid, geometry, props in samples[name]]
-        write_layer(FIXTURE_FOLDER / "{}_4326.geojson".format(name), geographic, 4326)
+        write_layer(FIXTURE_FOLDER / f"{name}_4326.geojson", geographic, 4326)
     for name, features in bad_layers().items():
-        write_layer(FIXTURE_FOLDER / "{}_2180.geojson".format(name), features, PROJECTED)
+        write_layer(FIXTURE_FOLDER / f"{name}_2180.geojson", features, PROJECTED)
     write_model(FIXTURE_FOLDER / "fix_centerline_smooth.model3")
 
 

@@ -46,7 +46,7 @@ def plugin_folder(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def loaded_plugin(qgis_app, qgis_processing, qgis_iface, plugin_folder):  # noqa: ARG001 - fixtures start QGIS
+def loaded_plugin(qgis_app, qgis_processing, qgis_iface, plugin_folder):
     """The IncirCu plugin object, imported and started by ``qgis.utils`` as the QGIS desktop does."""
     import qgis.utils
 
@@ -61,8 +61,8 @@ def loaded_plugin(qgis_app, qgis_processing, qgis_iface, plugin_folder):  # noqa
     qgis.utils.unloadPlugin(PLUGIN_NAME)
 
 
-@pytest.fixture(scope="session")
-def provider(loaded_plugin):  # noqa: ARG001 - the plugin registers the provider
+@pytest.fixture
+def provider(loaded_plugin):
     """The registered IncirCu Processing provider."""
     from qgis.core import QgsApplication
 

@@ -2,9 +2,8 @@
 
 import re
 
-from qgis.core import Qgis, QgsApplication
-
 from conftest import metadata, version_number
+from qgis.core import Qgis, QgsApplication
 
 #: Fields plugins.qgis.org refuses a plugin without, and the ones this project promises.
 REQUIRED_FIELDS = (
@@ -86,7 +85,15 @@ def test_public_parameter_names(provider):
     registry = QgsApplication.processingRegistry()
     polygon = registry.algorithmById("incircu:polygoncenterline")
     lines = registry.algorithmById("incircu:linescenterline")
-    common = {"SPACING", "ADD_M", "OUTPUT", "OUTPUT_VERTICES", "OUTPUT_CIRCLES", "OUTPUT_TRANSECTS", "TRANSECT_INTERVAL"}
+    common = {
+        "SPACING",
+        "ADD_M",
+        "OUTPUT",
+        "OUTPUT_VERTICES",
+        "OUTPUT_CIRCLES",
+        "OUTPUT_TRANSECTS",
+        "TRANSECT_INTERVAL",
+    }
     assert {p.name() for p in polygon.parameterDefinitions()} == common | {
         "INPUT",
         "SPLIT_POINTS",
@@ -102,4 +109,7 @@ def test_public_parameter_names(provider):
     }
     for algorithm in (polygon, lines):
         assert {o.name() for o in algorithm.outputDefinitions()} >= {"OUTPUT", "CENTERLINE_COUNT", "SKIPPED_COUNT"}
-    assert polygon.parameterDefinition("SPLIT_POINTS").flags() & polygon.parameterDefinition("SPLIT_POINTS").Flag.FlagOptional
+    assert (
+        polygon.parameterDefinition("SPLIT_POINTS").flags()
+        & polygon.parameterDefinition("SPLIT_POINTS").Flag.FlagOptional
+    )

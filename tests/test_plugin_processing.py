@@ -11,6 +11,7 @@ import numpy as np
 import processing
 import pytest
 import shapely
+from conftest import DATA, REPOSITORY
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
@@ -22,8 +23,6 @@ from qgis.core import (
     QgsVectorLayer,
     QgsWkbTypes,
 )
-
-from conftest import DATA, REPOSITORY
 
 SPEC = importlib.util.spec_from_file_location("sample_data", REPOSITORY / "scripts" / "make_sample_data.py")
 sample_data = importlib.util.module_from_spec(SPEC)
@@ -41,13 +40,13 @@ class RecordingFeedback(QgsProcessingFeedback):
         self.warnings = []
         self.infos = []
 
-    def pushWarning(self, message):  # noqa: N802 - QGIS API name
+    def pushWarning(self, message):
         self.warnings.append(message)
 
-    def reportError(self, message, fatalError=False):  # noqa: N802, N803 - QGIS API names
+    def reportError(self, message, fatalError=False):
         self.warnings.append(message)
 
-    def pushInfo(self, message):  # noqa: N802 - QGIS API name
+    def pushInfo(self, message):
         self.infos.append(message)
 
 
@@ -129,7 +128,7 @@ def test_polygon_centerline_in_projected_crs(provider):
 
 
 def test_island_channel_goes_round_the_island_on_the_wide_side(provider):
-    results, feedback = run("polygoncenterline", {"INPUT": str(DATA / "river_2180.geojson")})
+    results, _feedback = run("polygoncenterline", {"INPUT": str(DATA / "river_2180.geojson")})
     channel = features_by(results["OUTPUT"], "name")["Island channel"]
     assert channel["ends_found"]
     line = as_shapely(channel.geometry())
@@ -138,7 +137,9 @@ def test_island_channel_goes_round_the_island_on_the_wide_side(provider):
     assert not line.intersects(island)
     island_bottom = island.bounds[1]
     channel_bottom = polygon.bounds[1]
-    crossing = line.intersection(shapely.LineString([(island.centroid.x, channel_bottom), (island.centroid.x, island_bottom + 1)]))
+    crossing = line.intersection(
+        shapely.LineString([(island.centroid.x, channel_bottom), (island.centroid.x, island_bottom + 1)])
+    )
     assert not crossing.is_empty, "the line must pass below the island, in the wider channel"
     wide_middle = 0.5 * (island_bottom + channel_bottom)
     assert abs(crossing.centroid.y - wide_middle) < 0.1 * (island_bottom - channel_bottom)
@@ -149,7 +150,7 @@ def test_geographic_layer_is_computed_in_metres(provider):
         "polygoncenterline",
         {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "split_points_2180.geojson")},
     )
-    geographic, feedback = run(
+    geographic, _feedback = run(
         "polygoncenterline",
         {"INPUT": str(DATA / "river_4326.geojson"), "SPLIT_POINTS": str(DATA / "split_points_4326.geojson")},
     )
@@ -172,7 +173,7 @@ def test_geographic_layer_is_computed_in_metres(provider):
 
 
 def test_split_points_in_another_crs_are_reprojected(provider):
-    results, feedback = run(
+    results, _feedback = run(
         "polygoncenterline",
         {
             "INPUT": str(DATA / "river_2180.geojson"),
@@ -222,7 +223,7 @@ def test_lines_without_pair_fields_use_one_line_per_layer(provider):
     line_a, line_b = layer("banks_a_2180.geojson"), layer("banks_b_2180.geojson")
     line_a.setSubsetString("\"reach\" = 'R2'")
     line_b.setSubsetString("\"reach\" = 'R2'")
-    results, feedback = run("linescenterline", {"LINES_A": line_a, "LINES_B": line_b, "ADD_M": False})
+    results, _feedback = run("linescenterline", {"LINES_A": line_a, "LINES_B": line_b, "ADD_M": False})
     assert results["CENTERLINE_COUNT"] == 1
     feature = next(results["OUTPUT"].getFeatures())
     assert not QgsWkbTypes.hasM(results["OUTPUT"].wkbType())
@@ -276,7 +277,12 @@ def test_unpaired_line_is_skipped(provider):
     line_b.setSubsetString("\"reach\" = 'R1'")
     results, feedback = run(
         "linescenterline",
-        {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": line_b, "PAIR_FIELD_A": "reach", "PAIR_FIELD_B": "reach"},
+        {
+            "LINES_A": str(DATA / "banks_a_2180.geojson"),
+            "LINES_B": line_b,
+            "PAIR_FIELD_A": "reach",
+            "PAIR_FIELD_B": "reach",
+        },
     )
     assert results["CENTERLINE_COUNT"] == 1
     assert results["SKIPPED_COUNT"] == 1
@@ -293,10 +299,18 @@ def test_unpaired_line_is_skipped(provider):
             {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "banks_a_2180.geojson")},
             "point",
         ),
-        ("linescenterline", {"LINES_A": str(DATA / "river_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")}, "line"),
         (
             "linescenterline",
-            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson"), "PAIR_FIELD_A": "reach"},
+            {"LINES_A": str(DATA / "river_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")},
+            "line",
+        ),
+        (
+            "linescenterline",
+            {
+                "LINES_A": str(DATA / "banks_a_2180.geojson"),
+                "LINES_B": str(DATA / "banks_b_2180.geojson"),
+                "PAIR_FIELD_A": "reach",
+            },
             "PAIR_FIELD_B",
         ),
         (
@@ -331,7 +345,7 @@ def test_multipart_polygon_gets_one_line_per_part(provider):
 
 
 def test_optional_outputs_describe_the_centerline(provider):
-    results, feedback = run(
+    results, _feedback = run(
         "polygoncenterline",
         {
             "INPUT": str(DATA / "river_2180.geojson"),
@@ -369,7 +383,7 @@ def test_optional_outputs_describe_the_centerline(provider):
 
 def test_cancel_stops_the_run(provider):
     class CancelOnProgress(RecordingFeedback):
-        def setProgress(self, progress):  # noqa: N802 - QGIS API name
+        def setProgress(self, progress):
             super().setProgress(progress)
             if progress > 0:
                 self.cancel()
@@ -391,5 +405,8 @@ def test_missing_or_old_shapely_gives_an_install_message(provider, monkeypatch):
     monkeypatch.setitem(sys.modules, "shapely", shapely)
     monkeypatch.setattr(shapely, "__version__", "1.8.5")
     with pytest.raises(QgsProcessingException) as raised:
-        run("linescenterline", {"LINES_A": str(DATA / "crossing_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")})
+        run(
+            "linescenterline",
+            {"LINES_A": str(DATA / "crossing_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")},
+        )
     assert "1.8.5" in str(raised.value) and "pip install" in str(raised.value)

@@ -1,13 +1,12 @@
 """The plugin driven by ``qgis_process`` as a subprocess: exit codes, GeoPackage outputs read back."""
 
-from qgis.core import QgsVectorLayer, QgsWkbTypes
-
 from conftest import DATA
+from qgis.core import QgsVectorLayer, QgsWkbTypes
 from test_plugin_processing import RIVER_WIDTH, as_shapely, bank_axes, features_by
 
 
 def read_layer(path, layer_name=None):
-    uri = str(path) if layer_name is None else "{}|layername={}".format(path, layer_name)
+    uri = str(path) if layer_name is None else f"{path}|layername={layer_name}"
     layer = QgsVectorLayer(uri, "output", "ogr")
     assert layer.isValid(), uri
     return layer
@@ -37,8 +36,8 @@ def test_polygon_centerline_to_geopackage(qgis_process, tmp_path):
         "INPUT={}".format(DATA / "river_2180.geojson"),
         "SPLIT_POINTS={}".format(DATA / "split_points_2180.geojson"),
         "SNAP_TOLERANCE=1",
-        "OUTPUT={}".format(output),
-        "OUTPUT_VERTICES={}".format(vertices),
+        f"OUTPUT={output}",
+        f"OUTPUT_VERTICES={vertices}",
     )
     assert done.returncode == 0, done.stdout + done.stderr
     assert "CENTERLINE_COUNT:\t2" in done.stdout
@@ -63,7 +62,7 @@ def test_lines_centerline_with_reprojected_second_layer(qgis_process, tmp_path):
         "LINES_B={}".format(DATA / "banks_b_4326.geojson"),
         "PAIR_FIELD_A=reach",
         "PAIR_FIELD_B=reach",
-        "OUTPUT={}".format(output),
+        f"OUTPUT={output}",
     )
     assert done.returncode == 0, done.stdout + done.stderr
     layer = read_layer(output)
@@ -81,7 +80,7 @@ def test_geographic_polygons_keep_their_crs(qgis_process, tmp_path):
         "--",
         "INPUT={}".format(DATA / "river_4326.geojson"),
         "SPLIT_POINTS={}".format(DATA / "split_points_4326.geojson"),
-        "OUTPUT={}".format(output),
+        f"OUTPUT={output}",
     )
     assert done.returncode == 0, done.stdout + done.stderr
     layer = read_layer(output)
@@ -128,7 +127,7 @@ def test_output_geometry_matches_in_process_run(qgis_process, tmp_path, provider
         "--",
         "INPUT={}".format(DATA / "multipart_2180.geojson"),
         "SEPARATE_PARTS=true",
-        "OUTPUT={}".format(output),
+        f"OUTPUT={output}",
     )
     assert done.returncode == 0, done.stdout + done.stderr
     in_process = processing.run(

@@ -1,0 +1,288 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="pl_PL">
+<context>
+    <name>IncirCuAlgorithm</name>
+    <message>
+        <location filename="../algorithms/base.py" line="119"/>
+        <source>Centerlines</source>
+        <translation>Linie środkowe</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="92"/>
+        <source>Distance between centerline vertices (0 = automatic)</source>
+        <translation>Odległość między wierzchołkami linii środkowej (0 = automatycznie)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="110"/>
+        <source>Store the local width as M value</source>
+        <translation>Zapisz lokalną szerokość jako wartość M</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="131"/>
+        <source>Centerline vertices</source>
+        <translation>Wierzchołki linii środkowej</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="144"/>
+        <source>Incircles</source>
+        <translation>Okręgi wpisane</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="157"/>
+        <source>Transects</source>
+        <translation>Przekroje poprzeczne</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="171"/>
+        <source>Distance between transects (0 = mean width)</source>
+        <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="186"/>
+        <source>Number of centerlines</source>
+        <translation>Liczba linii środkowych</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="186"/>
+        <source>Number of centerline features written.</source>
+        <translation>Liczba zapisanych obiektów linii środkowej.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="192"/>
+        <source>Number of skipped features</source>
+        <translation>Liczba pominiętych obiektów</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="192"/>
+        <source>Number of input features (or parts) skipped with a warning.</source>
+        <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/dependencies.py" line="43"/>
+        <source>IncirCu needs the Python package Shapely 2, which is not installed.</source>
+        <translation>IncirCu wymaga pakietu Pythona Shapely 2, który nie jest zainstalowany.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/dependencies.py" line="52"/>
+        <source>IncirCu needs Shapely 2.0 or newer, but Shapely {} is installed.</source>
+        <translation>IncirCu wymaga Shapely 2.0 lub nowszego, a zainstalowany jest Shapely {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="60"/>
+        <source>{} must be a {} layer, but &apos;{}&apos; holds {} geometries.</source>
+        <translation>{} musi być warstwą typu {}, a '{}' zawiera geometrie typu {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="99"/>
+        <source>the feature has no geometry</source>
+        <translation>obiekt nie ma geometrii</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="111"/>
+        <source>Feature {} skipped: {}</source>
+        <translation>Obiekt {} pominięty: {}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="119"/>
+        <source>Feature {}: {}</source>
+        <translation>Obiekt {}: {}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="137"/>
+        <source>{} (part {})</source>
+        <translation>{} (część {})</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="154"/>
+        <source>unexpected {}: {} (please report this with the feature)</source>
+        <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="170"/>
+        <source>{} centerlines written, {} features or parts skipped.</source>
+        <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
+    </message>
+</context>
+<context>
+    <name>LinesCenterlineAlgorithm</name>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="32"/>
+        <source>Centerline between two lines (IncirCu)</source>
+        <translation>Linia środkowa między dwiema liniami (IncirCu)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="35"/>
+        <source>centerline,centreline,medial axis,banks,river,road,width,incircle</source>
+        <translation>linia środkowa,oś,oś medialna,brzegi,rzeka,droga,szerokość,okrąg wpisany</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="38"/>
+        <source>Computes one unbranched centerline between two lines (for example the two banks of a river) with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines are paired by equal values of PAIR_FIELD_A and PAIR_FIELD_B; without them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is the local width. LINES_B is reprojected to the CRS of LINES_A; geographic layers are computed in a local metric projection and distances are then in metres.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="49"/>
+        <source>First lines (bank A)</source>
+        <translation>Pierwsze linie (brzeg A)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="49"/>
+        <source>Line layer of one side; the output has its CRS and its attributes.</source>
+        <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="53"/>
+        <source>Second lines (bank B)</source>
+        <translation>Drugie linie (brzeg B)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="53"/>
+        <source>Line layer of the other side; reprojected to the CRS of LINES_A when needed.</source>
+        <translation>Warstwa liniowa drugiej strony; w razie potrzeby przeliczana do układu LINES_A.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="57"/>
+        <source>Pairing field of the first lines</source>
+        <translation>Pole parujące pierwszych linii</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="57"/>
+        <source>Optional; a line of LINES_A is paired with the line of LINES_B having the same value.</source>
+        <translation>Opcjonalne; linia z LINES_A łączona jest w parę z linią z LINES_B o tej samej wartości.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="66"/>
+        <source>Pairing field of the second lines</source>
+        <translation>Pole parujące drugich linii</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="66"/>
+        <source>Optional; required together with PAIR_FIELD_A.</source>
+        <translation>Opcjonalne; wymagane razem z PAIR_FIELD_A.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="86"/>
+        <source>Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).</source>
+        <translation>Podaj oba pola PAIR_FIELD_A i PAIR_FIELD_B albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="99"/>
+        <source>{} holds no line.</source>
+        <translation>{} nie zawiera żadnej linii.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="102"/>
+        <source>{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and PAIR_FIELD_B to pair them, or merge them into one line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="116"/>
+        <source>no line in LINES_B has {} = {!r}</source>
+        <translation>żadna linia w LINES_B nie ma {} = {!r}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="121"/>
+        <source>the lines of LINES_A with this pairing value do not join into one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="124"/>
+        <source>the lines of LINES_B with this pairing value do not join into one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="138"/>
+        <source>No line in LINES_A has {} = {!r}; line {} of LINES_B unused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>PolygonCenterlineAlgorithm</name>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="41"/>
+        <source>Centerline of polygons (IncirCu)</source>
+        <translation>Linia środkowa poligonów (IncirCu)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="44"/>
+        <source>centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle</source>
+        <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="47"/>
+        <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two SPLIT_POINTS lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="58"/>
+        <source>Polygon layer</source>
+        <translation>Warstwa poligonowa</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="58"/>
+        <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part.</source>
+        <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="64"/>
+        <source>Split points</source>
+        <translation>Punkty podziału</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="64"/>
+        <source>Points marking where each centerline starts and ends: two per polygon part, within SNAP_TOLERANCE of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="77"/>
+        <source>Split point snapping tolerance</source>
+        <translation>Tolerancja przyciągania punktów podziału</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="77"/>
+        <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees).</source>
+        <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <source>Islands (holes)</source>
+        <translation>Wyspy (otwory)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <source>Pass through the main channel</source>
+        <translation>Prowadź głównym korytem</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <source>Ignore islands</source>
+        <translation>Pomijaj wyspy</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <source>Pass through the main channel: the line never crosses an island and goes round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="99"/>
+        <source>One feature per polygon part</source>
+        <translation>Jeden obiekt na każdą część poligonu</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="99"/>
+        <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
+        <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="156"/>
+        <source>Feature {}: {}</source>
+        <translation>Obiekt {}: {}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="158"/>
+        <source>no split points given, ends found automatically</source>
+        <translation>nie podano punktów podziału, końce wyznaczono automatycznie</translation>
+    </message>
+</context>
+</TS>
