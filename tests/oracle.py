@@ -331,8 +331,9 @@ def check_centerline(result, chain_a, chain_b, region, ends, relative=1e-9):
 
     - ``|dist(v, chain_a) - r|`` and ``|dist(v, chain_b) - r|`` within the tolerance;
     - the circle is empty: no boundary point closer than ``r * (1 - relative)`` (minus the rounding);
-    - the feet lie on their chains at distance ``r`` from ``v``, and their positions along each chain never
-      go backwards;
+    - the feet lie on their chains at distance ``r`` from ``v`` (a disk touching a chain at several points,
+      e.g. at a junction of the medial axis, may report any of them, so the feet's order is not checked
+      here: the line's simplicity and the oracle tests cover the order);
     - the line is simple, has no repeated vertex, lies in ``region`` (buffered by the tolerance) and runs
       from ``ends[0]`` to ``ends[1]`` (either direction, to the tolerance).
 
@@ -403,13 +404,6 @@ def check_centerline(result, chain_a, chain_b, region, ends, relative=1e-9):
             worst = int(np.argmax(reach))
             assert reach[worst] <= tolerance, "foot {} on chain {} is {!r} from its vertex {}, radius {!r}".format(
                 feet[worst].tolist(), name, float(np.hypot(*(feet[worst] - vertices[worst]))), vertices[worst].tolist(), r[worst]
-            )
-            positions = chain_positions(feet, chain)
-            steps = np.diff(positions)
-            if np.sum(steps) < 0:
-                steps = -steps
-            assert steps.min() >= -tolerance, "the feet on chain {} go backwards by {:.3g} at vertex {}".format(
-                name, -steps.min(), int(np.argmin(steps)) + 1
             )
 
     steps = np.hypot(*np.diff(coords, axis=0).T)
