@@ -5,14 +5,13 @@ import subprocess
 import sys
 import zipfile
 
-from qgis.core import QgsApplication, QgsSettings
-
 from conftest import PLUGIN_NAME, REPOSITORY, metadata
+from qgis.core import QgsApplication, QgsSettings
 
 
 def test_release_zip_layout(tmp_path):
     built = subprocess.run(
-        ["make", "-s", "package", "DIST={}".format(tmp_path)],
+        ["make", "-s", "package", f"DIST={tmp_path}"],
         cwd=REPOSITORY,
         capture_output=True,
         text=True,
@@ -32,8 +31,8 @@ def test_release_zip_layout(tmp_path):
         "incircu_plugin/plugin.py",
         "incircu_plugin/provider.py",
     ):
-        assert "{}/{}".format(PLUGIN_NAME, required) in names, required
-    assert "{}/i18n/incircu_pl.qm".format(PLUGIN_NAME) in names
+        assert f"{PLUGIN_NAME}/{required}" in names, required
+    assert f"{PLUGIN_NAME}/i18n/incircu_pl.qm" in names
     assert any(name.startswith("incircu/incircu_plugin/core/") for name in names)
     assert any(name.startswith("incircu/algorithms/") for name in names)
     assert any(name.startswith("incircu/icons/") and name.endswith(".svg") for name in names)
@@ -43,7 +42,7 @@ def test_release_zip_layout(tmp_path):
 
 
 def test_release_zip_plugin_imports_from_extracted_folder(tmp_path):
-    subprocess.run(["make", "-s", "package", "DIST={}".format(tmp_path)], cwd=REPOSITORY, check=True)
+    subprocess.run(["make", "-s", "package", f"DIST={tmp_path}"], cwd=REPOSITORY, check=True)
     archive = tmp_path / "{}-{}.zip".format(PLUGIN_NAME, metadata()["version"])
     extracted = tmp_path / "plugins"
     with zipfile.ZipFile(archive) as release:
