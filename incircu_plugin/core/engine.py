@@ -41,6 +41,9 @@ TIE_TOLERANCE = 1e-10
 
 _CHUNK = 16_384
 
+#: Consecutive samples whose candidate boxes share one spatial-index query.
+QUERY_GROUP = 4
+
 
 class Cancelled(Exception):
     """Raised when the progress callback asks the engine to stop."""
@@ -122,7 +125,33 @@ class _Boundary:
         self.unit = delta / self.length[:, None]
         self.start_x, self.start_y = self.start[:, 0].copy(), self.start[:, 1].copy()
         self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
-        self.tree = shapely.STRtree(shapely.linestrings(np.stack([self.start, self.end], axis=1)))
+        self.low = np.minimum(self.start, self.end)
+        self.high = np.maximum(self.start, self.end)
+        self.tree = shapely.STRtree(shapely.box(self.low[:, 0], self.low[:, 1], self.high[:, 0], self.high[:, 1]))
+
+    def candidates(self, low, high):
+        """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
+
+        The tree is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much
+        cheaper than one query per box when consecutive boxes overlap, as they do along a chain; each
+        union's hits are then filtered box by box.
+        """
+        count = len(low)
+        starts = np.arange(0, count, QUERY_GROUP)
+        group_low = np.minimum.reduceat(low, starts)
+        group_high = np.maximum.reduceat(high, starts)
+        group, hit = self.tree.query(
+            shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1])
+        )
+        hits_per_group = np.bincount(group, minlength=len(starts))
+        first_hit = np.cumsum(hits_per_group) - hits_per_group
+        box_group = np.arange(count) // QUERY_GROUP
+        per_box = hits_per_group[box_group]
+        box = np.repeat(np.arange(count), per_box)
+        segment = hit[np.arange(per_box.sum()) - np.repeat(np.cumsum(per_box) - per_box - first_hit[box_group], per_box)]
+        keep = (self.low[segment, 0] <= high[box, 0]) & (self.high[segment, 0] >= low[box, 0])
+        keep &= (self.low[segment, 1] <= high[box, 1]) & (self.high[segment, 1] >= low[box, 1])
+        return box[keep], segment[keep]
 
 
 def _left_normal(vectors):
@@ -267,10 +296,8 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         centre = point[active] + radius[active, None] * direction[active]
         # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
         # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
-        reach = radius[active] * (1.0 + 1e-9)
-        query, segment = boundary.tree.query(
-            shapely.box(centre[:, 0] - reach, centre[:, 1] - reach, centre[:, 0] + reach, centre[:, 1] + reach)
-        )
+        reach = radius[active, None] * (1.0 + 1e-9)
+        query, segment = boundary.candidates(centre - reach, centre + reach)
         pair = active[query]
         sample = index[pair]
         t, along = _first_contacts(

@@ -1,0 +1,98 @@
+"""Speed and memory of the IncirCu geometry core; prints a Markdown table.
+
+Usage: ``python benchmarks/bench_core.py [--max-exponent 6] [--repeats 5]``
+
+Rows:
+- synthetic rivers (``tests/geometry_cases.synthetic_river``) with 10^3 .. 10^6 boundary vertices, sampled at
+  their vertices only (the spacing exceeds the vertex spacing, so samples = vertices): wall time, time per
+  sample, peak resident memory of a fresh process (input generation included), and growth against the
+  previous row;
+- the constant-width meander of issue 2 (length 2 km, width 20, 2,333 boundary vertices, spacing = width/10),
+  median of ``--repeats`` runs, end to end from the chains.
+
+Targets (issue 2): <= 5 us per sample at 10^6 samples on one core, growth <= 11x per 10x samples, peak
+memory <= 1 GiB at 10^6 samples, meander <= 20 ms.
+"""
+
+import argparse
+import json
+import os
+import platform
+import resource
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _measure_river(n_samples):
+    """Run in a child process: time one river, report JSON on stdout."""
+    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
+    import geometry_cases
+    from incircu_plugin.core import centerline_from_chains
+
+    case = geometry_cases.synthetic_river(n_samples)
+    start = time.perf_counter()
+    result = centerline_from_chains(case.chain_a, case.chain_b, spacing=1e12)
+    seconds = time.perf_counter() - start
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    print(json.dumps({"seconds": seconds, "peak_bytes": peak, "vertices": len(result.radii)}))
+
+
+def _measure_meander(repeats):
+    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
+    import geometry_cases
+    from incircu_plugin.core import centerline_from_chains
+
+    case = geometry_cases.meander_with_vertex_count(2333)
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        centerline_from_chains(case.chain_a, case.chain_b, spacing=case.width / 10.0)
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), case.vertex_count
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--max-exponent", type=int, default=6, help="largest river: 10**N vertices")
+    parser.add_argument("--repeats", type=int, default=20, help="runs of the meander (median)")
+    parser.add_argument("--child", type=int, help=argparse.SUPPRESS)
+    arguments = parser.parse_args()
+    if arguments.child:
+        _measure_river(arguments.child)
+        return
+
+    import numpy
+    import shapely
+
+    print("Machine: {} ({} cores), Python {}, numpy {}, shapely {} (GEOS {})\n".format(
+        platform.processor() or platform.machine(), os.cpu_count(), platform.python_version(),
+        numpy.__version__, shapely.__version__, shapely.geos_version_string,
+    ))
+    print("| samples | time (s) | us / sample | growth (x) | peak memory (MiB) |")
+    print("|---:|---:|---:|---:|---:|")
+    previous = None
+    environment = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    for exponent in range(3, arguments.max_exponent + 1):
+        n = 10 ** exponent
+        output = subprocess.run(
+            [sys.executable, __file__, "--child", str(n)],
+            check=True, capture_output=True, text=True, env=environment,
+        ).stdout
+        row = json.loads(output.strip().splitlines()[-1])
+        growth = "" if previous is None else "{:.1f}".format(row["seconds"] / previous)
+        print("| {:,} | {:.3f} | {:.2f} | {} | {:.0f} |".format(
+            n, row["seconds"], row["seconds"] / n * 1e6, growth, row["peak_bytes"] / 2**20
+        ))
+        previous = row["seconds"]
+    median, vertices = _measure_meander(arguments.repeats)
+    print("\nConstant-width meander (2 km, width 20, {:,} boundary vertices, spacing 2): "
+          "median {:.1f} ms over {} runs (target <= 20 ms).".format(vertices, median * 1e3, arguments.repeats))
+
+
+if __name__ == "__main__":
+    main()
