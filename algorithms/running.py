@@ -29,6 +29,7 @@ class FeatureRun:
 
     def __init__(self, algorithm, parameters, context, feedback):
         self.core = require_core()
+        # Imported only now: these modules need Shapely, whose presence require_core has just checked.
         from .convert import WorkingFrame
         from .outputs import CenterlineWriter
 

@@ -145,6 +145,17 @@ def test_island_channel_goes_round_the_island_on_the_wide_side(provider):
     assert abs(crossing.centroid.y - wide_middle) < 0.1 * (island_bottom - channel_bottom)
 
 
+def test_ignored_island_lets_the_line_run_down_the_middle(provider):
+    results, _ = run("polygoncenterline", {"INPUT": str(DATA / "river_2180.geojson"), "ISLANDS": 1})
+    channel = features_by(results["OUTPUT"], "name")["Island channel"]
+    line = as_shapely(channel.geometry())
+    outline = shapely.Polygon(fixture_polygon("Island channel").exterior)
+    middle_y = 0.5 * (outline.bounds[1] + outline.bounds[3])
+    width = outline.bounds[3] - outline.bounds[1]
+    assert max(abs(y - middle_y) for _, y in line.coords) < 0.05 * width
+    assert channel["width_max"] == pytest.approx(width, rel=0.02)
+
+
 def test_geographic_layer_is_computed_in_metres(provider):
     projected, _ = run(
         "polygoncenterline",
