@@ -9,10 +9,10 @@ from qgis.PyQt.QtCore import QCoreApplication
 MINIMUM_SHAPELY = (2, 0)
 
 INSTALL_HINT = (
-    "Install it into the Python that QGIS runs, then restart QGIS: "
-    "on Windows/macOS open the OSGeo4W shell or the QGIS Python console environment and run "
-    "'python -m pip install \"shapely>=2\"'; on Debian/Ubuntu run "
-    "'python3 -m pip install --user --break-system-packages \"shapely>=2\"'."
+    "Install it into the Python that QGIS runs, then restart QGIS. Windows (OSGeo4W shell) or macOS: "
+    "'python -m pip install \"shapely>=2\"'. Debian/Ubuntu (Shapely must use the system GEOS that QGIS uses): "
+    "'sudo apt install libgeos-dev python3-dev build-essential' then "
+    "'python3 -m pip install --user --break-system-packages --no-binary shapely \"shapely>=2\"'."
 )
 
 
