@@ -7,7 +7,6 @@ VERSION := $(shell sed -n 's/^version=//p' metadata.txt)
 VENV := .venv
 PYTHON := $(VENV)/bin/python
 SYSTEM_PYTHON := /usr/bin/python3
-QGIS_PROCESS := $(shell command -v qgis_process.bin || command -v qgis_process)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEBIAN_PACKAGES := qgis python3-qgis qgis-providers python3-numpy python3-pyproj python3-venv python3-pip python3-dev \
 	libgeos-dev build-essential pyqt5-dev-tools qttools5-dev-tools git make
@@ -61,6 +60,7 @@ $(QGIS_SITE)/.installed: requirements.txt
 demo: setup
 	$(PYTHON) scripts/demo.py
 
+# pytest-qgis starts QGIS with its GUI classes (the dialog tests need them) on the offscreen platform exported above.
 test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests
 

@@ -392,6 +392,28 @@ def test_optional_outputs_describe_the_centerline(provider):
             assert end.distance(polygon.exterior) < 0.01 * RIVER_WIDTH
 
 
+def test_progress_rises_to_100_percent(provider):
+    class ProgressRecorder(RecordingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.steps = []
+
+        def setProgress(self, progress):  # noqa: N802 - QGIS API name
+            super().setProgress(progress)
+            self.steps.append(progress)
+
+    results, feedback = run(
+        "polygoncenterline",
+        {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "split_points_2180.geojson")},
+        ProgressRecorder(),
+    )
+    assert results["CENTERLINE_COUNT"] == 2
+    assert feedback.steps[-1] == 100.0
+    assert all(0.0 <= step <= 100.0 for step in feedback.steps)
+    assert feedback.steps == sorted(feedback.steps)
+    assert len(set(feedback.steps)) > 3, "progress is reported inside features, not only at the end"
+
+
 def test_cancel_stops_the_run(provider):
     class CancelOnProgress(RecordingFeedback):
         def setProgress(self, progress):
