@@ -398,7 +398,7 @@ def test_progress_rises_to_100_percent(provider):
             super().__init__()
             self.steps = []
 
-        def setProgress(self, progress):  # noqa: N802 - QGIS API name
+        def setProgress(self, progress):
             super().setProgress(progress)
             self.steps.append(progress)
 
