@@ -167,6 +167,7 @@ def bad_layers():
 def write_model(path):
     """Write the graphical model "Fix geometries -> IncirCu -> Smooth" used by the tests."""
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    os.environ["QT_HASH_SEED"] = "0"  # stable XML attribute order, so the committed model only changes with content
     from qgis.core import (
         QgsApplication,
         QgsProcessing,
