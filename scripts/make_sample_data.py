@@ -240,17 +240,22 @@ def write_model(path):
     application.exitQgis()
 
 
-def main():
-    """Write every file."""
+def write_layers(sample_folder, fixture_folder):
+    """Write the GeoJSON sample data and fixtures into the given folders."""
     samples = sample_layers()
     for name, features in samples.items():
-        write_layer(SAMPLE_FOLDER / f"{name}.geojson", features, PROJECTED)
-        write_layer(FIXTURE_FOLDER / f"{name}_2180.geojson", features, PROJECTED)
+        write_layer(sample_folder / f"{name}.geojson", features, PROJECTED)
+        write_layer(fixture_folder / f"{name}_2180.geojson", features, PROJECTED)
     for name in ("river", "split_points", "banks_b"):
         geographic = [(fid, to_geographic(geometry), props) for fid, geometry, props in samples[name]]
-        write_layer(FIXTURE_FOLDER / f"{name}_4326.geojson", geographic, 4326)
+        write_layer(fixture_folder / f"{name}_4326.geojson", geographic, 4326)
     for name, features in bad_layers().items():
-        write_layer(FIXTURE_FOLDER / f"{name}_2180.geojson", features, PROJECTED)
+        write_layer(fixture_folder / f"{name}_2180.geojson", features, PROJECTED)
+
+
+def main():
+    """Write every file."""
+    write_layers(SAMPLE_FOLDER, FIXTURE_FOLDER)
     write_model(FIXTURE_FOLDER / "fix_centerline_smooth.model3")
 
 

@@ -91,6 +91,16 @@ def m_values(geometry):
     return [vertex.m() for vertex in geometry.vertices()]
 
 
+def test_committed_fixtures_match_their_generator(tmp_path):
+    samples, fixtures = tmp_path / "samples", tmp_path / "fixtures"
+    sample_data.write_layers(samples, fixtures)
+    for folder, committed in ((samples, sample_data.SAMPLE_FOLDER), (fixtures, sample_data.FIXTURE_FOLDER)):
+        written = sorted(path.name for path in folder.iterdir())
+        assert written
+        for name in written:
+            assert (folder / name).read_text() == (committed / name).read_text(), name
+
+
 def test_polygon_centerline_in_projected_crs(provider):
     results, feedback = run(
         "polygoncenterline",
