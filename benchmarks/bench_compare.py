@@ -1,0 +1,200 @@
+"""Side-by-side benchmark: IncirCu against the centerline tools QGIS users pick today (issue 4).
+
+Runs every tool on the analytic shapes (exact axis known) and on real outlines (Natural Earth,
+reference axis from the segment-Voronoi oracle), then the scaling run (time against boundary
+vertices of a synthetic meandering river, 10^3 to 10^6), prints the tables and writes ``benchmarks/results/``:
+``compare.json`` (every measurement), ``scaling.png`` and ``outlines.png``.
+
+Usage: ``benchmarks/.venv-peers/bin/python benchmarks/bench_compare.py [--quick]``
+(``benchmarks/run.sh`` sets everything up and calls it).
+"""
+
+import argparse
+import dataclasses
+import json
+import math
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+BENCH_DIR = Path(__file__).resolve().parent
+if str(BENCH_DIR) not in sys.path:
+    sys.path.insert(0, str(BENCH_DIR))
+
+import cases as bench_cases  # noqa: E402
+from harness import preload, run_tool  # noqa: E402
+from peers import INCIRCU, GrassRunner, peer_tools  # noqa: E402
+from report import format_measurements  # noqa: E402
+
+RESULTS_DIR = BENCH_DIR / "results"
+
+#: Scaling sizes (boundary vertices of the synthetic river: meandering, width 20 ± 25 %, a vertex every
+#: quarter width, so a longer river has more vertices, as in real data).
+SCALING_SIZES = (1_000, 10_000, 100_000, 1_000_000)
+
+#: A tool is not run at a size where its time, extrapolated from the smaller sizes, exceeds this.
+SCALING_SKIP_SECONDS = 60.0
+
+
+def side_by_side(case_list, tools, timeout_seconds):
+    """Measure IncirCu then every tool on every case; returns the measurements and kept geometries."""
+    measurements, geometries = [], {}
+    for case in case_list:
+        for tool in [INCIRCU, *tools]:
+            started = time.perf_counter()
+            measurement, geometry = run_tool(tool, case, timeout_seconds=timeout_seconds)
+            measurements.append(measurement)
+            if geometry is not None:
+                geometries[(case.name, tool.name)] = geometry
+            print(f"  {case.name:<28} {tool.name:<26} {time.perf_counter() - started:7.1f} s"
+                  f"  {measurement.error}", flush=True)
+    return measurements, geometries
+
+
+def predicted_seconds(history, size):
+    """Time at ``size`` extrapolated from (size, seconds) pairs, growth at least linear."""
+    if not history:
+        return 0.0
+    if len(history) == 1:
+        exponent = 1.0
+    else:
+        (size_a, time_a), (size_b, time_b) = history[-2], history[-1]
+        exponent = max(1.0, math.log(time_b / time_a) / math.log(size_b / size_a))
+    last_size, last_time = history[-1]
+    return last_time * (size / last_size) ** exponent
+
+
+def scaling(tools, sizes, timeout_seconds):
+    """Time every tool on the synthetic river at each size; skip a size whose prediction is too long."""
+    rows = []
+    history = {tool.name: [] for tool in [INCIRCU, *tools]}
+    for size in sizes:
+        case = bench_cases.river_case(size)
+        for tool in [INCIRCU, *tools]:
+            prediction = predicted_seconds(history[tool.name], case.vertex_count)
+            if prediction > SCALING_SKIP_SECONDS:
+                rows.append({"tool": tool.name, "vertices": case.vertex_count, "seconds": None,
+                             "note": f"skipped: predicted {prediction:.0f} s"})
+                print(f"  {case.name:<28} {tool.name:<26} skipped (predicted {prediction:.0f} s)", flush=True)
+                continue
+            measurement, _ = run_tool(tool, case, timeout_seconds=timeout_seconds, budget_seconds=1.0)
+            rows.append({"tool": tool.name, "vertices": case.vertex_count, "seconds": measurement.seconds,
+                         "note": measurement.error, "mean_dev_rel": measurement.mean_dev_rel,
+                         "parts": measurement.parts, "branches": measurement.branches})
+            print(f"  {case.name:<28} {tool.name:<26} {measurement.seconds or 0:8.3f} s {measurement.error}",
+                  flush=True)
+            if measurement.seconds is None:
+                history[tool.name].append((case.vertex_count, float("inf")))
+            else:
+                history[tool.name].append((case.vertex_count, measurement.seconds))
+    return rows
+
+
+def plot_scaling(rows, path):
+    """Log-log plot of time against boundary vertices, one line per tool."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figure, axes = plt.subplots(figsize=(7, 4.5), dpi=110)
+    for tool in dict.fromkeys(row["tool"] for row in rows):
+        points = [(row["vertices"], row["seconds"]) for row in rows if row["tool"] == tool and row["seconds"]]
+        if points:
+            xs, ys = zip(*points)
+            axes.loglog(xs, ys, marker="o", linewidth=2.5 if tool == INCIRCU.name else 1.2, label=tool)
+    axes.set_xlabel("boundary vertices (synthetic meandering river)")
+    axes.set_ylabel("wall time per run (s)")
+    axes.set_title(f"Scaling (peers skipped past a predicted {SCALING_SKIP_SECONDS:.0f} s)")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(path)
+    plt.close(figure)
+
+
+def plot_outlines(case_list, geometries, path):
+    """One panel per real outline with every tool's output over the polygon."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from peers import line_parts
+
+    figure, axes_row = plt.subplots(1, len(case_list), figsize=(4 * len(case_list), 5), dpi=100)
+    for axes, case in zip(axes_row, case_list):
+        x, y = case.polygon.exterior.xy
+        axes.fill(x, y, color="#dddddd", linewidth=0)
+        for (case_name, tool_name), geometry in geometries.items():
+            if case_name != case.name:
+                continue
+            for index, part in enumerate(line_parts(geometry)):
+                px, py = part.xy
+                axes.plot(px, py, linewidth=2.0 if tool_name == INCIRCU.name else 0.8,
+                          color="C3" if tool_name == INCIRCU.name else None,
+                          label=tool_name if index == 0 else None, zorder=3 if tool_name == INCIRCU.name else 2)
+        axes.set_title(case.name)
+        axes.set_aspect("equal")
+        axes.set_xticks([])
+        axes.set_yticks([])
+    axes_row[0].legend(fontsize=7, loc="lower left")
+    figure.tight_layout()
+    figure.savefig(path)
+    plt.close(figure)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="smaller scaling range, no GRASS (a smoke run)")
+    parser.add_argument("--timeout", type=float, default=90.0, help="seconds allowed per tool and input")
+    arguments = parser.parse_args(argv)
+    RESULTS_DIR.mkdir(exist_ok=True)
+    preload()
+
+    with tempfile.TemporaryDirectory(prefix="incircu-bench-") as work_dir:
+        grass = None if arguments.quick else GrassRunner(work_dir)
+        tools = peer_tools(grass)
+        startup = None
+        if grass is not None:
+            started = time.perf_counter()
+            for _ in range(3):
+                grass.startup()
+            startup = (time.perf_counter() - started) / 3.0
+
+        print("== Analytic shapes (exact axis)", flush=True)
+        analytic = bench_cases.analytic_cases()
+        analytic_measurements, _ = side_by_side(analytic, tools, arguments.timeout)
+
+        print("== Real outlines (Natural Earth 1:10m, oracle medial axis)", flush=True)
+        outlines = bench_cases.outline_cases()
+        for case in outlines:
+            case.extra["keep_geometry"] = True
+        outline_measurements, outline_geometries = side_by_side(outlines, tools, arguments.timeout)
+        plot_outlines(outlines, outline_geometries, RESULTS_DIR / "outlines.png")
+
+        print("== Scaling (synthetic river)", flush=True)
+        sizes = SCALING_SIZES[:3] if arguments.quick else SCALING_SIZES
+        scaling_rows = scaling(tools, sizes, arguments.timeout)
+        plot_scaling(scaling_rows, RESULTS_DIR / "scaling.png")
+
+    results = {
+        "analytic": [dataclasses.asdict(m) for m in analytic_measurements],
+        "outlines": [dataclasses.asdict(m) for m in outline_measurements],
+        "outline_info": [{"name": c.name, "vertices": c.vertex_count, "width_m": c.width,
+                          "axis_kind": c.axis_kind} for c in outlines],
+        "analytic_info": [{"name": c.name, "vertices": c.vertex_count, "width": c.width} for c in analytic],
+        "scaling": scaling_rows,
+        "grass_startup_seconds": startup,
+        "tools": {tool.name: tool.note for tool in [INCIRCU, *tools]},
+        "quick": arguments.quick,
+    }
+    (RESULTS_DIR / "compare.json").write_text(json.dumps(results, indent=1))
+    print(format_measurements(analytic_measurements, "Analytic shapes"))
+    print(format_measurements(outline_measurements, "Real outlines"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

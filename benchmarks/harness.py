@@ -1,0 +1,56 @@
+"""Run one tool on one case in a forked child process, with a time limit, and measure it.
+
+A child per (tool, case) keeps a runaway peer from stalling the whole benchmark: past
+``timeout_seconds`` it is killed and reported as such. The parent imports every tool module before
+forking, so no run pays for an import.
+"""
+
+import multiprocessing
+import traceback
+
+from metrics import Measurement, measure, time_call
+
+
+def _child(connection, tool, case, budget_seconds):
+    try:
+        geometry, seconds, runs = time_call(tool.run, case, budget_seconds=budget_seconds)
+        measurement = measure(tool.name, case, geometry, seconds, runs)
+        connection.send((measurement, geometry if case.extra.get("keep_geometry") else None))
+    except Exception as error:  # a peer failing on an input is a result, not a crash of the benchmark
+        message = f"{type(error).__name__}: {error}".splitlines()[0][:160]
+        connection.send((Measurement(tool.name, case.name, None, 0, error=message), traceback.format_exc()))
+    finally:
+        connection.close()
+
+
+def run_tool(tool, case, timeout_seconds=90.0, budget_seconds=2.0):
+    """Measure ``tool`` on ``case``; returns (Measurement, geometry or None).
+
+    The geometry comes back only when ``case.extra["keep_geometry"]`` is true (for the plots).
+    """
+    context = multiprocessing.get_context("fork")
+    receiver, sender = context.Pipe(duplex=False)
+    process = context.Process(target=_child, args=(sender, tool, case, budget_seconds))
+    process.start()
+    sender.close()
+    if receiver.poll(timeout_seconds):
+        try:
+            measurement, payload = receiver.recv()
+        except EOFError:
+            measurement, payload = Measurement(tool.name, case.name, None, 0, error="child died"), None
+        process.join()
+        geometry = payload if measurement.error == "" else None
+        return measurement, geometry
+    process.kill()
+    process.join()
+    return Measurement(tool.name, case.name, None, 0, error=f"timeout > {timeout_seconds:.0f} s"), None
+
+
+def preload():
+    """Import every tool library once in the parent so forked children start warm."""
+    import centerline.geometry  # noqa: F401
+    import label_centerlines  # noqa: F401
+    import pygeoops  # noqa: F401
+    import pysfcgal.geometry  # noqa: F401
+
+    import incircu_plugin.core  # noqa: F401

@@ -1,0 +1,222 @@
+"""Adapters that run IncirCu and every peer centerline tool on one shapely polygon.
+
+Each runner takes a :class:`Case` and returns a shapely geometry made of lines (LineString,
+MultiLineString or a collection of them), in the case's units. Everything a user would have to do to
+go from a shapely polygon to the tool's lines is inside the runner, so the wall time covers it.
+
+Tools whose parameters are lengths in CRS units (label_centerlines, centerline, GRASS) get them from
+the same rule: a tenth of the polygon's mean width ``2 * area / perimeter``. pygeoops' defaults are
+already relative to the width; SFCGAL has no parameter.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, Optional, Sequence
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, Point, Polygon
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+if str(REPO_ROOT) not in sys.path:
+    sys.path.insert(0, str(REPO_ROOT))
+
+QGIS_PROCESS = shutil.which("qgis_process.bin") or "/usr/bin/qgis_process.bin"
+
+
+@dataclass
+class Case:
+    """One benchmark input.
+
+    Attributes
+    ----------
+    name : str
+        Label in the tables.
+    polygon : shapely.geometry.Polygon
+        The region, in its own units (metres for real outlines, shape units for analytic cases).
+    ends : tuple of shapely.geometry.Point
+        The two boundary points where the centerline must start and end.
+    width : float
+        Typical width of the region (same units); deviations are reported as a fraction of it.
+    axis_distance : callable or None
+        ``axis_distance(points)`` -> distance (same units) from each point of an (n, 2) array to the
+        reference axis: the exact analytic axis, or the medial-axis target set of the oracle.
+    axis_kind : str
+        ``"exact"`` (analytic), ``"oracle"`` (segment Voronoi target set) or ``"none"``.
+    spacing : float or None
+        IncirCu sample spacing (same units); None for the core's default.
+    extra : dict
+        Free-form flags (``keep_geometry``: send the tools' outputs back for plotting).
+    """
+
+    name: str
+    polygon: Polygon
+    ends: Sequence[Point]
+    width: float
+    axis_distance: Optional[Callable] = None
+    axis_kind: str = "none"
+    spacing: Optional[float] = None
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def vertex_count(self):
+        """Number of distinct boundary vertices of the polygon (exterior and holes)."""
+        return int(shapely.get_num_coordinates(self.polygon.boundary)) - 1 - len(self.polygon.interiors)
+
+
+def mean_width(polygon):
+    """Mean width of an elongated polygon, ``2 * area / perimeter`` (polygon units)."""
+    return 2.0 * polygon.area / polygon.length
+
+
+def run_incircu(case):
+    """IncirCu through the geometry core, split at the case's two ends (spacing: core default)."""
+    from incircu_plugin.core import polygon_centerline
+
+    result = polygon_centerline(case.polygon, [case.ends[0], case.ends[1]], spacing=case.spacing)
+    return result.line
+
+
+def run_pygeoops(case):
+    """pygeoops ``centerline(extend=True)``, width-relative defaults otherwise."""
+    import pygeoops
+
+    return pygeoops.centerline(case.polygon, extend=True)
+
+
+def run_label_centerlines(case):
+    """label_centerlines ``get_centerline``; segmentize at width/10, simplify at width/100."""
+    from label_centerlines import get_centerline
+
+    width = mean_width(case.polygon)
+    return get_centerline(case.polygon, segmentize_maxlen=width / 10.0, simplification=width / 100.0)
+
+
+def run_centerline(case):
+    """centerline ``Centerline`` with ``interpolation_distance`` = width/10."""
+    from centerline.geometry import Centerline
+
+    return Centerline(case.polygon, interpolation_distance=mean_width(case.polygon) / 10.0).geometry
+
+
+def _to_sfcgal(polygon):
+    from pysfcgal import geometry as sfcgal_geometry
+
+    return sfcgal_geometry.Geometry.from_wkb(shapely.to_wkb(polygon))
+
+
+def _from_sfcgal(geometry):
+    return shapely.from_wkb(bytes(geometry.to_wkb()))
+
+
+def run_sfcgal_medial_axis(case):
+    """SFCGAL (CGAL) approximate medial axis through pysfcgal."""
+    return _from_sfcgal(_to_sfcgal(case.polygon).approximate_medial_axis())
+
+
+def run_sfcgal_straight_skeleton(case):
+    """SFCGAL (CGAL) straight skeleton through pysfcgal."""
+    return _from_sfcgal(_to_sfcgal(case.polygon).straight_skeleton())
+
+
+class GrassRunner:
+    """GRASS ``v.voronoi.skeleton -s thin=-1`` through ``qgis_process`` (provider grass7, QGIS 3.22).
+
+    The input layer is written once per case (outside the timed call); each timed call is one
+    ``qgis_process.bin run`` as a QGIS user would launch it, so it includes QGIS's start-up,
+    ``startup_seconds`` measures that start-up alone (``qgis_process.bin --version`` is not enough:
+    the timed baseline loads the providers like ``run`` does).
+    """
+
+    def __init__(self, work_dir):
+        self.work_dir = Path(work_dir)
+        self.config_dir = self.work_dir / "qgis-profile"
+        self.config_dir.mkdir(parents=True, exist_ok=True)
+        self.env = dict(os.environ, QT_QPA_PLATFORM="offscreen", QGIS_CUSTOM_CONFIG_PATH=str(self.config_dir))
+        self._call(["plugins", "enable", "grassprovider"])
+        self._written = {}
+
+    def _call(self, arguments, timeout=900):
+        completed = subprocess.run(
+            [QGIS_PROCESS, *arguments], env=self.env, capture_output=True, text=True, timeout=timeout
+        )
+        if completed.returncode != 0:
+            raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {completed.stderr[-2000:]}")
+        return completed.stdout
+
+    def startup(self):
+        """One provider-loading ``qgis_process`` call that runs no algorithm (for the start-up cost)."""
+        self._call(["help", "grass7:v.voronoi.skeleton"])
+
+    def _input_path(self, case):
+        key = id(case.polygon)
+        if key not in self._written:
+            path = self.work_dir / f"input-{len(self._written)}.geojson"
+            feature = {"type": "Feature", "properties": {"id": 1}, "geometry": shapely.geometry.mapping(case.polygon)}
+            collection = {
+                "type": "FeatureCollection",
+                "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3857"}},
+                "features": [feature],
+            }
+            path.write_text(json.dumps(collection))
+            self._written[key] = path
+        return self._written[key]
+
+    def __call__(self, case):
+        """Run the GRASS skeleton on ``case`` and return its lines (smoothness = width/10)."""
+        input_path = self._input_path(case)
+        with tempfile.TemporaryDirectory(dir=self.work_dir) as out_dir:
+            output_path = Path(out_dir) / "skeleton.geojson"
+            self._call([
+                "run", "grass7:v.voronoi.skeleton", "--",
+                f"input={input_path}", f"smoothness={mean_width(case.polygon) / 10.0!r}", "thin=-1", "-s=true",
+                f"output={output_path}",
+            ])
+            features = json.loads(output_path.read_text())["features"]
+        return shapely.GeometryCollection([shapely.geometry.shape(feature["geometry"]) for feature in features])
+
+
+@dataclass
+class Tool:
+    """A named runner with the shape of its output."""
+
+    name: str
+    run: Callable
+    single_line: bool
+    note: str = ""
+
+
+def peer_tools(grass_runner=None):
+    """The peers, fastest-to-set-up first; GRASS only when a runner is given."""
+    tools = [
+        Tool("pygeoops", run_pygeoops, True, "centerline(extend=True)"),
+        Tool("label_centerlines", run_label_centerlines, True, "get_centerline, numpy<2 venv"),
+        Tool("centerline", run_centerline, False, "Centerline(interpolation_distance=w/10)"),
+        Tool("SFCGAL medial axis", run_sfcgal_medial_axis, False, "approximate_medial_axis"),
+        Tool("SFCGAL straight skeleton", run_sfcgal_straight_skeleton, False, "straight_skeleton"),
+    ]
+    if grass_runner is not None:
+        tools.append(Tool("GRASS v.voronoi.skeleton", grass_runner, True, "-s thin=-1 via qgis_process"))
+    return tools
+
+
+INCIRCU = Tool("IncirCu", run_incircu, True, "polygon_centerline, default spacing")
+
+
+def line_parts(geometry):
+    """All non-empty LineStrings inside ``geometry`` (points and polygons dropped)."""
+    if geometry is None:
+        return []
+    parts = shapely.get_parts(shapely.get_parts(shapely.get_parts(np.asarray([geometry], dtype=object))))
+    return [part for part in parts if isinstance(part, LineString) and not part.is_empty]
+
+
+def as_lines(geometry):
+    """``geometry`` as one MultiLineString (possibly empty)."""
+    return shapely.MultiLineString(line_parts(geometry))

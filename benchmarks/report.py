@@ -1,0 +1,52 @@
+"""Markdown tables of the benchmark measurements (printed by the scripts and written to docs/benchmark.md)."""
+
+
+def _number(value, digits=3):
+    if value is None:
+        return "–"
+    if value == 0:
+        return "0"
+    magnitude = abs(value)
+    if magnitude >= 1e4 or magnitude < 1e-3:
+        return f"{value:.1e}"
+    return f"{value:.{digits}g}"
+
+
+def _seconds(value):
+    if value is None:
+        return "–"
+    if value < 1.0:
+        return f"{value * 1e3:.3g} ms"
+    return f"{value:.3g} s"
+
+
+def format_measurements(measurements, title):
+    """One Markdown table, grouped by case, with each tool's time ratio to IncirCu on that case."""
+    header = (
+        f"\n### {title}\n\n"
+        "| input | tool | time (median) | × IncirCu | runs | parts | branches | mean dev /w | max dev /w "
+        "| max vertex dev /w | end gaps /w | outside /w |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+    )
+    rows = []
+    reference = {m["case"] if isinstance(m, dict) else m.case: None for m in measurements}
+    records = [m if isinstance(m, dict) else m.__dict__ for m in measurements]
+    for record in records:
+        if record["tool"] == "IncirCu" and record["seconds"]:
+            reference[record["case"]] = record["seconds"]
+    for record in records:
+        if record["error"]:
+            rows.append(f"| {record['case']} | {record['tool']} | – | – | – | – | – | – | – | – | – | "
+                        f"{record['error'].replace('|', '/')} |")
+            continue
+        base = reference.get(record["case"])
+        ratio = record["seconds"] / base if base and record["seconds"] else None
+        gaps = record["end_gap_rel"]
+        gap_text = " / ".join(_number(gap, 2) for gap in gaps) if gaps else "–"
+        rows.append(
+            f"| {record['case']} | {record['tool']} | {_seconds(record['seconds'])} | {_number(ratio, 3)} | "
+            f"{record['runs']} | {record['parts']} | {record['branches']} | {_number(record['mean_dev_rel'])} | "
+            f"{_number(record['max_dev_rel'])} | {_number(record['max_vertex_dev_rel'])} | {gap_text} | "
+            f"{_number(record['outside_rel'])} |"
+        )
+    return header + "\n".join(rows) + "\n"

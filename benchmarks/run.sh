@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# One command for the whole side-by-side benchmark (issue 4): `make bench` or `bash benchmarks/run.sh`.
+#
+# Set-up (idempotent, skipped when already done):
+#   - Debian packages: grass-core (GRASS GIS, for v.voronoi.skeleton) and the QGIS GRASS provider;
+#     qgis_process.bin comes with the QGIS packages the plugin is developed against.
+#   - benchmarks/.venv-peers: a venv with requirements-bench.txt (numpy<2, so label_centerlines' np.math
+#     calls work unpatched; pygeoops, centerline, pysfcgal, pyvoronoi, matplotlib, shapely 2, pyproj).
+#   - benchmarks/.cache/world-atlas: the npm package `world-atlas` (Natural Earth countries, ISC licence),
+#     fetched with `npm pack`.
+# Then runs bench_compare.py (tools side by side + scaling), bench_paper.py (Fig. 4 and Table 1 of the
+# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/.
+#
+# Options: --quick (no GRASS, smaller scaling range: a smoke run of a few minutes); --no-setup.
+set -euo pipefail
+
+BENCH_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+REPO_ROOT="$(dirname "$BENCH_DIR")"
+VENV="$BENCH_DIR/.venv-peers"
+CACHE="$BENCH_DIR/.cache"
+WORLD_ATLAS_VERSION="2.0.2"
+QUICK=""
+SETUP=1
+for argument in "$@"; do
+  case "$argument" in
+    --quick) QUICK="--quick" ;;
+    --no-setup) SETUP=0 ;;
+    *) echo "unknown option: $argument" >&2; exit 2 ;;
+  esac
+done
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+setup_debian() {
+  local missing=()
+  for package in grass-core qgis-provider-grass qgis-plugin-grass python3-venv; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+  done
+  if [ "${#missing[@]}" -gt 0 ]; then
+    echo "== apt-get install ${missing[*]}"
+    as_root apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+  fi
+  command -v qgis_process.bin >/dev/null || { echo "qgis_process.bin not found (install qgis)" >&2; exit 1; }
+}
+
+setup_venv() {
+  local stamp="$VENV/.requirements-bench.txt"
+  if [ ! -x "$VENV/bin/python" ] || ! cmp -s "$REPO_ROOT/requirements-bench.txt" "$stamp"; then
+    echo "== venv $VENV"
+    /usr/bin/python3 -m venv "$VENV"
+    "$VENV/bin/python" -m pip install --quiet --upgrade pip
+    "$VENV/bin/python" -m pip install --quiet -r "$REPO_ROOT/requirements-bench.txt"
+    cp "$REPO_ROOT/requirements-bench.txt" "$stamp"
+  fi
+}
+
+setup_world_atlas() {
+  local target="$CACHE/world-atlas"
+  if [ ! -f "$target/package/countries-10m.json" ]; then
+    echo "== npm pack world-atlas@$WORLD_ATLAS_VERSION"
+    mkdir -p "$target"
+    (cd "$CACHE" && npm pack --silent "world-atlas@$WORLD_ATLAS_VERSION" >/dev/null)
+    tar -xzf "$CACHE/world-atlas-$WORLD_ATLAS_VERSION.tgz" -C "$target"
+  fi
+}
+
+if [ "$SETUP" -eq 1 ]; then
+  setup_debian
+  setup_venv
+  setup_world_atlas
+fi
+
+cd "$REPO_ROOT"
+PYTHON="$VENV/bin/python"
+started=$(date +%s)
+"$PYTHON" "$BENCH_DIR/bench_compare.py" $QUICK
+"$PYTHON" "$BENCH_DIR/bench_paper.py"
+"$PYTHON" "$BENCH_DIR/profile_incircu.py"
+"$PYTHON" "$BENCH_DIR/write_docs.py"
+echo "== benchmark done in $(( $(date +%s) - started )) s; see docs/benchmark.md"
