@@ -1,6 +1,7 @@
 """The plugin as QGIS sees it: loading through classFactory, version range, metadata, provider, help."""
 
 import re
+from pathlib import Path
 
 from conftest import metadata, version_number
 from qgis.core import Qgis, QgsApplication
@@ -38,11 +39,16 @@ def test_metadata_icon_and_licence_exist():
     assert (REPOSITORY / "LICENSE").is_file()
 
 
-def test_running_qgis_lies_within_the_metadata_range(loaded_plugin):
+def test_running_qgis_lies_within_the_metadata_range(loaded_plugin, monkeypatch):
+    monkeypatch.syspath_prepend(str(Path(QgsApplication.pkgDataPath()) / "python"))
+    from pyplugin_installer.version_compare import isCompatible, pyQgisVersion
+
     general = metadata()
     running = Qgis.QGIS_VERSION_INT
     assert version_number(general["qgisMinimumVersion"]) <= running
     assert running <= version_number(general["qgisMaximumVersion"]) + 99
+    # the check the QGIS plugin manager itself applies
+    assert isCompatible(pyQgisVersion(), general["qgisMinimumVersion"], general["qgisMaximumVersion"])
 
 
 def test_class_factory_plugin_registers_and_removes_the_provider(loaded_plugin):
