@@ -42,14 +42,20 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.parameter_help = {}
 
     def tr(self, text):
-        """Translate ``text`` with the class name as context."""
-        return QCoreApplication.translate(type(self).__name__, text)
+        """Translate ``text`` with the class name as context.
+
+        Strings of this base class are translated in its own context, ``IncirCuAlgorithm``.
+        """
+        translated = QCoreApplication.translate(type(self).__name__, text)
+        if translated == text:
+            translated = QCoreApplication.translate("IncirCuAlgorithm", text)
+        return translated
 
     def createInstance(self):
         return type(self)()
 
     def group(self):
-        return QCoreApplication.translate("IncirCuAlgorithm", "Centerlines")
+        return self.tr("Centerlines")
 
     def groupId(self):
         return "centerlines"
@@ -91,15 +97,14 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         """Add ``SPACING`` (distance between centerline samples, units of ``parent_name``'s layer)."""
         spacing = QgsProcessingParameterDistance(
             self.SPACING,
-            QCoreApplication.translate("IncirCuAlgorithm", "Distance between centerline vertices (0 = automatic)"),
+            self.tr("Distance between centerline vertices (0 = automatic)"),
             0.0,
             parent_name,
             minValue=0.0,
         )
         self.add_parameter(
             spacing,
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
                 "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.",
             ),
@@ -108,22 +113,18 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def add_result_parameters(self, parent_name):
         """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
         self.add_parameter(
-            QgsProcessingParameterBoolean(
-                self.ADD_M, QCoreApplication.translate("IncirCuAlgorithm", "Store the local width as M value"), True
-            ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
+            self.tr(
                 "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
             ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT,
-                QCoreApplication.translate("IncirCuAlgorithm", "Centerlines"),
+                self.tr("Centerlines"),
                 QgsProcessing.SourceType.TypeVectorLine,
             ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Line layer: input attributes plus length, width_min, width_mean, width_max (incircle "
                 "diameters over the vertices with a positive width), n_vertices and ends_found.",
             ),
@@ -131,39 +132,36 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_VERTICES,
-                QCoreApplication.translate("IncirCuAlgorithm", "Centerline vertices"),
+                self.tr("Centerline vertices"),
                 QgsProcessing.SourceType.TypeVectorPoint,
                 optional=True,
                 createByDefault=False,
             ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Optional point layer: every centerline vertex with its chainage, incircle radius and width.",
             ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_CIRCLES,
-                QCoreApplication.translate("IncirCuAlgorithm", "Incircles"),
+                self.tr("Incircles"),
                 QgsProcessing.SourceType.TypeVectorPolygon,
                 optional=True,
                 createByDefault=False,
             ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Optional polygon layer: the incircle of every vertex, with its radius and chainage.",
             ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT_TRANSECTS,
-                QCoreApplication.translate("IncirCuAlgorithm", "Transects"),
+                self.tr("Transects"),
                 QgsProcessing.SourceType.TypeVectorLine,
                 optional=True,
                 createByDefault=False,
             ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Optional line layer: cross-sections from bank to bank through the centerline, every "
                 "TRANSECT_INTERVAL, with their width and chainage.",
             ),
@@ -171,29 +169,22 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.add_parameter(
             QgsProcessingParameterDistance(
                 self.TRANSECT_INTERVAL,
-                QCoreApplication.translate("IncirCuAlgorithm", "Distance between transects (0 = mean width)"),
+                self.tr("Distance between transects (0 = mean width)"),
                 0.0,
                 parent_name,
                 minValue=0.0,
             ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
+            self.tr(
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
                 "degrees); 0 uses the mean width of each centerline.",
             ),
             advanced=True,
         )
         self.add_output(
-            QgsProcessingOutputNumber(
-                self.CENTERLINE_COUNT, QCoreApplication.translate("IncirCuAlgorithm", "Number of centerlines")
-            ),
-            QCoreApplication.translate("IncirCuAlgorithm", "Number of centerline features written."),
+            QgsProcessingOutputNumber(self.CENTERLINE_COUNT, self.tr("Number of centerlines")),
+            self.tr("Number of centerline features written."),
         )
         self.add_output(
-            QgsProcessingOutputNumber(
-                self.SKIPPED_COUNT, QCoreApplication.translate("IncirCuAlgorithm", "Number of skipped features")
-            ),
-            QCoreApplication.translate(
-                "IncirCuAlgorithm", "Number of input features (or parts) skipped with a warning."
-            ),
+            QgsProcessingOutputNumber(self.SKIPPED_COUNT, self.tr("Number of skipped features")),
+            self.tr("Number of input features (or parts) skipped with a warning."),
         )

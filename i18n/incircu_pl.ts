@@ -4,22 +4,22 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="119"/>
+        <location filename="../algorithms/base.py" line="121"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="92"/>
+        <location filename="../algorithms/base.py" line="98"/>
         <source>Distance between centerline vertices (0 = automatic)</source>
         <translation>Odległość między wierzchołkami linii środkowej (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="110"/>
+        <location filename="../algorithms/base.py" line="115"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="131"/>
+        <location filename="../algorithms/base.py" line="132"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
@@ -29,32 +29,32 @@
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="157"/>
+        <location filename="../algorithms/base.py" line="156"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="171"/>
+        <location filename="../algorithms/base.py" line="169"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="186"/>
+        <location filename="../algorithms/base.py" line="183"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="186"/>
+        <location filename="../algorithms/base.py" line="183"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="192"/>
+        <location filename="../algorithms/base.py" line="187"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="192"/>
+        <location filename="../algorithms/base.py" line="187"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -69,39 +69,74 @@
         <translation>IncirCu wymaga Shapely 2.0 lub nowszego, a zainstalowany jest Shapely {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="60"/>
+        <location filename="../algorithms/running.py" line="61"/>
         <source>{} must be a {} layer, but &apos;{}&apos; holds {} geometries.</source>
         <translation>{} musi być warstwą typu {}, a '{}' zawiera geometrie typu {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="99"/>
+        <location filename="../algorithms/running.py" line="100"/>
         <source>the feature has no geometry</source>
         <translation>obiekt nie ma geometrii</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="111"/>
+        <location filename="../algorithms/running.py" line="112"/>
         <source>Feature {} skipped: {}</source>
         <translation>Obiekt {} pominięty: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="119"/>
+        <location filename="../algorithms/running.py" line="120"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="137"/>
+        <location filename="../algorithms/running.py" line="138"/>
         <source>{} (part {})</source>
         <translation>{} (część {})</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="154"/>
+        <location filename="../algorithms/running.py" line="155"/>
         <source>unexpected {}: {} (please report this with the feature)</source>
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="170"/>
+        <location filename="../algorithms/running.py" line="171"/>
         <source>{} centerlines written, {} features or parts skipped.</source>
         <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="105"/>
+        <source>Distance between consecutive samples of the boundary, in layer units (metres for a layer in degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.</source>
+        <translation>Odległość między kolejnymi próbkami obrysu, w jednostkach warstwy (w metrach dla warstwy w stopniach). 0 dobiera ją na podstawie kształtu. Mniejsze wartości dają gładszą, ale wolniej liczoną linię środkową.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="115"/>
+        <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
+        <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="121"/>
+        <source>Line layer: input attributes plus length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width), n_vertices and ends_found.</source>
+        <translation>Warstwa liniowa: atrybuty wejściowe oraz length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości), n_vertices i ends_found.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="132"/>
+        <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
+        <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="144"/>
+        <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
+        <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="156"/>
+        <source>Optional line layer: cross-sections from bank to bank through the centerline, every TRANSECT_INTERVAL, with their width and chainage.</source>
+        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową co TRANSECT_INTERVAL, z szerokością i kilometrażem.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="169"/>
+        <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
+        <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
 </context>
 <context>
@@ -119,7 +154,7 @@
     <message>
         <location filename="../algorithms/lines_centerline.py" line="38"/>
         <source>Computes one unbranched centerline between two lines (for example the two banks of a river) with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines are paired by equal values of PAIR_FIELD_A and PAIR_FIELD_B; without them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is the local width. LINES_B is reprojected to the CRS of LINES_A; geographic layers are computed in a local metric projection and distances are then in metres.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową między dwiema liniami (na przykład brzegami rzeki) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu linii. Linie łączone są w pary według równych wartości PAIR_FIELD_A i PAIR_FIELD_B; bez nich każda warstwa zawiera jedną linię (jej obiekty i części są scalane). Linie nie mogą się przecinać. Wartość M każdego wierzchołka to lokalna szerokość. LINES_B jest przeliczana do układu LINES_A; warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym, a odległości są wtedy w metrach.</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="49"/>
@@ -174,7 +209,7 @@
     <message>
         <location filename="../algorithms/lines_centerline.py" line="102"/>
         <source>{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and PAIR_FIELD_B to pair them, or merge them into one line.</source>
-        <translation type="unfinished"></translation>
+        <translation>{} zawiera {} osobne linie, które nie łączą się w jedną; podaj PAIR_FIELD_A i PAIR_FIELD_B, aby je sparować, albo scal je w jedną linię.</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="116"/>
@@ -184,17 +219,17 @@
     <message>
         <location filename="../algorithms/lines_centerline.py" line="121"/>
         <source>the lines of LINES_A with this pairing value do not join into one</source>
-        <translation type="unfinished"></translation>
+        <translation>linie LINES_A o tej wartości parującej nie łączą się w jedną</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="124"/>
         <source>the lines of LINES_B with this pairing value do not join into one</source>
-        <translation type="unfinished"></translation>
+        <translation>linie LINES_B o tej wartości parującej nie łączą się w jedną</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="138"/>
         <source>No line in LINES_A has {} = {!r}; line {} of LINES_B unused.</source>
-        <translation type="unfinished"></translation>
+        <translation>Żadna linia w LINES_A nie ma {} = {!r}; linia {} z LINES_B nie została użyta.</translation>
     </message>
 </context>
 <context>
@@ -212,7 +247,7 @@
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="47"/>
         <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two SPLIT_POINTS lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma punktami SPLIT_POINTS leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="58"/>
@@ -232,7 +267,7 @@
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="64"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within SNAP_TOLERANCE of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do SNAP_TOLERANCE od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="77"/>
@@ -262,7 +297,7 @@
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="87"/>
         <source>Pass through the main channel: the line never crosses an island and goes round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
-        <translation type="unfinished"></translation>
+        <translation>Prowadź głównym korytem: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. Pomijaj wyspy: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="99"/>

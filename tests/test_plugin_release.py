@@ -58,6 +58,13 @@ def test_release_zip_plugin_imports_from_extracted_folder(tmp_path):
     assert (extracted / PLUGIN_NAME / "icons" / "incircu.svg").is_file()
 
 
+def test_compiled_translations_match_their_sources(tmp_path):
+    for source in sorted((REPOSITORY / "i18n").glob("*.ts")):
+        compiled = tmp_path / (source.stem + ".qm")
+        subprocess.run(["lrelease", "-silent", str(source), "-qm", str(compiled)], check=True)
+        assert compiled.read_bytes() == source.with_suffix(".qm").read_bytes(), "run `make transcompile`"
+
+
 def test_polish_locale_translates_the_toolbox(provider, qgis_iface):
     import qgis.utils
 
@@ -72,6 +79,9 @@ def test_polish_locale_translates_the_toolbox(provider, qgis_iface):
         try:
             assert algorithm.displayName() == "Linia środkowa poligonów (IncirCu)"
             assert algorithm.group() == "Linie środkowe"
+            assert algorithm.shortHelpString().startswith("Wyznacza jedną nierozgałęzioną linię środkową")
+            fresh = registry.createAlgorithmById("incircu:polygoncenterline")
+            assert fresh.parameterDefinition("SPLIT_POINTS").description() == "Punkty podziału"
             lines = registry.algorithmById("incircu:linescenterline")
             assert lines.displayName() == "Linia środkowa między dwiema liniami (IncirCu)"
         finally:
