@@ -17,6 +17,7 @@ from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
+from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
 __all__ = [
     "ISLAND_MODES",
@@ -26,16 +27,21 @@ __all__ = [
     "CrossingLinesError",
     "EndsResult",
     "IncirCuError",
+    "Incircle",
     "InvalidGeometryError",
     "LocalProjection",
     "PartOutcome",
     "SplitPointError",
+    "Transect",
     "centerline_from_chains",
     "default_spacing",
     "find_ends",
+    "incircle_polygons",
     "lines_centerline",
     "multipolygon_centerlines",
     "orient_bank_lines",
     "polygon_centerline",
     "split_polygon",
+    "transects",
+    "vertex_chainages",
 ]

@@ -11,6 +11,7 @@ from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygo
 from .engine import CenterlineResult, centerline_from_chains
 from .ends import find_ends
 from .errors import IncirCuError, InvalidGeometryError, SplitPointError
+from .islands import bridge_islands
 
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
@@ -76,8 +77,6 @@ def polygon_centerline(
             notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
-        from .islands import bridge_islands
-
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     result = centerline_from_chains(
         c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress

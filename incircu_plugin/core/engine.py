@@ -19,7 +19,7 @@ from typing import Callable, Optional
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString
+from shapely.geometry import LineString, Polygon
 
 from .chains import COINCIDENCE_TOLERANCE, extent_of
 from .errors import IncirCuError
@@ -88,14 +88,18 @@ class CenterlineResult:
 
 @dataclass(frozen=True)
 class _Samples:
-    """Samples of one chain: the disk family of sample ``i`` has centre ``point + t*direction``, radius
-    ``scale*t``; segments ``first_own..last_own`` (global indices) touch it by construction."""
+    """Samples of one chain, sorted by arc-length ``position``.
+
+    The disk family of sample ``i`` has centre ``point + t*direction`` and radius ``scale*t``; segments
+    ``first_own..last_own`` (global indices) touch it by construction. At a convex vertex the disk touches
+    the incident edges ``slide*t`` away from the vertex (``slide`` is 0 elsewhere).
+    """
 
     point: np.ndarray
     direction: np.ndarray
     scale: np.ndarray
     position: np.ndarray
-    foot: np.ndarray
+    slide: np.ndarray
     first_own: np.ndarray
     last_own: np.ndarray
 
@@ -120,6 +124,7 @@ class _Boundary:
         self.offset = offsets
         self.position = positions
         self.segment_position = np.concatenate([p[:-1] for p in positions])
+        self.segment_end_position = np.concatenate([p[1:] for p in positions])
         delta = self.end - self.start
         self.length = np.hypot(*delta.T)
         self.unit = delta / self.length[:, None]
@@ -210,7 +215,6 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
 
     convex_vertex = inner[convex]
     half_angle = interior_angle[convex] / 2.0
-    tangent_point = chain[convex_vertex] - incoming[convex] * (np.cos(half_angle))[:, None]
 
     position = np.concatenate([stations, positions[fan_vertex], positions[convex_vertex]])
     order = np.argsort(position, kind="stable")
@@ -219,7 +223,7 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
         direction=np.concatenate([normal[segment], fan_direction, bisector[convex]])[order],
         scale=np.concatenate([np.ones(len(segment) + len(fan_vertex)), np.sin(half_angle)])[order],
         position=position[order],
-        foot=np.concatenate([edge_point, chain[fan_vertex], tangent_point])[order],
+        slide=np.concatenate([np.zeros(len(segment) + len(fan_vertex)), np.cos(half_angle)])[order],
         first_own=offset + np.concatenate([segment, fan_vertex - 1, convex_vertex - 1])[order],
         last_own=offset + np.concatenate([segment, fan_vertex, convex_vertex])[order],
     )
@@ -325,7 +329,11 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         accepted[chosen_sample] = True
         first[chosen_sample] = t[chosen]
         contact[chosen_sample] = boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
-        position[chosen_sample] = boundary.segment_position[chosen_segment] + along[chosen]
+        position[chosen_sample] = np.where(
+            along[chosen] >= boundary.length[chosen_segment],
+            boundary.segment_end_position[chosen_segment],
+            boundary.segment_position[chosen_segment] + along[chosen],
+        )
 
         pending = active[~settled]
         best = best[~settled]
@@ -356,6 +364,27 @@ def _solve_in_two_passes(samples, index, boundary, own_chain, trial_radius, limi
         whole[coarse], whole[~coarse] = coarse_part, fine_part
         merged.append(whole)
     return merged
+
+
+def _medial_points(samples, sample, t, boundary):
+    """Centre, radius, touching point and its arc length on the sampled chain, for settled samples.
+
+    Returns those arrays and a mask of the samples to keep: at a convex vertex the disk touches the
+    incident edges ``slide*t`` from the vertex, on the incoming edge if it is that long, else on the
+    outgoing one; a disk that reaches past both edges touches its own chain nowhere and is dropped.
+    """
+    point = samples.point[sample]
+    centre = point + t[:, None] * samples.direction[sample]
+    radius = samples.scale[sample] * t
+    slide = samples.slide[sample] * t
+    incoming, outgoing = samples.first_own[sample], samples.last_own[sample]
+    on_incoming = slide <= boundary.length[incoming]
+    on_outgoing = ~on_incoming & (slide <= boundary.length[outgoing])
+    foot = np.where(
+        on_incoming[:, None], point - slide[:, None] * boundary.unit[incoming], point + slide[:, None] * boundary.unit[outgoing]
+    )
+    position = samples.position[sample] + np.where(on_incoming, -slide, slide)
+    return centre, radius, foot, position, on_incoming | on_outgoing
 
 
 def _distinct(points, tolerance):
@@ -518,10 +547,10 @@ def centerline_from_chains(
             t, accepted, contact, position = _solve_in_two_passes(
                 samples, index, boundary, own, trial_radius, limit, floor
             )
-            sample, t, contact, position = index[accepted], t[accepted], contact[accepted], position[accepted]
-            centre = samples.point[sample] + t[:, None] * samples.direction[sample]
-            radius = samples.scale[sample] * t
-            own_foot, own_position = samples.foot[sample], samples.position[sample]
+            found = _medial_points(samples, index[accepted], t[accepted], boundary)
+            keep = found[-1]
+            centre, radius, own_foot, own_position = (array[keep] for array in found[:-1])
+            contact, position = contact[accepted][keep], position[accepted][keep]
             if own == 0:
                 pieces.append((centre, radius, own_foot, contact, own_position, position))
             else:
@@ -531,10 +560,21 @@ def centerline_from_chains(
                 raise Cancelled()
 
     centre, radius, foot_a, foot_b, position_a, position_b = (
-        np.concatenate([piece[k] for piece in pieces]) if pieces else np.empty((0, 2) if k in (0, 2, 3) else 0)
-        for k in range(6)
+        np.concatenate([piece[k] for piece in pieces]) for k in range(6)
     )
-    order = np.argsort(position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge), kind="stable")
+    if not closed:
+        region = Polygon(np.concatenate([local[0], local[1][::-1]]))
+        shapely.prepare(region)
+        inside = shapely.intersects_xy(region, centre[:, 0], centre[:, 1])
+        centre, radius, foot_a, foot_b = centre[inside], radius[inside], foot_a[inside], foot_b[inside]
+        position_a, position_b = position_a[inside], position_b[inside]
+    tangent_a = boundary.unit[
+        np.clip(np.searchsorted(boundary.position[0], position_a, side="right") - 1, 0, len(local[0]) - 2)
+    ]
+    order = np.lexsort((
+        np.einsum("ij,ij->i", centre, tangent_a),
+        position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge),
+    ))
     centre, radius, foot_a, foot_b = centre[order], radius[order], foot_a[order], foot_b[order]
 
     if closed:

@@ -93,5 +93,8 @@ class LocalProjection:
 
 
 def _transform_array(transformer, xy):
-    x, y = transformer.transform(xy[..., 0], xy[..., 1])
-    return np.stack([np.asarray(x, dtype=float), np.asarray(y, dtype=float)], axis=-1)
+    flat = np.asarray(xy, dtype=float).reshape(-1, 2)
+    # pyproj takes a one-element array for a scalar (deprecated in numpy); give it at least two points.
+    padded = np.concatenate([flat, flat[:1]]) if len(flat) == 1 else flat
+    x, y = transformer.transform(padded[:, 0], padded[:, 1])
+    return np.stack([x, y], axis=-1)[: len(flat)].reshape(np.shape(xy))
