@@ -314,8 +314,12 @@ class MedialOracle:
         coords = shapely.get_coordinates(line) if isinstance(line, shapely.Geometry) else np.asarray(line, dtype=float)
         step = step or 1e-4 * self.extent
         samples = shapely.get_coordinates(shapely.segmentize(self._lines, step))
-        local_line = LineString(coords - self.origin)
-        return float(np.max(shapely.distance(local_line, shapely.points(samples))))
+        local = coords - self.origin
+        pieces = shapely.linestrings(np.stack([local[:-1], local[1:]], axis=1))
+        _, distances = shapely.STRtree(pieces).query_nearest(
+            shapely.points(samples), return_distance=True, all_matches=False
+        )
+        return float(np.max(distances))
 
     @property
     def length(self):
