@@ -1,0 +1,265 @@
+"""Bad input gets a typed error (an ``IncirCuError`` subclass) with a message a user can act on.
+
+One test per case of the issue: empty or null geometry, fewer than two distinct points, NaN/inf
+coordinates, zero-length segments (dropped silently), a self-intersecting polygon (the message says where),
+split points too far / identical / not two, open-mode lines that cross or touch, a chain that folds back.
+"""
+
+import math
+import re
+
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
+
+from incircu_plugin.core import (
+    ChainError,
+    CrossingLinesError,
+    IncirCuError,
+    InvalidGeometryError,
+    SplitPointError,
+    lines_centerline,
+    polygon_centerline,
+    split_polygon,
+)
+
+RECTANGLE = box(0.0, 0.0, 100.0, 10.0)
+ENDS = [(0.0, 5.0), (100.0, 5.0)]
+BANK_A = [(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)]
+BANK_B = [(0.0, 10.0), (50.0, 10.0), (100.0, 10.0)]
+
+
+def numbers_in(message):
+    return [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", message)]
+
+
+def test_every_error_class_is_an_incircu_error_and_a_value_error():
+    for error in (InvalidGeometryError, SplitPointError, ChainError, CrossingLinesError):
+        assert issubclass(error, IncirCuError)
+    assert issubclass(IncirCuError, ValueError)
+
+
+# Empty or null geometry -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("polygon", [None, Polygon(), shapely.from_wkt("POLYGON EMPTY")], ids=["null", "empty", "wkt-empty"])
+def test_null_or_empty_polygon(polygon):
+    with pytest.raises(InvalidGeometryError) as caught:
+        polygon_centerline(polygon, ENDS)
+    assert str(caught.value)
+
+
+@pytest.mark.parametrize("geometry", [LineString([(0, 0), (1, 1)]), Point(0, 0), MultiPolygon([RECTANGLE, box(200, 0, 300, 10)])])
+def test_not_a_single_polygon(geometry):
+    with pytest.raises(InvalidGeometryError, match=geometry.geom_type):
+        polygon_centerline(geometry, ENDS)
+
+
+@pytest.mark.parametrize("line", [None, LineString(), [], np.empty((0, 2))], ids=["null", "empty", "empty-list", "empty-array"])
+def test_null_or_empty_line(line):
+    with pytest.raises(InvalidGeometryError):
+        lines_centerline(line, BANK_B)
+    with pytest.raises(InvalidGeometryError):
+        lines_centerline(BANK_A, line)
+
+
+# Fewer than two distinct points -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "line", [[(3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0), (3.0, 3.0)]], ids=["one", "two-same", "three-same"]
+)
+def test_line_with_fewer_than_two_distinct_points(line):
+    with pytest.raises((ChainError, InvalidGeometryError)) as caught:
+        lines_centerline(line, BANK_B)
+    assert "2" in str(caught.value) or "point" in str(caught.value).lower()
+
+
+def test_line_of_two_points_closer_than_the_coincidence_tolerance():
+    with pytest.raises(ChainError, match="fewer than 2 distinct points"):
+        lines_centerline([(5.0, 3.0), (5.0 + 1e-13, 3.0)], BANK_B)
+
+
+# NaN / inf --------------------------------------------------------------------------------------------
+
+
+# Building a shapely geometry with NaN warns; the warning is about the test data, not the core.
+@pytest.mark.filterwarnings("ignore:invalid value encountered:RuntimeWarning")
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf], ids=["nan", "inf", "-inf"])
+def test_non_finite_polygon_coordinate(bad):
+    polygon = Polygon([(0.0, 0.0), (100.0, 0.0), (100.0, bad), (0.0, 10.0)])
+    with pytest.raises(InvalidGeometryError, match="NaN or infinite"):
+        polygon_centerline(polygon, ENDS)
+
+
+# Building a shapely geometry with NaN warns; the warning is about the test data, not the core.
+@pytest.mark.filterwarnings("ignore:invalid value encountered:RuntimeWarning")
+@pytest.mark.parametrize("bad", [math.nan, math.inf], ids=["nan", "inf"])
+def test_non_finite_line_coordinate(bad):
+    with pytest.raises(InvalidGeometryError, match="NaN or infinite"):
+        lines_centerline([(0.0, 0.0), (50.0, bad), (100.0, 0.0)], BANK_B)
+    with pytest.raises(InvalidGeometryError, match="NaN or infinite"):
+        lines_centerline(BANK_A, LineString([(0.0, 10.0), (bad, 10.0), (100.0, 10.0)]))
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf], ids=["nan", "inf"])
+def test_non_finite_split_point(bad):
+    with pytest.raises(IncirCuError):
+        polygon_centerline(RECTANGLE, [(0.0, bad), (100.0, 5.0)])
+
+
+@pytest.mark.parametrize("spacing", [-1.0, math.nan, math.inf], ids=["negative", "nan", "inf"])
+def test_bad_spacing(spacing):
+    with pytest.raises(IncirCuError, match="spacing"):
+        polygon_centerline(RECTANGLE, ENDS, spacing=spacing)
+
+
+# Zero-length segments are dropped silently ------------------------------------------------------------
+
+
+def test_repeated_vertices_in_a_polygon_are_dropped_silently():
+    clean = Polygon([(0.0, 0.0), (50.0, 0.0), (100.0, 0.0), (100.0, 10.0), (50.0, 10.0), (0.0, 10.0)])
+    doubled = Polygon(
+        [(0.0, 0.0), (50.0, 0.0), (50.0, 0.0), (100.0, 0.0), (100.0, 10.0), (100.0, 10.0), (50.0, 10.0), (0.0, 10.0), (0.0, 10.0)]
+    )
+    assert doubled.is_valid
+    expected = polygon_centerline(clean, ENDS, spacing=1.0)
+    result = polygon_centerline(doubled, ENDS, spacing=1.0)
+    assert np.array_equal(np.asarray(result.line.coords), np.asarray(expected.line.coords))
+    assert np.array_equal(result.radii, expected.radii)
+
+
+def test_repeated_vertices_in_lines_are_dropped_silently():
+    doubled_a = [(0.0, 0.0), (0.0, 0.0), (50.0, 0.0), (50.0, 0.0), (100.0, 0.0)]
+    doubled_b = [(0.0, 10.0), (50.0, 10.0), (100.0, 10.0), (100.0, 10.0)]
+    expected = lines_centerline(BANK_A, BANK_B, spacing=1.0)
+    result = lines_centerline(doubled_a, doubled_b, spacing=1.0)
+    assert np.array_equal(np.asarray(result.line.coords), np.asarray(expected.line.coords))
+    assert np.array_equal(result.radii, expected.radii)
+
+
+# Self-intersecting polygon ----------------------------------------------------------------------------
+
+
+def test_self_intersecting_polygon_says_where():
+    bow_tie = Polygon([(0.0, 0.0), (100.0, 10.0), (100.0, 0.0), (0.0, 10.0)])
+    with pytest.raises(InvalidGeometryError) as caught:
+        polygon_centerline(bow_tie, [(0.0, 5.0), (100.0, 5.0)])
+    message = str(caught.value)
+    assert "self" in message.lower() and "intersect" in message.lower()
+    # The crossing is at (50, 5): the message must carry those coordinates.
+    numbers = numbers_in(message)
+    assert any(
+        math.isclose(x, 50.0, abs_tol=1e-9) and math.isclose(y, 5.0, abs_tol=1e-9) for x, y in zip(numbers, numbers[1:])
+    ), message
+
+
+def test_polygon_with_a_spike_folding_back_is_rejected():
+    spike = Polygon([(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (60.0, 10.0), (60.0, 20.0), (60.0, 10.0), (0.0, 10.0)])
+    with pytest.raises(InvalidGeometryError):
+        polygon_centerline(spike, ENDS)
+
+
+# Split points -----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("points", [[], [(0.0, 5.0)], [(0.0, 5.0), (100.0, 5.0), (50.0, 0.0)]], ids=["zero", "one", "three"])
+def test_split_points_not_two(points):
+    # An empty list means "find the ends" to polygon_centerline; split_polygon needs exactly two.
+    with pytest.raises(SplitPointError, match="exactly 2") as caught:
+        split_polygon(RECTANGLE, points)
+    assert str(len(points)) in str(caught.value)
+    if points:
+        with pytest.raises(SplitPointError, match="exactly 2"):
+            polygon_centerline(RECTANGLE, points)
+
+
+def test_split_point_too_far_from_the_ring_names_point_distance_and_tolerance():
+    with pytest.raises(SplitPointError) as caught:
+        polygon_centerline(RECTANGLE, [(-1.0, 5.0), (100.0, 5.0)], snap_tolerance=0.5)
+    numbers = numbers_in(str(caught.value))
+    assert 1.0 in numbers and 0.5 in numbers, str(caught.value)
+
+
+def test_split_point_inside_the_polygon_beyond_the_default_tolerance():
+    # The default tolerance is 1e-6 of the extent (1e-4 here): a point 1e-3 inside is refused.
+    with pytest.raises(SplitPointError):
+        polygon_centerline(RECTANGLE, [(1e-3, 5.0), (100.0, 5.0)])
+
+
+def test_split_point_within_the_tolerance_is_snapped_onto_the_ring():
+    result = polygon_centerline(RECTANGLE, [(0.2, 5.0), (100.0, 5.3)], snap_tolerance=0.5, spacing=1.0)
+    coords = np.asarray(result.line.coords)
+    # Snapped to the nearest ring point, to the rounding of a projection onto an edge (1e-12 of the extent).
+    assert coords[0] == pytest.approx((0.0, 5.0), abs=1e-12 * 100.0)
+    assert coords[-1] == pytest.approx((100.0, 5.3), abs=1e-12 * 100.0)
+
+
+@pytest.mark.parametrize(
+    "points",
+    [[(0.0, 5.0), (0.0, 5.0)], [Point(100.0, 5.0), (100.0, 5.0)], [(0.0, 0.0), (0.0, 1e-9)]],
+    ids=["same", "point-and-tuple", "snap-to-same-place"],
+)
+def test_identical_split_points(points):
+    with pytest.raises(SplitPointError, match="same place"):
+        polygon_centerline(RECTANGLE, points)
+
+
+# Open mode: crossing or touching lines ----------------------------------------------------------------
+
+
+def test_crossing_lines_say_where():
+    with pytest.raises(CrossingLinesError) as caught:
+        lines_centerline([(0.0, 0.0), (100.0, 10.0)], [(0.0, 10.0), (100.0, 0.0)])
+    numbers = numbers_in(str(caught.value))
+    assert 50.0 in numbers and 5.0 in numbers, str(caught.value)
+
+
+@pytest.mark.parametrize(
+    "line_b",
+    [[(0.0, 10.0), (50.0, 0.0), (100.0, 10.0)], [(0.0, 10.0), (100.0, 10.0), (100.0, 0.0)], [(0.0, 0.0), (0.0, 10.0), (100.0, 10.0)]],
+    ids=["vertex-on-edge", "end-on-end", "start-on-start"],
+)
+def test_touching_lines(line_b):
+    with pytest.raises(CrossingLinesError):
+        lines_centerline(BANK_A, line_b)
+
+
+def test_overlapping_lines():
+    with pytest.raises(CrossingLinesError):
+        lines_centerline(BANK_A, [(20.0, 0.0), (80.0, 0.0)])
+
+
+# A chain folding back over itself ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "line",
+    [[(0.0, 0.0), (100.0, 0.0), (60.0, 0.0)], [(0.0, 0.0), (60.0, 0.0), (60.0, 0.0), (30.0, 0.0), (100.0, 0.0)]],
+    ids=["end-folds-back", "fold-behind-a-duplicate"],
+)
+def test_line_folding_back_over_itself_says_where(line):
+    with pytest.raises(ChainError, match="folds back") as caught:
+        lines_centerline(line, BANK_B)
+    numbers = numbers_in(str(caught.value))
+    fold = line[1] if line[1] != line[0] else line[2]
+    assert fold[0] in numbers, str(caught.value)
+
+
+def test_line_crossing_itself_says_where():
+    loop = [(0.0, 0.0), (60.0, 0.0), (60.0, 5.0), (40.0, 5.0), (40.0, -5.0), (100.0, -5.0)]
+    with pytest.raises(ChainError, match="crosses itself") as caught:
+        lines_centerline(loop, BANK_B)
+    numbers = numbers_in(str(caught.value))
+    assert 40.0 in numbers and 0.0 in numbers, str(caught.value)
+
+
+def test_errors_leave_later_calls_working():
+    # A failed call leaves no state behind: the next good call gives the same result as a fresh one.
+    expected = polygon_centerline(RECTANGLE, ENDS, spacing=1.0)
+    for bad in (None, Polygon([(0.0, 0.0), (100.0, 10.0), (100.0, 0.0), (0.0, 10.0)])):
+        with pytest.raises(IncirCuError):
+            polygon_centerline(bad, ENDS, spacing=1.0)
+    result = polygon_centerline(RECTANGLE, ENDS, spacing=1.0)
+    assert result.line.equals_exact(expected.line, 0.0)
