@@ -1,9 +1,10 @@
 """Benchmark inputs: analytic shapes with a known axis (from ``tests/geometry_cases.py``) and real outlines.
 
-The analytic shapes are the core tests' own builders (imported, never copied), so the benchmark and the
-tests agree on what the exact axis is. Real outlines come from :mod:`outlines`; their reference axis is
-the medial-axis target set of the segment-Voronoi oracle ``tests/oracle.py`` (Boost.Polygon through
-pyvoronoi, no code shared with the engine), between the two chains cut at the automatically found ends.
+The analytic shapes are the core tests' own builders (imported, never copied). The reference axis of
+every input is the medial-axis target set of the segment-Voronoi oracle ``tests/oracle.py``
+(Boost.Polygon through pyvoronoi, no code shared with the engine) between the two chains; for analytic
+shapes the distance to the smooth analytic axis is measured as well. Real outlines come from
+:mod:`outlines`, cut into two chains at the automatically found ends.
 """
 
 import sys
@@ -24,30 +25,40 @@ import oracle  # noqa: E402
 MEANDER_VERTICES = 2333
 
 
-def from_geometry_case(analytic, name=None):
-    """Wrap one :class:`geometry_cases.Case` as a benchmark :class:`~peers.Case` (exact axis)."""
-    return Case(
+def from_geometry_case(analytic, name=None, with_oracle=True):
+    """Wrap one :class:`geometry_cases.Case` as a benchmark :class:`~peers.Case`.
+
+    The reference axis is the polygon's own medial axis between the two chains (the oracle's target set),
+    which is what "on the axis" means for a polygon; the smooth shape's analytic axis, which differs from
+    it by the polygonisation (``axis_tolerance``) and near curved ends (where the target set follows the
+    split point's Voronoi cell), is kept as ``extra["analytic_distance"]`` for a second deviation column.
+    """
+    case = Case(
         name=name or analytic.name,
         polygon=analytic.polygon,
         ends=tuple(shapely.Point(point) for point in analytic.split_points),
         width=float(analytic.width),
-        axis_distance=analytic.axis_distance,
-        axis_kind="exact" if analytic.axis_distance is not None else "none",
-        extra={"axis_line": analytic.axis_line},
+        extra={"analytic_distance": analytic.axis_distance},
     )
+    if with_oracle:
+        medial = oracle.MedialOracle(analytic.chain_a, analytic.chain_b, region=analytic.polygon)
+        case.axis_distance, case.axis_kind = medial.distance, "oracle"
+    return case
 
 
 def analytic_cases():
-    """Rectangle, tapered channel, annulus sector and meander, each small and large (boundary vertices)."""
+    """Rectangle, tapered channel, annulus sector and the issue's meander; two sizes of rectangle and sector.
+
+    Larger inputs are covered by the scaling run; a tapered channel with 1,000 (nearly collinear) bank
+    vertices is left out because SFCGAL's straight skeleton spends minutes on it, beyond the time budget.
+    """
     builders = [
         ("rectangle 100×10", geometry_cases.rectangle(n=11)),
         ("rectangle 100×10, 1k v", geometry_cases.rectangle(n=500)),
         ("tapered 20→5", geometry_cases.tapered_channel(n=11)),
-        ("tapered 20→5, 1k v", geometry_cases.tapered_channel(n=500)),
         ("annulus sector", geometry_cases.annulus_sector(n=61)),
         ("annulus sector, 1k v", geometry_cases.annulus_sector(n=500)),
         ("meander 2 km×20, 2,333 v", geometry_cases.meander_with_vertex_count(MEANDER_VERTICES)),
-        ("meander 2 km×20, 10k v", geometry_cases.meander_with_vertex_count(10_000)),
     ]
     return [from_geometry_case(analytic, name) for name, analytic in builders]
 
@@ -61,7 +72,7 @@ def meander_case():
 def river_case(boundary_vertices):
     """A long synthetic river (vertex every quarter width) with ``boundary_vertices`` bank vertices."""
     river = geometry_cases.synthetic_river(boundary_vertices)
-    return from_geometry_case(river, f"river {boundary_vertices:,} v")
+    return from_geometry_case(river, f"river {boundary_vertices:,} v", with_oracle=False)
 
 
 def outline_cases(with_oracle=True):

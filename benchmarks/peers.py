@@ -129,9 +129,8 @@ class GrassRunner:
     """GRASS ``v.voronoi.skeleton -s thin=-1`` through ``qgis_process`` (provider grass7, QGIS 3.22).
 
     The input layer is written once per case (outside the timed call); each timed call is one
-    ``qgis_process.bin run`` as a QGIS user would launch it, so it includes QGIS's start-up,
-    ``startup_seconds`` measures that start-up alone (``qgis_process.bin --version`` is not enough:
-    the timed baseline loads the providers like ``run`` does).
+    ``qgis_process.bin run`` as a QGIS user would launch it, so it includes QGIS's start-up, which
+    :meth:`startup` measures alone (a ``help`` call loads the providers as ``run`` does).
     """
 
     def __init__(self, work_dir):

@@ -25,8 +25,8 @@ def format_measurements(measurements, title):
     header = (
         f"\n### {title}\n\n"
         "| input | tool | time (median) | × IncirCu | runs | parts | branches | mean dev /w | max dev /w "
-        "| max vertex dev /w | end gaps /w | outside /w |\n"
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+        "| max vertex dev /w | mean dev from analytic axis /w | end gaps /w | outside /w |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
     )
     rows = []
     reference = {m["case"] if isinstance(m, dict) else m.case: None for m in measurements}
@@ -36,7 +36,7 @@ def format_measurements(measurements, title):
             reference[record["case"]] = record["seconds"]
     for record in records:
         if record["error"]:
-            rows.append(f"| {record['case']} | {record['tool']} | – | – | – | – | – | – | – | – | – | "
+            rows.append(f"| {record['case']} | {record['tool']} | – | – | – | – | – | – | – | – | – | – | "
                         f"{record['error'].replace('|', '/')} |")
             continue
         base = reference.get(record["case"])
@@ -46,7 +46,8 @@ def format_measurements(measurements, title):
         rows.append(
             f"| {record['case']} | {record['tool']} | {_seconds(record['seconds'])} | {_number(ratio, 3)} | "
             f"{record['runs']} | {record['parts']} | {record['branches']} | {_number(record['mean_dev_rel'])} | "
-            f"{_number(record['max_dev_rel'])} | {_number(record['max_vertex_dev_rel'])} | {gap_text} | "
+            f"{_number(record['max_dev_rel'])} | {_number(record['max_vertex_dev_rel'])} | "
+            f"{_number(record.get('mean_analytic_dev_rel'))} | {gap_text} | "
             f"{_number(record['outside_rel'])} |"
         )
     return header + "\n".join(rows) + "\n"

@@ -1,0 +1,67 @@
+"""Where IncirCu's time goes: cProfile of ``polygon_centerline`` on the meander and on a long river.
+
+Writes ``benchmarks/results/profile.json`` (the top functions by own time, per input) for
+docs/benchmark.md, and prints the same.
+"""
+
+import cProfile
+import json
+import pstats
+import statistics
+import sys
+import time
+from pathlib import Path
+
+BENCH_DIR = Path(__file__).resolve().parent
+if str(BENCH_DIR) not in sys.path:
+    sys.path.insert(0, str(BENCH_DIR))
+
+import cases as bench_cases  # noqa: E402
+from peers import run_incircu  # noqa: E402
+
+RESULTS_DIR = BENCH_DIR / "results"
+TOP_FUNCTIONS = 12
+
+
+def profile(case, repeats):
+    """Median wall time of ``repeats`` runs, then the top functions of one profiled run."""
+    run_incircu(case)
+    durations = []
+    for _ in range(repeats):
+        started = time.perf_counter()
+        run_incircu(case)
+        durations.append(time.perf_counter() - started)
+    profiler = cProfile.Profile()
+    profiler.enable()
+    run_incircu(case)
+    profiler.disable()
+    stats = pstats.Stats(profiler)
+    total = stats.total_tt
+    rows = []
+    for (filename, line, function), (_, calls, own, cumulative, _) in stats.stats.items():
+        rows.append({
+            "function": f"{Path(filename).name}:{line}({function})",
+            "calls": calls,
+            "own_seconds": own,
+            "cumulative_seconds": cumulative,
+        })
+    rows.sort(key=lambda row: row["own_seconds"], reverse=True)
+    return {"case": case.name, "vertices": case.vertex_count, "median_seconds": statistics.median(durations),
+            "profiled_seconds": total, "top": rows[:TOP_FUNCTIONS]}
+
+
+def main():
+    RESULTS_DIR.mkdir(exist_ok=True)
+    results = [profile(bench_cases.meander_case(), repeats=7), profile(bench_cases.river_case(100_000), repeats=1)]
+    for result in results:
+        print(f"== {result['case']}: {result['median_seconds'] * 1e3:.1f} ms median, "
+              f"{result['profiled_seconds'] * 1e3:.1f} ms under the profiler")
+        for row in result["top"]:
+            print(f"  {row['own_seconds'] * 1e3:9.1f} ms own {row['cumulative_seconds'] * 1e3:9.1f} ms cum "
+                  f"{row['calls']:>8}  {row['function']}")
+    (RESULTS_DIR / "profile.json").write_text(json.dumps(results, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
