@@ -22,10 +22,10 @@ BENCH_DIR = Path(__file__).resolve().parent
 if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
-import cases as bench_cases  # noqa: E402
-from harness import preload, run_tool  # noqa: E402
-from peers import INCIRCU, GrassRunner, peer_tools  # noqa: E402
-from report import format_measurements  # noqa: E402
+import cases as bench_cases
+from harness import preload, run_tool
+from peers import INCIRCU, GrassRunner, peer_tools
+from report import format_measurements
 
 RESULTS_DIR = BENCH_DIR / "results"
 
@@ -115,32 +115,33 @@ def plot_scaling(rows, path):
     plt.close(figure)
 
 
-def plot_outlines(case_list, geometries, path):
-    """One panel per real outline with every tool's output over the polygon."""
+def plot_outlines(case_list, tool_names, geometries, path):
+    """Grid of panels, one row per real outline and one column per tool: each tool's lines on the polygon."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-
     from peers import line_parts
 
-    figure, axes_row = plt.subplots(1, len(case_list), figsize=(4 * len(case_list), 5), dpi=100)
-    for axes, case in zip(axes_row, case_list):
-        x, y = case.polygon.exterior.xy
-        axes.fill(x, y, color="#dddddd", linewidth=0)
-        for (case_name, tool_name), geometry in geometries.items():
-            if case_name != case.name:
-                continue
-            for index, part in enumerate(line_parts(geometry)):
-                px, py = part.xy
-                axes.plot(px, py, linewidth=2.0 if tool_name == INCIRCU.name else 0.8,
-                          color="C3" if tool_name == INCIRCU.name else None,
-                          label=tool_name if index == 0 else None, zorder=3 if tool_name == INCIRCU.name else 2)
-        axes.set_title(case.name)
-        axes.set_aspect("equal")
-        axes.set_xticks([])
-        axes.set_yticks([])
-    axes_row[0].legend(fontsize=7, loc="lower left")
+    figure, grid = plt.subplots(len(case_list), len(tool_names), dpi=72,
+                                figsize=(1.9 * len(tool_names), 2.6 * len(case_list)), squeeze=False)
+    for row, case in zip(grid, case_list):
+        for axes, tool_name in zip(row, tool_names):
+            x, y = case.polygon.exterior.xy
+            axes.fill(x, y, color="#dddddd", linewidth=0)
+            geometry = geometries.get((case.name, tool_name))
+            for part in line_parts(geometry):
+                axes.plot(*part.xy, linewidth=1.2 if tool_name == INCIRCU.name else 0.7,
+                          color="C3" if tool_name == INCIRCU.name else "C0")
+            if geometry is None:
+                axes.text(0.5, 0.5, "no output\n(failed or timed out)", ha="center", va="center",
+                          transform=axes.transAxes, fontsize=7)
+            axes.set_aspect("equal")
+            axes.set_xticks([])
+            axes.set_yticks([])
+            if case is case_list[0]:
+                axes.set_title(tool_name.replace(" ", "\n", 1), fontsize=8)
+        row[0].set_ylabel(case.name, fontsize=9)
     figure.tight_layout()
     figure.savefig(path)
     plt.close(figure)
@@ -177,7 +178,8 @@ def main(argv=None):
         for case in outlines:
             case.extra["keep_geometry"] = True
         outline_measurements, outline_geometries = side_by_side(outlines, tools, arguments.timeout)
-        plot_outlines(outlines, outline_geometries, RESULTS_DIR / "outlines.png")
+        plot_outlines(outlines, [tool.name for tool in [INCIRCU, *tools]], outline_geometries,
+                      RESULTS_DIR / "outlines.png")
 
         print("== Scaling (synthetic river)", flush=True)
         sizes = SCALING_SIZES[:3] if arguments.quick else SCALING_SIZES

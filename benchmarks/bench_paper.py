@@ -24,10 +24,10 @@ BENCH_DIR = Path(__file__).resolve().parent
 if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
-import cases as bench_cases  # noqa: E402
-from cases import geometry_cases, oracle  # noqa: E402
-from metrics import NearestDistance, densified_points  # noqa: E402
-from peers import run_sfcgal_straight_skeleton  # noqa: E402
+import cases as bench_cases
+from cases import geometry_cases, oracle
+from metrics import NearestDistance, densified_points
+from peers import run_sfcgal_straight_skeleton
 
 RESULTS_DIR = BENCH_DIR / "results"
 

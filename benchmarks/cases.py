@@ -10,7 +10,6 @@ shapes the distance to the smooth analytic axis is measured as well. Real outlin
 import sys
 
 import shapely
-
 from outlines import COUNTRIES, country_polygon
 from peers import REPO_ROOT, Case, mean_width
 
@@ -18,8 +17,8 @@ TESTS_DIR = REPO_ROOT / "tests"
 if str(TESTS_DIR) not in sys.path:
     sys.path.insert(0, str(TESTS_DIR))
 
-import geometry_cases  # noqa: E402  (tests/ is put on the path just above)
-import oracle  # noqa: E402
+import geometry_cases
+import oracle
 
 #: The constant-width meander of issue 2's speed target: 2 km long, 20 wide, 2,333 boundary vertices.
 MEANDER_VERTICES = 2333

@@ -16,7 +16,7 @@ def _child(connection, tool, case, budget_seconds):
         geometry, seconds, runs = time_call(tool.run, case, budget_seconds=budget_seconds)
         measurement = measure(tool.name, case, geometry, seconds, runs)
         connection.send((measurement, geometry if case.extra.get("keep_geometry") else None))
-    except Exception as error:  # a peer failing on an input is a result, not a crash of the benchmark
+    except Exception as error:  # noqa: BLE001 (a peer failing on an input is a result, not a crash)
         message = f"{type(error).__name__}: {error}".splitlines()[0][:160]
         connection.send((Measurement(tool.name, case.name, None, 0, error=message), traceback.format_exc()))
     finally:

@@ -10,9 +10,8 @@ from typing import Optional
 
 import numpy as np
 import shapely
-from shapely import STRtree
-
 from peers import line_parts
+from shapely import STRtree
 
 
 def segments_of(geometry):

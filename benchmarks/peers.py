@@ -15,9 +15,10 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Optional, Sequence
+from typing import Callable, Optional
 
 import numpy as np
 import shapely
@@ -143,7 +144,7 @@ class GrassRunner:
 
     def _call(self, arguments, timeout=900):
         completed = subprocess.run(
-            [QGIS_PROCESS, *arguments], env=self.env, capture_output=True, text=True, timeout=timeout
+            [QGIS_PROCESS, *arguments], env=self.env, capture_output=True, text=True, timeout=timeout, check=False
         )
         if completed.returncode != 0:
             raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {completed.stderr[-2000:]}")

@@ -16,8 +16,8 @@ BENCH_DIR = Path(__file__).resolve().parent
 if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
-import cases as bench_cases  # noqa: E402
-from peers import run_incircu  # noqa: E402
+import cases as bench_cases
+from peers import run_incircu
 
 RESULTS_DIR = BENCH_DIR / "results"
 TOP_FUNCTIONS = 12

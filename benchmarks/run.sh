@@ -48,7 +48,7 @@ setup_venv() {
   local stamp="$VENV/.requirements-bench.txt"
   if [ ! -x "$VENV/bin/python" ] || ! cmp -s "$REPO_ROOT/requirements-bench.txt" "$stamp"; then
     echo "== venv $VENV"
-    /usr/bin/python3 -m venv "$VENV"
+    /usr/bin/python3 -m venv --clear "$VENV"
     "$VENV/bin/python" -m pip install --quiet --upgrade pip
     "$VENV/bin/python" -m pip install --quiet -r "$REPO_ROOT/requirements-bench.txt"
     cp "$REPO_ROOT/requirements-bench.txt" "$stamp"

@@ -17,7 +17,7 @@ BENCH_DIR = Path(__file__).resolve().parent
 if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
-from report import _number, _seconds, format_measurements  # noqa: E402
+from report import _number, _seconds, format_measurements
 
 REPO_ROOT = BENCH_DIR.parent
 RESULTS_DIR = BENCH_DIR / "results"
@@ -28,7 +28,7 @@ GRASS = "GRASS v.voronoi.skeleton"
 
 def _command_output(arguments):
     try:
-        completed = subprocess.run(arguments, capture_output=True, text=True, timeout=60,
+        completed = subprocess.run(arguments, capture_output=True, text=True, timeout=60, check=False,
                                    env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
         return completed.stdout
     except (OSError, subprocess.SubprocessError):
@@ -58,12 +58,12 @@ def machine_and_versions():
     lines = [
         f"- Machine: {cpu}, {cores} cores, {memory_kib / 2**20:.0f} GiB RAM, {os_name}; every tool runs on one core,",
         "  one after the other.",
-        f"- Python {platform.python_version()}; numpy {versions['numpy']}, shapely {versions['shapely']} "
-        f"(GEOS {shapely.geos_version_string}), pyproj {versions['pyproj']}, scipy {versions['scipy']}, "
-        f"pyvoronoi {versions['pyvoronoi']} (oracle), matplotlib {versions['matplotlib']}.",
-        f"- Peers: pygeoops {versions['pygeoops']}, label-centerlines {versions['label-centerlines']}, "
-        f"centerline {versions['centerline']}, pysfcgal {versions['pysfcgal']} ({pysfcgal.sfcgal_full_version()}), "
-        f"GRASS {grass} through {qgis.split(chr(39))[0].strip()} `qgis_process` (provider grass7).",
+        (f"- Python {platform.python_version()}; numpy {versions['numpy']}, shapely {versions['shapely']} "
+         f"(GEOS {shapely.geos_version_string}), pyproj {versions['pyproj']}, scipy {versions['scipy']}, "
+         f"pyvoronoi {versions['pyvoronoi']} (oracle), matplotlib {versions['matplotlib']}."),
+        (f"- Peers: pygeoops {versions['pygeoops']}, label-centerlines {versions['label-centerlines']}, "
+         f"centerline {versions['centerline']}, pysfcgal {versions['pysfcgal']} ({pysfcgal.sfcgal_full_version()}), "
+         f"GRASS {grass} through {qgis.split(chr(39))[0].strip()} `qgis_process` (provider grass7)."),
         f"- IncirCu: the geometry core at commit `{commit}` (`incircu_plugin.core.polygon_centerline`).",
         f"- Measured {datetime.now(timezone.utc):%Y-%m-%d %H:%M} UTC.",
     ]
