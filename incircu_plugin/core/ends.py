@@ -8,10 +8,11 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
 
 1. **Skeleton.** The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` and densified to
    ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (never more than
-   ``MAX_SAMPLES`` samples), then triangulated with its edges as constraints (constrained Delaunay), so no
-   triangle crosses the boundary or lies on an island. The dual graph of the triangles, each placed at its
-   circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the skeleton: every
-   path in it stays in the region and goes around the islands.
+   ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
+   segments that are not edges of it), so no triangle crosses the boundary; the triangles inside the
+   polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle placed at its circumcentre (a Voronoi vertex of the
+   samples, on the approximate medial axis), is the skeleton: every path in it stays in the region and goes
+   around the islands.
 2. **Longest path.** A double sweep of Dijkstra (from the first node to the farthest node ``a``, then from
    ``a`` to the farthest node ``b``) gives the longest skeleton path ``a -> b``; it is exact when the
    skeleton is a tree (a polygon without holes) and a close approximation around islands.
@@ -46,11 +47,18 @@ from .chains import extent_of, validate_polygon
 from .errors import InvalidGeometryError
 
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
-SAMPLES_PER_WIDTH = 8
+SAMPLES_PER_WIDTH = 4
 
 #: Tolerance of the simplification before sampling, as a fraction of the typical width (it bounds the
 #: error this adds to the ends, and keeps densely digitised outlines fast).
 SIMPLIFY_FRACTION = 1e-3
+
+#: Rounds of splitting boundary segments that are not Delaunay edges (each round halves them).
+MAX_REFINEMENTS = 12
+
+#: Twice the area, relative to the longest side squared, under which a triangle is a sliver of nearly
+#: collinear boundary samples (rounding on a straight bank) and is not part of the skeleton.
+SLIVER = 1e-6
 
 #: Upper bound on the number of boundary samples (the step grows when the boundary is longer).
 MAX_SAMPLES = 200_000
@@ -129,12 +137,12 @@ def find_ends(polygon):
     origin = (bounds[:2] + bounds[2:]) / 2.0
     local = shapely.geometry.polygon.orient(shapely.transform(polygon, lambda xy: xy - origin), 1.0)
     extent = extent_of(bounds.reshape(2, 2))
-    nodes, edges, step = _skeleton_graph(local)
+    nodes, radii, edges, step = _skeleton_graph(local)
     if len(edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
     path = _longest_path(nodes, edges)
     trunk = nodes[path]
-    trunk_radii = _clearance(local, trunk)
+    trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
     along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trunk, axis=0).T))])
     first = _centred_end(local, trunk, trunk_radii, junction, along, extent, step)
@@ -157,14 +165,15 @@ def _typical_width(polygon):
 
 
 def _skeleton_graph(polygon):
-    """Return a skeleton of the polygon: the dual graph of a constrained Delaunay triangulation.
+    """Return a skeleton of the polygon: the dual graph of a conforming Delaunay triangulation.
 
-    The boundary is simplified by ``SIMPLIFY_FRACTION`` of the typical width (topology preserved), then
-    densified to ``1 / SAMPLES_PER_WIDTH`` of it, and triangulated with its edges as constraints, so every
-    triangle lies in the polygon and none in a hole. Each triangle is a node placed at its circumcentre (a
-    Voronoi vertex of the samples, on the approximate medial axis), or at its centroid when the circumcentre
-    falls outside the polygon; two nodes are linked when their triangles share a side. The graph is
-    connected because the polygon is.
+    The boundary is simplified by ``SIMPLIFY_FRACTION`` of the typical width (topology preserved) and
+    densified to ``1 / SAMPLES_PER_WIDTH`` of it. The Delaunay triangulation of these samples is made
+    conforming (every boundary segment is an edge of it) by splitting the segments that are not, so every
+    triangle lies either inside the polygon or outside it (in a hole or beyond the exterior); the inside
+    ones are kept. Each is a node placed at its circumcentre (a Voronoi vertex of the samples, on the
+    approximate medial axis), or at its centroid when the circumcentre falls outside the polygon; two nodes
+    are linked when their triangles share a side.
 
     Parameters
     ----------
@@ -175,30 +184,170 @@ def _skeleton_graph(polygon):
     -------
     nodes : ndarray of shape (k, 2)
         Skeleton vertices, CRS units.
+    radii : ndarray of shape (k,)
+        Clearance of each node: its triangle's circumradius (the radius of an empty disk touching the
+        samples, within ``step**2 / (8 * r)`` of the distance to the boundary), or the exact distance to the
+        boundary for a node placed at a centroid; CRS units.
     edges : ndarray of shape (e, 2) of int
         Node indices of each skeleton edge.
     step : float
         Densification step, CRS units.
     """
     width = _typical_width(polygon)
-    simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True)
+    simplified = shapely.geometry.polygon.orient(
+        polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True), 1.0
+    )
     step = max(width / SAMPLES_PER_WIDTH, simplified.length / MAX_SAMPLES)
     dense = shapely.segmentize(simplified, step)
-    triangles = shapely.get_parts(shapely.constrained_delaunay_triangles(dense))
-    corners = shapely.get_coordinates(triangles).reshape(-1, 4, 2)[:, :3]
+    rings = [shapely.get_coordinates(ring)[:-1] for ring in (dense.exterior, *dense.interiors)]
+    for _ in range(MAX_REFINEMENTS):
+        samples = np.concatenate(rings)
+        count = len(samples)
+        following = np.concatenate(
+            [offset + np.roll(np.arange(len(ring)), -1) for offset, ring in zip(_offsets(rings), rings)]
+        )
+        corners, corner_ids = _delaunay(samples)
+        side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
+        boundary_keys = _edge_keys(np.arange(count), following, count)
+        missing = ~np.isin(boundary_keys, _edge_keys(side_start, side_end, count))
+        if not np.any(missing):
+            break
+        rings = _split_segments(rings, missing)
+    # Inside triangles: those whose counter-clockwise sides run along the boundary the way the (oriented)
+    # rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat
+    # triangles of nearly collinear samples, whose orientation means nothing) take no part.
+    first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
+    clockwise = signed < 0.0
+    corners[clockwise] = corners[clockwise][:, ::-1]
+    corner_ids[clockwise] = corner_ids[clockwise][:, ::-1]
+    double_area = np.abs(signed)
+    side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
+    side_keys = _edge_keys(side_start, side_end, count)
+    on_boundary = np.isin(side_keys, boundary_keys).reshape(-1, 3)
+    forward = np.isin(side_start.astype(np.int64) * count + side_end, np.arange(count) * count + following)
+    side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
+    solid = double_area > SLIVER * np.max(side_lengths, axis=1) ** 2
+    region = _components(len(corners), side_keys, ~on_boundary.ravel() & np.repeat(solid, 3))
+    seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
+    inside = solid & np.isin(region, np.unique(region[seeds]))
+    corners, on_boundary, side_lengths = corners[inside], on_boundary[inside], side_lengths[inside]
+    side_keys = side_keys.reshape(-1, 3)[inside]
     nodes = _circumcentres(corners)
-    shapely.prepare(polygon)
-    outside = ~shapely.contains_xy(polygon, nodes[:, 0], nodes[:, 1])
-    nodes[outside] = corners[outside].mean(axis=1)
-    vertex_ids = np.unique(corners.reshape(-1, 2), axis=0, return_inverse=True)[1].reshape(-1, 3)
-    sides = np.sort(np.stack([vertex_ids[:, [0, 1]], vertex_ids[:, [1, 2]], vertex_ids[:, [2, 0]]], axis=1), axis=2)
-    keys = (sides[..., 0].astype(np.int64) * (int(vertex_ids.max()) + 1) + sides[..., 1]).ravel()
-    owner = np.repeat(np.arange(len(corners)), 3)
+    radii = np.hypot(*(nodes - corners[:, 0]).T)
+    # An obtuse triangle whose longest side is on the boundary has its circumcentre beyond that side, outside
+    # the polygon: place its node at its centroid instead, with the centroid's distance to that side.
+    longest = np.argmax(side_lengths, axis=1)
+    rows = np.arange(len(corners))
+    squared = side_lengths**2
+    obtuse = 2.0 * squared[rows, longest] > squared.sum(axis=1)
+    beyond = obtuse & on_boundary[rows, longest]
+    nodes[beyond] = corners[beyond].mean(axis=1)
+    radii[beyond] = double_area[inside][beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
+    keys = side_keys.ravel()
+    owner = np.repeat(rows, 3)
     order = np.argsort(keys, kind="stable")
     keys, owner = keys[order], owner[order]
     shared = np.flatnonzero(keys[1:] == keys[:-1])
     edges = np.stack([owner[shared], owner[shared + 1]], axis=1)
-    return nodes, edges, step
+    return nodes, radii, edges, step
+
+
+def _components(count, side_keys, linking):
+    """Label the triangles connected through shared sides that are not on the boundary.
+
+    Parameters
+    ----------
+    count : int
+        Number of triangles.
+    side_keys : ndarray of shape (3 * count,)
+        Key of each triangle side (see :func:`_edge_keys`), three per triangle in order.
+    linking : ndarray of shape (3 * count,) of bool
+        Sides that may join two triangles.
+
+    Returns
+    -------
+    ndarray of shape (count,) of int
+        The smallest triangle index of each triangle's component.
+    """
+    owner = np.repeat(np.arange(count), 3)[linking]
+    keys = side_keys[linking]
+    order = np.argsort(keys, kind="stable")
+    keys, owner = keys[order], owner[order]
+    shared = np.flatnonzero(keys[1:] == keys[:-1])
+    first, second = owner[shared], owner[shared + 1]
+    label = np.arange(count)
+    while True:
+        low = np.minimum(label[first], label[second])
+        high = np.maximum(label[first], label[second])
+        if np.all(low == high):
+            return label
+        np.minimum.at(label, high, low)
+        while True:
+            jumped = label[label]
+            if np.array_equal(jumped, label):
+                break
+            label = jumped
+
+
+def _offsets(rings):
+    """Return the index of the first sample of each ring in their concatenation."""
+    return np.concatenate([[0], np.cumsum([len(ring) for ring in rings])[:-1]]).astype(np.int64)
+
+
+def _edge_keys(first, second, count):
+    """Return one integer per undirected edge between sample indices ``first`` and ``second``."""
+    low = np.minimum(first, second).astype(np.int64)
+    high = np.maximum(first, second).astype(np.int64)
+    return low * count + high
+
+
+def _delaunay(samples):
+    """Return the Delaunay triangles of the samples, as corners and as sample indices.
+
+    Parameters
+    ----------
+    samples : ndarray of shape (n, 2)
+        Points, CRS units.
+
+    Returns
+    -------
+    corners : ndarray of shape (t, 3, 2)
+    corner_ids : ndarray of shape (t, 3) of int
+        Index in ``samples`` of each corner (one of them for a repeated point).
+    """
+    triangles = shapely.get_parts(shapely.delaunay_triangles(shapely.multipoints(samples)))
+    corners = shapely.get_coordinates(triangles).reshape(-1, 4, 2)[:, :3]
+    # Delaunay keeps the input coordinates exactly: look each corner up among the samples, as complex keys
+    # (numpy orders complex numbers by real, then imaginary part).
+    keys = np.ascontiguousarray(samples).view(np.complex128).ravel()
+    order = np.argsort(keys, kind="stable")
+    position = np.searchsorted(keys[order], np.ascontiguousarray(corners.reshape(-1, 2)).view(np.complex128).ravel())
+    corner_ids = order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
+    return corners, corner_ids
+
+
+def _split_segments(rings, split):
+    """Insert the midpoint of every flagged segment of the rings.
+
+    Parameters
+    ----------
+    rings : list of ndarray of shape (m, 2)
+        Rings without their closing point, CRS units.
+    split : ndarray of bool
+        One flag per segment (from each sample to the next on its ring), in the rings' concatenated order.
+
+    Returns
+    -------
+    list of ndarray
+    """
+    refined = []
+    for offset, ring in zip(_offsets(rings), rings):
+        flags = split[offset : offset + len(ring)]
+        following = np.roll(ring, -1, axis=0)
+        where = np.flatnonzero(flags)
+        refined.append(np.insert(ring, where + 1, 0.5 * (ring[where] + following[where]), axis=0))
+    return refined
 
 
 def _circumcentres(corners):
@@ -261,17 +410,6 @@ def _dijkstra(adjacency, weights, source):
                 predecessor[neighbour] = node
                 heapq.heappush(queue, (candidate, neighbour))
     return np.asarray(distance), np.asarray(predecessor)
-
-
-def _clearance(polygon, points):
-    """Return the distance of each point to the polygon's boundary (exterior and holes), CRS units."""
-    rings = [polygon.exterior, *polygon.interiors]
-    segments = []
-    for ring in rings:
-        coordinates = shapely.get_coordinates(ring)
-        segments.append(shapely.linestrings(np.stack([coordinates[:-1], coordinates[1:]], axis=1)))
-    tree = shapely.STRtree(np.concatenate(segments))
-    return tree.query_nearest(shapely.points(points), return_distance=True, all_matches=False)[1]
 
 
 def _longest_path(nodes, edges):
