@@ -116,10 +116,11 @@ def incircle_polygons(result, quad_segs=16):
 def transects(result, interval, chains=None):
     """Return cross-sections at every multiple of ``interval`` along the centerline.
 
-    Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*. At a split
-    point (an end with zero radius) the line first runs through the end cap, about half a width long, where
-    the channel has no cross-section: the stretch starts at the innermost vertex whose incircle still
-    reaches that end (or the vertex next to it); at an open end it starts at the end. At a station
+    Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*: near a split
+    point the line first crosses the end cap (about half a width long), where the channel has no
+    cross-section, so the stretch starts at the vertex after the innermost one whose incircle reaches the
+    split point or touches the boundary nearer to it than its radius (at least one vertex in); at an open
+    end it starts at the end. At a station
     between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
     linearly; each foot is the point at distance ``r`` from ``C`` towards the linearly interpolated foot of
     that side (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case). When
@@ -165,11 +166,12 @@ def transects(result, interval, chains=None):
     chainages = vertex_chainages(result)
     length = float(chainages[-1])
     radii = np.asarray(result.radii, dtype=float)
-    first, last = _measured_stretch(vertices, radii, chainages)
-    if first >= last:
-        return []
+    foot_a, foot_b = np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float)
+    low, high = _measured_stretch(vertices, radii, chainages, foot_a, foot_b)
     stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
-    stations = stations[(stations >= chainages[first]) & (stations <= chainages[last])]
+    stations = stations[(stations >= low) & (stations <= high)]
+    if len(stations) == 0:
+        return []
     segment = np.clip(np.searchsorted(chainages, stations, side="right") - 1, 0, len(vertices) - 2)
     span = chainages[segment + 1] - chainages[segment]
     fraction = np.where(span > 0.0, (stations - chainages[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
@@ -181,7 +183,7 @@ def transects(result, interval, chains=None):
     else:
         feet = [
             _foot_towards(centres, radius, foot[segment] + fraction * (foot[segment + 1] - foot[segment]))
-            for foot in (np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float))
+            for foot in (foot_a, foot_b)
         ]
     lines = np.stack([feet[0], centres, feet[1]], axis=1)
     widths = np.hypot(*(feet[0] - centres).T) + np.hypot(*(feet[1] - centres).T)
@@ -193,13 +195,15 @@ def transects(result, interval, chains=None):
     ]
 
 
-def _measured_stretch(vertices, radii, chainages):
-    """Return the indices of the first and last vertex of the measured stretch of a centerline.
+def _measured_stretch(vertices, radii, chainages, foot_a, foot_b):
+    """Return the chainages between which a centerline crosses its channel rather than an end cap.
 
-    At an end with a zero radius (a polygon's split point) the line first crosses the end cap: the stretch
-    starts at the innermost vertex, within the half of the line on that side, whose incircle reaches the end
-    point, or at the vertex next to the end when none does. At an end with a positive radius (the middle of
-    an open end gap) it starts at the end itself.
+    Near a split point (an end with zero radius) the line first crosses the end cap, about half a width
+    long, where the channel has no cross-section. An *end-cap vertex* is an inner vertex, in the half of the
+    line on that side, whose incircle reaches the end point or touches the boundary nearer to it than its
+    radius. The measured stretch starts at the vertex after the innermost end-cap vertex (after the end
+    itself when there is none) and ends symmetrically; at an open end (positive radius) it starts at the
+    end.
 
     Parameters
     ----------
@@ -209,25 +213,33 @@ def _measured_stretch(vertices, radii, chainages):
         Incircle radii, CRS units.
     chainages : ndarray of shape (n,)
         Chainage of each vertex, CRS units.
+    foot_a, foot_b : ndarray of shape (n, 2)
+        Where each incircle touches the two sides, CRS units.
 
     Returns
     -------
-    first, last : int
-        ``first >= last`` when nothing is left between them.
+    low, high : float
+        Chainages bounding the measured stretch (both included), CRS units; ``low > high`` when empty.
     """
-    scale = max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
-    slack = 1e-9 * scale
+    count = len(vertices)
+    slack = 1e-9 * max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
     half = chainages[-1] / 2.0
-    inner = np.arange(len(vertices))
-    inner = (inner > 0) & (inner < len(vertices) - 1)
-    first, last = 0, len(vertices) - 1
+    inner = np.zeros(count, dtype=bool)
+    inner[1:-1] = True
+
+    def end_cap(end, side):
+        nearest_foot = np.minimum(np.hypot(*(foot_a - end).T), np.hypot(*(foot_b - end).T))
+        reaches = np.hypot(*(vertices - end).T) <= radii + slack
+        return np.flatnonzero(inner & side & (reaches | (nearest_foot < radii)))
+
+    first, last = 0, count - 1
     if radii[0] <= slack:
-        reaches = inner & (chainages <= half) & (np.hypot(*(vertices - vertices[0]).T) <= radii + slack)
-        first = int(np.max(np.flatnonzero(reaches), initial=1))
+        first = int(np.max(end_cap(vertices[0], chainages <= half), initial=0)) + 1
     if radii[-1] <= slack:
-        reaches = inner & (chainages >= half) & (np.hypot(*(vertices - vertices[-1]).T) <= radii + slack)
-        last = int(np.min(np.flatnonzero(reaches), initial=len(vertices) - 2))
-    return first, last
+        last = int(np.min(end_cap(vertices[-1], chainages >= half), initial=count - 1)) - 1
+    if first > last:
+        return 1.0, 0.0
+    return float(chainages[first]), float(chainages[last])
 
 
 def _foot_towards(centres, radius, towards):
