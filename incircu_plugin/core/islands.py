@@ -29,6 +29,8 @@ The returned chains contain the slit twice, back and forth (coincident segments 
 so they touch themselves along the slit; they have no zero-length segments.
 """
 
+import heapq
+
 import numpy as np
 import shapely
 from shapely.geometry import LinearRing, LineString, Polygon
@@ -87,31 +89,35 @@ def bridge_islands(c1, c2, holes):
         return chains[0].copy(), chains[1].copy()
     extent = extent_of(*chains, *rings)
     merge = COINCIDENCE_TOLERANCE * extent
+    tie = TIE_TOLERANCE * extent
     region_on_left = _signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
-    lines = [LineString(chain) for chain in chains]
     islands = np.array([Polygon(ring) for ring in rings], dtype=object)
+    island_tree = shapely.STRtree(islands)
     count = len(rings)
     # Hosts: 0 and 1 are the chains, 2 + j is island j once it has joined.
-    distance = np.full((count, count + 2), np.inf)
-    distance[:, 0] = shapely.distance(islands, lines[0])
-    distance[:, 1] = shapely.distance(islands, lines[1])
+    targets = [_Target(chains[0]), _Target(chains[1])] + [None] * count
+    bank_distance = np.stack([target.distance_to(islands) for target in targets[:2]], axis=1)
+    reach = float(bank_distance.min(axis=1).max()) + tie
     component = np.full(count + 2, -1)
     component[:2] = (0, 1)
+    pairs = [(float(bank_distance[i, side]), side, side, i) for i in range(count) for side in (0, 1)]
+    heapq.heapify(pairs)
     walks = [None] * count
     joins = [[] for _ in range(count + 2)]
     slits = []
     for _ in range(count):
-        island_index, host, slit = _next_join(distance, component, islands, lines, slits, rings, walks, extent, merge)
-        island_point, foot = slit
+        island_index, host, slit = _next_join(pairs, component, islands, island_tree, targets, slits, rings, tie, merge)
+        island_point, foot, position = slit
         slits.append(LineString([island_point, foot]))
         component[2 + island_index] = component[host]
         clockwise = region_on_left if component[host] == 0 else not region_on_left
         walks[island_index] = _around(rings[island_index], island_point, clockwise, merge)
-        path = chains[host] if host < 2 else walks[host - 2]
-        joins[host].append((LineString(path).project(shapely.points(foot)), island_index, foot))
-        distance[island_index, :] = np.inf
-        unjoined = component[2:] < 0
-        distance[unjoined, 2 + island_index] = shapely.distance(islands[unjoined], islands[island_index])
+        targets[2 + island_index] = _Target(walks[island_index])
+        joins[host].append((position, island_index, foot))
+        near = island_tree.query(islands[island_index], predicate="dwithin", distance=reach)
+        near = near[component[2 + near] < 0]
+        for other, gap in zip(near.tolist(), shapely.distance(islands[near], islands[island_index]).tolist()):
+            heapq.heappush(pairs, (gap, int(component[host]), 2 + island_index, other))
     detours = {}
     for island_index in _reverse_join_order(joins, count):
         walk = _splice(walks[island_index], joins[2 + island_index], detours, merge)
@@ -119,28 +125,69 @@ def bridge_islands(c1, c2, holes):
     return _splice(chains[0], joins[0], detours, merge), _splice(chains[1], joins[1], detours, merge)
 
 
-def _next_join(distance, component, islands, lines, slits, rings, walks, extent, merge):
+class _Target:
+    """A polyline a slit may end on (a chain, or the walk around a joined island), with a spatial index."""
+
+    def __init__(self, coordinates):
+        """Index the segments of ``coordinates`` (an (n, 2) array, CRS units)."""
+        self.coordinates = coordinates
+        self.starts = coordinates[:-1]
+        self.directions = coordinates[1:] - coordinates[:-1]
+        self.positions = np.concatenate([[0.0], np.cumsum(np.hypot(*self.directions.T))])
+        self.segments = shapely.linestrings(np.stack([coordinates[:-1], coordinates[1:]], axis=1))
+        self.tree = shapely.STRtree(self.segments)
+        self.line = LineString(coordinates)
+        shapely.prepare(self.line)
+
+    def distance_to(self, geometries):
+        """Return the distance, CRS units, from each geometry to the polyline."""
+        return self.tree.query_nearest(geometries, return_distance=True, all_matches=False)[1]
+
+    def nearest(self, points):
+        """Return the nearest point of the polyline to each point and its arc length along the polyline.
+
+        Parameters
+        ----------
+        points : ndarray of shape (m, 2)
+            CRS units.
+
+        Returns
+        -------
+        feet : ndarray of shape (m, 2)
+        positions : ndarray of shape (m,)
+            CRS units from the polyline's start.
+        """
+        segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
+        direction = self.directions[segment]
+        squared = np.einsum("ij,ij->i", direction, direction)
+        along = np.einsum("ij,ij->i", points - self.starts[segment], direction) / np.where(squared > 0, squared, 1.0)
+        along = np.clip(along, 0.0, 1.0)
+        feet = self.starts[segment] + along[:, None] * direction
+        return feet, self.positions[segment] + along * np.sqrt(squared)
+
+
+def _next_join(pairs, component, islands, island_tree, targets, slits, rings, tie, merge):
     """Pick the next island to join, its host and its slit (the nearest free pair, ties to ``c1``).
 
     Parameters
     ----------
-    distance : ndarray of shape (k, k + 2)
-        Distance, CRS units, from each island not yet joined to each host (the chains, then the joined
-        islands); ``inf`` elsewhere. Pairs whose every slit is blocked are set to ``inf`` here.
+    pairs : list of (float, int, int, int)
+        Heap of candidate pairs: distance (CRS units), chain of the host (0 or 1), host, island. Pairs whose
+        every slit is blocked are dropped from it.
     component : ndarray of shape (k + 2,)
         Chain (0 or 1) each host belongs to, -1 for islands not yet joined.
     islands : ndarray of Polygon
         All islands.
-    lines : list of two LineString
-        The chains.
+    island_tree : STRtree
+        Index of ``islands``.
+    targets : list of _Target or None
+        The chains, then the walk around each joined island.
     slits : list of LineString
         Slits made so far.
     rings : list of ndarray
         Closed rings of the islands, CRS units.
-    walks : list of ndarray or None
-        Walk around each joined island.
-    extent : float
-        Extent of the data, CRS units (scale of the tie tolerance).
+    tie : float
+        Distance, CRS units, under which two pairs are equally near.
     merge : float
         Distance, CRS units, under which two points are the same.
 
@@ -149,38 +196,51 @@ def _next_join(distance, component, islands, lines, slits, rings, walks, extent,
     island_index : int
     host : int
         0 or 1 for a chain, ``2 + j`` for island ``j``.
-    slit : (ndarray of shape (2,), ndarray of shape (2,))
-        The slit's point on the island and its foot on the host.
+    slit : (ndarray of shape (2,), ndarray of shape (2,), float)
+        The slit's point on the island, its foot on the host and the foot's arc length along the host.
 
     Raises
     ------
     IncirCuError
         If no island left can be joined without crossing something.
     """
+    slit_tree = shapely.STRtree(slits) if slits else None
     while True:
-        best = float(distance.min())
-        if not np.isfinite(best):
+        while pairs and component[2 + pairs[0][3]] >= 0:
+            heapq.heappop(pairs)
+        if not pairs:
             left = np.flatnonzero(component[2:] < 0)
             where = islands[left[0]].representative_point().coords[0]
             raise IncirCuError(
                 f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
                 " use the option to ignore islands."
             )
-        islands_tied, hosts_tied = np.nonzero(distance <= best + TIE_TOLERANCE * extent)
-        pick = np.lexsort((islands_tied, hosts_tied, component[hosts_tied]))[0]
-        island_index, host = int(islands_tied[pick]), int(hosts_tied[pick])
-        if host < 2:
-            target = lines[host]
-            inside = None
-        else:
-            target = LineString(walks[host - 2])
-            inside = islands[host - 2]
-        others = [islands[j] for j in range(len(islands)) if j != island_index and j + 2 != host]
-        obstacles = others + [lines[c] for c in (0, 1) if c != host] + slits
-        slit = _free_slit(rings[island_index], islands[island_index], target, inside, obstacles, merge)
+        nearest = pairs[0][0]
+        tied = []
+        while pairs and pairs[0][0] <= nearest + tie:
+            tied.append(heapq.heappop(pairs))
+        tied.sort(key=lambda pair: (pair[1], pair[2], pair[3]))
+        chosen = next(pair for pair in tied if component[2 + pair[3]] < 0)
+        for pair in tied:
+            if pair is not chosen:
+                heapq.heappush(pairs, pair)
+        _, _, host, island_index = chosen
+        excluded = {island_index, host - 2}
+        walls = [targets[side].line for side in (0, 1) if side != host]
+        inside = islands[host - 2] if host >= 2 else None
+        slit = _free_slit(
+            rings[island_index],
+            islands[island_index],
+            targets[host],
+            inside,
+            island_tree,
+            excluded,
+            walls,
+            slit_tree,
+            merge,
+        )
         if slit is not None:
             return island_index, host, slit
-        distance[island_index, host] = np.inf
 
 
 def _reverse_join_order(joins, count):
@@ -239,7 +299,7 @@ def _signed_area(ring):
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
 
 
-def _free_slit(ring, island, target, inside, obstacles, merge):
+def _free_slit(ring, island, target, inside, island_tree, excluded, walls, slit_tree, merge):
     """Return the shortest free slit from an island to its host, or None.
 
     Parameters
@@ -248,46 +308,74 @@ def _free_slit(ring, island, target, inside, obstacles, merge):
         The island's closed ring, CRS units.
     island : Polygon
         The island.
-    target : LineString
+    target : _Target
         Where the slit may end: the host chain, or the walk around the host island.
     inside : Polygon or None
         The host island, whose inside the slit must not enter; None for a chain.
-    obstacles : list of Geometry
-        What the slit must not touch at all: other islands, the other chain, earlier slits.
+    island_tree : STRtree
+        Index of all islands; the slit must touch none but those in ``excluded``.
+    excluded : set of int
+        The island itself and the host island.
+    walls : list of LineString
+        Chains the slit must not touch (the other chain; both for an island host).
+    slit_tree : STRtree or None
+        Earlier slits, which the slit must not touch.
     merge : float
         Distance, CRS units, under which two points are the same.
 
     Returns
     -------
-    (ndarray of shape (2,), ndarray of shape (2,)) or None
-        The slit's point ``Q`` on the island and its foot ``F`` on the host.
+    (ndarray of shape (2,), ndarray of shape (2,), float) or None
+        The slit's point ``Q`` on the island, its foot ``F`` on the host and ``F``'s arc length along the
+        host.
     """
     outline = LinearRing(ring)
-    dense = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
-    shortest = shapely.get_coordinates(shapely.shortest_line(outline, target))
-    starts = np.concatenate([shortest[:1], dense])
-    feet = shapely.get_coordinates(shapely.shortest_line(shapely.points(starts), target))[1::2]
-    feet[0] = shortest[1]
+    starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
+    feet, positions = target.nearest(starts)
     lengths = np.hypot(*(feet - starts).T)
     order = np.argsort(lengths, kind="stable")
-    starts, feet, lengths = starts[order], feet[order], lengths[order]
+    starts, feet, positions, lengths = starts[order], feet[order], positions[order], lengths[order]
+    # The shortest slit is usually free: test it alone first, then all the others at once.
+    for batch in (slice(0, 1), slice(1, None)):
+        free = _free_candidates(
+            starts[batch],
+            feet[batch],
+            lengths[batch],
+            island,
+            target,
+            inside,
+            island_tree,
+            excluded,
+            walls,
+            slit_tree,
+            merge,
+        )
+        if len(free):
+            chosen = batch.start + int(free[0])
+            return starts[chosen], feet[chosen], float(positions[chosen])
+    return None
+
+
+def _free_candidates(starts, feet, lengths, island, target, inside, island_tree, excluded, walls, slit_tree, merge):
+    """Return the indices of the candidate slits that touch nothing they must not (see :func:`_free_slit`)."""
     long_enough = lengths > 2.0 * merge
     direction = np.zeros_like(starts)
     direction[long_enough] = (feet - starts)[long_enough] / lengths[long_enough, None]
     inner = shapely.linestrings(np.stack([starts + merge * direction, feet - merge * direction], axis=1))
-    blocked = shapely.intersects(inner, island) | shapely.intersects(inner, target)
+    blocked = shapely.intersects(inner, island) | shapely.intersects(inner, target.line)
     if inside is not None:
         blocked |= shapely.intersects(inner, inside)
     blocked &= long_enough
     whole = shapely.linestrings(np.stack([starts, feet], axis=1))
     whole[~long_enough] = shapely.points(feet[~long_enough])
-    if obstacles:
-        hit = shapely.STRtree(obstacles).query(whole, predicate="intersects")[0]
-        blocked[hit] = True
-    free = np.flatnonzero(~blocked)
-    if len(free) == 0:
-        return None
-    return starts[free[0]], feet[free[0]]
+    candidate, hit = island_tree.query(whole, predicate="intersects")
+    other = ~np.isin(hit, list(excluded))
+    blocked[candidate[other]] = True
+    for wall in walls:
+        blocked |= shapely.intersects(whole, wall)
+    if slit_tree is not None:
+        blocked[slit_tree.query(whole, predicate="intersects")[0]] = True
+    return np.flatnonzero(~blocked)
 
 
 def _splice(path, joins, detours, merge):
