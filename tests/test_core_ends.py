@@ -16,7 +16,7 @@ from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
 from shapely.geometry.polygon import orient
 from shapely.ops import unary_union
 
-from incircu_plugin.core import find_ends
+from incircu_plugin.core import find_ends, polygon_centerline
 from incircu_plugin.core.errors import InvalidGeometryError
 
 #: Fraction of the channel width within which a found end must match a flat cap's midpoint. A flat cap is
@@ -222,3 +222,19 @@ def test_trunk_is_longer_than_the_straight_distance_in_a_u_shape():
     ends = find_ends(polygon)
     assert ends.trunk.length > 2.0 * shapely.distance(ends.start, ends.end)
     assert isinstance(ends.start, Point) and isinstance(ends.end, Point)
+
+
+def test_polygon_centerline_without_split_points_runs_tip_to_tip():
+    width = 10.0
+    polygon = channel([(0.0, 100.0), (0.0, 0.0), (60.0, 0.0), (60.0, 100.0)], width)
+    result = polygon_centerline(polygon, spacing=width / 10.0)
+    assert result.ends_found
+    line_ends = np.array([result.line.coords[0], result.line.coords[-1]])
+    assert pair_error(line_ends, [(0.0, 100.0), (60.0, 100.0)]) <= FLAT_CAP_TOLERANCE * width
+    assert result.line.is_simple
+
+
+def test_polygon_centerline_warns_when_the_shape_is_not_elongated():
+    result = polygon_centerline(Point(0.0, 0.0).buffer(10.0), spacing=0.5)
+    assert result.ends_found
+    assert any("not elongated" in note for note in result.notes)
