@@ -26,9 +26,10 @@ coordinates (a few units in the last place of the largest coordinate).
 
 import json
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Optional, Sequence, Tuple
+from typing import Callable, Optional
 
 import numpy as np
 import shapely
@@ -60,7 +61,7 @@ class Placement:
 
     scale: float = 1.0
     angle: float = 0.0
-    offset: Tuple[float, float] = (0.0, 0.0)
+    offset: tuple[float, float] = (0.0, 0.0)
 
     def apply(self, local):
         """Map local coordinates (array of shape (..., 2)) to placed coordinates."""
@@ -125,7 +126,7 @@ class Case:
 
     name: str
     polygon: Polygon
-    split_points: Tuple[Tuple[float, float], Tuple[float, float]]
+    split_points: tuple[tuple[float, float], tuple[float, float]]
     chain_a: np.ndarray
     chain_b: np.ndarray
     bank_a: np.ndarray
@@ -222,7 +223,7 @@ def channel_case(
     ring = np.concatenate([chain_a, chain_b[-2::-1]])
     polygon = Polygon(ring)
     if validate and not polygon.is_valid:
-        raise ValueError("{}: the built polygon is invalid: {}".format(name, shapely.is_valid_reason(polygon)))
+        raise ValueError(f"{name}: the built polygon is invalid: {shapely.is_valid_reason(polygon)}")
     ulp = float(np.spacing(np.max(np.abs(ring))))
     axis_line = None
     axis_distance = None
@@ -293,7 +294,7 @@ def rectangle(length=100.0, width=10.0, n=11, placement=None, jitter=0.0, seed=0
     bank_b = np.stack([xb, np.full_like(xb, width)], axis=1)
     axis = np.array([[0.0, width / 2.0], [length, width / 2.0]])
     return channel_case(
-        "rectangle L={:g} W={:g} n={} {}".format(length, width, n, _describe(placement)),
+        f"rectangle L={length:g} W={width:g} n={n} {_describe(placement)}",
         bank_a,
         bank_b,
         width,
@@ -336,7 +337,7 @@ def tapered_channel(length=100.0, width_start=20.0, width_end=5.0, n=11, placeme
     bank_b = np.stack([xb, half_width(xb)], axis=1)
     axis = np.array([[0.0, 0.0], [length, 0.0]])
     return channel_case(
-        "tapered L={:g} W={:g}->{:g} n={} {}".format(length, width_start, width_end, n, _describe(placement)),
+        f"tapered L={length:g} W={width_start:g}->{width_end:g} n={n} {_describe(placement)}",
         bank_a,
         bank_b,
         0.5 * (width_start + width_end),
@@ -374,7 +375,9 @@ def annulus_sector(r_inner=40.0, r_outer=60.0, angle_start=0.0, angle_end=math.p
     sagitta = 0.5 * (r_inner + r_outer) * (1.0 - math.cos(half_step))
     axis_angles = np.linspace(angle_start, angle_end, max(16 * n, 256))
     axis = r_mean * np.stack([np.cos(axis_angles), np.sin(axis_angles)], axis=1)
-    ends = r_mean * np.array([[math.cos(angle_start), math.sin(angle_start)], [math.cos(angle_end), math.sin(angle_end)]])
+    ends = r_mean * np.array(
+        [[math.cos(angle_start), math.sin(angle_start)], [math.cos(angle_end), math.sin(angle_end)]]
+    )
 
     def distance(points):
         radius = np.hypot(points[:, 0], points[:, 1])
@@ -383,7 +386,7 @@ def annulus_sector(r_inner=40.0, r_outer=60.0, angle_start=0.0, angle_end=math.p
         return np.where(theta <= span, np.abs(radius - r_mean), to_ends)
 
     return channel_case(
-        "annulus sector r={:g}..{:g} span={:.4g} n={} {}".format(r_inner, r_outer, span, n, _describe(placement)),
+        f"annulus sector r={r_inner:g}..{r_outer:g} span={span:.4g} n={n} {_describe(placement)}",
         r_inner * unit,
         r_outer * unit,
         r_outer - r_inner,
@@ -443,7 +446,9 @@ def meander(length=2000.0, width=20.0, amplitude=60.0, wavelength=400.0, n=1166,
         x = np.linspace(0.0, length, count)
         points = bank(x, side)
         fractions = np.linspace(0.0, 1.0, 9)[1:-1]
-        mid = bank((x[:-1, None] + np.diff(x)[:, None] * fractions[None, :]).ravel(), side).reshape(-1, len(fractions), 2)
+        mid = bank((x[:-1, None] + np.diff(x)[:, None] * fractions[None, :]).ravel(), side).reshape(
+            -1, len(fractions), 2
+        )
         chord = np.diff(points, axis=0)
         chord_length = np.hypot(*chord.T)
         offset = mid - points[:-1, None, :]
@@ -458,9 +463,7 @@ def meander(length=2000.0, width=20.0, amplitude=60.0, wavelength=400.0, n=1166,
         return _distance_to_sine(points, amplitude, wavelength, length, axis)
 
     return channel_case(
-        "meander L={:g} W={:g} A={:g} lambda={:g} n={} {}".format(
-            length, width, amplitude, wavelength, n, _describe(placement)
-        ),
+        f"meander L={length:g} W={width:g} A={amplitude:g} lambda={wavelength:g} n={n} {_describe(placement)}",
         banks[0],
         banks[1],
         width,
@@ -551,7 +554,7 @@ def wavy_channel(
     bank_b = np.stack([xb, centre(xb) + half_width(xb)], axis=1)
     placement = placement or Placement()
     case = channel_case(
-        "wavy L={:g} W={:g} n={} seed={} {}".format(length, mean_width, n, seed, _describe(placement)),
+        f"wavy L={length:g} W={mean_width:g} n={n} seed={seed} {_describe(placement)}",
         bank_a,
         bank_b,
         mean_width,
@@ -583,7 +586,7 @@ def resplit(case, split_fractions):
     chain_b = np.concatenate([start[None], bank_b, end[None]])
     polygon = Polygon(np.concatenate([chain_a, chain_b[-2::-1]]))
     return Case(
-        name="{} split={}".format(case.name, tuple(split_fractions)),
+        name=f"{case.name} split={tuple(split_fractions)}",
         polygon=polygon,
         split_points=(tuple(start.tolist()), tuple(end.tolist())),
         chain_a=chain_a,
@@ -674,7 +677,7 @@ def synthetic_river(n_samples, seed=0, width=20.0, vertex_spacing=None, validate
     xa = _stations(length, n_a, 0.3, rng)
     xb = _stations(length, n_b, 0.3, rng)
     return channel_case(
-        "synthetic river n={} seed={} W={:g}".format(n_samples, seed, width),
+        f"synthetic river n={n_samples} seed={seed} W={width:g}",
         bank(xa, -1.0),
         bank(xb, 1.0),
         width,
@@ -722,7 +725,7 @@ def gambia(projected=True):
     east = (east - west) % len(ring)
     # Counter-clockwise from the west end the ring runs along the south border to the east end.
     south = loop[: east + 1]
-    north = np.concatenate([loop[:1], loop[:east - 1:-1]])
+    north = np.concatenate([loop[:1], loop[: east - 1 : -1]])
     x0, y0, x1, y1 = polygon.bounds
     return Case(
         name="Gambia (Natural Earth 1:10m, {})".format("UTM 28N" if projected else "lon/lat"),
@@ -742,7 +745,7 @@ def _describe(placement):
     for name, known in PLACEMENTS.items():
         if known == placement:
             return name
-    return "scale={:g} angle={:g} offset={}".format(placement.scale, placement.angle, placement.offset)
+    return f"scale={placement.scale:g} angle={placement.angle:g} offset={placement.offset}"
 
 
 def analytic_cases(placement_names: Sequence[str] = tuple(PLACEMENTS)):

@@ -43,20 +43,26 @@ def test_every_error_class_is_an_incircu_error_and_a_value_error():
 # Empty or null geometry -------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("polygon", [None, Polygon(), shapely.from_wkt("POLYGON EMPTY")], ids=["null", "empty", "wkt-empty"])
+@pytest.mark.parametrize(
+    "polygon", [None, Polygon(), shapely.from_wkt("POLYGON EMPTY")], ids=["null", "empty", "wkt-empty"]
+)
 def test_null_or_empty_polygon(polygon):
     with pytest.raises(InvalidGeometryError) as caught:
         polygon_centerline(polygon, ENDS)
     assert str(caught.value)
 
 
-@pytest.mark.parametrize("geometry", [LineString([(0, 0), (1, 1)]), Point(0, 0), MultiPolygon([RECTANGLE, box(200, 0, 300, 10)])])
+@pytest.mark.parametrize(
+    "geometry", [LineString([(0, 0), (1, 1)]), Point(0, 0), MultiPolygon([RECTANGLE, box(200, 0, 300, 10)])]
+)
 def test_not_a_single_polygon(geometry):
     with pytest.raises(InvalidGeometryError, match=geometry.geom_type):
         polygon_centerline(geometry, ENDS)
 
 
-@pytest.mark.parametrize("line", [None, LineString(), [], np.empty((0, 2))], ids=["null", "empty", "empty-list", "empty-array"])
+@pytest.mark.parametrize(
+    "line", [None, LineString(), [], np.empty((0, 2))], ids=["null", "empty", "empty-list", "empty-array"]
+)
 def test_null_or_empty_line(line):
     with pytest.raises(InvalidGeometryError):
         lines_centerline(line, BANK_B)
@@ -68,7 +74,9 @@ def test_null_or_empty_line(line):
 
 
 @pytest.mark.parametrize(
-    "line", [[(3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0), (3.0, 3.0)]], ids=["one", "two-same", "three-same"]
+    "line",
+    [[(3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0)], [(3.0, 3.0), (3.0, 3.0), (3.0, 3.0)]],
+    ids=["one", "two-same", "three-same"],
 )
 def test_line_with_fewer_than_two_distinct_points(line):
     with pytest.raises((ChainError, InvalidGeometryError)) as caught:
@@ -121,7 +129,17 @@ def test_bad_spacing(spacing):
 def test_repeated_vertices_in_a_polygon_are_dropped_silently():
     clean = Polygon([(0.0, 0.0), (50.0, 0.0), (100.0, 0.0), (100.0, 10.0), (50.0, 10.0), (0.0, 10.0)])
     doubled = Polygon(
-        [(0.0, 0.0), (50.0, 0.0), (50.0, 0.0), (100.0, 0.0), (100.0, 10.0), (100.0, 10.0), (50.0, 10.0), (0.0, 10.0), (0.0, 10.0)]
+        [
+            (0.0, 0.0),
+            (50.0, 0.0),
+            (50.0, 0.0),
+            (100.0, 0.0),
+            (100.0, 10.0),
+            (100.0, 10.0),
+            (50.0, 10.0),
+            (0.0, 10.0),
+            (0.0, 10.0),
+        ]
     )
     assert doubled.is_valid
     expected = polygon_centerline(clean, ENDS, spacing=1.0)
@@ -164,7 +182,9 @@ def test_polygon_with_a_spike_folding_back_is_rejected():
 # Split points -----------------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("points", [[], [(0.0, 5.0)], [(0.0, 5.0), (100.0, 5.0), (50.0, 0.0)]], ids=["zero", "one", "three"])
+@pytest.mark.parametrize(
+    "points", [[], [(0.0, 5.0)], [(0.0, 5.0), (100.0, 5.0), (50.0, 0.0)]], ids=["zero", "one", "three"]
+)
 def test_split_points_not_two(points):
     # An empty list means "find the ends" to polygon_centerline; split_polygon needs exactly two.
     with pytest.raises(SplitPointError, match="exactly 2") as caught:
@@ -218,7 +238,11 @@ def test_crossing_lines_say_where():
 
 @pytest.mark.parametrize(
     "line_b",
-    [[(0.0, 10.0), (50.0, 0.0), (100.0, 10.0)], [(0.0, 10.0), (100.0, 10.0), (100.0, 0.0)], [(0.0, 0.0), (0.0, 10.0), (100.0, 10.0)]],
+    [
+        [(0.0, 10.0), (50.0, 0.0), (100.0, 10.0)],
+        [(0.0, 10.0), (100.0, 10.0), (100.0, 0.0)],
+        [(0.0, 0.0), (0.0, 10.0), (100.0, 10.0)],
+    ],
     ids=["vertex-on-edge", "end-on-end", "start-on-start"],
 )
 def test_touching_lines(line_b):

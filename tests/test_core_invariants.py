@@ -24,7 +24,11 @@ WAVY = [
     geometry_cases.wavy_channel(seed=1),
     geometry_cases.wavy_channel(seed=2, n=(23, 61), split_fractions=(0.2, 0.85)),
     geometry_cases.wavy_channel(
-        seed=3, length=300.0, mean_width=12.0, n=(150, 140), harmonics=((20.0, 150.0, 1.0), (4.0, 37.0, 0.0)),
+        seed=3,
+        length=300.0,
+        mean_width=12.0,
+        n=(150, 140),
+        harmonics=((20.0, 150.0, 1.0), (4.0, 37.0, 0.0)),
         placement=geometry_cases.PLACEMENTS["projected"],
     ),
     geometry_cases.wavy_channel(seed=4, split_fractions=(0.7, 0.3), placement=geometry_cases.PLACEMENTS["tiny"]),

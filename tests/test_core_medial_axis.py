@@ -22,7 +22,11 @@ WAVY = [
     geometry_cases.wavy_channel(seed=11),
     geometry_cases.wavy_channel(seed=12, n=(31, 70), split_fractions=(0.3, 0.6)),
     geometry_cases.wavy_channel(
-        seed=13, length=300.0, mean_width=12.0, n=(150, 140), harmonics=((20.0, 150.0, 1.0), (4.0, 37.0, 0.0)),
+        seed=13,
+        length=300.0,
+        mean_width=12.0,
+        n=(150, 140),
+        harmonics=((20.0, 150.0, 1.0), (4.0, 37.0, 0.0)),
         placement=geometry_cases.PLACEMENTS["projected"],
     ),
 ]
@@ -65,8 +69,8 @@ def test_every_vertex_lies_on_the_medial_axis_between_the_chains(case, fraction)
     distance = oracle.distance(vertices)
     tolerance = 1e-7 * case.extent + 4.0 * oracle.error_bound
     worst = int(np.argmax(distance))
-    assert distance[worst] <= tolerance, "vertex {} = {} is {:.3g} off the medial axis (tolerance {:.3g})".format(
-        worst + 1, vertices[worst].tolist(), distance[worst], tolerance
+    assert distance[worst] <= tolerance, (
+        f"vertex {worst + 1} = {vertices[worst].tolist()} is {distance[worst]:.3g} off the medial axis (tolerance {tolerance:.3g})"
     )
 
 
@@ -79,8 +83,8 @@ def test_every_vertex_lies_on_the_analytic_axis(case):
     tolerance = case.axis_tolerance + 1e-9 * case.extent + position_tolerance(case, result.radii[1:-1][away])
     excess = case.axis_distance(vertices[away]) - tolerance
     worst = int(np.argmax(excess))
-    assert excess[worst] <= 0.0, "vertex {} is {:.3g} off the axis, tolerance {:.3g}".format(
-        vertices[away][worst].tolist(), excess[worst] + tolerance[worst], tolerance[worst]
+    assert excess[worst] <= 0.0, (
+        f"vertex {vertices[away][worst].tolist()} is {excess[worst] + tolerance[worst]:.3g} off the axis, tolerance {tolerance[worst]:.3g}"
     )
 
 
@@ -121,7 +125,7 @@ def test_hausdorff_distance_to_the_medial_axis_shrinks_with_the_spacing(case):
     for fraction in HAUSDORFF_FRACTIONS:
         result = polygon_centerline(case.polygon, case.split_points, spacing=fraction * case.width)
         distances.append(oracle.hausdorff_from_target(result.line, step))
-    report = ", ".join("w*{:g}: {:.3g}".format(f, d) for f, d in zip(HAUSDORFF_FRACTIONS, distances))
+    report = ", ".join(f"w*{f:g}: {d:.3g}" for f, d in zip(HAUSDORFF_FRACTIONS, distances))
     # Never worse with a finer spacing (to the measurement's resolution) ...
     assert all(later <= earlier + step for earlier, later in zip(distances, distances[1:])), report
     # ... and 16 times finer sampling at least halves it: chords converge quadratically on smooth stretches
@@ -137,9 +141,7 @@ def test_default_spacing_keeps_the_mean_deviation_below_a_thousandth_of_the_widt
     stations = np.linspace(0.0, result.line.length, 20_001)
     points = shapely.get_coordinates(shapely.line_interpolate_point(result.line, stations))
     mean_deviation = float(np.mean(oracle.distance(points)))
-    assert mean_deviation <= 1e-3 * case.width, "mean deviation {:.3g}, width {:.3g}".format(
-        mean_deviation, case.width
-    )
+    assert mean_deviation <= 1e-3 * case.width, f"mean deviation {mean_deviation:.3g}, width {case.width:.3g}"
 
 
 def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
@@ -153,6 +155,6 @@ def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
         stations = np.linspace(0.0, result.line.length, 20_001)
         points = shapely.get_coordinates(shapely.line_interpolate_point(result.line, stations))
         means.append(float(np.mean(oracle.distance(points))))
-    report = ", ".join("{}: {:.3g}".format(n, m) for n, m in zip(counts, means))
+    report = ", ".join(f"{n}: {m:.3g}" for n, m in zip(counts, means))
     assert means[-1] < means[0] / 4.0, report
     assert means[-1] <= 1e-3 * case.width, report

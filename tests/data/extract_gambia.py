@@ -45,7 +45,11 @@ def ring_from_arcs(arc_indices, arcs):
 def feature(rings, crs_note):
     return {
         "type": "Feature",
-        "properties": {"name": "Gambia", "source": "Natural Earth 1:10m Admin 0 via world-atlas 2.0.2", "crs": crs_note},
+        "properties": {
+            "name": "Gambia",
+            "source": "Natural Earth 1:10m Admin 0 via world-atlas 2.0.2",
+            "crs": crs_note,
+        },
         "geometry": {"type": "Polygon", "coordinates": rings},
     }
 
