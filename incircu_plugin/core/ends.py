@@ -7,12 +7,12 @@ meandering river gets its two tips, a Y-shaped one the tips of its two longest a
 Rule, step by step (deterministic, about O(n log n) in the number ``n`` of boundary samples):
 
 1. **Skeleton.** The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` and densified to
-   ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (never more than
-   ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
-   segments that are not edges of it), so no triangle crosses the boundary; the triangles inside the
-   polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle placed at its circumcentre (a Voronoi vertex of the
-   samples, on the approximate medial axis), is the skeleton: every path in it stays in the region and goes
-   around the islands.
+   ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (a coarser step when that would
+   add more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the
+   boundary segments that are not edges of it), so no triangle crosses the boundary. The triangles inside
+   the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual
+   graph, each triangle placed at its circumcentre (a Voronoi vertex of the samples, on the approximate
+   medial axis), is the skeleton: every path in it stays in the region and goes around the islands.
 2. **Longest path.** A double sweep of Dijkstra (from the first node to the farthest node ``a``, then from
    ``a`` to the farthest node ``b``) gives the longest skeleton path ``a -> b``; it is exact when the
    skeleton is a tree (a polygon without holes) and a close approximation around islands.
@@ -22,8 +22,8 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    skeleton junction (a triangle with no side on the boundary: where the branches from the two corners of a
    flat cap, or the fan of a rounded cap, meet the trunk) with ``d <= CAP_WINDOW * r``. Without such a
    junction (a pointed end), ``T`` is where ``d`` first exceeds ``CAP_REACH * r``: up to there the disk
-   still reaches back to the tip, so the path is in the end cap. Its disk touches the
-   two banks at ``L`` and ``R`` (the boundary points nearest to ``T +- r * n``, ``n`` normal to the trunk),
+   still reaches back to the tip, so the path is in the end cap. Its disk touches the two banks at ``L``
+   and ``R`` (the boundary points nearest to ``T +- r * n``, ``n`` normal to the trunk),
    and the trunk's continuation (the ray from ``T`` perpendicular to ``L - R``, the medial-axis tangent)
    leaves the exterior ring at ``X``. The *end cap* is the arc of the exterior ring from ``R`` to ``L``
    through ``X`` (``X`` itself is the end if that arc were over half the ring). Its *corners* are the
@@ -31,6 +31,10 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    arc-length midpoint between the first and last corner (a flat or oblique cut: the middle of the cut,
    the midpoint of a rectangle's short side), the corner itself when there is one (a pointed end), or the
    arc-length midpoint of the whole cap when there is none (a rounded cap: its apex).
+
+Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at its acute corner; the
+skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
+missed (they do not change the ends of an elongated shape).
 
 The *start* is the end with the smaller ``x`` (then smaller ``y``) coordinate, so the answer does not depend
 on where the ring starts or which way it turns.
@@ -60,7 +64,7 @@ MAX_REFINEMENTS = 12
 #: collinear boundary samples (rounding on a straight bank) and is not part of the skeleton.
 SLIVER = 1e-6
 
-#: Upper bound on the number of boundary samples (the step grows when the boundary is longer).
+#: Densification adds at most about this many samples (the step grows when the boundary is longer).
 MAX_SAMPLES = 200_000
 
 #: ``d / r`` below which a skeleton point still belongs to the end cap: ``1 / sin(40 deg)``, so corners of
