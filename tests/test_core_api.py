@@ -1,0 +1,138 @@
+"""The public entry points around the engine: spacing rules, sample counts, progress, multipart input.
+
+Expected values come from the shapes' construction (a rectangle's width, the number of parts, which part
+was given bad split points), never from a previous run.
+"""
+
+import geometry_cases
+import numpy as np
+import pytest
+import shapely
+from oracle import check_centerline
+from shapely.geometry import MultiPolygon, box
+
+from incircu_plugin.core import (
+    Cancelled,
+    IncirCuError,
+    SplitPointError,
+    centerline_from_chains,
+    default_spacing,
+    multipolygon_centerlines,
+    polygon_centerline,
+    split_polygon,
+)
+
+
+def test_default_spacing_is_a_twentieth_of_the_typical_width():
+    # The documented rule: typical width = area between the chains / their mean length, spacing = 1/20 of
+    # it. For two parallel banks of a rectangle that is exactly its width; closed, the chains also run along
+    # the half caps, so it is W * L / (L + W).
+    case = geometry_cases.rectangle(length=200.0, width=8.0, n=5)
+    assert default_spacing(case.bank_a, case.bank_b) == pytest.approx(8.0 / 20.0, rel=1e-12)
+    assert default_spacing(case.chain_a, case.chain_b) == pytest.approx(8.0 * 200.0 / 208.0 / 20.0, rel=1e-12)
+
+
+@pytest.mark.parametrize("spacing", [None, 0, 0.0])
+def test_no_spacing_and_zero_spacing_mean_the_default(spacing):
+    case = geometry_cases.wavy_channel(seed=21)
+    expected = polygon_centerline(case.polygon, case.split_points, spacing=default_spacing(case.chain_a, case.chain_b))
+    result = polygon_centerline(case.polygon, case.split_points, spacing=spacing)
+    assert result.line.equals_exact(expected.line, 0.0)
+
+
+def test_finer_spacing_gives_more_vertices_on_a_straight_channel():
+    case = geometry_cases.rectangle(length=100.0, width=10.0, n=2)
+    counts = [len(polygon_centerline(case.polygon, case.split_points, spacing=s).line.coords) for s in (4.0, 2.0, 1.0)]
+    assert counts[0] < counts[1] < counts[2]
+    # Stations fall on whole x (the half caps are 5 long): a sample at (x, 0) or (x, 10) has the incircle of
+    # centre (x, 5) and radius 5, which is empty for 5 <= x <= 95 and crosses a cap otherwise. Both sides give
+    # the same 91 centres, plus the two split points.
+    assert counts[2] == 91 + 2
+
+
+def test_samples_per_chain_sets_the_number_of_samples():
+    case = geometry_cases.rectangle(length=100.0, width=10.0, n=2)
+    few = polygon_centerline(case.polygon, case.split_points, samples_per_chain=9)
+    many = polygon_centerline(case.polygon, case.split_points, samples_per_chain=99)
+    assert len(few.line.coords) < len(many.line.coords)
+    check_centerline(many, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    with pytest.raises(IncirCuError):
+        polygon_centerline(case.polygon, case.split_points, samples_per_chain=0)
+
+
+def test_too_many_samples_is_refused_before_any_work():
+    case = geometry_cases.rectangle(length=100.0, width=10.0, n=2)
+    with pytest.raises(IncirCuError, match="spacing"):
+        polygon_centerline(case.polygon, case.split_points, spacing=1e-9)
+
+
+def test_progress_reports_increasing_fractions_up_to_one():
+    case = geometry_cases.synthetic_river(40_000, seed=3)
+    seen = []
+    polygon_centerline(case.polygon, case.split_points, spacing=case.width / 4.0, progress=seen.append)
+    assert len(seen) >= 2
+    assert all(0.0 <= f <= 1.0 for f in seen)
+    assert all(b >= a for a, b in zip(seen, seen[1:]))
+    assert seen[-1] == pytest.approx(1.0)
+
+
+def test_progress_returning_false_cancels():
+    case = geometry_cases.synthetic_river(40_000, seed=3)
+    calls = []
+
+    def stop_at_first(fraction):
+        calls.append(fraction)
+        return False
+
+    with pytest.raises(Cancelled):
+        polygon_centerline(case.polygon, case.split_points, spacing=case.width / 4.0, progress=stop_at_first)
+    assert len(calls) == 1
+
+
+def test_engine_takes_the_chains_of_split_polygon():
+    case = geometry_cases.annulus_sector()
+    c1, c2 = split_polygon(case.polygon, case.split_points)
+    assert np.array_equal(c1[0], c2[0]) and np.array_equal(c1[-1], c2[-1])
+    assert tuple(c1[0]) == case.split_points[0] and tuple(c1[-1]) == case.split_points[1]
+    # The two chains cover the ring exactly once.
+    assert shapely.LineString(c1).length + shapely.LineString(c2).length == pytest.approx(
+        case.polygon.exterior.length, rel=1e-12
+    )
+    direct = centerline_from_chains(c1, c2, spacing=1.0)
+    through_api = polygon_centerline(case.polygon, case.split_points, spacing=1.0)
+    assert direct.line.equals_exact(through_api.line, 0.0)
+
+
+def test_split_polygon_inserts_a_split_point_inside_an_edge_as_a_vertex():
+    polygon = box(0.0, 0.0, 100.0, 10.0)
+    c1, c2 = split_polygon(polygon, [(0.0, 3.0), (100.0, 7.5)])
+    for chain in (c1, c2):
+        assert tuple(chain[0]) == (0.0, 3.0) and tuple(chain[-1]) == (100.0, 7.5)
+    assert len(c1) + len(c2) - 2 == 4 + 2
+
+
+def test_multipolygon_gives_one_outcome_per_part_and_isolates_failures():
+    good = box(0.0, 0.0, 50.0, 4.0)
+    bad = box(0.0, 10.0, 50.0, 14.0)
+    third = box(0.0, 20.0, 80.0, 26.0)
+    points = [(0.0, 2.0), (50.0, 2.0), (0.0, 12.0), (0.0, 23.0), (80.0, 23.0)]
+    outcomes = multipolygon_centerlines(MultiPolygon([good, bad, third]), points, spacing=0.5)
+    assert [o.part_index for o in outcomes] == [0, 1, 2]
+    assert outcomes[0].error is None and outcomes[0].result.line.length == pytest.approx(50.0)
+    assert outcomes[1].result is None and isinstance(outcomes[1].error, SplitPointError)
+    assert "1" in str(outcomes[1].error)
+    assert outcomes[2].error is None and outcomes[2].result.line.length == pytest.approx(80.0)
+    assert outcomes[2].result.widths[1:-1] == pytest.approx(6.0)
+
+
+def test_multipolygon_accepts_a_single_polygon():
+    outcomes = multipolygon_centerlines(box(0.0, 0.0, 50.0, 4.0), [(0.0, 2.0), (50.0, 2.0)], spacing=0.5)
+    assert len(outcomes) == 1 and outcomes[0].result.line.length == pytest.approx(50.0)
+
+
+def test_widths_and_length_properties():
+    case = geometry_cases.rectangle(length=100.0, width=10.0, n=3)
+    result = polygon_centerline(case.polygon, case.split_points, spacing=1.0)
+    assert np.array_equal(result.widths, 2.0 * result.radii)
+    assert result.widths[1:-1] == pytest.approx(10.0, rel=1e-12)
+    assert result.length == pytest.approx(100.0, rel=1e-12)
