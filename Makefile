@@ -65,7 +65,7 @@ test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests
 
 lint: setup
-	$(PYTHON) -m ruff check --line-length 120 --target-version py39 .
+	$(PYTHON) -m ruff check .
 
 package:
 	@mkdir -p $(DIST)

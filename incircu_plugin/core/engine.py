@@ -36,6 +36,12 @@ MAX_FAN_DIRECTIONS = 256
 #: Most samples one call accepts (about 1 GiB of working memory).
 MAX_SAMPLES = 20_000_000
 
+#: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
+ALONG_TOLERANCE = 1e-9
+
+#: Relative distance (of the vertex from the sample) within which a vertex counts as on a corner's edge line.
+GRAZING_TOLERANCE = 1e-10
+
 #: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
 TIE_TOLERANCE = 1e-10
 
@@ -229,45 +235,57 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     )
 
 
-def _first_contacts(px, py, bx, by, scale, boundary, segment):
+def _first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     """First contact ``t`` of each (sample, segment) pair, inf when the disk family never touches it.
 
     ``(px, py)`` is the sample point, ``(bx, by)`` its unit direction, ``scale`` the radius per unit of
-    ``t``. Returns ``t`` and where on the segment the contact is, as a length from its start.
+    ``t`` (``sin`` of the half angle at a convex vertex, else 1) and ``slide`` the matching ``cos`` (else 0).
+    Returns ``t`` and where on the segment the contact is, as a length from its start.
     """
     ax, ay = boundary.start_x[segment], boundary.start_y[segment]
     ux, uy = boundary.unit_x[segment], boundary.unit_y[segment]
     length = boundary.length[segment]
-    squeeze = 1.0 - scale * scale
     dx, dy = px - ax, py - ay
     along_p = dx * ux + dy * uy
     height = dx * -uy + dy * ux
+    b_along = bx * ux + by * uy
+    b_across = by * ux - bx * uy
 
     def through_vertex(offset_along):
-        # Offset of the point from the vertex, in the segment's frame: (along_p - offset_along, height).
-        ox = along_p - offset_along
-        beta = (bx * ux + by * uy) * ox + (by * ux - bx * uy) * height
+        # With d = vertex - point = x*b + y*b_perp, the contact solves slide^2 t^2 - 2 x t + |d|^2 = 0, whose
+        # discriminant factors as (x*scale - |y|*slide) (x*scale + |y|*slide); the first factor is, up to a
+        # constant, the vertex's distance from an incident line of a convex corner. A vertex on that line is
+        # touched as the disks slide along it (a double root), so a factor that rounding pushed just below zero
+        # is taken as zero: the contact stays where it is under tiny perturbations of the input.
+        ox = offset_along - along_p
+        x = b_along * ox - b_across * height
+        y = np.abs(b_along * height + b_across * ox)
         squared = ox * ox + height * height
-        disc = beta * beta - squeeze * squared
+        near = x * scale - y * slide
+        far = x * scale + y * slide
+        near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
         with np.errstate(divide="ignore", invalid="ignore"):
-            t = squared / (np.sqrt(np.maximum(disc, 0.0)) - beta)
-        return np.where((beta < 0) & (disc >= 0), t, np.inf)
+            t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
+        return np.where((x > 0) & (near >= 0), t, np.inf)
 
     t_start = through_vertex(0.0)
     t_end = through_vertex(length)
 
     side = np.where(height < 0, -1.0, 1.0)
-    normal_b = side * (by * ux - bx * uy)
+    normal_b = side * b_across
     distance = side * height
     denominator = scale - normal_b
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
         along = along_p + t_tangent * (bx * ux + by * uy)
-    valid = (distance > 0) & (denominator > 1e-12) & (along >= 0) & (along <= length)
-    t_tangent = np.where(valid, t_tangent, np.inf)
-
-    t = np.minimum(np.minimum(t_start, t_end), t_tangent)
-    along = np.where(t == t_tangent, along, np.where(t == t_start, 0.0, length))
+    slack = ALONG_TOLERANCE * length
+    tangent = (distance > 0) & (denominator > 1e-12) & (along >= -slack) & (along <= length + slack)
+    # A tangency inside the segment is its first contact, and it is well conditioned; a contact through an
+    # end point only counts when there is no such tangency (near it, the vertex root is a double root that
+    # keeps only half the digits).
+    t_vertex = np.minimum(t_start, t_end)
+    t = np.where(tangent, t_tangent, t_vertex)
+    along = np.where(tangent, np.clip(along, 0.0, length), np.where(t_vertex == t_start, 0.0, length))
     return t, along
 
 
@@ -289,7 +307,7 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
     """
     count = len(index)
     point, direction = samples.point[index], samples.direction[index]
-    scale = samples.scale[index]
+    scale, slide = samples.scale[index], samples.slide[index]
     radius = np.array(trial, dtype=float)
     first = np.full(count, np.inf)
     accepted = np.zeros(count, dtype=bool)
@@ -305,7 +323,8 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         pair = active[query]
         sample = index[pair]
         t, along = _first_contacts(
-            point[pair, 0], point[pair, 1], direction[pair, 0], direction[pair, 1], scale[pair], boundary, segment
+            point[pair, 0], point[pair, 1], direction[pair, 0], direction[pair, 1], scale[pair], slide[pair],
+            boundary, segment,
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
         t[own_segment | (t <= floor)] = np.inf
