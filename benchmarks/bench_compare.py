@@ -13,6 +13,7 @@ import argparse
 import dataclasses
 import json
 import math
+import os
 import sys
 import tempfile
 import time
@@ -155,6 +156,7 @@ def main(argv=None):
     arguments = parser.parse_args(argv)
     RESULTS_DIR.mkdir(exist_ok=True)
     preload()
+    load_before = os.getloadavg()
 
     with tempfile.TemporaryDirectory(prefix="incircu-bench-") as work_dir:
         grass = None if arguments.quick else GrassRunner(work_dir)
@@ -196,6 +198,7 @@ def main(argv=None):
         "grass_startup_seconds": startup,
         "tools": {tool.name: tool.note for tool in [INCIRCU, *tools]},
         "quick": arguments.quick,
+        "load_average": {"start": load_before, "end": os.getloadavg()},
     }
     (RESULTS_DIR / "compare.json").write_text(json.dumps(results, indent=1))
     print(format_measurements(analytic_measurements, "Analytic shapes"))

@@ -1,17 +1,20 @@
 """Run one tool on one case in a forked child process, with a time limit, and measure it.
 
 A child per (tool, case) keeps a runaway peer from stalling the whole benchmark: past
-``timeout_seconds`` it is killed and reported as such. The parent imports every tool module before
+``timeout_seconds`` it is killed, with every process it started, and reported as such. The parent imports every tool module before
 forking, so no run pays for an import.
 """
 
 import multiprocessing
+import os
+import signal
 import traceback
 
 from metrics import Measurement, measure, time_call
 
 
 def _child(connection, tool, case, budget_seconds):
+    os.setpgrp()  # its own process group, so a timeout also kills what it started (qgis_process, GRASS)
     try:
         geometry, seconds, runs = time_call(tool.run, case, budget_seconds=budget_seconds)
         measurement = measure(tool.name, case, geometry, seconds, runs)
@@ -41,7 +44,10 @@ def run_tool(tool, case, timeout_seconds=90.0, budget_seconds=2.0):
         process.join()
         geometry = payload if measurement.error == "" else None
         return measurement, geometry
-    process.kill()
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
     process.join()
     return Measurement(tool.name, case.name, None, 0, error=f"timeout > {timeout_seconds:.0f} s"), None
 
