@@ -50,6 +50,9 @@ _CHUNK = 16_384
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 4
 
+#: Consecutive segments that share one entry of the spatial index.
+INDEX_RUN = 8
+
 
 class Cancelled(Exception):
     """Raised when the progress callback asks the engine to stop."""
@@ -138,31 +141,58 @@ class _Boundary:
         self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
         self.low = np.minimum(self.start, self.end)
         self.high = np.maximum(self.start, self.end)
-        self.tree = shapely.STRtree(shapely.box(self.low[:, 0], self.low[:, 1], self.high[:, 0], self.high[:, 1]))
+        # The index holds runs of INDEX_RUN consecutive segments: 8x fewer GEOS geometries to build, store
+        # and search; a run's hits are filtered segment by segment.
+        run_start = np.arange(0, len(self.start), INDEX_RUN)
+        self.run_low = np.minimum.reduceat(self.low, run_start)
+        self.run_high = np.maximum.reduceat(self.high, run_start)
+        self.run_size = np.diff(np.append(run_start, len(self.start)))
+        self.tree = shapely.STRtree(
+            shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
+        )
 
     def candidates(self, low, high):
         """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
 
-        The tree is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much
-        cheaper than one query per box when consecutive boxes overlap, as they do along a chain; each
-        union's hits are then filtered box by box.
+        The index is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper
+        than one query per box when consecutive boxes overlap, as they do along a chain; the hits are then
+        filtered segment by segment and box by box.
         """
         count = len(low)
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
-        group, hit = self.tree.query(
+        group, run = self.tree.query(
             shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1])
         )
+        pair, offset = _ranges(self.run_size[run])
+        group, segment = group[pair], run[pair] * INDEX_RUN + offset
+        keep = self._overlaps(segment, group_low[group], group_high[group])
+        group, segment = group[keep], segment[keep]
+
         hits_per_group = np.bincount(group, minlength=len(starts))
         first_hit = np.cumsum(hits_per_group) - hits_per_group
         box_group = np.arange(count) // QUERY_GROUP
-        per_box = hits_per_group[box_group]
-        box = np.repeat(np.arange(count), per_box)
-        segment = hit[np.arange(per_box.sum()) - np.repeat(np.cumsum(per_box) - per_box - first_hit[box_group], per_box)]
-        keep = (self.low[segment, 0] <= high[box, 0]) & (self.high[segment, 0] >= low[box, 0])
-        keep &= (self.low[segment, 1] <= high[box, 1]) & (self.high[segment, 1] >= low[box, 1])
+        box, offset = _ranges(hits_per_group[box_group])
+        segment = segment[first_hit[box_group[box]] + offset]
+        keep = self._overlaps(segment, low[box], high[box])
         return box[keep], segment[keep]
+
+    def _overlaps(self, segment, low, high):
+        """Whether each segment's bounding box meets the matching box ``low..high``."""
+        return (
+            (self.low[segment, 0] <= high[:, 0])
+            & (self.high[segment, 0] >= low[:, 0])
+            & (self.low[segment, 1] <= high[:, 1])
+            & (self.high[segment, 1] >= low[:, 1])
+        )
+
+
+def _ranges(counts):
+    """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
+    owner = np.repeat(np.arange(len(counts)), counts)
+    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    return owner, rank
 
 
 def _left_normal(vectors):
