@@ -1,10 +1,9 @@
 """Islands without loops: join every hole of a polygon to one of the two boundary chains.
 
 IncirCu needs exactly two chains. A polygon with islands (holes) has more boundary than that, so each island
-is joined to one chain through a *slit*: a zero-width cut from a point ``F`` of the chain (the slit's foot,
-inserted as a vertex of the chain) to a point ``Q`` of the island. The joined chain runs along its bank to
-``F``, out along the slit to ``Q``, once around the island back to ``Q``, back along the slit to ``F`` and on
-along its bank. For the engine the island is then part of that chain, so:
+is joined to one chain through a *slit*: a cut of negligible width from a point ``F`` of the chain (the
+slit's foot) to a point ``Q`` of the island. The joined chain runs along its bank to ``F``, out along the
+slit to ``Q``, once around the island back to ``Q``, back along the slit to ``F`` and on along its bank. For the engine the island is then part of that chain, so:
 
 * the narrow channel between the island and the chain it joined lies between two parts of the *same*
   chain; no incircle there touches the other chain without crossing its own, so the centerline does not
@@ -25,8 +24,11 @@ Rule (documented, deterministic):
    start to its end. The island is traversed so that the region stays on the same side as along the
    chain's bank (clockwise when the region is on the chain's left).
 
-The returned chains contain the slit twice, back and forth (coincident segments in opposite directions),
-so they touch themselves along the slit; they have no zero-length segments.
+Each slit is a corridor ``SLIT_WIDTH`` of the extent wide (at least ``SLIT_ULPS`` units in the last place of
+the coordinates): the chain leaves its bank just before ``F``, runs to the island just beside ``Q``, goes
+around and comes back along the other side of the corridor. The chains therefore never touch themselves,
+and each side of a slit belongs to one copy only, so the engine knows from which side an incircle touches
+it. The returned chains have no zero-length segments.
 """
 
 import heapq
@@ -41,12 +43,20 @@ from .errors import IncirCuError, InvalidGeometryError, format_point
 #: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
 TIE_TOLERANCE = 1e-9
 
+#: Width of a slit, relative to the extent: its two sides are this far apart, so the joined chain never
+#: touches itself and every point of a side belongs to one copy only (the engine then knows from which side
+#: an incircle touches the slit). Far below any real feature, far above rounding.
+SLIT_WIDTH = 1e-11
+
+#: Smallest slit width in units of the last place of the largest coordinate, so rounding cannot close it.
+SLIT_ULPS = 64
+
 #: Number of candidate slit starts spread along each island's ring (its vertices are always candidates).
 SLIT_CANDIDATES = 256
 
 
 def bridge_islands(c1, c2, holes):
-    """Join each island to the chain it is nearer to through a zero-width slit.
+    """Join each island to the chain it is nearer to through a slit of negligible width.
 
     See the module docstring for the rule.
 
@@ -78,7 +88,7 @@ def bridge_islands(c1, c2, holes):
     >>> c2 = np.array([[0.0, 5.0], [0.0, 10.0], [100.0, 10.0], [100.0, 5.0]])
     >>> island = [(40.0, 2.0), (60.0, 2.0), (60.0, 4.0), (40.0, 4.0)]
     >>> bridged_a, bridged_b = bridge_islands(c1, c2, [island])
-    >>> bridged_a[:6].tolist()
+    >>> np.round(bridged_a[:6], 6).tolist()
     [[0.0, 5.0], [0.0, 0.0], [40.0, 0.0], [40.0, 2.0], [40.0, 4.0], [60.0, 4.0]]
     >>> len(bridged_b) == len(c2)
     True
@@ -88,6 +98,13 @@ def bridge_islands(c1, c2, holes):
     if not rings:
         return chains[0].copy(), chains[1].copy()
     extent = extent_of(*chains, *rings)
+    everything = np.concatenate([*chains, *rings])
+    largest = float(max(np.abs(everything).max(), 1.0))
+    half_width = max(SLIT_WIDTH * extent, SLIT_ULPS * float(np.spacing(largest))) / 2.0
+    # Work near the origin, where the tolerances below are many units in the last place.
+    origin = 0.5 * (everything.min(axis=0) + everything.max(axis=0))
+    chains = [chain - origin for chain in chains]
+    rings = [ring - origin for ring in rings]
     merge = COINCIDENCE_TOLERANCE * extent
     tie = TIE_TOLERANCE * extent
     region_on_left = _signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
@@ -120,9 +137,20 @@ def bridge_islands(c1, c2, holes):
             heapq.heappush(pairs, (gap, int(component[host]), 2 + island_index, other))
     detours = {}
     for island_index in _reverse_join_order(joins, count):
-        walk = _splice(walks[island_index], joins[2 + island_index], detours, merge)
-        detours[island_index] = walk
-    return _splice(chains[0], joins[0], detours, merge), _splice(chains[1], joins[1], detours, merge)
+        trimmed = _trimmed(walks[island_index], half_width)
+        length = float(_arc_lengths(trimmed)[-1])
+        children = [
+            (min(max(position - half_width, 0.0), length), child, foot)
+            for position, child, foot in joins[2 + island_index]
+        ]
+        detours[island_index] = _splice(trimmed, children, detours, half_width, merge)
+    bridged = []
+    for side, original in enumerate((c1, c2)):
+        chain = _splice(chains[side], joins[side], detours, half_width, merge) + origin
+        ends = _as_array(original)[[0, -1]]
+        chain[0], chain[-1] = ends[0], ends[1]
+        bridged.append(chain)
+    return bridged[0], bridged[1]
 
 
 class _Target:
@@ -378,8 +406,11 @@ def _free_candidates(starts, feet, lengths, island, target, inside, island_tree,
     return np.flatnonzero(~blocked)
 
 
-def _splice(path, joins, detours, merge):
+def _splice(path, joins, detours, half_width, merge):
     """Insert island detours into a path (a chain or the walk around an island) at their slit feet.
+
+    Each slit is a corridor ``2 * half_width`` wide: the path leaves itself ``half_width`` before the foot
+    ``F`` (arc length), follows the detour, and comes back ``half_width`` after ``F``.
 
     Parameters
     ----------
@@ -389,7 +420,10 @@ def _splice(path, joins, detours, merge):
         For each island joined to this path: its foot's arc length along the path, the island's index and
         the foot ``F``.
     detours : dict of int to ndarray
-        For each island, its complete walk from ``Q`` around (with its own islands spliced in) back to ``Q``.
+        For each island, its walk from ``Q`` around (with its own islands spliced in) back to ``Q``, trimmed
+        by ``half_width`` at both ends.
+    half_width : float
+        Half the width of a slit, CRS units.
     merge : float
         Distance, CRS units, under which two points are the same.
 
@@ -400,18 +434,53 @@ def _splice(path, joins, detours, merge):
     """
     if not joins:
         return path.copy()
-    positions = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
+    positions = _arc_lengths(path)
     pieces = []
     done = 0
-    for position, island_index, foot in sorted(joins, key=lambda join: (join[0], join[1])):
-        after = min(max(int(np.searchsorted(positions, position, side="right")), done), len(path))
-        pieces.append(path[done:after])
-        done = after
-        pieces.append(np.concatenate([foot[None], detours[island_index], foot[None]]))
+    for position, island_index, _ in sorted(joins, key=lambda join: (join[0], join[1])):
+        leave = min(max(position - half_width, positions[0]), positions[-1])
+        back = min(max(position + half_width, leave), positions[-1])
+        before = max(int(np.searchsorted(positions, leave, side="left")), done)
+        pieces.append(path[done:before])
+        pieces.append(
+            np.concatenate(
+                [_point_at(path, positions, leave)[None], detours[island_index], _point_at(path, positions, back)[None]]
+            )
+        )
+        done = max(int(np.searchsorted(positions, back, side="right")), done)
     pieces.append(path[done:])
     joined = np.concatenate(pieces)
     step = np.hypot(*np.diff(joined, axis=0).T)
     return joined[np.concatenate([[True], step > merge])]
+
+
+def _trimmed(walk, half_width):
+    """Return a closed walk without its first and last ``half_width`` of arc length (the slit's two sides)."""
+    positions = _arc_lengths(walk)
+    total = positions[-1]
+    if total <= 2.0 * half_width:
+        return walk.copy()
+    keep = (positions > half_width) & (positions < total - half_width)
+    return np.concatenate(
+        [
+            _point_at(walk, positions, half_width)[None],
+            walk[keep],
+            _point_at(walk, positions, total - half_width)[None],
+        ]
+    )
+
+
+def _arc_lengths(path):
+    """Return the arc length at each vertex of a polyline, CRS units."""
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
+
+
+def _point_at(path, positions, at):
+    """Return the point at arc length ``at`` of a polyline whose vertices are at ``positions``."""
+    index = int(np.clip(np.searchsorted(positions, at, side="right") - 1, 0, len(path) - 2))
+    span = positions[index + 1] - positions[index]
+    fraction = 0.0 if span <= 0.0 else min(max((at - positions[index]) / span, 0.0), 1.0)
+    return path[index] + fraction * (path[index + 1] - path[index])
 
 
 def _around(ring, start, clockwise, merge):
