@@ -22,6 +22,9 @@ from peers import run_incircu
 RESULTS_DIR = BENCH_DIR / "results"
 TOP_FUNCTIONS = 12
 
+#: Stages of ``polygon_centerline`` whose cumulative time is reported.
+STAGES = ("validate_polygon", "split_polygon", "centerline_from_chains")
+
 
 def profile(case, repeats):
     """Median wall time of ``repeats`` runs, then the top functions of one profiled run."""
@@ -46,8 +49,13 @@ def profile(case, repeats):
             "cumulative_seconds": cumulative,
         })
     rows.sort(key=lambda row: row["own_seconds"], reverse=True)
+    stages = {}
+    for stage in STAGES:
+        matching = [row["cumulative_seconds"] for row in rows if row["function"].endswith(f"({stage})")]
+        if matching:
+            stages[stage] = max(matching)
     return {"case": case.name, "vertices": case.vertex_count, "median_seconds": statistics.median(durations),
-            "profiled_seconds": total, "top": rows[:TOP_FUNCTIONS]}
+            "profiled_seconds": total, "stages": stages, "top": rows[:TOP_FUNCTIONS]}
 
 
 def main():
