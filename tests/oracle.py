@@ -28,6 +28,9 @@ GRID_HALF_EXTENT = 2.0**30
 #: Most chords one parabolic edge is split into.
 MAX_PARABOLA_CHORDS = 20_000
 
+#: Most target samples refined per round of :meth:`MedialOracle.hausdorff_from_target`.
+MAX_REFINED = 4_000
+
 
 def segment_distances(points, chain):
     """Exact distance from each point to a polyline, computed in a translated frame.
@@ -300,16 +303,19 @@ class MedialOracle:
         _, distances = self._tree.query_nearest(shapely.points(local), return_distance=True, all_matches=False)
         return distances
 
-    def hausdorff_from_target(self, line, step=None):
+    def hausdorff_from_target(self, line, resolution=None):
         """Directed Hausdorff distance from the target set to a line: the farthest target point's distance.
+
+        The target set is sampled coarsely, then refined around every sample that could still hide a
+        larger distance (the distance to a line is 1-Lipschitz: a point within ``h`` of a sample is at most
+        ``h`` farther), until the sampling step is below ``resolution``.
 
         Parameters
         ----------
         line : LineString or array_like of shape (n, 2)
             CRS units.
-        step : float, optional
-            The target set is sampled every ``step`` CRS units (default ``1e-4`` of the extent); the
-            result is exact up to ``step / 2``.
+        resolution : float, optional
+            The result is a lower bound exact to ``resolution``, CRS units; default ``1e-7`` of the extent.
 
         Returns
         -------
@@ -317,14 +323,38 @@ class MedialOracle:
             CRS units.
         """
         coords = shapely.get_coordinates(line) if isinstance(line, shapely.Geometry) else np.asarray(line, dtype=float)
-        step = step or 1e-4 * self.extent
-        samples = shapely.get_coordinates(shapely.segmentize(self._lines, step))
+        resolution = resolution or 1e-7 * self.extent
         local = coords - self.origin
-        pieces = shapely.linestrings(np.stack([local[:-1], local[1:]], axis=1))
-        _, distances = shapely.STRtree(pieces).query_nearest(
-            shapely.points(samples), return_distance=True, all_matches=False
-        )
-        return float(np.max(distances))
+        tree = shapely.STRtree(shapely.linestrings(np.stack([local[:-1], local[1:]], axis=1)))
+
+        def distances(points):
+            return tree.query_nearest(shapely.points(points), return_distance=True, all_matches=False)[1]
+
+        start = self.segments[:, 0] - self.origin
+        direction = self.segments[:, 1] - self.segments[:, 0]
+        lengths = np.hypot(*direction.T)
+        step = max(1e-3 * self.extent, resolution)
+        counts = np.ceil(lengths / step).astype(int) + 1
+        segment = np.repeat(np.arange(len(lengths)), counts)
+        first = np.repeat(np.cumsum(counts) - counts, counts)
+        along = (np.arange(counts.sum()) - first) / np.repeat(counts - 1, counts) * lengths[segment]
+        best = 0.0
+        while True:
+            d = distances(start[segment] + (along / lengths[segment])[:, None] * direction[segment])
+            best = max(best, float(d.max()))
+            if step <= resolution:
+                return best
+            # Only target points within `step` of a sample whose distance is above best - step can beat best.
+            # Where the distance is flat, many samples qualify; the farthest MAX_REFINED ones are refined
+            # (any other can beat best by at most step / 2, which is then the result's accuracy).
+            keep = np.flatnonzero(d >= best - step)
+            if len(keep) > MAX_REFINED:
+                keep = keep[np.argsort(d[keep])[-MAX_REFINED:]]
+            fine = step / 16.0
+            offsets = np.arange(-16, 17) * fine
+            segment = np.repeat(segment[keep], len(offsets))
+            along = np.clip(np.repeat(along[keep], len(offsets)) + np.tile(offsets, len(keep)), 0.0, lengths[segment])
+            step = fine
 
     @property
     def length(self):
