@@ -261,3 +261,20 @@ def test_braided_channel_with_many_islands_gives_one_simple_line():
         assert not line.intersects(island.buffer(-tolerance))
     clearance = shapely.distance(shapely.points(shapely.get_coordinates(line)[1:-1]), polygon.boundary)
     assert np.all(clearance >= result.radii[1:-1] - tolerance)
+
+
+def test_automatic_ends_and_islands_together():
+    x = np.linspace(0.0, 1200.0, 1201)
+    axis = np.c_[x, 80.0 * np.sin(2.0 * np.pi * x / 600.0)]
+    half_width = 15.0
+    river = LineString(axis).buffer(half_width, cap_style="flat")
+    islands = [Point(axis[i] + (0.0, 5.0)).buffer(3.0) for i in (200, 500, 800)]
+    polygon = Polygon(river.exterior.coords, [island.exterior.coords for island in islands])
+    result = polygon_centerline(polygon, spacing=half_width / 10.0)
+    assert result.ends_found
+    ends = np.array([result.line.coords[0], result.line.coords[-1]])
+    expected = np.array([axis[0], axis[-1]])
+    assert np.hypot(*(ends - expected).T).max() <= 0.01 * 2.0 * half_width
+    assert result.line.is_simple
+    for island in islands:
+        assert not result.line.intersects(island.buffer(-TOLERANCE))
