@@ -13,9 +13,10 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual
    graph, each triangle placed at its circumcentre (a Voronoi vertex of the samples, on the approximate
    medial axis), is the skeleton: every path in it stays in the region and goes around the islands.
-2. **Longest path.** A double sweep of Dijkstra (from the first node to the farthest node ``a``, then from
-   ``a`` to the farthest node ``b``) gives the longest skeleton path ``a -> b``; it is exact when the
-   skeleton is a tree (a polygon without holes) and a close approximation around islands.
+2. **Longest path.** A double sweep (from the first node to the farthest node ``a``, then from ``a`` to the
+   farthest node ``b``) gives the longest skeleton path ``a -> b``. Without holes the skeleton is a tree
+   (the dual graph of a triangulated simple polygon): each sweep is a plain traversal and the result is
+   exact. Around islands each sweep is a Dijkstra search and the result a close approximation.
 3. **Cap centring.** Near each end the path runs into a corner or a rounded cap, not to the middle of the
    end. Walking inward from the tip, ``d`` is the distance travelled (plus the tip's own clearance) and
    ``r`` the radius of the largest inscribed disk there. The *last trunk point* ``T`` is the widest
@@ -144,7 +145,7 @@ def find_ends(polygon):
     nodes, radii, edges, step = _skeleton_graph(local)
     if len(edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
-    path = _longest_path(nodes, edges)
+    path = _longest_path(nodes, edges, acyclic=len(local.interiors) == 0)
     trunk = nodes[path]
     trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
@@ -380,15 +381,14 @@ def _circumcentres(corners):
     return a + offset
 
 
-def _dijkstra(adjacency, weights, source):
+def _dijkstra(graph, source):
     """Return the shortest distance from ``source`` to every node and each node's predecessor.
 
     Parameters
     ----------
-    adjacency : list of list of int
-        Neighbours of each node.
-    weights : list of list of float
-        Edge lengths matching ``adjacency``, CRS units.
+    graph : (list of int, list of int, list of float)
+        Compressed adjacency: the neighbours of node ``i`` are ``neighbours[start[i]:start[i + 1]]`` at
+        the matching ``lengths`` (CRS units).
     source : int
 
     Returns
@@ -398,7 +398,8 @@ def _dijkstra(adjacency, weights, source):
     predecessor : ndarray of int
         ``-1`` for the source and unreachable nodes.
     """
-    count = len(adjacency)
+    start, neighbours, lengths = graph
+    count = len(start) - 1
     distance = [float("inf")] * count
     predecessor = [-1] * count
     distance[source] = 0.0
@@ -407,8 +408,9 @@ def _dijkstra(adjacency, weights, source):
         reached, node = heapq.heappop(queue)
         if reached > distance[node]:
             continue
-        for neighbour, weight in zip(adjacency[node], weights[node]):
-            candidate = reached + weight
+        for k in range(start[node], start[node + 1]):
+            neighbour = neighbours[k]
+            candidate = reached + lengths[k]
             if candidate < distance[neighbour]:
                 distance[neighbour] = candidate
                 predecessor[neighbour] = node
@@ -416,8 +418,28 @@ def _dijkstra(adjacency, weights, source):
     return np.asarray(distance), np.asarray(predecessor)
 
 
-def _longest_path(nodes, edges):
-    """Return the node indices of the longest skeleton path found by a double Dijkstra sweep.
+def _tree_distances(graph, source):
+    """Like :func:`_dijkstra` for a forest, where every reachable node has exactly one path from the source."""
+    start, neighbours, lengths = graph
+    count = len(start) - 1
+    distance = [float("inf")] * count
+    predecessor = [-1] * count
+    distance[source] = 0.0
+    stack = [source]
+    while stack:
+        node = stack.pop()
+        reached = distance[node]
+        for k in range(start[node], start[node + 1]):
+            neighbour = neighbours[k]
+            if predecessor[neighbour] == -1 and neighbour != source:
+                distance[neighbour] = reached + lengths[k]
+                predecessor[neighbour] = node
+                stack.append(neighbour)
+    return np.asarray(distance), np.asarray(predecessor)
+
+
+def _longest_path(nodes, edges, acyclic):
+    """Return the node indices of the longest skeleton path found by a double sweep.
 
     Parameters
     ----------
@@ -425,23 +447,29 @@ def _longest_path(nodes, edges):
         Skeleton vertices, CRS units.
     edges : ndarray of shape (e, 2) of int
         Skeleton edges.
+    acyclic : bool
+        The skeleton is a forest (the polygon has no holes): each sweep is a plain traversal, and the double
+        sweep is exact. Otherwise each sweep is a Dijkstra search.
 
     Returns
     -------
     ndarray of int
         Node indices from one end of the path to the other.
     """
+    count = len(nodes)
     lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
-    adjacency = [[] for _ in range(len(nodes))]
-    weights = [[] for _ in range(len(nodes))]
-    for (u, v), length in zip(edges.tolist(), lengths.tolist()):
-        adjacency[u].append(v)
-        weights[u].append(length)
-        adjacency[v].append(u)
-        weights[v].append(length)
-    distance, _ = _dijkstra(adjacency, weights, 0)
+    sources = np.concatenate([edges[:, 0], edges[:, 1]])
+    order = np.argsort(sources, kind="stable")
+    start = np.concatenate([[0], np.cumsum(np.bincount(sources, minlength=count))])
+    graph = (
+        start.tolist(),
+        np.concatenate([edges[:, 1], edges[:, 0]])[order].tolist(),
+        np.concatenate([lengths, lengths])[order].tolist(),
+    )
+    sweep = _tree_distances if acyclic else _dijkstra
+    distance, _ = sweep(graph, 0)
     first = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
-    distance, predecessor = _dijkstra(adjacency, weights, first)
+    distance, predecessor = sweep(graph, first)
     last = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
     path = [last]
     while path[-1] != first:
