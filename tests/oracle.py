@@ -28,6 +28,9 @@ GRID_HALF_EXTENT = 2.0**30
 #: Most chords one parabolic edge is split into.
 MAX_PARABOLA_CHORDS = 20_000
 
+#: Above this many point-segment pairs, :func:`segment_distances` uses a spatial index.
+BRUTE_FORCE_PAIRS = 50_000_000
+
 #: Most target samples refined per round of :meth:`MedialOracle.hausdorff_from_target`.
 MAX_REFINED = 4_000
 
@@ -61,6 +64,13 @@ def segment_distances(points, chain):
     squared = np.einsum("ij,ij->i", direction, direction)
     keep = squared > 0
     start, direction, squared = start[keep], direction[keep], squared[keep]
+    if len(p) * len(start) > BRUTE_FORCE_PAIRS:
+        # Large inputs: GEOS finds the nearest segment (an R-tree), the distance to it is recomputed here.
+        segments = shapely.linestrings(np.stack([start, start + direction], axis=1))
+        nearest = shapely.STRtree(segments).query_nearest(shapely.points(p), all_matches=False)[1]
+        q = p - start[nearest]
+        t = np.clip(np.einsum("ij,ij->i", q, direction[nearest]) / squared[nearest], 0.0, 1.0)
+        return np.hypot(*(q - t[:, None] * direction[nearest]).T)
     result = np.empty(len(p))
     block = max(1, 4_000_000 // max(len(start), 1))
     for first in range(0, len(p), block):
@@ -121,7 +131,8 @@ class MedialOracle:
         self.scale = 2.0**exponent
         if region is None:
             region = Polygon(np.concatenate([chains[0], chains[1][::-1]]))
-        self.region = region
+        self.region = shapely.Polygon(region)
+        shapely.prepare(self.region)
 
         labels = {}
         sites = []
@@ -234,7 +245,11 @@ class MedialOracle:
         applied to distances instead.)
         """
         margin = 4.0 * self.grid_error + 1e-12 * self.extent
-        return shapely.distance(self.region, shapely.points(np.asarray(points).reshape(-1, 2))) <= margin
+        points = shapely.points(np.asarray(points).reshape(-1, 2))
+        inside = shapely.covers(self.region, points)
+        outside = np.flatnonzero(~inside)
+        inside[outside] = shapely.distance(self.region, points[outside]) <= margin
+        return inside
 
     def _grid_point_in_region(self, point):
         return bool(self._in_region(np.asarray(point, dtype=float) / self.scale + self.origin)[0])
@@ -446,7 +461,9 @@ def check_centerline(result, chain_a, chain_b, region, ends, relative=1e-9):
     steps = np.hypot(*np.diff(coords, axis=0).T)
     assert steps.min() > 0.0, "the line repeats a vertex"
     assert result.line.is_simple, "the line is not simple"
-    outside = result.line.difference(region)
+    region = shapely.Polygon(region)
+    shapely.prepare(region)
+    outside = shapely.LineString() if region.covers(result.line) else result.line.difference(region)
     if not outside.is_empty:
         # Vertices and midpoints of the parts outside; a GEOS buffer by a distance below the coordinates'
         # precision would come back empty, so distances are compared instead.

@@ -13,7 +13,7 @@ units in the last place), which dominates only when the coordinates are huge com
 import geometry_cases
 import numpy as np
 import pytest
-from oracle import check_centerline
+from oracle import MedialOracle, check_centerline
 
 from incircu_plugin.core import lines_centerline, polygon_centerline
 
@@ -109,3 +109,15 @@ def test_open_mode_staggered_banks_stay_between_the_ends():
     result = lines_centerline(bank_a, bank_b, spacing=0.5)
     ends = (tuple(0.5 * (bank_a[0] + bank_b[0])), tuple(0.5 * (bank_a[-1] + bank_b[-1])))
     check_centerline(result, bank_a, bank_b, region, ends)
+
+
+def test_long_river_beyond_one_chunk_of_samples():
+    # About 20,000 samples per chain, more than the engine's internal block of samples, so the invariants
+    # are checked across block boundaries too. Every vertex is also checked against the oracle.
+    case = geometry_cases.synthetic_river(40_000, seed=5)
+    spacing = 1.25 * case.width / 4.0
+    result = polygon_centerline(case.polygon, case.split_points, spacing=spacing)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    oracle = MedialOracle(case.chain_a, case.chain_b, region=case.polygon)
+    distance = oracle.distance(np.asarray(result.line.coords)[1:-1])
+    assert distance.max() <= 1e-7 * case.extent + 4.0 * oracle.error_bound
