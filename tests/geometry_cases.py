@@ -509,6 +509,7 @@ def wavy_channel(
     seed=0,
     placement=None,
     split_fractions=(0.5, 0.5),
+    teeth=0.0,
 ):
     """Random x-monotone channel: a smooth wavy centreline with a varying width and jittered vertices.
 
@@ -534,6 +535,9 @@ def wavy_channel(
     placement : Placement, optional
     split_fractions : (float, float)
         Where each split point sits on its cap, 0 = on bank ``a``, 1 = on bank ``b`` (0.5 = midpoint).
+    teeth : float
+        Interior vertices move alternately into and out of the channel by this fraction of the mean width
+        (a saw-toothed bank: many reflex vertices facing the other bank); keep below 0.25.
 
     Returns
     -------
@@ -552,9 +556,14 @@ def wavy_channel(
     xb = _stations(length, n[1], jitter, rng)
     bank_a = np.stack([xa, centre(xa) - half_width(xa)], axis=1)
     bank_b = np.stack([xb, centre(xb) + half_width(xb)], axis=1)
+    if teeth:
+        for bank in (bank_a, bank_b):
+            saw = teeth * mean_width * (np.arange(len(bank)) % 2 - 0.5) * 2.0
+            saw[[0, -1]] = 0.0
+            bank[:, 1] += saw
     placement = placement or Placement()
     case = channel_case(
-        f"wavy L={length:g} W={mean_width:g} n={n} seed={seed} {_describe(placement)}",
+        f"wavy L={length:g} W={mean_width:g} n={n} seed={seed} teeth={teeth:g} {_describe(placement)}",
         bank_a,
         bank_b,
         mean_width,

@@ -25,6 +25,9 @@ from shapely.geometry import LineString, Polygon
 #: Half-extent of the data on the oracle's integer grid (Boost.Polygon takes 32-bit coordinates).
 GRID_HALF_EXTENT = 2.0**30
 
+#: Site label of the frame that closes the diagram in open mode.
+FRAME_LABEL = 2
+
 #: Most chords one parabolic edge is split into.
 MAX_PARABOLA_CHORDS = 20_000
 
@@ -127,7 +130,11 @@ class MedialOracle:
             closed = bool(np.all(chains[0][0] == chains[1][0]) and np.all(chains[0][-1] == chains[1][-1]))
         self.closed = closed
         self.origin = 0.5 * (low + high)
-        exponent = math.floor(math.log2(GRID_HALF_EXTENT / (0.5 * self.extent)))
+        # Open mode: a square frame of sites far around the lines (label 2, never part of the target)
+        # closes the diagram, so every edge between the lines inside the region is finite. The data then
+        # use an eighth of the grid, leaving room for the frame at four half-extents.
+        grid_half_extent = GRID_HALF_EXTENT if closed else GRID_HALF_EXTENT / 8.0
+        exponent = math.floor(math.log2(grid_half_extent / (0.5 * self.extent)))
         self.scale = 2.0**exponent
         if region is None:
             region = Polygon(np.concatenate([chains[0], chains[1][::-1]]))
@@ -148,6 +155,12 @@ class MedialOracle:
                 sites.append((label, (int(start[0]), int(start[1])), (int(end[0]), int(end[1]))))
                 labels.setdefault(sites[-1][1], set()).add(label)
                 labels.setdefault(sites[-1][2], set()).add(label)
+        if not closed:
+            half = int(4 * grid_half_extent)
+            corners = [(-half, -half), (half, -half), (half, half), (-half, half)]
+            for start, end in zip(corners, corners[1:] + corners[:1]):
+                sites.append((FRAME_LABEL, start, end))
+                labels.setdefault(start, set()).add(FRAME_LABEL)
         self.grid_error = rounding
         self._point_labels = labels
         self._segment_labels = [site[0] for site in sites]
@@ -235,8 +248,21 @@ class MedialOracle:
         stub = np.concatenate(stubs)
         keep = np.hypot(*(segments[:, 1] - segments[:, 0]).T) > 0
         segments, stub = segments[keep], stub[keep]
-        inside = self._in_region(segments.mean(axis=1))
-        return segments[inside], stub[inside]
+        if self.closed:
+            # Edges never cross the boundary (it is made of sites): their midpoint says on which side they are.
+            inside = self._in_region(segments.mean(axis=1))
+            return segments[inside], stub[inside]
+        # Open mode: the end gaps are not sites, so an edge may cross them; clip the edges that do.
+        start_in, end_in = self._in_region(segments[:, 0]), self._in_region(segments[:, 1])
+        whole = start_in & end_in
+        crossing = shapely.linestrings(segments[~whole])
+        clipped = shapely.get_parts(shapely.intersection(crossing, self.region))
+        clipped = clipped[shapely.get_type_id(clipped) == 1]
+        pieces = [segments[whole]]
+        for line in clipped:
+            coords = shapely.get_coordinates(line)
+            pieces.append(np.stack([coords[:-1], coords[1:]], axis=1))
+        return np.concatenate(pieces), np.zeros(sum(len(p) for p in pieces), dtype=bool)
 
     def _in_region(self, points):
         """Mask of the points in the region or within the grid's rounding of it.

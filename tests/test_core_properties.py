@@ -56,6 +56,7 @@ def channels(draw):
         seed=draw(st.integers(0, 2**31)),
         placement=placement,
         split_fractions=(draw(st.floats(0.1, 0.9)), draw(st.floats(0.1, 0.9))),
+        teeth=draw(st.sampled_from([0.0, 0.0, 0.05, 0.2])),
     )
     return case, draw(st.floats(0.02, 0.5))
 
