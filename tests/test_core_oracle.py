@@ -153,3 +153,21 @@ def test_placements_round_trip():
     for placement in geometry_cases.PLACEMENTS.values():
         back = placement.invert(placement.apply(points))
         assert np.abs(back - points).max() <= 1e-9 * 100.0
+
+
+@pytest.mark.parametrize(
+    "case",
+    [geometry_cases.rectangle(n=(7, 13), jitter=0.4, seed=3), geometry_cases.tapered_channel()],
+    ids=["rectangle", "tapered"],
+)
+def test_oracle_open_mode_target_is_the_whole_axis_between_the_gaps(case):
+    # Two banks without caps: the medial axis between them runs from one end gap to the other, crossing the
+    # gaps (which are not boundary), so the oracle must close the diagram and clip at the gaps.
+    region = geometry_cases.channel_case("region", case.bank_a, case.bank_b, case.width).polygon
+    oracle = MedialOracle(case.bank_a, case.bank_b, region=region)
+    assert not oracle.closed
+    tolerance = 4.0 * oracle.error_bound + 1e-12 * case.extent
+    axis = shapely.get_coordinates(shapely.segmentize(case.axis_line, case.extent / 500.0))
+    assert oracle.distance(axis).max() <= tolerance
+    assert case.axis_distance(oracle.segments.reshape(-1, 2)).max() <= tolerance
+    assert oracle.length == pytest.approx(case.axis_line.length, abs=tolerance * len(oracle.segments))
