@@ -62,7 +62,7 @@ def channels(draw):
 
 
 PROPERTY_SETTINGS = settings(
-    max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True
+    max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True, database=None
 )
 
 
@@ -101,7 +101,7 @@ def test_random_bank_pairs_open_mode(drawn, reverse_a, reverse_b):
     assert_on_medial_axis(result, case.bank_a, case.bank_b, region)
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=60, deadline=None, derandomize=True, database=None)
 @given(channels())
 def test_swapping_the_split_points_reverses_the_centerline(drawn):
     # The samples are laid out from each chain's start, so the two directions pick different points of the
