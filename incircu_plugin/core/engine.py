@@ -30,6 +30,13 @@ DEFAULT_SPACING_PER_WIDTH = 1.0 / 20.0
 #: Largest angle, radians, between two normals of the fan at a reflex vertex.
 MAX_FAN_STEP = np.radians(5.0)
 
+#: Probes per round and rounds locating where the samples of an edge switch between accepted and skipped.
+TRANSITION_PROBES = 15
+TRANSITION_ROUNDS = 5
+
+#: Stations at spacing/2, spacing/4, ... spacing/2**END_REFINEMENT from both ends of each chain.
+END_REFINEMENT = 16
+
 #: Most directions in the fan of one reflex vertex.
 MAX_FAN_DIRECTIONS = 256
 
@@ -41,6 +48,10 @@ ALONG_TOLERANCE = 1e-9
 
 #: Relative distance (of the vertex from the sample) within which a vertex counts as on a corner's edge line.
 GRAZING_TOLERANCE = 1e-10
+
+#: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
+#: ``TIE_TOLERANCE``, or on the other chain only.
+SKIPPED, TIED, CLEAR = 0, 1, 2
 
 #: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
 TIE_TOLERANCE = 1e-10
@@ -217,8 +228,13 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     total = positions[-1]
     merge = COINCIDENCE_TOLERANCE * max(total, 1.0)
 
-    stations = np.arange(1, int(np.ceil(total / spacing))) * spacing
-    stations = stations[stations < total - merge]
+    # Near each end the part of the axis whose disks touch both chains can be much shorter than the spacing
+    # (a split point on a straight cap); stations halving the spacing towards the ends trace it too.
+    towards_ends = spacing * 0.5 ** np.arange(1, END_REFINEMENT + 1)
+    stations = np.unique(
+        np.concatenate([np.arange(1, int(np.ceil(total / spacing))) * spacing, towards_ends, total - towards_ends])
+    )
+    stations = stations[(stations > merge) & (stations < total - merge)]
     segment = np.clip(np.searchsorted(positions, stations, side="right") - 1, 0, n_segments - 1)
     off_vertex = (stations - positions[segment] > merge) & (positions[segment + 1] - stations > merge)
     stations, segment = stations[off_vertex], segment[off_vertex]
@@ -332,15 +348,16 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
     """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
 
     Returns arrays aligned with ``index``: ``first`` (parameter of the first contact with anything, inf
-    when none within ``limit``), ``accepted`` (first contact lies on the other chain), and for accepted
-    samples ``t``, the ``contact`` point and its arc-length ``position`` along the other chain.
+    when none within ``limit``), ``status`` (``SKIPPED``; ``TIED``: the first contact lies on the other
+    chain and, within ``TIE_TOLERANCE``, on the sample's own chain too; ``CLEAR``: on the other chain only),
+    and for accepted samples the ``contact`` point and its arc-length ``position`` along the other chain.
     """
     count = len(index)
     point, direction = samples.point[index], samples.direction[index]
     scale, slide = samples.scale[index], samples.slide[index]
     radius = np.array(trial, dtype=float)
     first = np.full(count, np.inf)
-    accepted = np.zeros(count, dtype=bool)
+    status = np.full(count, SKIPPED, dtype=np.int8)
     contact = np.zeros((count, 2))
     position = np.zeros(count)
     active = np.arange(count)
@@ -375,7 +392,7 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         _, unique = np.unique(pair[winner_pair], return_index=True)
         chosen = winner_pair[unique]
         chosen_sample, chosen_segment = pair[chosen], segment[chosen]
-        accepted[chosen_sample] = True
+        status[chosen_sample] = np.where(t[chosen] * (1.0 + TIE_TOLERANCE) < best_own[chosen_sample], CLEAR, TIED)
         first[chosen_sample] = t[chosen]
         contact[chosen_sample] = boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
         position[chosen_sample] = np.where(
@@ -388,7 +405,7 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         best = best[~settled]
         radius[pending] = np.where(np.isfinite(best), best, radius[pending] * 4.0)
         active = pending[radius[pending] <= limit]
-    return first, accepted, contact, position
+    return first, status, contact, position
 
 
 def _solve_in_two_passes(samples, index, boundary, own_chain, trial_radius, limit, floor):
@@ -413,6 +430,68 @@ def _solve_in_two_passes(samples, index, boundary, own_chain, trial_radius, limi
         whole[coarse], whole[~coarse] = coarse_part, fine_part
         merged.append(whole)
     return merged
+
+
+def _edge_probes(samples, template, positions, boundary):
+    """Samples at arc-length ``positions`` on the edges of the edge samples ``template``."""
+    segment = samples.first_own[template]
+    along = positions - boundary.segment_position[segment]
+    return _Samples(
+        point=boundary.start[segment] + along[:, None] * boundary.unit[segment],
+        direction=samples.direction[template],
+        scale=np.ones(len(template)),
+        position=positions,
+        slide=np.zeros(len(template)),
+        first_own=segment,
+        last_own=segment,
+    )
+
+
+def _refine_transitions(samples, first, status, boundary, own_chain, limit, floor):
+    """Locate, on every edge, where samples switch between skipped and clearly accepted.
+
+    There the incircle touches both chains and the sample's own chain elsewhere: a branch point of the
+    medial axis (e.g. where the axis meets the part of an end that touches both chains). Between two such
+    neighbours the centerline would cut the corner at that point by up to the spacing; ``TRANSITION_ROUNDS``
+    rounds of ``TRANSITION_PROBES`` probes shrink the bracket to ``(TRANSITION_PROBES + 1) **
+    -TRANSITION_ROUNDS`` of it, and the clearly accepted end of the bracket is added. (Ties are left
+    alone: a switch inside a tie's tolerance is no branch point.)
+
+    Returns the probe samples and their solution (as :func:`_solve`), with ties counted as skipped.
+    """
+    edge = samples.first_own == samples.last_own
+    switch = np.flatnonzero(
+        edge[:-1]
+        & edge[1:]
+        & (samples.first_own[:-1] == samples.first_own[1:])
+        & (np.minimum(status[:-1], status[1:]) == SKIPPED)
+        & (np.maximum(status[:-1], status[1:]) == CLEAR)
+        & np.isfinite(first[:-1])
+        & np.isfinite(first[1:])
+    )
+    low, high = samples.position[switch], samples.position[switch + 1]
+    low_accepted = status[switch] == CLEAR
+    trial = 1.25 * np.maximum(first[switch], first[switch + 1])
+    steps = np.arange(1, TRANSITION_PROBES + 1) / (TRANSITION_PROBES + 1)
+    template = np.repeat(switch, TRANSITION_PROBES)
+    for _ in range(TRANSITION_ROUNDS):
+        where = (low[:, None] + (high - low)[:, None] * steps).ravel()
+        probes = _edge_probes(samples, template, where, boundary)
+        probe_status = _solve(
+            probes, np.arange(len(where)), boundary, own_chain, np.repeat(trial, TRANSITION_PROBES), limit, floor
+        )[1]
+        probe_accepted = probe_status == CLEAR
+        # Last probe still on the low side of the switch (-1: none), per transition.
+        same = (probe_accepted == np.repeat(low_accepted, TRANSITION_PROBES)).reshape(-1, TRANSITION_PROBES)
+        last_same = np.where(same.any(axis=1), TRANSITION_PROBES - 1 - np.argmax(same[:, ::-1], axis=1), -1)
+        grid = np.column_stack([low, where.reshape(-1, TRANSITION_PROBES), high])
+        rows = np.arange(len(low))
+        low, high = grid[rows, last_same + 1], grid[rows, last_same + 2]
+    final = _edge_probes(samples, switch, np.where(low_accepted, low, high), boundary)
+    final_first, final_status, contact, position = _solve(
+        final, np.arange(len(switch)), boundary, own_chain, trial, limit, floor
+    )
+    return final, final_first, np.where(final_status == CLEAR, CLEAR, SKIPPED), contact, position
 
 
 def _medial_points(samples, sample, t, boundary):
@@ -575,7 +654,7 @@ def centerline_from_chains(
     side = 1.0 if _signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
     boundary = _Boundary(local)
     width = max(typical_width(*local), merge)
-    fan_step = min(MAX_FAN_STEP, 2.0 * min(spacings) / width)
+    fan_step = min(MAX_FAN_STEP, min(spacings) / width)
     trial_radius = 0.625 * width
     limit = 4.0 * extent
     floor = 1e-12 * extent
@@ -591,22 +670,29 @@ def centerline_from_chains(
     pieces = []
     for own in (0, 1):
         samples = sampled[own]
+        first = np.empty(len(samples.point))
+        status = np.zeros(len(samples.point), dtype=np.int8)
+        contact = np.empty((len(samples.point), 2))
+        position = np.empty(len(samples.point))
         for begin in range(0, len(samples.point), _CHUNK):
             index = np.arange(begin, min(begin + _CHUNK, len(samples.point)))
-            t, accepted, contact, position = _solve_in_two_passes(
+            first[index], status[index], contact[index], position[index] = _solve_in_two_passes(
                 samples, index, boundary, own, trial_radius, limit, floor
             )
-            found = _medial_points(samples, index[accepted], t[accepted], boundary)
-            keep = found[-1]
-            centre, radius, own_foot, own_position = (array[keep] for array in found[:-1])
-            contact, position = contact[accepted][keep], position[accepted][keep]
-            if own == 0:
-                pieces.append((centre, radius, own_foot, contact, own_position, position))
-            else:
-                pieces.append((centre, radius, contact, own_foot, position, own_position))
             done += len(index)
             if progress is not None and progress(done / max(total, 1)) is False:
                 raise Cancelled()
+        found = [(samples, first, status, contact, position)]
+        found.append(_refine_transitions(samples, first, status, boundary, own, limit, floor))
+        for probes, probe_first, probe_status, probe_contact, probe_position in found:
+            chosen = np.flatnonzero(probe_status != SKIPPED)
+            *medial, keep = _medial_points(probes, chosen, probe_first[chosen], boundary)
+            centre, radius, own_foot, own_position = (array[keep] for array in medial)
+            other_foot, other_position = probe_contact[chosen][keep], probe_position[chosen][keep]
+            if own == 0:
+                pieces.append((centre, radius, own_foot, other_foot, own_position, other_position))
+            else:
+                pieces.append((centre, radius, other_foot, own_foot, other_position, own_position))
 
     centre, radius, foot_a, foot_b, position_a, position_b = (
         np.concatenate([piece[k] for piece in pieces]) for k in range(6)
@@ -617,11 +703,12 @@ def centerline_from_chains(
         inside = shapely.intersects_xy(region, centre[:, 0], centre[:, 1])
         centre, radius, foot_a, foot_b = centre[inside], radius[inside], foot_a[inside], foot_b[inside]
         position_a, position_b = position_a[inside], position_b[inside]
-    tangent_a = boundary.unit[
-        np.clip(np.searchsorted(boundary.position[0], position_a, side="right") - 1, 0, len(local[0]) - 2)
-    ]
+    # Points whose feet are the same two vertices (two facing reflex corners) tie on the positions; they lie
+    # on the bisector of those vertices, ordered by the direction of travel, perpendicular to foot_b - foot_a.
+    across = foot_b - foot_a
+    travel = side * np.stack([across[:, 1], -across[:, 0]], axis=1)
     order = np.lexsort((
-        np.einsum("ij,ij->i", centre, tangent_a),
+        np.einsum("ij,ij->i", centre, travel),
         position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge),
     ))
     centre, radius, foot_a, foot_b = centre[order], radius[order], foot_a[order], foot_b[order]
