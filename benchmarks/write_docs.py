@@ -287,7 +287,8 @@ the npm package `world-atlas` (Natural Earth 1:10m countries, fetched with `npm 
 
 Synthetic meandering river (`geometry_cases.synthetic_river`: width 20 ± 25 %, a vertex every quarter
 width, so more vertices means a longer river). A tool is skipped at a size where its time, extrapolated
-from the smaller sizes (growth at least linear), would exceed 60 s.
+from the smaller sizes (the last measured growth, at least linear; n^1.5 while only one size is known),
+would exceed 60 s; a run is stopped after 90 s (IncirCu: 300 s).
 
 {scaling_table(compare['scaling'])}
 ![Scaling](../benchmarks/results/scaling.png)
