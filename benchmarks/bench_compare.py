@@ -14,6 +14,7 @@ import dataclasses
 import json
 import math
 import os
+import subprocess
 import sys
 import tempfile
 import time
@@ -42,6 +43,18 @@ ASSUMED_GROWTH = 1.5
 
 #: Time limits in the scaling run (IncirCu must be allowed to finish its 10^6 vertices).
 SCALING_TIMEOUT_SECONDS = {"IncirCu": 300.0, "peer": 90.0}
+
+
+def incircu_version():
+    """The repository's commit, marked when the core has uncommitted changes (what is being measured)."""
+    def git(*arguments):
+        completed = subprocess.run(["git", "-C", str(BENCH_DIR.parent), *arguments], capture_output=True,
+                                   text=True, check=False)
+        return completed.stdout.strip()
+
+    commit = git("rev-parse", "--short", "HEAD") or "unknown"
+    dirty = git("status", "--porcelain", "--", "incircu_plugin")
+    return commit + (" + uncommitted changes to incircu_plugin/" if dirty else "")
 
 
 def side_by_side(case_list, tools, timeout_seconds):
@@ -164,6 +177,7 @@ def main(argv=None):
     RESULTS_DIR.mkdir(exist_ok=True)
     preload()
     load_before = os.getloadavg()
+    core_version = incircu_version()
 
     with tempfile.TemporaryDirectory(prefix="incircu-bench-") as work_dir:
         grass = None if arguments.quick else GrassRunner(work_dir)
@@ -206,6 +220,7 @@ def main(argv=None):
         "tools": {tool.name: tool.note for tool in [INCIRCU, *tools]},
         "quick": arguments.quick,
         "load_average": {"start": load_before, "end": os.getloadavg()},
+        "incircu_version": core_version,
     }
     (RESULTS_DIR / "compare.json").write_text(json.dumps(results, indent=1))
     print(format_measurements(analytic_measurements, "Analytic shapes"))

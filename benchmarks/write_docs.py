@@ -35,7 +35,7 @@ def _command_output(arguments):
         return ""
 
 
-def machine_and_versions():
+def machine_and_versions(incircu_version):
     """Markdown bullet list: CPU, memory, OS, Python and every library/tool version."""
     cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
                 if line.startswith("model name")), platform.processor())
@@ -54,7 +54,6 @@ def machine_and_versions():
     qgis = next((line for line in _command_output(["qgis_process.bin", "--version"]).splitlines()
                  if line.startswith("QGIS ")), "QGIS ?")
     grass = _command_output(["grass", "--config", "version"]).strip() or "?"
-    commit = _command_output(["git", "-C", str(REPO_ROOT), "rev-parse", "--short", "HEAD"]).strip()
     lines = [
         f"- Machine: {cpu}, {cores} cores, {memory_kib / 2**20:.0f} GiB RAM, {os_name}; every tool runs on one core,",
         "  one after the other.",
@@ -64,7 +63,7 @@ def machine_and_versions():
         (f"- Peers: pygeoops {versions['pygeoops']}, label-centerlines {versions['label-centerlines']}, "
          f"centerline {versions['centerline']}, pysfcgal {versions['pysfcgal']} ({pysfcgal.sfcgal_full_version()}), "
          f"GRASS {grass} through {qgis.split(chr(39))[0].strip()} `qgis_process` (provider grass7)."),
-        f"- IncirCu: the geometry core at commit `{commit}` (`incircu_plugin.core.polygon_centerline`).",
+        f"- IncirCu: the geometry core at commit `{incircu_version}` (`incircu_plugin.core.polygon_centerline`).",
         f"- Measured {datetime.now(timezone.utc):%Y-%m-%d %H:%M} UTC.",
     ]
     return "\n".join(lines)
@@ -247,7 +246,7 @@ the npm package `world-atlas` (Natural Earth 1:10m countries, fetched with `npm 
 `benchmarks/.cache/`, never committed). It then runs `bench_compare.py`, `bench_paper.py`,
 `profile_incircu.py` and this page's writer, in well under 20 minutes on the machine below.
 
-{machine_and_versions()}
+{machine_and_versions(compare.get("incircu_version", "?"))}
 - {load_note}
 
 ## Verdict against the expected outcome
