@@ -144,8 +144,13 @@ def plot_outlines(case_list, tool_names, geometries, path):
     import matplotlib.pyplot as plt
     from peers import line_parts
 
-    figure, grid = plt.subplots(len(case_list), len(tool_names), dpi=72,
-                                figsize=(1.9 * len(tool_names), 2.6 * len(case_list)), squeeze=False)
+    aspects = []
+    for case in case_list:
+        x0, y0, x1, y1 = case.polygon.bounds
+        aspects.append(min(max((y1 - y0) / (x1 - x0), 0.4), 3.0))
+    figure, grid = plt.subplots(len(case_list), len(tool_names), dpi=72, squeeze=False,
+                                figsize=(1.9 * len(tool_names), 1.9 * sum(aspects) + 0.6),
+                                gridspec_kw={"height_ratios": aspects})
     for row, case in zip(grid, case_list):
         for axes, tool_name in zip(row, tool_names):
             x, y = case.polygon.exterior.xy
