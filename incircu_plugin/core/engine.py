@@ -14,7 +14,7 @@ a sample is settled once its first contact lies inside the trial disk, otherwise
 the best contact found so far. Work is done in chunks of samples, so memory stays bounded.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Callable, Optional
 
 import numpy as np
@@ -32,7 +32,7 @@ MAX_FAN_STEP = np.radians(5.0)
 
 #: Probes per round and rounds locating where the samples of an edge switch between accepted and skipped.
 TRANSITION_PROBES = 15
-TRANSITION_ROUNDS = 5
+TRANSITION_ROUNDS = 3
 
 #: Stations at spacing/2, spacing/4, ... spacing/2**END_REFINEMENT from both ends of each chain.
 END_REFINEMENT = 16
@@ -108,13 +108,15 @@ class CenterlineResult:
 
 @dataclass(frozen=True)
 class _Samples:
-    """Samples of one chain, sorted by arc-length ``position``.
+    """Samples of the chains, sorted by chain, then by arc-length ``position`` along it.
 
     The disk family of sample ``i`` has centre ``point + t*direction`` and radius ``scale*t``; segments
     ``first_own..last_own`` (global indices) touch it by construction. At a convex vertex the disk touches
-    the incident edges ``slide*t`` away from the vertex (``slide`` is 0 elsewhere).
+    the incident edges ``slide*t`` away from the vertex (``slide`` is 0 elsewhere). ``chain`` is the
+    sample's own chain (0 or 1).
     """
 
+    chain: np.ndarray
     point: np.ndarray
     direction: np.ndarray
     scale: np.ndarray
@@ -122,6 +124,15 @@ class _Samples:
     slide: np.ndarray
     first_own: np.ndarray
     last_own: np.ndarray
+
+    def subset(self, index):
+        """The samples ``index`` (an index array or mask)."""
+        return _Samples(*(getattr(self, field.name)[index] for field in fields(self)))
+
+    @staticmethod
+    def concatenate(parts):
+        """All samples of ``parts``, one after the other."""
+        return _Samples(*(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(_Samples)))
 
 
 class _Boundary:
@@ -217,10 +228,11 @@ def _rotate(vectors, angles):
     )
 
 
-def _sample_chain(chain, positions, side, spacing, offset, fan_step):
+def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
     """Sample one chain: equidistant edge points plus every interior vertex (a fan at reflex ones).
 
-    ``side`` is +1 when the region lies left of the chain, -1 when right.
+    ``side`` is +1 when the region lies left of the chain, -1 when right; ``offset`` is the global index of
+    the chain's first segment.
     """
     n_segments = len(chain) - 1
     unit = np.diff(chain, axis=0) / np.diff(positions)[:, None]
@@ -271,6 +283,7 @@ def _sample_chain(chain, positions, side, spacing, offset, fan_step):
     position = np.concatenate([stations, positions[fan_vertex], positions[convex_vertex]])
     order = np.argsort(position, kind="stable")
     return _Samples(
+        chain=np.full(len(order), chain_id, dtype=np.int8),
         point=np.concatenate([edge_point, chain[fan_vertex], chain[convex_vertex]])[order],
         direction=np.concatenate([normal[segment], fan_direction, bisector[convex]])[order],
         scale=np.concatenate([np.ones(len(segment) + len(fan_vertex)), np.sin(half_angle)])[order],
@@ -344,7 +357,7 @@ def _group_minimum(group, values, size):
     return result
 
 
-def _solve(samples, index, boundary, own_chain, trial, limit, floor):
+def _solve(samples, index, boundary, trial, limit, floor):
     """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
 
     Returns arrays aligned with ``index``: ``first`` (parameter of the first contact with anything, inf
@@ -375,7 +388,7 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
         t[own_segment | (t <= floor)] = np.inf
-        on_own = boundary.chain_id[segment] == own_chain
+        on_own = boundary.chain_id[segment] == samples.chain[sample]
         t_own = np.where(on_own, t, np.inf)
         t_other = np.where(on_own, np.inf, t)
 
@@ -408,22 +421,24 @@ def _solve(samples, index, boundary, own_chain, trial, limit, floor):
     return first, status, contact, position
 
 
-def _solve_in_two_passes(samples, index, boundary, own_chain, trial_radius, limit, floor):
+def _solve_in_two_passes(samples, index, boundary, trial_radius, limit, floor):
     """Settle ``index`` (sorted by position): every 8th sample from a global trial radius, then the rest
     from trial radii interpolated between those, which keeps the candidate boxes tight."""
     coarse = np.zeros(len(index), dtype=bool)
     coarse[::8] = True
     results = [None, None]
-    results[0] = _solve(samples, index[coarse], boundary, own_chain, np.full(coarse.sum(), trial_radius), limit, floor)
+    results[0] = _solve(samples, index[coarse], boundary, np.full(coarse.sum(), trial_radius), limit, floor)
     known = np.isfinite(results[0][0])
     fine = index[~coarse]
     if np.any(known):
         radius_known = samples.scale[index[coarse]][known] * results[0][0][known]
-        estimate = np.interp(samples.position[fine], samples.position[index[coarse]][known], radius_known)
+        # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
+        along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
+        estimate = np.interp(along[~coarse], along[coarse][known], radius_known)
         trial = 1.05 * estimate / samples.scale[fine]
     else:
         trial = np.full(len(fine), trial_radius)
-    results[1] = _solve(samples, fine, boundary, own_chain, trial, limit, floor)
+    results[1] = _solve(samples, fine, boundary, trial, limit, floor)
     merged = []
     for coarse_part, fine_part in zip(*results):
         whole = np.empty((len(index),) + coarse_part.shape[1:], dtype=coarse_part.dtype)
@@ -437,6 +452,7 @@ def _edge_probes(samples, template, positions, boundary):
     segment = samples.first_own[template]
     along = positions - boundary.segment_position[segment]
     return _Samples(
+        chain=samples.chain[template],
         point=boundary.start[segment] + along[:, None] * boundary.unit[segment],
         direction=samples.direction[template],
         scale=np.ones(len(template)),
@@ -447,15 +463,15 @@ def _edge_probes(samples, template, positions, boundary):
     )
 
 
-def _refine_transitions(samples, first, status, boundary, own_chain, limit, floor):
+def _refine_transitions(samples, first, status, boundary, limit, floor):
     """Locate, on every edge, where samples switch between skipped and clearly accepted.
 
     There the incircle touches both chains and the sample's own chain elsewhere: a branch point of the
     medial axis (e.g. where the axis meets the part of an end that touches both chains). Between two such
     neighbours the centerline would cut the corner at that point by up to the spacing; ``TRANSITION_ROUNDS``
     rounds of ``TRANSITION_PROBES`` probes shrink the bracket to ``(TRANSITION_PROBES + 1) **
-    -TRANSITION_ROUNDS`` of it, and the clearly accepted end of the bracket is added. (Ties are left
-    alone: a switch inside a tie's tolerance is no branch point.)
+    -TRANSITION_ROUNDS`` of it (1/4096), and the clearly accepted end of the bracket is added. (Ties are
+    left alone: a switch inside a tie's tolerance is no branch point.)
 
     Returns the probe samples and their solution (as :func:`_solve`), with ties counted as skipped.
     """
@@ -471,27 +487,27 @@ def _refine_transitions(samples, first, status, boundary, own_chain, limit, floo
     )
     low, high = samples.position[switch], samples.position[switch + 1]
     low_accepted = status[switch] == CLEAR
-    trial = 1.25 * np.maximum(first[switch], first[switch + 1])
+    trial = np.repeat(1.25 * np.maximum(first[switch], first[switch + 1]), TRANSITION_PROBES)
     steps = np.arange(1, TRANSITION_PROBES + 1) / (TRANSITION_PROBES + 1)
     template = np.repeat(switch, TRANSITION_PROBES)
+    rows = np.arange(len(switch))
     for _ in range(TRANSITION_ROUNDS):
         where = (low[:, None] + (high - low)[:, None] * steps).ravel()
         probes = _edge_probes(samples, template, where, boundary)
-        probe_status = _solve(
-            probes, np.arange(len(where)), boundary, own_chain, np.repeat(trial, TRANSITION_PROBES), limit, floor
-        )[1]
-        probe_accepted = probe_status == CLEAR
-        # Last probe still on the low side of the switch (-1: none), per transition.
-        same = (probe_accepted == np.repeat(low_accepted, TRANSITION_PROBES)).reshape(-1, TRANSITION_PROBES)
+        solution = _solve(probes, np.arange(len(where)), boundary, trial, limit, floor)
+        accepted = (solution[1] == CLEAR).reshape(-1, TRANSITION_PROBES)
+        # Last probe on the low side of the switch per transition (-1: none); the bracket is the next cell.
+        same = accepted == low_accepted[:, None]
         last_same = np.where(same.any(axis=1), TRANSITION_PROBES - 1 - np.argmax(same[:, ::-1], axis=1), -1)
         grid = np.column_stack([low, where.reshape(-1, TRANSITION_PROBES), high])
-        rows = np.arange(len(low))
         low, high = grid[rows, last_same + 1], grid[rows, last_same + 2]
-    final = _edge_probes(samples, switch, np.where(low_accepted, low, high), boundary)
-    final_first, final_status, contact, position = _solve(
-        final, np.arange(len(switch)), boundary, own_chain, trial, limit, floor
-    )
-    return final, final_first, np.where(final_status == CLEAR, CLEAR, SKIPPED), contact, position
+    # The accepted end of the final bracket, when it is a probe of the last round.
+    accepted_probe = np.where(low_accepted, last_same, last_same + 1)
+    found = (accepted_probe >= 0) & (accepted_probe < TRANSITION_PROBES)
+    chosen = rows[found] * TRANSITION_PROBES + accepted_probe[found]
+    kept = probes.subset(chosen)
+    first_kept, status_kept, contact, position = (part[chosen] for part in solution)
+    return kept, first_kept, np.where(status_kept == CLEAR, CLEAR, SKIPPED), contact, position
 
 
 def _medial_points(samples, sample, t, boundary):
@@ -659,40 +675,42 @@ def centerline_from_chains(
     limit = 4.0 * extent
     floor = 1e-12 * extent
 
-    sampled = [
+    samples = _Samples.concatenate([
         _sample_chain(
-            local[i], boundary.position[i], side if i == 0 else -side, spacings[i], boundary.offset[i], fan_step
+            i, local[i], boundary.position[i], side if i == 0 else -side, spacings[i], boundary.offset[i], fan_step
         )
         for i in (0, 1)
-    ]
-    total = sum(len(s.point) for s in sampled)
-    done = 0
+    ])
+    total = len(samples.point)
+    first = np.empty(total)
+    status = np.zeros(total, dtype=np.int8)
+    contact = np.empty((total, 2))
+    position = np.empty(total)
+    for begin in range(0, total, _CHUNK):
+        index = np.arange(begin, min(begin + _CHUNK, total))
+        first[index], status[index], contact[index], position[index] = _solve_in_two_passes(
+            samples, index, boundary, trial_radius, limit, floor
+        )
+        if progress is not None and progress((index[-1] + 1) / total) is False:
+            raise Cancelled()
     pieces = []
-    for own in (0, 1):
-        samples = sampled[own]
-        first = np.empty(len(samples.point))
-        status = np.zeros(len(samples.point), dtype=np.int8)
-        contact = np.empty((len(samples.point), 2))
-        position = np.empty(len(samples.point))
-        for begin in range(0, len(samples.point), _CHUNK):
-            index = np.arange(begin, min(begin + _CHUNK, len(samples.point)))
-            first[index], status[index], contact[index], position[index] = _solve_in_two_passes(
-                samples, index, boundary, own, trial_radius, limit, floor
-            )
-            done += len(index)
-            if progress is not None and progress(done / max(total, 1)) is False:
-                raise Cancelled()
-        found = [(samples, first, status, contact, position)]
-        found.append(_refine_transitions(samples, first, status, boundary, own, limit, floor))
-        for probes, probe_first, probe_status, probe_contact, probe_position in found:
-            chosen = np.flatnonzero(probe_status != SKIPPED)
-            *medial, keep = _medial_points(probes, chosen, probe_first[chosen], boundary)
-            centre, radius, own_foot, own_position = (array[keep] for array in medial)
-            other_foot, other_position = probe_contact[chosen][keep], probe_position[chosen][keep]
-            if own == 0:
-                pieces.append((centre, radius, own_foot, other_foot, own_position, other_position))
-            else:
-                pieces.append((centre, radius, other_foot, own_foot, other_position, own_position))
+    for probes, probe_first, probe_status, probe_contact, probe_position in (
+        (samples, first, status, contact, position),
+        _refine_transitions(samples, first, status, boundary, limit, floor),
+    ):
+        chosen = np.flatnonzero(probe_status != SKIPPED)
+        *medial, keep = _medial_points(probes, chosen, probe_first[chosen], boundary)
+        centre, radius, own_foot, own_position = (array[keep] for array in medial)
+        other_foot, other_position = probe_contact[chosen][keep], probe_position[chosen][keep]
+        on_a = probes.chain[chosen][keep] == 0
+        pieces.append((
+            centre,
+            radius,
+            np.where(on_a[:, None], own_foot, other_foot),
+            np.where(on_a[:, None], other_foot, own_foot),
+            np.where(on_a, own_position, other_position),
+            np.where(on_a, other_position, own_position),
+        ))
 
     centre, radius, foot_a, foot_b, position_a, position_b = (
         np.concatenate([piece[k] for piece in pieces]) for k in range(6)
