@@ -485,6 +485,11 @@ def _refine_transitions(samples, first, status, boundary, limit, floor):
         & np.isfinite(first[:-1])
         & np.isfinite(first[1:])
     )
+    # A skipped sample next to an accepted convex vertex lies in that corner's own branch, which meets the
+    # axis at the vertex sample's point: that switch is already exact.
+    convex = np.concatenate([[False], (samples.slide > 0) & (status != SKIPPED), [False]])
+    corner = np.where(status[switch] == SKIPPED, convex[switch], convex[switch + 3])
+    switch = switch[~corner]
     low, high = samples.position[switch], samples.position[switch + 1]
     low_accepted = status[switch] == CLEAR
     trial = np.repeat(1.25 * np.maximum(first[switch], first[switch + 1]), TRANSITION_PROBES)
