@@ -32,6 +32,7 @@ def _measure_river(n_samples):
     """Run in a child process: time one river, report JSON on stdout."""
     sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
     import geometry_cases
+
     from incircu_plugin.core import centerline_from_chains
 
     case = geometry_cases.synthetic_river(n_samples)
@@ -45,6 +46,7 @@ def _measure_river(n_samples):
 def _measure_meander(repeats):
     sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
     import geometry_cases
+
     from incircu_plugin.core import centerline_from_chains
 
     case = geometry_cases.meander_with_vertex_count(2333)
@@ -69,29 +71,35 @@ def main():
     import numpy
     import shapely
 
-    print("Machine: {} ({} cores), Python {}, numpy {}, shapely {} (GEOS {})\n".format(
-        platform.processor() or platform.machine(), os.cpu_count(), platform.python_version(),
-        numpy.__version__, shapely.__version__, shapely.geos_version_string,
-    ))
+    print(
+        f"Machine: {platform.processor() or platform.machine()} ({os.cpu_count()} cores), Python {platform.python_version()}, numpy {numpy.__version__}, shapely {shapely.__version__} (GEOS {shapely.geos_version_string})\n"
+    )
     print("| samples | time (s) | us / sample | growth (x) | peak memory (MiB) |")
     print("|---:|---:|---:|---:|---:|")
     previous = None
     environment = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
     for exponent in range(3, arguments.max_exponent + 1):
-        n = 10 ** exponent
+        n = 10**exponent
         output = subprocess.run(
             [sys.executable, __file__, "--child", str(n)],
-            check=True, capture_output=True, text=True, env=environment,
+            check=True,
+            capture_output=True,
+            text=True,
+            env=environment,
         ).stdout
         row = json.loads(output.strip().splitlines()[-1])
         growth = "" if previous is None else "{:.1f}".format(row["seconds"] / previous)
-        print("| {:,} | {:.3f} | {:.2f} | {} | {:.0f} |".format(
-            n, row["seconds"], row["seconds"] / n * 1e6, growth, row["peak_bytes"] / 2**20
-        ))
+        print(
+            "| {:,} | {:.3f} | {:.2f} | {} | {:.0f} |".format(
+                n, row["seconds"], row["seconds"] / n * 1e6, growth, row["peak_bytes"] / 2**20
+            )
+        )
         previous = row["seconds"]
     median, vertices = _measure_meander(arguments.repeats)
-    print("\nConstant-width meander (2 km, width 20, {:,} boundary vertices, spacing 2): "
-          "median {:.1f} ms over {} runs (target <= 20 ms).".format(vertices, median * 1e3, arguments.repeats))
+    print(
+        f"\nConstant-width meander (2 km, width 20, {vertices:,} boundary vertices, spacing 2): "
+        f"median {median * 1e3:.1f} ms over {arguments.repeats} runs (target <= 20 ms)."
+    )
 
 
 if __name__ == "__main__":

@@ -8,8 +8,8 @@ import shapely
 from shapely.geometry import MultiPolygon, Point, Polygon
 
 from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
-from .engine import CenterlineResult, centerline_from_chains
 from .ends import find_ends
+from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, InvalidGeometryError, SplitPointError
 from .islands import bridge_islands
 
@@ -78,9 +78,7 @@ def polygon_centerline(
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
-    result = centerline_from_chains(
-        c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress
-    )
+    result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
     return replace(result, ends_found=ends_found, notes=tuple(notes))
 
 
@@ -178,7 +176,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     elif isinstance(geometry, MultiPolygon):
         parts = list(geometry.geoms)
     else:
-        raise InvalidGeometryError("Expected a polygon or multipolygon, got a {}.".format(geometry.geom_type))
+        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
     if snap_tolerance is None:
         snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
     points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
@@ -188,8 +186,8 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
             mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
-                    "Part {} has {} split points within {:.6g} of its boundary; it needs 2 (or none, to find"
-                    " its ends automatically).".format(index, len(mine), snap_tolerance)
+                    f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; it needs 2 (or none, to find"
+                    " its ends automatically)."
                 )
             result = polygon_centerline(part, mine or None, snap_tolerance=snap_tolerance, **options)
             outcomes.append(PartOutcome(index, result, None))

@@ -61,25 +61,21 @@ def as_coordinates(geometry, name="line"):
         If the geometry is null, empty, not a line, or has NaN or infinite coordinates.
     """
     if geometry is None:
-        raise InvalidGeometryError("The {} is null (no geometry).".format(name))
+        raise InvalidGeometryError(f"The {name} is null (no geometry).")
     if isinstance(geometry, shapely.Geometry):
         if geometry.is_empty:
-            raise InvalidGeometryError("The {} is empty.".format(name))
+            raise InvalidGeometryError(f"The {name} is empty.")
         if geometry.geom_type not in ("LineString", "LinearRing"):
-            raise InvalidGeometryError(
-                "The {} must be a single line, not a {}.".format(name, geometry.geom_type)
-            )
+            raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
         coordinates = shapely.get_coordinates(geometry)
     else:
         coordinates = np.asarray(geometry, dtype=float)
         if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
-            raise InvalidGeometryError("The {} must be an (n, 2) coordinate array.".format(name))
+            raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
         coordinates = coordinates[:, :2]
     if not np.all(np.isfinite(coordinates)):
         bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
-        raise InvalidGeometryError(
-            "The {} has a NaN or infinite coordinate: {}.".format(name, tuple(bad.tolist()))
-        )
+        raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     return np.array(coordinates, dtype=float)
 
 
@@ -112,7 +108,7 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     keep = np.concatenate([[True], step > tolerance])
     chain = coordinates[keep]
     if len(chain) < 2:
-        raise ChainError("The {} has fewer than 2 distinct points.".format(name))
+        raise ChainError(f"The {name} has fewer than 2 distinct points.")
     direction = np.diff(chain, axis=0)
     incoming, outgoing = direction[:-1], direction[1:]
     cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
@@ -120,9 +116,7 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     norms = np.hypot(*incoming.T) * np.hypot(*outgoing.T)
     folds = np.flatnonzero((dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
     if len(folds):
-        raise ChainError(
-            "The {} folds back over itself at {}.".format(name, format_point(chain[folds[0] + 1]))
-        )
+        raise ChainError(f"The {name} folds back over itself at {format_point(chain[folds[0] + 1])}.")
     return chain
 
 
@@ -160,7 +154,7 @@ def ensure_simple(chain, name):
     """
     crossing = find_self_crossing(chain)
     if crossing is not None:
-        raise ChainError("The {} crosses itself at {}.".format(name, format_point(crossing)))
+        raise ChainError(f"The {name} crosses itself at {format_point(crossing)}.")
 
 
 def validate_polygon(polygon):
@@ -179,16 +173,14 @@ def validate_polygon(polygon):
         raise InvalidGeometryError("The polygon is null (no geometry).")
     if not isinstance(polygon, Polygon):
         kind = getattr(polygon, "geom_type", type(polygon).__name__)
-        raise InvalidGeometryError("Expected a single polygon, got a {}.".format(kind))
+        raise InvalidGeometryError(f"Expected a single polygon, got a {kind}.")
     if polygon.is_empty:
         raise InvalidGeometryError("The polygon is empty.")
     if not np.all(np.isfinite(shapely.get_coordinates(polygon))):
         raise InvalidGeometryError("The polygon has a NaN or infinite coordinate.")
     if not polygon.is_valid:
         raise InvalidGeometryError(
-            "The polygon is not valid: {}. Repair it first (e.g. QGIS 'Fix geometries').".format(
-                shapely.is_valid_reason(polygon)
-            )
+            f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. Repair it first (e.g. QGIS 'Fix geometries')."
         )
 
 
@@ -242,9 +234,7 @@ def split_polygon(polygon, split_points, tolerance=None):
     validate_polygon(polygon)
     points = [] if split_points is None else list(split_points)
     if len(points) != 2:
-        raise SplitPointError(
-            "A polygon needs exactly 2 split points on its boundary, got {}.".format(len(points))
-        )
+        raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
     points = [np.asarray(p.coords[0] if isinstance(p, Point) else p, dtype=float)[:2] for p in points]
     if not all(np.all(np.isfinite(p)) for p in points):
         raise SplitPointError("A split point has a NaN or infinite coordinate.")
@@ -262,19 +252,15 @@ def split_polygon(polygon, split_points, tolerance=None):
         distance = exterior.distance(Point(point))
         if distance > tolerance:
             raise SplitPointError(
-                "Split point {} is {:.6g} away from the polygon's boundary; the snap tolerance is {:.6g}."
-                " Move the point onto the boundary or raise the tolerance.".format(
-                    format_point(point), distance, tolerance
-                )
+                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; the snap tolerance is {tolerance:.6g}."
+                " Move the point onto the boundary or raise the tolerance."
             )
         along.append(exterior.project(Point(point)))
     perimeter = positions[-1]
     along = [0.0 if position >= perimeter - merge else position for position in along]
     gap = abs(along[0] - along[1])
     if min(gap, perimeter - gap) <= max(tolerance, merge):
-        raise SplitPointError(
-            "Both split points snap to the same place {} of the boundary.".format(format_point(points[0]))
-        )
+        raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     for position in along:
         point = np.asarray(exterior.interpolate(position).coords[0])
         ring, positions = _insert_at(ring, positions, position, point, merge)
@@ -314,9 +300,7 @@ def orient_bank_lines(line_a, line_b):
     touching = shapely.intersection(LineString(a), LineString(b))
     if not touching.is_empty:
         raise CrossingLinesError(
-            "The two lines cross or touch at {}; they must bound a region between them.".format(
-                format_point(shapely.get_coordinates(touching)[0])
-            )
+            f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; they must bound a region between them."
         )
     same = np.hypot(*(a[0] - b[0])) + np.hypot(*(a[-1] - b[-1]))
     swapped = np.hypot(*(a[0] - b[-1])) + np.hypot(*(a[-1] - b[0]))

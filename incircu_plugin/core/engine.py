@@ -184,9 +184,7 @@ class _Boundary:
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
-        group, run = self.tree.query(
-            shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1])
-        )
+        group, run = self.tree.query(shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1]))
         pair, offset = _ranges(self.run_size[run])
         group, segment = group[pair], run[pair] * INDEX_RUN + offset
         keep = self._overlaps(segment, group_low[group], group_high[group])
@@ -223,9 +221,7 @@ def _left_normal(vectors):
 
 def _rotate(vectors, angles):
     cos, sin = np.cos(angles), np.sin(angles)
-    return np.stack(
-        [cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1
-    )
+    return np.stack([cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1)
 
 
 def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
@@ -383,8 +379,14 @@ def _solve(samples, index, boundary, trial, limit, floor):
         pair = active[query]
         sample = index[pair]
         t, along = _first_contacts(
-            point[pair, 0], point[pair, 1], direction[pair, 0], direction[pair, 1], scale[pair], slide[pair],
-            boundary, segment,
+            point[pair, 0],
+            point[pair, 1],
+            direction[pair, 0],
+            direction[pair, 1],
+            scale[pair],
+            slide[pair],
+            boundary,
+            segment,
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
         t[own_segment | (t <= floor)] = np.inf
@@ -530,7 +532,9 @@ def _medial_points(samples, sample, t, boundary):
     on_incoming = slide <= boundary.length[incoming]
     on_outgoing = ~on_incoming & (slide <= boundary.length[outgoing])
     foot = np.where(
-        on_incoming[:, None], point - slide[:, None] * boundary.unit[incoming], point + slide[:, None] * boundary.unit[outgoing]
+        on_incoming[:, None],
+        point - slide[:, None] * boundary.unit[incoming],
+        point + slide[:, None] * boundary.unit[outgoing],
     )
     position = samples.position[sample] + np.where(on_incoming, -slide, slide)
     return centre, radius, foot, position, on_incoming | on_outgoing
@@ -656,22 +660,18 @@ def centerline_from_chains(
         if spacing is None or spacing == 0:
             spacing = default_spacing(*chains)
         if not spacing > 0 or not np.isfinite(spacing):
-            raise IncirCuError("The spacing must be a positive distance, got {!r}.".format(spacing))
+            raise IncirCuError(f"The spacing must be a positive distance, got {spacing!r}.")
         spacings = [float(spacing)] * 2
     planned = sum(length / s for length, s in zip(lengths, spacings)) + sum(len(c) for c in chains)
     if planned > MAX_SAMPLES:
         raise IncirCuError(
-            "A spacing of {:.6g} would need about {:.3g} samples (at most {:.3g}); use a larger spacing.".format(
-                min(spacings), planned, MAX_SAMPLES
-            )
+            f"A spacing of {min(spacings):.6g} would need about {planned:.3g} samples (at most {MAX_SAMPLES:.3g}); use a larger spacing."
         )
 
     origin = 0.5 * (np.min(np.concatenate(chains), axis=0) + np.max(np.concatenate(chains), axis=0))
     local = [c - origin for c in chains]
     merge = COINCIDENCE_TOLERANCE * extent
-    closed = bool(
-        np.hypot(*(local[0][0] - local[1][0])) <= merge and np.hypot(*(local[0][-1] - local[1][-1])) <= merge
-    )
+    closed = bool(np.hypot(*(local[0][0] - local[1][0])) <= merge and np.hypot(*(local[0][-1] - local[1][-1])) <= merge)
     side = 1.0 if _signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
     boundary = _Boundary(local)
     width = max(typical_width(*local), merge)
@@ -680,12 +680,14 @@ def centerline_from_chains(
     limit = 4.0 * extent
     floor = 1e-12 * extent
 
-    samples = _Samples.concatenate([
-        _sample_chain(
-            i, local[i], boundary.position[i], side if i == 0 else -side, spacings[i], boundary.offset[i], fan_step
-        )
-        for i in (0, 1)
-    ])
+    samples = _Samples.concatenate(
+        [
+            _sample_chain(
+                i, local[i], boundary.position[i], side if i == 0 else -side, spacings[i], boundary.offset[i], fan_step
+            )
+            for i in (0, 1)
+        ]
+    )
     total = len(samples.point)
     first = np.empty(total)
     status = np.zeros(total, dtype=np.int8)
@@ -708,14 +710,16 @@ def centerline_from_chains(
         centre, radius, own_foot, own_position = (array[keep] for array in medial)
         other_foot, other_position = probe_contact[chosen][keep], probe_position[chosen][keep]
         on_a = probes.chain[chosen][keep] == 0
-        pieces.append((
-            centre,
-            radius,
-            np.where(on_a[:, None], own_foot, other_foot),
-            np.where(on_a[:, None], other_foot, own_foot),
-            np.where(on_a, own_position, other_position),
-            np.where(on_a, other_position, own_position),
-        ))
+        pieces.append(
+            (
+                centre,
+                radius,
+                np.where(on_a[:, None], own_foot, other_foot),
+                np.where(on_a[:, None], other_foot, own_foot),
+                np.where(on_a, own_position, other_position),
+                np.where(on_a, other_position, own_position),
+            )
+        )
 
     centre, radius, foot_a, foot_b, position_a, position_b = (
         np.concatenate([piece[k] for piece in pieces]) for k in range(6)
@@ -730,10 +734,12 @@ def centerline_from_chains(
     # on the bisector of those vertices, ordered by the direction of travel, perpendicular to foot_b - foot_a.
     across = foot_b - foot_a
     travel = side * np.stack([across[:, 1], -across[:, 0]], axis=1)
-    order = np.lexsort((
-        np.einsum("ij,ij->i", centre, travel),
-        position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge),
-    ))
+    order = np.lexsort(
+        (
+            np.einsum("ij,ij->i", centre, travel),
+            position_a / max(lengths[0], merge) + position_b / max(lengths[1], merge),
+        )
+    )
     centre, radius, foot_a, foot_b = centre[order], radius[order], foot_a[order], foot_b[order]
 
     if closed:

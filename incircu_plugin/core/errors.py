@@ -37,4 +37,4 @@ def format_point(xy):
     -------
     str
     """
-    return "({:.10g}, {:.10g})".format(float(xy[0]), float(xy[1]))
+    return f"({float(xy[0]):.10g}, {float(xy[1]):.10g})"

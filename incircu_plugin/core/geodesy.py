@@ -41,7 +41,7 @@ class LocalProjection:
     def __init__(self, geographic_crs, longitude, latitude):
         geographic = pyproj.CRS(geographic_crs)
         if not geographic.is_geographic:
-            raise InvalidGeometryError("{} is not a geographic CRS.".format(geographic.name))
+            raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
         conversion = AzimuthalEquidistantConversion(
             latitude_natural_origin=float(latitude), longitude_natural_origin=float(longitude)
         )
