@@ -41,6 +41,23 @@ def extent_of(*arrays):
     return max(diagonal, np.finfo(float).tiny)
 
 
+def signed_area(ring):
+    """Return the signed area of a ring, positive when it runs counter-clockwise.
+
+    Parameters
+    ----------
+    ring : ndarray of shape (n, 2)
+        Vertices, closed or not, CRS units.
+
+    Returns
+    -------
+    float
+        Square CRS units.
+    """
+    x, y = ring[:, 0], ring[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
 def as_coordinates(geometry, name="line"):
     """Return the vertices of a line as a float array, rejecting empty or non-finite input.
 

@@ -21,7 +21,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .chains import COINCIDENCE_TOLERANCE, extent_of
+from .chains import COINCIDENCE_TOLERANCE, extent_of, signed_area
 from .errors import IncirCuError
 
 #: Default spacing as a fraction of the typical width (see :func:`default_spacing`).
@@ -551,11 +551,6 @@ def _distinct(points, tolerance):
     return keep
 
 
-def _signed_area(ring):
-    x, y = ring[:, 0], ring[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-
-
 def typical_width(c1, c2):
     """Area between the chains divided by their mean length.
 
@@ -569,7 +564,7 @@ def typical_width(c1, c2):
     float
         Typical width, CRS units (for a long rectangle, its width).
     """
-    area = abs(_signed_area(np.concatenate([c1, c2[::-1]])))
+    area = abs(signed_area(np.concatenate([c1, c2[::-1]])))
     mean_length = 0.5 * (LineString(c1).length + LineString(c2).length)
     return area / mean_length if mean_length > 0 else 0.0
 
@@ -672,7 +667,7 @@ def centerline_from_chains(
     local = [c - origin for c in chains]
     merge = COINCIDENCE_TOLERANCE * extent
     closed = bool(np.hypot(*(local[0][0] - local[1][0])) <= merge and np.hypot(*(local[0][-1] - local[1][-1])) <= merge)
-    side = 1.0 if _signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
+    side = 1.0 if signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
     boundary = _Boundary(local)
     width = max(typical_width(*local), merge)
     fan_step = min(MAX_FAN_STEP, min(spacings) / width)

@@ -37,7 +37,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LinearRing, LineString, Polygon
 
-from .chains import COINCIDENCE_TOLERANCE, extent_of
+from .chains import COINCIDENCE_TOLERANCE, extent_of, signed_area
 from .errors import IncirCuError, InvalidGeometryError, format_point
 
 #: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
@@ -107,7 +107,7 @@ def bridge_islands(c1, c2, holes):
     rings = [ring - origin for ring in rings]
     merge = COINCIDENCE_TOLERANCE * extent
     tie = TIE_TOLERANCE * extent
-    region_on_left = _signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
+    region_on_left = signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
     islands = np.array([Polygon(ring) for ring in rings], dtype=object)
     island_tree = shapely.STRtree(islands)
     count = len(rings)
@@ -321,12 +321,6 @@ def _island_ring(hole, index):
     return np.concatenate([coordinates, coordinates[:1]])
 
 
-def _signed_area(ring):
-    """Return the signed area of a ring given as an (n, 2) array (closed or not): positive when counter-clockwise."""
-    x, y = ring[:, 0], ring[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-
-
 def _free_slit(ring, island, target, inside, island_tree, excluded, walls, slit_tree, merge):
     """Return the shortest free slit from an island to its host, or None.
 
@@ -502,7 +496,7 @@ def _around(ring, start, clockwise, merge):
     ndarray of shape (p, 2)
         First and last rows equal ``start``.
     """
-    if (_signed_area(ring) < 0.0) != clockwise:
+    if (signed_area(ring) < 0.0) != clockwise:
         ring = ring[::-1]
     loop = ring[:-1]
     line = LinearRing(ring)
