@@ -121,3 +121,23 @@ def test_long_river_beyond_one_chunk_of_samples():
     oracle = MedialOracle(case.chain_a, case.chain_b, region=case.polygon)
     distance = oracle.distance(np.asarray(result.line.coords)[1:-1])
     assert distance.max() <= 1e-7 * case.extent + 4.0 * oracle.error_bound
+
+
+#: A one-metre ditch in a projected CRS: extent about 1 while the coordinates are about 5e6, so the input's
+#: own rounding (half an ulp of 5e6, 5e-10 of the extent) is the floor every check has to live with.
+DITCH = geometry_cases.Placement(scale=0.01, angle=0.9, offset=(5.3e6, 4.9e6))
+DITCH_CASES = [
+    geometry_cases.rectangle(placement=DITCH),
+    geometry_cases.tapered_channel(placement=DITCH),
+    geometry_cases.annulus_sector(placement=DITCH),
+    geometry_cases.wavy_channel(seed=3, placement=DITCH, teeth=0.1),
+]
+
+
+@pytest.mark.parametrize("case", DITCH_CASES, ids=[c.name for c in DITCH_CASES])
+def test_small_extent_at_large_coordinates(case):
+    result = polygon_centerline(case.polygon, case.split_points, spacing=0.1 * case.width)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    oracle = MedialOracle(case.chain_a, case.chain_b, region=case.polygon)
+    distance = oracle.distance(np.asarray(result.line.coords)[1:-1])
+    assert distance.max() <= 1e-7 * case.extent + 4.0 * oracle.error_bound
