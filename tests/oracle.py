@@ -20,7 +20,7 @@ import math
 import numpy as np
 import pyvoronoi
 import shapely
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import Polygon
 
 #: Half-extent of the data on the oracle's integer grid (Boost.Polygon takes 32-bit coordinates).
 GRID_HALF_EXTENT = 2.0**30
@@ -82,12 +82,6 @@ def segment_distances(points, chain):
         away = q - t[..., None] * direction[None, :, :]
         result[first : first + block] = np.sqrt(np.min(np.einsum("ijk,ijk->ij", away, away), axis=1))
     return result
-
-
-def chain_positions(points, chain):
-    """Arc-length position along a polyline of the nearest point to each point (CRS units)."""
-    line = LineString(np.asarray(chain, dtype=float))
-    return shapely.line_locate_point(line, shapely.points(np.asarray(points, dtype=float)))
 
 
 class MedialOracle:
