@@ -136,3 +136,13 @@ def test_widths_and_length_properties():
     assert np.array_equal(result.widths, 2.0 * result.radii)
     assert result.widths[1:-1] == pytest.approx(10.0, rel=1e-12)
     assert result.length == pytest.approx(100.0, rel=1e-12)
+
+
+def test_inputs_are_not_modified():
+    case = geometry_cases.wavy_channel(seed=22)
+    chain_a, chain_b = case.chain_a.copy(), case.chain_b.copy()
+    polygon_wkb = case.polygon.wkb
+    centerline_from_chains(chain_a, chain_b, spacing=0.5)
+    polygon_centerline(case.polygon, case.split_points, spacing=0.5)
+    assert np.array_equal(chain_a, case.chain_a) and np.array_equal(chain_b, case.chain_b)
+    assert case.polygon.wkb == polygon_wkb
