@@ -58,6 +58,11 @@ TIE_TOLERANCE = 1e-10
 
 _CHUNK = 16_384
 
+#: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
+#: above the finest one for a chunk large enough.
+COARSE_STRIDE = 8
+COARSE_LEVELS = 2
+
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 4
 
@@ -418,35 +423,41 @@ def _solve(samples, index, boundary, trial, limit, floor):
 
         pending = active[~settled]
         best = best[~settled]
-        radius[pending] = np.where(np.isfinite(best), best, radius[pending] * 4.0)
+        radius[pending] = np.minimum(best, 2.0 * radius[pending])
         active = pending[radius[pending] <= limit]
     return first, status, contact, position
 
 
-def _solve_in_two_passes(samples, index, boundary, trial_radius, limit, floor):
-    """Settle ``index`` (sorted by position): every 8th sample from a global trial radius, then the rest
-    from trial radii interpolated between those, which keeps the candidate boxes tight."""
-    coarse = np.zeros(len(index), dtype=bool)
-    coarse[::8] = True
-    results = [None, None]
-    results[0] = _solve(samples, index[coarse], boundary, np.full(coarse.sum(), trial_radius), limit, floor)
-    known = np.isfinite(results[0][0])
-    fine = index[~coarse]
-    if np.any(known):
-        radius_known = samples.scale[index[coarse]][known] * results[0][0][known]
-        # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
-        along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
-        estimate = np.interp(along[~coarse], along[coarse][known], radius_known)
-        trial = 1.05 * estimate / samples.scale[fine]
-    else:
-        trial = np.full(len(fine), trial_radius)
-    results[1] = _solve(samples, fine, boundary, trial, limit, floor)
-    merged = []
-    for coarse_part, fine_part in zip(*results):
-        whole = np.empty((len(index),) + coarse_part.shape[1:], dtype=coarse_part.dtype)
-        whole[coarse], whole[~coarse] = coarse_part, fine_part
-        merged.append(whole)
-    return merged
+def _solve_coarse_to_fine(samples, index, boundary, trial_radius, limit, floor):
+    """Settle ``index`` (sorted by position) from coarse to fine.
+
+    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk) is
+    solved first from a global trial radius, then each finer level from trial radii interpolated between the coarser level's first
+    contacts: a trial close to the answer keeps the candidate boxes tight where the width varies.
+    """
+    count = len(index)
+    first = np.full(count, np.nan)
+    status = np.zeros(count, dtype=np.int8)
+    contact = np.empty((count, 2))
+    position = np.empty(count)
+    # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
+    along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
+    stride = COARSE_STRIDE**COARSE_LEVELS if count > COARSE_STRIDE ** (COARSE_LEVELS + 1) else COARSE_STRIDE
+    while stride >= 1:
+        level = np.zeros(count, dtype=bool)
+        level[::stride] = True
+        level &= np.isnan(first)
+        known = np.isfinite(first)
+        if np.any(known):
+            estimate = np.interp(along[level], along[known], samples.scale[index[known]] * first[known])
+            trial = 1.05 * estimate / samples.scale[index[level]]
+        else:
+            trial = np.full(level.sum(), trial_radius)
+        first[level], status[level], contact[level], position[level] = _solve(
+            samples, index[level], boundary, trial, limit, floor
+        )
+        stride //= COARSE_STRIDE
+    return first, status, contact, position
 
 
 def _edge_probes(samples, template, positions, boundary):
@@ -670,7 +681,7 @@ def centerline_from_chains(
     side = 1.0 if signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
     boundary = _Boundary(local)
     width = max(typical_width(*local), merge)
-    fan_step = min(MAX_FAN_STEP, min(spacings) / width)
+    fan_step = min(MAX_FAN_STEP, 2.0 * min(spacings) / width)
     trial_radius = 0.625 * width
     limit = 4.0 * extent
     floor = 1e-12 * extent
@@ -690,7 +701,7 @@ def centerline_from_chains(
     position = np.empty(total)
     for begin in range(0, total, _CHUNK):
         index = np.arange(begin, min(begin + _CHUNK, total))
-        first[index], status[index], contact[index], position[index] = _solve_in_two_passes(
+        first[index], status[index], contact[index], position[index] = _solve_coarse_to_fine(
             samples, index, boundary, trial_radius, limit, floor
         )
         if progress is not None and progress((index[-1] + 1) / total) is False:
