@@ -15,6 +15,7 @@ the best contact found so far. Work is done in chunks of samples, so memory stay
 """
 
 from dataclasses import dataclass, fields
+from functools import partial
 from typing import Callable, Optional
 
 import numpy as np
@@ -428,12 +429,13 @@ def _solve(samples, index, boundary, trial, limit, floor):
     return first, status, contact, position
 
 
-def _solve_coarse_to_fine(samples, index, boundary, trial_radius, limit, floor):
+def _solve_coarse_to_fine(samples, index, boundary, trial_radius, limit, floor, report):
     """Settle ``index`` (sorted by position) from coarse to fine.
 
     Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk) is
-    solved first from a global trial radius, then each finer level from trial radii interpolated between the coarser level's first
-    contacts: a trial close to the answer keeps the candidate boxes tight where the width varies.
+    solved first from a global trial radius, then each finer level from trial radii interpolated between
+    the coarser levels' first contacts: a trial close to the answer keeps the candidate boxes tight where
+    the width varies. ``report(done)`` is called after each level with the number of samples settled.
     """
     count = len(index)
     first = np.full(count, np.nan)
@@ -456,6 +458,7 @@ def _solve_coarse_to_fine(samples, index, boundary, trial_radius, limit, floor):
         first[level], status[level], contact[level], position[level] = _solve(
             samples, index[level], boundary, trial, limit, floor
         )
+        report(count - np.isnan(first).sum())
         stride //= COARSE_STRIDE
     return first, status, contact, position
 
@@ -699,13 +702,22 @@ def centerline_from_chains(
     status = np.zeros(total, dtype=np.int8)
     contact = np.empty((total, 2))
     position = np.empty(total)
+
+    def report(begin, done_in_chunk):
+        if progress is not None and progress((begin + done_in_chunk) / total) is False:
+            raise Cancelled()
+
     for begin in range(0, total, _CHUNK):
         index = np.arange(begin, min(begin + _CHUNK, total))
         first[index], status[index], contact[index], position[index] = _solve_coarse_to_fine(
-            samples, index, boundary, trial_radius, limit, floor
+            samples,
+            index,
+            boundary,
+            trial_radius,
+            limit,
+            floor,
+            partial(report, begin),
         )
-        if progress is not None and progress((index[-1] + 1) / total) is False:
-            raise Cancelled()
     pieces = []
     for probes, probe_first, probe_status, probe_contact, probe_position in (
         (samples, first, status, contact, position),
