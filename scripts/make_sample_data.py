@@ -90,7 +90,9 @@ def _round(geometry, digits):
 def to_geographic(geometry):
     """Transform a geometry from EPSG:2180 to EPSG:4326 (longitude, latitude)."""
     transformer = pyproj.Transformer.from_crs(PROJECTED, 4326, always_xy=True)
-    return shapely.transform(geometry, lambda xy: np.column_stack(transformer.transform(xy[:, 0], xy[:, 1])))
+    return shapely.transform(
+        geometry, lambda xy: np.column_stack(transformer.transform(xy[:, 0].tolist(), xy[:, 1].tolist()))
+    )
 
 
 def sample_layers():
