@@ -65,10 +65,10 @@ COARSE_STRIDE = 8
 COARSE_LEVELS = 2
 
 #: Consecutive samples whose candidate boxes share one spatial-index query.
-QUERY_GROUP = 4
+QUERY_GROUP = 2
 
 #: Consecutive segments that share one entry of the spatial index.
-INDEX_RUN = 8
+INDEX_RUN = 4
 
 
 class Cancelled(Exception):
@@ -167,13 +167,14 @@ class _Boundary:
         self.unit = delta / self.length[:, None]
         self.start_x, self.start_y = self.start[:, 0].copy(), self.start[:, 1].copy()
         self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
-        self.low = np.minimum(self.start, self.end)
-        self.high = np.maximum(self.start, self.end)
-        # The index holds runs of INDEX_RUN consecutive segments: 8x fewer GEOS geometries to build, store
-        # and search; a run's hits are filtered segment by segment.
+        low, high = np.minimum(self.start, self.end), np.maximum(self.start, self.end)
+        self.low_x, self.low_y = low[:, 0].copy(), low[:, 1].copy()
+        self.high_x, self.high_y = high[:, 0].copy(), high[:, 1].copy()
+        # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer GEOS geometries to
+        # build, store and search; a run's hits are filtered segment by segment.
         run_start = np.arange(0, len(self.start), INDEX_RUN)
-        self.run_low = np.minimum.reduceat(self.low, run_start)
-        self.run_high = np.maximum.reduceat(self.high, run_start)
+        self.run_low = np.minimum.reduceat(low, run_start)
+        self.run_high = np.maximum.reduceat(high, run_start)
         self.run_size = np.diff(np.append(run_start, len(self.start)))
         self.tree = shapely.STRtree(
             shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
@@ -206,12 +207,11 @@ class _Boundary:
 
     def _overlaps(self, segment, low, high):
         """Whether each segment's bounding box meets the matching box ``low..high``."""
-        return (
-            (self.low[segment, 0] <= high[:, 0])
-            & (self.high[segment, 0] >= low[:, 0])
-            & (self.low[segment, 1] <= high[:, 1])
-            & (self.high[segment, 1] >= low[:, 1])
-        )
+        keep = self.low_x[segment] <= high[:, 0]
+        keep &= self.high_x[segment] >= low[:, 0]
+        keep &= self.low_y[segment] <= high[:, 1]
+        keep &= self.high_y[segment] >= low[:, 1]
+        return keep
 
 
 def _ranges(counts):
