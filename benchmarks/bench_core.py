@@ -8,7 +8,9 @@ Rows:
   sample, peak resident memory of a fresh process (input generation included), and growth against the
   previous row;
 - the constant-width meander of issue 2 (length 2 km, width 20, 2,333 boundary vertices, spacing = width/10),
-  median of ``--repeats`` runs, end to end from the chains.
+  median of ``--repeats`` runs, end to end from the chains;
+- the same meander through ``polygon_centerline`` without split points (ends found automatically), and with
+  40 islands (radius 2 to 4, off the axis; main-channel mode), median of ``--repeats`` runs.
 
 Targets (issue 2): <= 5 us per sample at 10^6 samples on one core, growth <= 11x per 10x samples, peak
 memory <= 1 GiB at 10^6 samples, meander <= 20 ms.
@@ -58,6 +60,38 @@ def _measure_meander(repeats):
     return statistics.median(times), case.vertex_count
 
 
+def _measure_hydro(repeats):
+    """Median times (s) of the meander without split points and of the meander with 40 islands."""
+    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
+    import geometry_cases
+    import numpy as np
+    from shapely.geometry import Point, Polygon
+
+    from incircu_plugin.core import polygon_centerline
+
+    case = geometry_cases.meander_with_vertex_count(2333)
+    axis = np.asarray(case.axis_line.coords)
+    rng = np.random.default_rng(0)
+    stations = np.linspace(0.05, 0.95, 40) * (len(axis) - 1)
+    islands = [
+        Point(axis[int(i)] + (0.0, rng.uniform(-4.0, 4.0))).buffer(rng.uniform(2.0, 4.0), quad_segs=4) for i in stations
+    ]
+    with_islands = Polygon(case.polygon.exterior.coords, [island.exterior.coords for island in islands])
+    runs = {
+        "no split points": lambda: polygon_centerline(case.polygon, spacing=case.width / 10.0),
+        "40 islands": lambda: polygon_centerline(with_islands, case.split_points, spacing=case.width / 10.0),
+    }
+    times = {}
+    for name, run in runs.items():
+        samples = []
+        for _ in range(repeats):
+            start = time.perf_counter()
+            run()
+            samples.append(time.perf_counter() - start)
+        times[name] = statistics.median(samples)
+    return times
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--max-exponent", type=int, default=6, help="largest river: 10**N vertices")
@@ -100,6 +134,8 @@ def main():
         f"\nConstant-width meander (2 km, width 20, {vertices:,} boundary vertices, spacing 2): "
         f"median {median * 1e3:.1f} ms over {arguments.repeats} runs (target <= 20 ms)."
     )
+    for name, seconds in _measure_hydro(arguments.repeats).items():
+        print(f"The same meander, {name}: median {seconds * 1e3:.1f} ms over {arguments.repeats} runs.")
 
 
 if __name__ == "__main__":
