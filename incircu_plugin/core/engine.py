@@ -162,6 +162,8 @@ class _Boundary:
         self.position = positions
         self.segment_position = np.concatenate([p[:-1] for p in positions])
         self.segment_end_position = np.concatenate([p[1:] for p in positions])
+        self.last_of_chain = np.zeros(count, dtype=bool)
+        self.last_of_chain[np.cumsum([len(c) - 1 for c in chains]) - 1] = True
         delta = self.end - self.start
         self.length = np.hypot(*delta.T)
         self.unit = delta / self.length[:, None]
@@ -296,12 +298,37 @@ def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
     )
 
 
+def _vertex_contact(offset, height, b_along, b_across, scale, slide):
+    """First contact ``t`` with a segment's vertex, inf when none.
+
+    In the segment's frame the vertex lies ``offset`` along the segment from the sample point and ``-height``
+    across it; ``(b_along, b_across)`` is the sample's direction in that frame. With vertex - point =
+    x*b + y*b_perp, the contact solves slide^2 t^2 - 2 x t + |d|^2 = 0, whose discriminant factors as
+    (x*scale - |y|*slide) (x*scale + |y|*slide); the first factor is, up to a constant, the vertex's distance
+    from an incident line of a convex corner. A vertex on that line is touched as the disks slide along it (a
+    double root), so a factor that rounding pushed just below zero is taken as zero: the contact stays where it
+    is under tiny perturbations of the input.
+    """
+    x = b_along * offset - b_across * height
+    y = np.abs(b_along * height + b_across * offset)
+    squared = offset * offset + height * height
+    near = x * scale - y * slide
+    far = x * scale + y * slide
+    near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
+    return np.where((x > 0) & (near >= 0), t, np.inf)
+
+
 def _first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     """First contact ``t`` of each (sample, segment) pair, inf when the disk family never touches it.
 
     ``(px, py)`` is the sample point, ``(bx, by)`` its unit direction, ``scale`` the radius per unit of
     ``t`` (``sin`` of the half angle at a convex vertex, else 1) and ``slide`` the matching ``cos`` (else 0).
     Returns ``t`` and where on the segment the contact is, as a length from its start.
+
+    A segment answers for its start vertex only (its end is the next segment's start, which is a candidate
+    whenever that vertex can be touched); the last segment of a chain answers for its end too.
     """
     ax, ay = boundary.start_x[segment], boundary.start_y[segment]
     ux, uy = boundary.unit_x[segment], boundary.unit_y[segment]
@@ -312,33 +339,19 @@ def _first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     b_along = bx * ux + by * uy
     b_across = by * ux - bx * uy
 
-    def through_vertex(offset_along):
-        # With d = vertex - point = x*b + y*b_perp, the contact solves slide^2 t^2 - 2 x t + |d|^2 = 0, whose
-        # discriminant factors as (x*scale - |y|*slide) (x*scale + |y|*slide); the first factor is, up to a
-        # constant, the vertex's distance from an incident line of a convex corner. A vertex on that line is
-        # touched as the disks slide along it (a double root), so a factor that rounding pushed just below zero
-        # is taken as zero: the contact stays where it is under tiny perturbations of the input.
-        ox = offset_along - along_p
-        x = b_along * ox - b_across * height
-        y = np.abs(b_along * height + b_across * ox)
-        squared = ox * ox + height * height
-        near = x * scale - y * slide
-        far = x * scale + y * slide
-        near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
-        return np.where((x > 0) & (near >= 0), t, np.inf)
-
-    t_start = through_vertex(0.0)
-    t_end = through_vertex(length)
+    t_start = _vertex_contact(-along_p, height, b_along, b_across, scale, slide)
+    t_end = np.full(len(segment), np.inf)
+    last = np.flatnonzero(boundary.last_of_chain[segment])
+    t_end[last] = _vertex_contact(
+        length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
+    )
 
     side = np.where(height < 0, -1.0, 1.0)
-    normal_b = side * b_across
     distance = side * height
-    denominator = scale - normal_b
+    denominator = scale - side * b_across
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
-        along = along_p + t_tangent * (bx * ux + by * uy)
+        along = along_p + t_tangent * b_along
     slack = ALONG_TOLERANCE * length
     tangent = (distance > 0) & (denominator > 1e-12) & (along >= -slack) & (along <= length + slack)
     # A tangency inside the segment is its first contact, and it is well conditioned; a contact through an
