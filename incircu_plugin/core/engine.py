@@ -423,8 +423,8 @@ def _solve(samples, index, boundary, trial, limit, floor):
         winner &= t_other <= best_own[pair] * (1.0 + TIE_TOLERANCE)
         winner &= settled[np.searchsorted(active, pair)]
         winner_pair = np.flatnonzero(winner)
-        _, unique = np.unique(pair[winner_pair], return_index=True)
-        chosen = winner_pair[unique]
+        # Pairs are sorted by sample: keep each sample's first winning pair.
+        chosen = winner_pair[np.diff(pair[winner_pair], prepend=-1) != 0]
         chosen_sample, chosen_segment = pair[chosen], segment[chosen]
         status[chosen_sample] = np.where(t[chosen] * (1.0 + TIE_TOLERANCE) < best_own[chosen_sample], CLEAR, TIED)
         first[chosen_sample] = t[chosen]
