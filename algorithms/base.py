@@ -7,8 +7,8 @@ from qgis.core import (
     QgsProcessingAlgorithm,
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
-    QgsProcessingParameterDistance,
     QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterNumber,
     QgsProcessingUtils,
 )
 from qgis.PyQt.QtCore import QCoreApplication
@@ -93,24 +93,28 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.parameter_help[output.name()] = help_text
         self.addOutput(output)
 
-    def add_spacing_parameter(self, parent_name):
-        """Add ``SPACING`` (distance between centerline samples, units of ``parent_name``'s layer)."""
-        spacing = QgsProcessingParameterDistance(
-            self.SPACING,
-            self.tr("Distance between centerline vertices (0 = automatic)"),
-            0.0,
-            parent_name,
-            minValue=0.0,
+    @staticmethod
+    def length_parameter(name, description, default):
+        """A non-negative length in layer units, or in metres for a layer in degrees.
+
+        A plain number rather than ``QgsProcessingParameterDistance``: for a layer in degrees that widget
+        would label the value "degrees", while IncirCu computes geographic layers in metres.
+        """
+        return QgsProcessingParameterNumber(
+            name, description, QgsProcessingParameterNumber.Type.Double, default, minValue=0.0
         )
+
+    def add_spacing_parameter(self):
+        """Add ``SPACING`` (distance between boundary samples, layer units or metres)."""
         self.add_parameter(
-            spacing,
+            self.length_parameter(self.SPACING, self.tr("Boundary sampling distance (0 = automatic)"), 0.0),
             self.tr(
                 "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
                 "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.",
             ),
         )
 
-    def add_result_parameters(self, parent_name):
+    def add_result_parameters(self):
         """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
         self.add_parameter(
             QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
@@ -167,13 +171,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
         )
         self.add_parameter(
-            QgsProcessingParameterDistance(
-                self.TRANSECT_INTERVAL,
-                self.tr("Distance between transects (0 = mean width)"),
-                0.0,
-                parent_name,
-                minValue=0.0,
-            ),
+            self.length_parameter(self.TRANSECT_INTERVAL, self.tr("Distance between transects (0 = mean width)"), 0.0),
             self.tr(
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
                 "degrees); 0 uses the mean width of each centerline.",

@@ -6,6 +6,7 @@ from qgis.core import (
     QgsGeometry,
     QgsLineString,
     QgsMultiLineString,
+    QgsWkbTypes,
 )
 
 from ..incircu_plugin.core.geodesy import LocalProjection
@@ -17,13 +18,16 @@ def to_shapely(geometry):
     Parameters
     ----------
     geometry : QgsGeometry
-        Any geometry; Z and M values are dropped.
+        Any geometry; curves are approximated by straight segments (QGIS's default tolerance), Z and M values
+        are dropped.
 
     Returns
     -------
     shapely.Geometry
     """
     flat = QgsGeometry(geometry)
+    if QgsWkbTypes.isCurvedType(flat.wkbType()):
+        flat.convertToStraightSegment()
     flat.get().dropZValue()
     flat.get().dropMValue()
     return shapely.from_wkb(bytes(flat.asWkb()))

@@ -72,8 +72,8 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             ),
             self.tr("Optional; required together with PAIR_FIELD_A."),
         )
-        self.add_spacing_parameter(self.LINES_A)
-        self.add_result_parameters(self.LINES_A)
+        self.add_spacing_parameter()
+        self.add_result_parameters()
 
     def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)

@@ -9,10 +9,11 @@ from qgis.core import (
     QgsFields,
     QgsGeometry,
     QgsPointXY,
+    QgsProcessingException,
     QgsProcessingUtils,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
+from qgis.PyQt.QtCore import QCoreApplication, QVariant
 
 from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
 from .convert import collect_lines, from_shapely, line_with_m
@@ -68,7 +69,9 @@ def width_statistics(results):
     """Summarise one or several centerline results for the attribute table.
 
     The ends of a centerline lie on the outline, where the width is zero; statistics are taken over the
-    vertices with a positive width.
+    vertices with a positive width. The mean is over the length of the line between the first and the last
+    such vertex (vertices are denser near the ends and at branch points, so a plain vertex mean would be
+    biased).
 
     Parameters
     ----------
@@ -78,24 +81,27 @@ def width_statistics(results):
     Returns
     -------
     dict
-        ``length`` (sum), ``width_min``, ``width_mean`` (mean over vertices), ``width_max``, ``n_vertices``
-        (sum), ``ends_found`` (True when every part had automatic ends); lengths in working-frame units.
+        ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
+        (True when every part had automatic ends); lengths in working-frame units.
     """
-    widths = [float(w) for result in results for w in result.widths if w > 0]
+    widths, integral, span = [], 0.0, 0.0
+    for result in results:
+        positive = result.widths > 0
+        width, chainage = result.widths[positive], vertex_chainages(result)[positive]
+        widths.extend(float(w) for w in width)
+        if len(width) > 1:
+            integral += float(np.sum(0.5 * (width[1:] + width[:-1]) * np.diff(chainage)))
+            span += float(chainage[-1] - chainage[0])
+    if widths and span <= 0:
+        integral, span = sum(widths), len(widths)
     return {
         "length": float(sum(result.length for result in results)),
         "width_min": min(widths) if widths else None,
-        "width_mean": sum(widths) / len(widths) if widths else None,
+        "width_mean": integral / span if widths else None,
         "width_max": max(widths) if widths else None,
         "n_vertices": int(sum(len(result.line.coords) for result in results)),
         "ends_found": all(bool(result.ends_found) for result in results),
     }
-
-
-def automatic_interval(results):
-    """Return the default transect interval: the mean width of the centerlines (working-frame units)."""
-    widths = [float(w) for result in results for w in result.widths if w > 0]
-    return sum(widths) / len(widths) if widths else 0.0
 
 
 class CenterlineWriter:
@@ -127,6 +133,9 @@ class CenterlineWriter:
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(CENTERLINE_FIELDS))
+        # A GeoPackage's ``fid`` must stay unique: the second and later parts of a feature written separately
+        # leave it empty, so the provider assigns one.
+        self.fid_index = input_fields.lookupField("fid")
         self.sink, self.sink_id = algorithm.parameterAsSink(
             parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
         )
@@ -179,10 +188,18 @@ class CenterlineWriter:
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
             statistics = width_statistics([result for _, result in group])
+            values = list(attributes)
+            if group is not groups[0] and self.fid_index >= 0:
+                values[self.fid_index] = None
             feature = QgsFeature(self.fields)
             feature.setGeometry(geometry)
-            feature.setAttributes(list(attributes) + [statistics[name] for name, _ in CENTERLINE_FIELDS])
-            self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
+            feature.setAttributes(values + [statistics[name] for name, _ in CENTERLINE_FIELDS])
+            if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
+                raise QgsProcessingException(
+                    QCoreApplication.translate("IncirCuAlgorithm", "Could not write a centerline: {}").format(
+                        self.sink.lastError() if hasattr(self.sink, "lastError") else ""
+                    )
+                )
             self.centerline_count += 1
         for part_index, result in parts:
             self._write_extras(source_fid, part_index, result, frame)
@@ -206,7 +223,7 @@ class CenterlineWriter:
                 disc.setAttributes([source_fid, part_index, circle.chainage, circle.radius])
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
-            interval = self.transect_interval or automatic_interval([result])
+            interval = self.transect_interval or width_statistics([result])["width_mean"] or 0.0
             if interval <= 0:
                 return
             for transect in transects(result, interval):

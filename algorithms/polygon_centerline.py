@@ -8,7 +8,6 @@ from qgis.core import (
     QgsPointXY,
     QgsProcessing,
     QgsProcessingParameterBoolean,
-    QgsProcessingParameterDistance,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
     QgsRectangle,
@@ -28,9 +27,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
-
-    #: Core values of the ``ISLANDS`` choices, in the order of the enum.
-    ISLAND_MODES = ("main_channel", "ignore")
 
     ICON = "polygoncenterline.svg"
 
@@ -75,15 +71,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_parameter(
-            QgsProcessingParameterDistance(
-                self.SNAP_TOLERANCE, self.tr("Split point snapping tolerance"), 1.0, self.INPUT, minValue=0.0
-            ),
+            self.length_parameter(self.SNAP_TOLERANCE, self.tr("Split point snapping tolerance"), 1.0),
             self.tr(
                 "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees)."
+                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
             ),
         )
-        self.add_spacing_parameter(self.INPUT)
+        self.add_spacing_parameter()
         self.add_parameter(
             QgsProcessingParameterEnum(
                 self.ISLANDS,
@@ -103,7 +97,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "input feature."
             ),
         )
-        self.add_result_parameters(self.INPUT)
+        self.add_result_parameters()
 
     def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)
@@ -114,7 +108,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             split_source = run.source(self.SPLIT_POINTS, QgsWkbTypes.GeometryType.PointGeometry)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
-        islands = self.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        # The enum's choices are in the order of the core's ISLAND_MODES.
+        islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 

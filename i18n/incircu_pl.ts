@@ -4,37 +4,37 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="121"/>
+        <location filename="../algorithms/base.py" line="125"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="98"/>
-        <source>Distance between centerline vertices (0 = automatic)</source>
-        <translation>Odległość między wierzchołkami linii środkowej (0 = automatycznie)</translation>
+        <location filename="../algorithms/base.py" line="109"/>
+        <source>Boundary sampling distance (0 = automatic)</source>
+        <translation>Odległość próbkowania obrysu (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="115"/>
+        <location filename="../algorithms/base.py" line="119"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="132"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="144"/>
+        <location filename="../algorithms/base.py" line="148"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="156"/>
+        <location filename="../algorithms/base.py" line="160"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="169"/>
+        <location filename="../algorithms/base.py" line="173"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
@@ -104,39 +104,44 @@
         <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="105"/>
+        <location filename="../algorithms/base.py" line="109"/>
         <source>Distance between consecutive samples of the boundary, in layer units (metres for a layer in degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.</source>
         <translation>Odległość między kolejnymi próbkami obrysu, w jednostkach warstwy (w metrach dla warstwy w stopniach). 0 dobiera ją na podstawie kształtu. Mniejsze wartości dają gładszą, ale wolniej liczoną linię środkową.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="115"/>
+        <location filename="../algorithms/base.py" line="119"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="121"/>
+        <location filename="../algorithms/base.py" line="125"/>
         <source>Line layer: input attributes plus length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width), n_vertices and ends_found.</source>
         <translation>Warstwa liniowa: atrybuty wejściowe oraz length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości), n_vertices i ends_found.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="132"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="144"/>
+        <location filename="../algorithms/base.py" line="148"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="156"/>
+        <location filename="../algorithms/base.py" line="160"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, every TRANSECT_INTERVAL, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową co TRANSECT_INTERVAL, z szerokością i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="169"/>
+        <location filename="../algorithms/base.py" line="173"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/outputs.py" line="198"/>
+        <source>Could not write a centerline: {}</source>
+        <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
 </context>
 <context>
@@ -235,87 +240,87 @@
 <context>
     <name>PolygonCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="41"/>
+        <location filename="../algorithms/polygon_centerline.py" line="37"/>
         <source>Centerline of polygons (IncirCu)</source>
         <translation>Linia środkowa poligonów (IncirCu)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="44"/>
+        <location filename="../algorithms/polygon_centerline.py" line="40"/>
         <source>centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="47"/>
+        <location filename="../algorithms/polygon_centerline.py" line="43"/>
         <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two SPLIT_POINTS lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
         <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma punktami SPLIT_POINTS leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="58"/>
+        <location filename="../algorithms/polygon_centerline.py" line="54"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="58"/>
+        <location filename="../algorithms/polygon_centerline.py" line="54"/>
         <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part.</source>
         <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="64"/>
+        <location filename="../algorithms/polygon_centerline.py" line="60"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="64"/>
+        <location filename="../algorithms/polygon_centerline.py" line="60"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within SNAP_TOLERANCE of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do SNAP_TOLERANCE od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="77"/>
+        <location filename="../algorithms/polygon_centerline.py" line="73"/>
         <source>Split point snapping tolerance</source>
         <translation>Tolerancja przyciągania punktów podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="77"/>
-        <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees).</source>
-        <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach).</translation>
+        <location filename="../algorithms/polygon_centerline.py" line="73"/>
+        <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees); 0 = a millionth of the polygon&apos;s size.</source>
+        <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="87"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Pass through the main channel: the line never crosses an island and goes round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
         <translation>Prowadź głównym korytem: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. Pomijaj wyspy: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="99"/>
+        <location filename="../algorithms/polygon_centerline.py" line="93"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="99"/>
+        <location filename="../algorithms/polygon_centerline.py" line="93"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="156"/>
+        <location filename="../algorithms/polygon_centerline.py" line="151"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="158"/>
+        <location filename="../algorithms/polygon_centerline.py" line="153"/>
         <source>no split points given, ends found automatically</source>
         <translation>nie podano punktów podziału, końce wyznaczono automatycznie</translation>
     </message>

@@ -146,3 +146,12 @@ def test_inputs_are_not_modified():
     polygon_centerline(case.polygon, case.split_points, spacing=0.5)
     assert np.array_equal(chain_a, case.chain_a) and np.array_equal(chain_b, case.chain_b)
     assert case.polygon.wkb == polygon_wkb
+
+
+def test_progress_of_a_multipart_geometry_never_goes_back():
+    parts = MultiPolygon([box(0.0, 0.0, 100.0, 10.0), box(0.0, 20.0, 100.0, 30.0), box(0.0, 40.0, 100.0, 50.0)])
+    seen = []
+    outcomes = multipolygon_centerlines(parts, spacing=1.0, progress=seen.append)
+    assert all(outcome.error is None for outcome in outcomes)
+    assert seen == sorted(seen) and seen[-1] == pytest.approx(1.0)
+    assert sum(fraction <= 1.0 / 3.0 for fraction in seen) >= 1

@@ -19,6 +19,7 @@ from incircu_plugin.core import (
     IncirCuError,
     InvalidGeometryError,
     SplitPointError,
+    centerline_from_chains,
     lines_centerline,
     polygon_centerline,
     split_polygon,
@@ -287,3 +288,21 @@ def test_errors_leave_later_calls_working():
             polygon_centerline(bad, ENDS, spacing=1.0)
     result = polygon_centerline(RECTANGLE, ENDS, spacing=1.0)
     assert result.line.equals_exact(expected.line, 0.0)
+
+
+def test_lines_on_one_line_enclose_nothing():
+    with pytest.raises(ChainError, match="no area"):
+        lines_centerline([(0.0, 0.0), (10.0, 0.0)], [(20.0, 0.0), (30.0, 0.0)])
+
+
+@pytest.mark.parametrize(
+    "chain, error",
+    [
+        ([(0.0, 0.0)], ChainError),
+        ([(0.0, 0.0), (math.nan, 0.0)], InvalidGeometryError),
+        ([(0.0, 0.0), (0.0, 0.0)], ChainError),
+    ],
+)
+def test_the_engine_checks_its_chains_too(chain, error):
+    with pytest.raises(error):
+        centerline_from_chains(np.array(chain), np.array(BANK_B), spacing=1.0)

@@ -453,3 +453,33 @@ def test_missing_or_old_shapely_gives_an_install_message(provider, monkeypatch):
             {"LINES_A": str(DATA / "crossing_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")},
         )
     assert "1.8.5" in str(raised.value) and "pip install" in str(raised.value)
+
+
+def test_separate_parts_from_a_geopackage_keep_every_part(provider, tmp_path):
+    # A GeoPackage's fid is unique: the second part of a feature written on its own must not reuse it.
+    written = processing.run(
+        "native:reprojectlayer",
+        {"INPUT": str(DATA / "multipart_2180.geojson"), "TARGET_CRS": "EPSG:2180", "OUTPUT": str(tmp_path / "in.gpkg")},
+    )["OUTPUT"]
+    target = tmp_path / "parts.gpkg"
+    results, _ = run("polygoncenterline", {"INPUT": written, "SEPARATE_PARTS": True, "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 2
+    output = QgsVectorLayer(str(target), "parts", "ogr")
+    assert output.featureCount() == 2
+
+
+def test_curved_polygons_are_linearised(provider):
+    straight = QgsGeometry.fromWkt("Polygon ((0 0, 100 0, 100 10, 0 10, 0 0))")
+    curved = QgsGeometry.fromWkt(
+        "CurvePolygon (CompoundCurve ((0 0, 100 0), CircularString (100 0, 105 5, 100 10), (100 10, 0 10, 0 0)))"
+    )
+    source = QgsVectorLayer("CurvePolygon?crs=EPSG:2180", "curved", "memory")
+    feature = QgsFeature()
+    feature.setGeometry(curved)
+    source.dataProvider().addFeatures([feature])
+    results, feedback = run("polygoncenterline", {"INPUT": source})
+    assert results["CENTERLINE_COUNT"] == 1, feedback.warnings
+    line = as_shapely(next(results["OUTPUT"].getFeatures()).geometry())
+    # The ends were found on the linearised outline: the line runs along y = 5 over the straight part.
+    assert line.length >= straight.boundingBox().width() - 10.0
+    assert abs(line.interpolate(0.5, normalized=True).y - 5.0) <= 1e-6

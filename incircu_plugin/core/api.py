@@ -1,6 +1,7 @@
 """Public entry points: the centerline of a polygon, of a multipart polygon, and between two lines."""
 
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Optional
 
 import numpy as np
@@ -133,6 +134,11 @@ class PartOutcome:
     error: Optional[IncirCuError]
 
 
+def _part_progress(progress, index, count, fraction):
+    """Report the progress of part ``index`` of ``count`` as a fraction of the whole geometry."""
+    return progress((index + fraction) / count)
+
+
 def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None, **options):
     """Centerline of each part of a polygon or multipolygon.
 
@@ -180,16 +186,23 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     if snap_tolerance is None:
         snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
     points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    progress = options.pop("progress", None)
     outcomes = []
     for index, part in enumerate(parts):
         try:
             mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
-                    f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; it needs 2 (or none, to find"
-                    " its ends automatically)."
+                    f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
+                    "it needs 2 (or none, to find its ends automatically)."
                 )
-            result = polygon_centerline(part, mine or None, snap_tolerance=snap_tolerance, **options)
+            result = polygon_centerline(
+                part,
+                mine or None,
+                snap_tolerance=snap_tolerance,
+                progress=None if progress is None else partial(_part_progress, progress, index, len(parts)),
+                **options,
+            )
             outcomes.append(PartOutcome(index, result, None))
         except IncirCuError as error:
             outcomes.append(PartOutcome(index, None, error))

@@ -323,4 +323,6 @@ def orient_bank_lines(line_a, line_b):
     swapped = np.hypot(*(a[0] - b[-1])) + np.hypot(*(a[-1] - b[0]))
     if swapped < same:
         b = b[::-1].copy()
+    if abs(signed_area(np.concatenate([a, b[::-1]]))) <= COINCIDENCE_TOLERANCE * extent_of(a, b) ** 2:
+        raise ChainError("The two lines enclose no area between them (they lie on one line).")
     return a, b

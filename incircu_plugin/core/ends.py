@@ -43,6 +43,7 @@ on where the ring starts or which way it turns.
 
 import heapq
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 import shapely
@@ -106,7 +107,7 @@ class EndsResult:
     start: Point
     end: Point
     elongated: bool
-    trunk: LineString = None
+    trunk: Optional[LineString] = None
 
 
 def find_ends(polygon):

@@ -14,12 +14,13 @@ Example
 True
 """
 
+import functools
 from dataclasses import replace
 
 import numpy as np
 import pyproj
 import shapely
-from pyproj.crs.coordinate_operation import AzimuthalEquidistantConversion
+from pyproj.enums import TransformDirection
 
 from .errors import InvalidGeometryError
 
@@ -39,15 +40,12 @@ class LocalProjection:
     """
 
     def __init__(self, geographic_crs, longitude, latitude):
-        geographic = pyproj.CRS(geographic_crs)
-        if not geographic.is_geographic:
-            raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
-        conversion = AzimuthalEquidistantConversion(
-            latitude_natural_origin=float(latitude), longitude_natural_origin=float(longitude)
+        # A bare PROJ pipeline on the CRS's ellipsoid: building CRS objects and transformers between them would
+        # cost some 40 ms per feature.
+        self._transformer = pyproj.Transformer.from_pipeline(
+            "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad "
+            f"+step +proj=aeqd +lat_0={float(latitude)!r} +lon_0={float(longitude)!r} {_ellipsoid(geographic_crs)}"
         )
-        local = pyproj.crs.ProjectedCRS(conversion=conversion, geodetic_crs=geographic.geodetic_crs)
-        self._forward = pyproj.Transformer.from_crs(geographic, local, always_xy=True)
-        self._inverse = pyproj.Transformer.from_crs(local, geographic, always_xy=True)
 
     @classmethod
     def around(cls, geometry, geographic_crs="EPSG:4326"):
@@ -68,19 +66,18 @@ class LocalProjection:
         west, south, east, north = geometry.bounds
         return cls(geographic_crs, (west + east) / 2.0, (south + north) / 2.0)
 
-    @staticmethod
-    def _apply(transformer, geometry):
+    def _apply(self, direction, geometry):
         if isinstance(geometry, shapely.Geometry):
-            return shapely.transform(geometry, lambda xy: _transform_array(transformer, xy))
-        return _transform_array(transformer, np.asarray(geometry, dtype=float))
+            return shapely.transform(geometry, lambda xy: _transform_array(self._transformer, xy, direction))
+        return _transform_array(self._transformer, np.asarray(geometry, dtype=float), direction)
 
     def to_local(self, geometry):
         """Project a geometry or an ``(n, 2)`` array from degrees to local metres."""
-        return self._apply(self._forward, geometry)
+        return self._apply(TransformDirection.FORWARD, geometry)
 
     def to_geographic(self, geometry):
         """Bring a geometry or an ``(n, 2)`` array from local metres back to degrees."""
-        return self._apply(self._inverse, geometry)
+        return self._apply(TransformDirection.INVERSE, geometry)
 
     def result_to_geographic(self, result):
         """Bring a :class:`CenterlineResult` back to degrees; its radii stay in metres."""
@@ -92,9 +89,21 @@ class LocalProjection:
         )
 
 
-def _transform_array(transformer, xy):
+@functools.lru_cache(maxsize=16)
+def _ellipsoid(geographic_crs):
+    """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
+    geographic = pyproj.CRS(geographic_crs)
+    if not geographic.is_geographic:
+        raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
+    ellipsoid = geographic.ellipsoid
+    if ellipsoid.inverse_flattening:
+        return f"+a={ellipsoid.semi_major_metre!r} +rf={ellipsoid.inverse_flattening!r}"
+    return f"+R={ellipsoid.semi_major_metre!r}"
+
+
+def _transform_array(transformer, xy, direction):
     flat = np.asarray(xy, dtype=float).reshape(-1, 2)
     # pyproj takes a one-element array for a scalar (deprecated in numpy); give it at least two points.
     padded = np.concatenate([flat, flat[:1]]) if len(flat) == 1 else flat
-    x, y = transformer.transform(padded[:, 0], padded[:, 1])
+    x, y = transformer.transform(padded[:, 0], padded[:, 1], direction=direction)
     return np.stack([x, y], axis=-1)[: len(flat)].reshape(np.shape(xy))

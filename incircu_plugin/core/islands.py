@@ -16,7 +16,8 @@ Rule (documented, deterministic):
 1. Each island joins the chain it is nearer to (smallest distance between the island and the chain), so
    the centerline goes around it on the side of the wider channel. When both distances are equal within
    ``TIE_TOLERANCE`` of the extent, the island joins ``c1``.
-2. The slit is the shortest segment from the island to that chain which crosses no other island, neither
+2. The slit is the shortest of the candidate segments (from points along the island to the nearest point of
+   the chain) which crosses no other island, neither
    chain (it only touches its own chain at ``F``) and no earlier slit. Candidates are the nearest chain
    points of every vertex of the island (its ring densified to ``1 / SLIT_CANDIDATES`` of its perimeter),
    tried shortest first; if none is free, the other chain is tried.
