@@ -133,43 +133,34 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 "diameters over the vertices with a positive width), n_vertices and ends_found.",
             ),
         )
-        self.add_parameter(
-            QgsProcessingParameterFeatureSink(
+        optional_layers = (
+            (
                 self.OUTPUT_VERTICES,
                 self.tr("Centerline vertices"),
                 QgsProcessing.SourceType.TypeVectorPoint,
-                optional=True,
-                createByDefault=False,
+                self.tr("Optional point layer: every centerline vertex with its chainage, incircle radius and width."),
             ),
-            self.tr(
-                "Optional point layer: every centerline vertex with its chainage, incircle radius and width.",
-            ),
-        )
-        self.add_parameter(
-            QgsProcessingParameterFeatureSink(
+            (
                 self.OUTPUT_CIRCLES,
                 self.tr("Incircles"),
                 QgsProcessing.SourceType.TypeVectorPolygon,
-                optional=True,
-                createByDefault=False,
+                self.tr("Optional polygon layer: the incircle of every vertex, with its radius and chainage."),
             ),
-            self.tr(
-                "Optional polygon layer: the incircle of every vertex, with its radius and chainage.",
-            ),
-        )
-        self.add_parameter(
-            QgsProcessingParameterFeatureSink(
+            (
                 self.OUTPUT_TRANSECTS,
                 self.tr("Transects"),
                 QgsProcessing.SourceType.TypeVectorLine,
-                optional=True,
-                createByDefault=False,
-            ),
-            self.tr(
-                "Optional line layer: cross-sections from bank to bank through the centerline, every "
-                "TRANSECT_INTERVAL, with their width and chainage.",
+                self.tr(
+                    "Optional line layer: cross-sections from bank to bank through the centerline, every "
+                    "TRANSECT_INTERVAL, with their width and chainage.",
+                ),
             ),
         )
+        for name, description, layer_type, help_text in optional_layers:
+            self.add_parameter(
+                QgsProcessingParameterFeatureSink(name, description, layer_type, optional=True, createByDefault=False),
+                help_text,
+            )
         self.add_parameter(
             self.length_parameter(self.TRANSECT_INTERVAL, self.tr("Distance between transects (0 = mean width)"), 0.0),
             self.tr(

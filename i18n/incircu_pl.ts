@@ -24,37 +24,37 @@
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="148"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="160"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="173"/>
+        <location filename="../algorithms/base.py" line="164"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="183"/>
+        <location filename="../algorithms/base.py" line="172"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="183"/>
+        <location filename="../algorithms/base.py" line="172"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="187"/>
+        <location filename="../algorithms/base.py" line="176"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="187"/>
+        <location filename="../algorithms/base.py" line="176"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -124,17 +124,17 @@
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="148"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="160"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, every TRANSECT_INTERVAL, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową co TRANSECT_INTERVAL, z szerokością i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="173"/>
+        <location filename="../algorithms/base.py" line="164"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
