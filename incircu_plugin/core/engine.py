@@ -31,9 +31,14 @@ DEFAULT_SPACING_PER_WIDTH = 1.0 / 20.0
 #: Largest angle, radians, between two normals of the fan at a reflex vertex.
 MAX_FAN_STEP = np.radians(5.0)
 
-#: Probes per round and rounds locating where the samples of an edge switch between accepted and skipped.
+#: Probes per round and rounds locating where the samples of an edge switch between accepted and skipped,
+#: or where their contacts jump along the other chain.
 TRANSITION_PROBES = 15
 TRANSITION_ROUNDS = 3
+
+#: Contacts of two neighbouring samples farther apart along the other chain than this many times the samples'
+#: own distance mark a side branch leaving the axis between them.
+JUMP_RATIO = 8.0
 
 #: Stations at spacing/2, spacing/4, ... spacing/2**END_REFINEMENT from both ends of each chain.
 END_REFINEMENT = 16
@@ -492,56 +497,106 @@ def _edge_probes(samples, template, positions, boundary):
     )
 
 
-def _refine_transitions(samples, first, status, boundary, limit, floor):
-    """Locate, on every edge, where samples switch between skipped and clearly accepted.
+def _bisect(samples, left, first, boundary, limit, floor, on_low_side):
+    """Shrink, on the edge of each pair of samples ``left, left + 1``, the bracket of a switch.
 
-    There the incircle touches both chains and the sample's own chain elsewhere: a branch point of the
-    medial axis (e.g. where the axis meets the part of an end that touches both chains). Between two such
-    neighbours the centerline would cut the corner at that point by up to the spacing; ``TRANSITION_ROUNDS``
-    rounds of ``TRANSITION_PROBES`` probes shrink the bracket to ``(TRANSITION_PROBES + 1) **
-    -TRANSITION_ROUNDS`` of it (1/4096), and the clearly accepted end of the bracket is added. (Ties are
-    left alone: a switch inside a tie's tolerance is no branch point.)
+    ``TRANSITION_ROUNDS`` rounds of ``TRANSITION_PROBES`` probes shrink each bracket to
+    ``(TRANSITION_PROBES + 1) ** -TRANSITION_ROUNDS`` of it (1/4096). ``on_low_side(solution, pair)`` tells,
+    for the probes of pair ``pair``, which behave like the pair's left sample.
 
-    Returns the probe samples and their solution (as :func:`_solve`), with ties counted as skipped.
+    Returns the last round's probes and solution (as :func:`_solve`) and, per pair, the index of the last
+    probe on the low side (-1: none) among that pair's ``TRANSITION_PROBES`` probes.
     """
-    edge = samples.first_own == samples.last_own
-    switch = np.flatnonzero(
-        edge[:-1]
-        & edge[1:]
-        & (samples.first_own[:-1] == samples.first_own[1:])
-        & (np.minimum(status[:-1], status[1:]) == SKIPPED)
-        & (np.maximum(status[:-1], status[1:]) == CLEAR)
-        & np.isfinite(first[:-1])
-        & np.isfinite(first[1:])
-    )
-    # A skipped sample next to an accepted convex vertex lies in that corner's own branch, which meets the
-    # axis at the vertex sample's point: that switch is already exact.
-    convex = np.concatenate([[False], (samples.slide > 0) & (status != SKIPPED), [False]])
-    corner = np.where(status[switch] == SKIPPED, convex[switch], convex[switch + 3])
-    switch = switch[~corner]
-    low, high = samples.position[switch], samples.position[switch + 1]
-    low_accepted = status[switch] == CLEAR
-    trial = np.repeat(1.25 * np.maximum(first[switch], first[switch + 1]), TRANSITION_PROBES)
+    low, high = samples.position[left], samples.position[left + 1]
+    trial = np.repeat(1.25 * np.maximum(first[left], first[left + 1]), TRANSITION_PROBES)
     steps = np.arange(1, TRANSITION_PROBES + 1) / (TRANSITION_PROBES + 1)
-    template = np.repeat(switch, TRANSITION_PROBES)
-    rows = np.arange(len(switch))
+    template = np.repeat(left, TRANSITION_PROBES)
+    pair = np.repeat(np.arange(len(left)), TRANSITION_PROBES)
+    rows = np.arange(len(left))
     for _ in range(TRANSITION_ROUNDS):
         where = (low[:, None] + (high - low)[:, None] * steps).ravel()
         probes = _edge_probes(samples, template, where, boundary)
         solution = _solve(probes, np.arange(len(where)), boundary, trial, limit, floor)
-        accepted = (solution[1] == CLEAR).reshape(-1, TRANSITION_PROBES)
-        # Last probe on the low side of the switch per transition (-1: none); the bracket is the next cell.
-        same = accepted == low_accepted[:, None]
+        same = on_low_side(solution, pair).reshape(-1, TRANSITION_PROBES)
         last_same = np.where(same.any(axis=1), TRANSITION_PROBES - 1 - np.argmax(same[:, ::-1], axis=1), -1)
         grid = np.column_stack([low, where.reshape(-1, TRANSITION_PROBES), high])
         low, high = grid[rows, last_same + 1], grid[rows, last_same + 2]
-    # The accepted end of the final bracket, when it is a probe of the last round.
-    accepted_probe = np.where(low_accepted, last_same, last_same + 1)
-    found = (accepted_probe >= 0) & (accepted_probe < TRANSITION_PROBES)
-    chosen = rows[found] * TRANSITION_PROBES + accepted_probe[found]
-    kept = probes.subset(chosen)
-    first_kept, status_kept, contact, position = (part[chosen] for part in solution)
-    return kept, first_kept, np.where(status_kept == CLEAR, CLEAR, SKIPPED), contact, position
+    return probes, solution, last_same
+
+
+def _refine_switches(samples, first, status, contact_position, boundary, limit, floor):
+    """Add the branch points of the medial axis that lie between two samples of an edge.
+
+    Two kinds of switch between neighbours on one edge mark such a point, and a chord between the
+    neighbours would cut the axis's corner there by up to the spacing:
+
+    - one is skipped and the other clearly accepted: the incircle touches both chains and the sample's own
+      chain elsewhere (e.g. where the axis meets the part of an end that touches both chains); the clearly
+      accepted end of the final bracket is added. (Ties are left alone: a switch inside a tie's tolerance is
+      no branch point; neither is a skipped sample next to an accepted convex vertex, which lies in that
+      corner's own branch meeting the axis at the vertex sample's point.)
+    - both are accepted but their contacts on the other chain are far apart along it (more than
+      ``JUMP_RATIO`` times the samples' distance): the incircle touches the other chain at two places, where a
+      side branch into a bay of that chain leaves the axis; both ends of the final bracket are added.
+
+    Returns the probe samples and their solution (as :func:`_solve`), with ties counted as skipped.
+    """
+    edge = samples.first_own == samples.last_own
+    pair = edge[:-1] & edge[1:] & (samples.first_own[:-1] == samples.first_own[1:])
+    pair &= np.isfinite(first[:-1]) & np.isfinite(first[1:])
+    switch = np.flatnonzero(
+        pair & (np.minimum(status[:-1], status[1:]) == SKIPPED) & (np.maximum(status[:-1], status[1:]) == CLEAR)
+    )
+    convex = np.concatenate([[False], (samples.slide > 0) & (status != SKIPPED), [False]])
+    corner = np.where(status[switch] == SKIPPED, convex[switch], convex[switch + 3])
+    switch = switch[~corner]
+    jump = np.flatnonzero(
+        pair
+        & (status[:-1] == CLEAR)
+        & (status[1:] == CLEAR)
+        & (np.abs(np.diff(contact_position)) > JUMP_RATIO * np.diff(samples.position))
+    )
+    found = []
+    if len(switch):
+        low_accepted = status[switch] == CLEAR
+        probes, solution, last_same = _bisect(
+            samples,
+            switch,
+            first,
+            boundary,
+            limit,
+            floor,
+            lambda solution, pair: (solution[1] == CLEAR) == low_accepted[pair],
+        )
+        found.append((probes, solution, np.where(low_accepted, last_same, last_same + 1)))
+    if len(jump):
+        low_contact, high_contact = contact_position[jump], contact_position[jump + 1]
+        probes, solution, last_same = _bisect(
+            samples,
+            jump,
+            first,
+            boundary,
+            limit,
+            floor,
+            lambda solution, pair: np.abs(solution[3] - low_contact[pair]) < np.abs(solution[3] - high_contact[pair]),
+        )
+        found += [(probes, solution, last_same), (probes, solution, last_same + 1)]
+    chosen_probes, chosen_solutions = [], []
+    for probes, solution, index in found:
+        keep = (index >= 0) & (index < TRANSITION_PROBES)
+        chosen = np.flatnonzero(keep) * TRANSITION_PROBES + index[keep]
+        chosen_probes.append(probes.subset(chosen))
+        chosen_solutions.append([part[chosen] for part in solution])
+    if not found:
+        return samples.subset(slice(0, 0)), np.empty(0), np.empty(0, dtype=np.int8), np.empty((0, 2)), np.empty(0)
+    first_kept, status_kept, contact, position = (np.concatenate(parts) for parts in zip(*chosen_solutions))
+    return (
+        _Samples.concatenate(chosen_probes),
+        first_kept,
+        np.where(status_kept == CLEAR, CLEAR, SKIPPED),
+        contact,
+        position,
+    )
 
 
 def _medial_points(samples, sample, t, boundary):
@@ -715,8 +770,8 @@ def centerline_from_chains(
     total = len(samples.point)
     first = np.empty(total)
     status = np.zeros(total, dtype=np.int8)
-    contact = np.empty((total, 2))
-    position = np.empty(total)
+    contact = np.zeros((total, 2))
+    position = np.zeros(total)
 
     def report(begin, done_in_chunk):
         if progress is not None and progress((begin + done_in_chunk) / total) is False:
@@ -736,7 +791,7 @@ def centerline_from_chains(
     pieces = []
     for probes, probe_first, probe_status, probe_contact, probe_position in (
         (samples, first, status, contact, position),
-        _refine_transitions(samples, first, status, boundary, limit, floor),
+        _refine_switches(samples, first, status, position, boundary, limit, floor),
     ):
         chosen = np.flatnonzero(probe_status != SKIPPED)
         *medial, keep = _medial_points(probes, chosen, probe_first[chosen], boundary)
