@@ -10,8 +10,11 @@ a side branch and the sample is skipped. Both chains are sampled, and the union 
 positions of the touching points, which grow monotonically along the axis between the chains.
 
 Candidate segments come from a shapely ``STRtree`` queried in bulk with the bounding box of a trial disk;
-a sample is settled once its first contact lies inside the trial disk, otherwise the trial radius grows to
-the best contact found so far. Work is done in chunks of samples, so memory stays bounded.
+a sample is settled once its first contact lies inside the trial disk, otherwise the trial radius at most
+doubles, up to the best contact found so far. Trial radii come from a coarse-to-fine pass over the samples,
+so the boxes stay tight where the width varies. Where neighbouring samples switch between skipped and
+accepted, or their contacts jump along the other chain, the branch point between them is located by
+bisection and added. Work is done in chunks of samples, so memory stays bounded.
 """
 
 from dataclasses import dataclass, fields
@@ -62,6 +65,7 @@ SKIPPED, TIED, CLEAR = 0, 1, 2
 #: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
 TIE_TOLERANCE = 1e-10
 
+#: Samples solved together (bounds the memory of the candidate pairs).
 _CHUNK = 16_384
 
 #: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
