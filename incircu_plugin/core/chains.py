@@ -197,7 +197,8 @@ def validate_polygon(polygon):
         raise InvalidGeometryError("The polygon has a NaN or infinite coordinate.")
     if not polygon.is_valid:
         raise InvalidGeometryError(
-            f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. Repair it first (e.g. QGIS 'Fix geometries')."
+            f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
+            "Repair it first (e.g. QGIS 'Fix geometries')."
         )
 
 
@@ -269,7 +270,8 @@ def split_polygon(polygon, split_points, tolerance=None):
         distance = exterior.distance(Point(point))
         if distance > tolerance:
             raise SplitPointError(
-                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; the snap tolerance is {tolerance:.6g}."
+                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
+                f"the snap tolerance is {tolerance:.6g}."
                 " Move the point onto the boundary or raise the tolerance."
             )
         along.append(exterior.project(Point(point)))
@@ -317,7 +319,8 @@ def orient_bank_lines(line_a, line_b):
     touching = shapely.intersection(LineString(a), LineString(b))
     if not touching.is_empty:
         raise CrossingLinesError(
-            f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; they must bound a region between them."
+            f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; "
+            "they must bound a region between them."
         )
     same = np.hypot(*(a[0] - b[0])) + np.hypot(*(a[-1] - b[-1]))
     swapped = np.hypot(*(a[0] - b[-1])) + np.hypot(*(a[-1] - b[0]))

@@ -748,12 +748,13 @@ def centerline_from_chains(
     planned = sum(length / s for length, s in zip(lengths, spacings)) + sum(len(c) for c in chains)
     if planned > MAX_SAMPLES:
         raise IncirCuError(
-            f"A spacing of {min(spacings):.6g} would need about {planned:.3g} samples (at most {MAX_SAMPLES:.3g}); use a larger spacing."
+            f"A spacing of {min(spacings):.6g} would need about {planned:.3g} samples (at most "
+            f"{MAX_SAMPLES:.3g}); use a larger spacing."
         )
 
-    origin = 0.5 * (np.min(np.concatenate(chains), axis=0) + np.max(np.concatenate(chains), axis=0))
+    everything = np.concatenate(chains)
+    origin = 0.5 * (everything.min(axis=0) + everything.max(axis=0))
     local = [c - origin for c in chains]
-    merge = COINCIDENCE_TOLERANCE * extent
     closed = bool(np.hypot(*(local[0][0] - local[1][0])) <= merge and np.hypot(*(local[0][-1] - local[1][-1])) <= merge)
     side = 1.0 if signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
     boundary = _Boundary(local)

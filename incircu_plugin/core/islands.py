@@ -3,7 +3,8 @@
 IncirCu needs exactly two chains. A polygon with islands (holes) has more boundary than that, so each island
 is joined to one chain through a *slit*: a cut of negligible width from a point ``F`` of the chain (the
 slit's foot) to a point ``Q`` of the island. The joined chain runs along its bank to ``F``, out along the
-slit to ``Q``, once around the island back to ``Q``, back along the slit to ``F`` and on along its bank. For the engine the island is then part of that chain, so:
+slit to ``Q``, once around the island back to ``Q``, back along the slit to ``F`` and on along its bank.
+For the engine the island is then part of that chain, so:
 
 * the narrow channel between the island and the chain it joined lies between two parts of the *same*
   chain; no incircle there touches the other chain without crossing its own, so the centerline does not
