@@ -202,9 +202,20 @@ def validate_polygon(polygon):
         )
 
 
-def _ring_positions(ring):
-    """Return the cumulative arc length at each vertex of a closed ring."""
-    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(ring, axis=0).T))])
+def arc_lengths(path):
+    """Return the distance along a path from its first vertex to each vertex.
+
+    Parameters
+    ----------
+    path : ndarray of shape (n, 2)
+        Vertices, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (n,)
+        CRS units, starting at 0.
+    """
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
 
 
 def _insert_at(ring, positions, position, point, tolerance):
@@ -264,7 +275,7 @@ def split_polygon(polygon, split_points, tolerance=None):
     merge = COINCIDENCE_TOLERANCE * extent
     ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", merge), ring[:1]])
     exterior = LineString(ring)
-    positions = _ring_positions(ring)
+    positions = arc_lengths(ring)
     along = []
     for point in points:
         distance = exterior.distance(Point(point))

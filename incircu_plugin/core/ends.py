@@ -49,7 +49,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .chains import extent_of, validate_polygon
+from .chains import arc_lengths, extent_of, validate_polygon
 from .errors import InvalidGeometryError
 
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
@@ -150,7 +150,7 @@ def find_ends(polygon):
     trunk = nodes[path]
     trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trunk, axis=0).T))])
+    along = arc_lengths(trunk)
     first = _centred_end(local, trunk, trunk_radii, junction, along, extent, step)
     second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], extent, step)
     diameter = 2.0 * float(trunk_radii.max())

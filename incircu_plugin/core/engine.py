@@ -25,7 +25,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .chains import COINCIDENCE_TOLERANCE, as_coordinates, clean_chain, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, arc_lengths, as_coordinates, clean_chain, extent_of, signed_area
 from .errors import IncirCuError
 
 #: Default spacing as a fraction of the typical width (see :func:`default_spacing`).
@@ -162,8 +162,7 @@ class _Boundary:
             chain_ids.append(np.full(len(chain) - 1, chain_id))
             offsets.append(count)
             count += len(chain) - 1
-            lengths = np.hypot(*np.diff(chain, axis=0).T)
-            positions.append(np.concatenate([[0.0], np.cumsum(lengths)]))
+            positions.append(arc_lengths(chain))
         self.start = np.concatenate(starts)
         self.end = np.concatenate(ends)
         self.chain_id = np.concatenate(chain_ids)

@@ -11,6 +11,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
+from .chains import arc_lengths
 from .errors import IncirCuError
 
 
@@ -65,7 +66,7 @@ def vertex_chainages(result):
         Chainage of every vertex, CRS units; 0 at the first, the line's length at the last.
     """
     vertices = shapely.get_coordinates(result.line)
-    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(vertices, axis=0).T))])
+    return arc_lengths(vertices)
 
 
 def incircle_polygons(result, quad_segs=16):
