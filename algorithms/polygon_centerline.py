@@ -27,6 +27,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
+    END_RULE = "END_RULE"
 
     ICON = "polygoncenterline.svg"
 
@@ -91,6 +92,19 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_parameter(
+            QgsProcessingParameterEnum(
+                self.END_RULE,
+                self.tr("Automatic ends"),
+                [self.tr("Main stem (widest path)"), self.tr("Longest path")],
+                defaultValue=0,
+            ),
+            self.tr(
+                "For polygons without split points. Main stem: the internal path that sweeps the largest "
+                "channel area (length times width), so a wide main river wins over a longer but narrow side "
+                "arm. Longest path: the tips of the two longest arms."
+            ),
+        )
+        self.add_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
                 "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
@@ -110,6 +124,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
@@ -139,6 +154,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 snap_tolerance=snap_tolerance or None,
                 spacing=spacing,
                 islands=islands,
+                end_rule=end_rule,
             )
             several = len(outcomes or ()) > 1
             parts = []

@@ -105,6 +105,7 @@ def test_public_parameter_names(provider):
         "SPLIT_POINTS",
         "SNAP_TOLERANCE",
         "ISLANDS",
+        "END_RULE",
         "SEPARATE_PARTS",
     }
     assert {p.name() for p in lines.parameterDefinitions()} == common | {

@@ -13,13 +13,14 @@ Example
 
 from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_centerlines, polygon_centerline
 from .chains import orient_bank_lines, split_polygon
-from .ends import EndsResult, find_ends
+from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
 __all__ = [
+    "END_RULES",
     "ISLAND_MODES",
     "Cancelled",
     "CenterlineResult",

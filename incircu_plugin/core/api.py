@@ -9,7 +9,7 @@ import shapely
 from shapely.geometry import MultiPolygon, Point, Polygon
 
 from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
-from .ends import find_ends
+from .ends import END_RULES, find_ends
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, InvalidGeometryError, SplitPointError
 from .islands import bridge_islands
@@ -17,6 +17,9 @@ from .islands import bridge_islands
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
 ISLAND_MODES = ("main_channel", "ignore")
+
+#: Share of a polygon's progress taken by finding its ends automatically.
+ENDS_PROGRESS_SHARE = 0.2
 
 
 def polygon_centerline(
@@ -27,6 +30,7 @@ def polygon_centerline(
     samples_per_chain=None,
     snap_tolerance=None,
     islands="main_channel",
+    end_rule="main_stem",
     progress=None,
 ):
     """Centerline of a polygon between two points of its boundary.
@@ -47,6 +51,9 @@ def polygon_centerline(
     islands : {"main_channel", "ignore"}
         ``"main_channel"``: the line goes around every island on the side of the wider channel (each island
         joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped.
+    end_rule : {"main_stem", "longest_path"}
+        How automatic ends are chosen (see :mod:`.ends`): the skeleton path sweeping the largest channel
+        area (the main stem), or the longest one.
     progress : callable, optional
         See :func:`centerline_from_chains`.
 
@@ -69,10 +76,13 @@ def polygon_centerline(
     validate_polygon(polygon)
     if islands not in ISLAND_MODES:
         raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    if end_rule not in END_RULES:
+        raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     notes = []
     ends_found = split_points is None or len(split_points) == 0
     if ends_found:
-        ends = find_ends(polygon)
+        ends = find_ends(polygon, rule=end_rule, progress=_progress_share(progress, 0.0, ENDS_PROGRESS_SHARE))
+        progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
         if not ends.elongated:
             notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
@@ -132,6 +142,13 @@ class PartOutcome:
     part_index: int
     result: Optional[CenterlineResult]
     error: Optional[IncirCuError]
+
+
+def _progress_share(progress, begin, end):
+    """Return a progress callback reporting ``fraction`` as ``begin + fraction * (end - begin)``, or None."""
+    if progress is None:
+        return None
+    return lambda fraction: progress(begin + fraction * (end - begin))
 
 
 def _part_progress(progress, index, count, fraction):

@@ -207,11 +207,11 @@ def _find_ends(polygon, rule, guide, check):
 
     local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
     check(0.0)
-    nodes, radii, edges, step = skeleton_graph(local)
+    nodes, radii, spans, edges, step = skeleton_graph(local)
     if len(edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
     check(0.5)
-    weights, guided = _edge_weights(local, nodes, radii, edges, rule, None if guide is None else to_local(guide))
+    weights, guided = _edge_weights(local, nodes, spans, edges, rule, None if guide is None else to_local(guide))
     sweep_fraction = iter(np.linspace(0.5, 0.9, 1000))
     path = heaviest_path(
         len(nodes),
@@ -243,14 +243,14 @@ def _find_ends(polygon, rule, guide, check):
     )
 
 
-def _edge_weights(polygon, nodes, radii, edges, rule, guide):
+def _edge_weights(polygon, nodes, spans, edges, rule, guide):
     """Return the weight of each skeleton edge under ``rule`` and ``guide``, and whether the guide counted.
 
     Parameters
     ----------
     polygon : Polygon
         The polygon, CRS units.
-    nodes, radii, edges
+    nodes, spans, edges
         The skeleton (see :func:`.skeleton.skeleton_graph`).
     rule : {"main_stem", "longest_path"}
     guide : LineString or MultiLineString or None
@@ -262,17 +262,17 @@ def _edge_weights(polygon, nodes, radii, edges, rule, guide):
     guided : bool
     """
     lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
-    area = lengths * (radii[edges[:, 0]] + radii[edges[:, 1]])
+    area = lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
     weights = area if rule == "main_stem" else lengths
-    earnings = None if guide is None else _guide_earnings(polygon, nodes, radii, guide)
+    earnings = None if guide is None else _guide_earnings(polygon, nodes, spans, guide)
     if earnings is None or not np.any(earnings > 0.0):
         return weights, False
     earned = 0.5 * (earnings[edges[:, 0]] + earnings[edges[:, 1]])
     return earned + GUIDE_TIE * area, True
 
 
-def _guide_earnings(polygon, nodes, radii, guide):
-    """Return what each skeleton node earns from the guide: the guide length nearest to it times its radius.
+def _guide_earnings(polygon, nodes, spans, guide):
+    """Return what each skeleton node earns from the guide: the guide length nearest to it times its width.
 
     The guide is resampled at about the skeleton's node spacing; samples farther than ``GUIDE_REACH``
     typical widths from the polygon are dropped.
@@ -294,7 +294,7 @@ def _guide_earnings(polygon, nodes, radii, guide):
         return None
     tree = shapely.STRtree(shapely.points(nodes))
     _, nearest = tree.query_nearest(samples[near], all_matches=False)
-    return np.bincount(nearest, weights=piece[near], minlength=len(nodes)) * radii
+    return np.bincount(nearest, weights=piece[near], minlength=len(nodes)) * spans
 
 
 def _opposite_point(exterior, xy):

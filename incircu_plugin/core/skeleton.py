@@ -71,6 +71,10 @@ def skeleton_graph(polygon):
         Clearance of each node: its triangle's circumradius (the radius of an empty disk touching the
         samples, within ``step**2 / (8 * r)`` of the distance to the boundary), or the exact distance to the
         boundary for a node placed at a centroid; CRS units.
+    spans : ndarray of shape (k,)
+        Width of the channel across each node's triangle: its height over its longest boundary side (the
+        distance between the banks, also where the sampling is coarser than the channel), at most its
+        circumdiameter; CRS units.
     edges : ndarray of shape (e, 2) of int
         Node indices of each skeleton edge.
     step : float
@@ -182,13 +186,19 @@ def _dual_graph(corners, corner_ids, following):
     beyond = obtuse & on_boundary[rows, longest]
     nodes[beyond] = corners[beyond].mean(axis=1)
     radii[beyond] = double_area[inside][beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
+    # Across a channel sampled coarser than its width, the circumcircle overestimates the width: the height
+    # of the triangle over its longest boundary side is the distance to the other bank.
+    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1)
+    spans = 2.0 * np.hypot(*(_circumcentres(corners) - corners[:, 0]).T)
+    across = boundary_side > 0.0
+    spans[across] = np.minimum(spans[across], double_area[inside][across] / boundary_side[across])
     keys = side_keys.ravel()
     owner = np.repeat(rows, 3)
     order = np.argsort(keys, kind="stable")
     keys, owner = keys[order], owner[order]
     shared = np.flatnonzero(keys[1:] == keys[:-1])
     edges = np.stack([owner[shared], owner[shared + 1]], axis=1)
-    return nodes, radii, edges
+    return nodes, radii, spans, edges
 
 
 def _components(count, side_keys, linking):

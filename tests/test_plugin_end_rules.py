@@ -1,0 +1,58 @@
+"""``END_RULE`` and ``GUIDE_LINES`` of ``incircu:polygoncenterline``, on a synthetic river with a long side arm.
+
+The river is 1000 long and 40 wide with a 900 x 6 arm (``test_core_end_rules.straight_river_with_long_arm``):
+the main stem ends at the middles of the river's flat caps, the longest path at the arm's tip.
+"""
+
+import processing
+import shapely
+from qgis.core import QgsFeature, QgsGeometry, QgsVectorLayer
+from test_core_end_rules import FLAT_CAP_TOLERANCE, straight_river_with_long_arm
+
+RIVER_WIDTH = 40.0
+
+
+def memory_layer(kind, geometries, crs="EPSG:2180"):
+    """A memory layer of ``kind`` ("Polygon", "LineString", ...) holding the Shapely geometries."""
+    layer = QgsVectorLayer(f"{kind}?crs={crs}", kind, "memory")
+    features = []
+    for geometry in geometries:
+        feature = QgsFeature()
+        feature.setGeometry(QgsGeometry.fromWkt(geometry.wkt))
+        features.append(feature)
+    layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def river_line(parameters):
+    """Run the algorithm on the river; return the one output feature and its line as Shapely."""
+    polygon, _, _, _ = straight_river_with_long_arm()
+    results = processing.run(
+        "incircu:polygoncenterline", {"INPUT": memory_layer("Polygon", [polygon]), "OUTPUT": "memory:", **parameters}
+    )
+    feature = next(results["OUTPUT"].getFeatures())
+    geometry = QgsGeometry(feature.geometry())
+    geometry.get().dropMValue()
+    return feature, shapely.from_wkb(bytes(geometry.asWkb()))
+
+
+def ends_near(line, points, tolerance):
+    """True when the line's two ends are the two points (either order) within ``tolerance``."""
+    first, last = (shapely.Point(line.coords[0]), shapely.Point(line.coords[-1]))
+    a, b = (shapely.Point(point) for point in points)
+    return (
+        max(first.distance(a), last.distance(b)) <= tolerance or max(first.distance(b), last.distance(a)) <= tolerance
+    )
+
+
+def test_main_stem_is_the_default(provider):
+    feature, line = river_line({})
+    _, expected, _, _ = straight_river_with_long_arm()
+    assert feature["ends_found"]
+    assert ends_near(line, expected, FLAT_CAP_TOLERANCE * RIVER_WIDTH)
+
+
+def test_longest_path_takes_the_arm(provider):
+    _, line = river_line({"END_RULE": 1})
+    _, _, _, arm_tip = straight_river_with_long_arm()
+    assert min(shapely.Point(arm_tip).distance(shapely.Point(line.coords[i])) for i in (0, -1)) <= 10.0
