@@ -22,8 +22,10 @@ if Qgis.QGIS_VERSION_INT >= 33800:
     from qgis.PyQt.QtCore import QMetaType
 
     DOUBLE, INTEGER, BOOLEAN = QMetaType.Type.Double, QMetaType.Type.Int, QMetaType.Type.Bool
+    STRING = QMetaType.Type.QString
 else:
     DOUBLE, INTEGER, BOOLEAN = QVariant.Double, QVariant.Int, QVariant.Bool
+    STRING = QVariant.String
 
 
 def make_fields(definitions):
@@ -42,6 +44,7 @@ CENTERLINE_FIELDS = (
     ("width_max", DOUBLE),
     ("n_vertices", INTEGER),
     ("ends_found", BOOLEAN),
+    ("ends_from", STRING),
 )
 VERTEX_FIELDS = (
     ("source_fid", INTEGER),
@@ -82,7 +85,8 @@ def width_statistics(results):
     -------
     dict
         ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
-        (True when every part had automatic ends); lengths in working-frame units.
+        (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
+        ``automatic``, comma-separated; None for lines); lengths in working-frame units.
     """
     widths, integral, span = [], 0.0, 0.0
     for result in results:
@@ -101,6 +105,7 @@ def width_statistics(results):
         "width_max": max(widths) if widths else None,
         "n_vertices": int(sum(len(result.line.coords) for result in results)),
         "ends_found": all(bool(result.ends_found) for result in results),
+        "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
     }
 
 

@@ -28,6 +28,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
     END_RULE = "END_RULE"
+    GUIDE_LINES = "GUIDE_LINES"
 
     ICON = "polygoncenterline.svg"
 
@@ -105,6 +106,19 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_parameter(
+            QgsProcessingParameterFeatureSource(
+                self.GUIDE_LINES,
+                self.tr("Guide lines"),
+                [QgsProcessing.SourceType.TypeVectorLine],
+                optional=True,
+            ),
+            self.tr(
+                "Rough river lines (a national network, OpenStreetMap waterways) for polygons without split "
+                "points: the ends are those of the internal path that best covers the guide lines near the "
+                "polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected."
+            ),
+        )
+        self.add_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
                 "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
@@ -136,10 +150,20 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     index.addFeature(len(points), QgsRectangle(vertex.x(), vertex.y(), vertex.x(), vertex.y()))
                     points.append(vertex)
 
+        guides, guide_index = [], QgsSpatialIndex()
+        if parameters.get(self.GUIDE_LINES) not in (None, ""):
+            guide_source = run.source(self.GUIDE_LINES, QgsWkbTypes.GeometryType.LineGeometry)
+            request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
+            for guide_feature in guide_source.getFeatures(request):
+                if guide_feature.hasGeometry():
+                    guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
+                    guides.append(guide_feature.geometry())
+
         for feature in run.features(source):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             shape = run.frame.to_core(geometry)
+            guide = _guide_near(run.frame, geometry, guides, guide_index)
             margin = _layer_margin(snap_tolerance, geometry, crs.isGeographic())
             nearby = [points[i] for i in index.intersects(geometry.boundingBox().buffered(margin))]
             candidates = [
@@ -155,6 +179,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 spacing=spacing,
                 islands=islands,
                 end_rule=end_rule,
+                guide=guide,
             )
             several = len(outcomes or ()) > 1
             parts = []
@@ -170,6 +195,25 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 parts.append((outcome.part_index, outcome.result))
             run.write(feature, parts)
         return run.finish()
+
+
+def _guide_near(frame, geometry, guides, index):
+    """Return the guide lines whose box meets the polygon's (grown by a quarter) as one core MultiLineString.
+
+    Returns None without guide lines there; the core keeps only the guide lying near the polygon.
+    """
+    # Imported here, like the core (see ``running.FeatureRun``), so a missing Shapely gets its install message.
+    import shapely
+
+    box = geometry.boundingBox()
+    nearby = [guides[i] for i in index.intersects(box.buffered(0.25 * max(box.width(), box.height())))]
+    parts = [
+        part
+        for guide in nearby
+        for part in shapely.get_parts(frame.to_core(guide))
+        if part.geom_type == "LineString" and not part.is_empty
+    ]
+    return shapely.MultiLineString(parts) if parts else None
 
 
 def _layer_margin(distance, geometry, geographic):

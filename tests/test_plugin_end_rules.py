@@ -56,3 +56,30 @@ def test_longest_path_takes_the_arm(provider):
     _, line = river_line({"END_RULE": 1})
     _, _, _, arm_tip = straight_river_with_long_arm()
     assert min(shapely.Point(arm_tip).distance(shapely.Point(line.coords[i])) for i in (0, -1)) <= 10.0
+
+
+def test_guide_lines_in_another_crs_choose_the_ends(provider):
+    _, expected, _, arm_tip = straight_river_with_long_arm()
+    guide = shapely.LineString([(arm_tip[0] + 3.0, arm_tip[1] + 80.0), (603.0, 20.0), (1100.0, 20.0)])
+    guide_layer = memory_layer("LineString", [guide])
+    reprojected = processing.run(
+        "native:reprojectlayer", {"INPUT": guide_layer, "TARGET_CRS": "EPSG:4326", "OUTPUT": "memory:"}
+    )["OUTPUT"]
+    feature, line = river_line({"GUIDE_LINES": reprojected})
+    assert feature["ends_from"] == "guide"
+    assert ends_near(line, [arm_tip, expected[1]], FLAT_CAP_TOLERANCE * RIVER_WIDTH)
+
+
+def test_ends_from_says_where_the_ends_came_from(provider):
+    feature, _ = river_line({})
+    assert feature["ends_from"] == "automatic"
+    _, expected, _, _ = straight_river_with_long_arm()
+    points = memory_layer("Point", [shapely.Point(point) for point in expected])
+    feature, line = river_line(
+        {
+            "SPLIT_POINTS": points,
+            "GUIDE_LINES": memory_layer("LineString", [shapely.LineString([(600.0, 900.0), (600.0, 0.0)])]),
+        }
+    )
+    assert feature["ends_from"] == "split_points"
+    assert ends_near(line, expected, 1e-6 * RIVER_WIDTH)

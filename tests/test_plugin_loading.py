@@ -106,6 +106,7 @@ def test_public_parameter_names(provider):
         "SNAP_TOLERANCE",
         "ISLANDS",
         "END_RULE",
+        "GUIDE_LINES",
         "SEPARATE_PARTS",
     }
     assert {p.name() for p in lines.parameterDefinitions()} == common | {

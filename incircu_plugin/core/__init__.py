@@ -11,7 +11,14 @@ Example
 (100.0, 10.0)
 """
 
-from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_centerlines, polygon_centerline
+from .api import (
+    ISLAND_MODES,
+    PartOutcome,
+    PolygonCenterlineResult,
+    lines_centerline,
+    multipolygon_centerlines,
+    polygon_centerline,
+)
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
@@ -32,6 +39,7 @@ __all__ = [
     "InvalidGeometryError",
     "LocalProjection",
     "PartOutcome",
+    "PolygonCenterlineResult",
     "SplitPointError",
     "Transect",
     "centerline_from_chains",

@@ -1,6 +1,6 @@
 """Public entry points: the centerline of a polygon, of a multipart polygon, and between two lines."""
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields
 from functools import partial
 from typing import Optional
 
@@ -31,6 +31,7 @@ def polygon_centerline(
     snap_tolerance=None,
     islands="main_channel",
     end_rule="main_stem",
+    guide=None,
     progress=None,
 ):
     """Centerline of a polygon between two points of its boundary.
@@ -54,13 +55,18 @@ def polygon_centerline(
     end_rule : {"main_stem", "longest_path"}
         How automatic ends are chosen (see :mod:`.ends`): the skeleton path sweeping the largest channel
         area (the main stem), or the longest one.
+    guide : LineString or MultiLineString, optional
+        A rough line of the river, CRS units (gaps, offsets, pieces outside the polygon and tributaries are
+        fine): without split points, the ends are those of the skeleton path that best covers it. Ignored
+        when split points are given.
     progress : callable, optional
         See :func:`centerline_from_chains`.
 
     Returns
     -------
-    CenterlineResult
-        ``foot_a`` lies on the boundary counter-clockwise from the first split point.
+    PolygonCenterlineResult
+        ``foot_a`` lies on the boundary counter-clockwise from the first split point; ``ends_from`` says
+        where the ends came from.
 
     Raises
     ------
@@ -80,17 +86,38 @@ def polygon_centerline(
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     notes = []
     ends_found = split_points is None or len(split_points) == 0
+    ends_from = "split_points"
     if ends_found:
-        ends = find_ends(polygon, rule=end_rule, progress=_progress_share(progress, 0.0, ENDS_PROGRESS_SHARE))
+        ends = find_ends(
+            polygon, rule=end_rule, guide=guide, progress=_progress_share(progress, 0.0, ENDS_PROGRESS_SHARE)
+        )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
+        ends_from = "guide" if ends.guided else "automatic"
+        if guide is not None and not ends.guided:
+            notes.append("The guide line does not come near the polygon; its ends were found automatically.")
         if not ends.elongated:
             notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
-    return replace(result, ends_found=ends_found, notes=tuple(notes))
+    values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
+    values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
+    return PolygonCenterlineResult(**values)
+
+
+@dataclass(frozen=True)
+class PolygonCenterlineResult(CenterlineResult):
+    """A polygon's centerline (see :class:`CenterlineResult`) and where its ends came from.
+
+    Attributes
+    ----------
+    ends_from : {"split_points", "guide", "automatic"}
+        The given split points, the skeleton path following a guide line, or the automatic end rule.
+    """
+
+    ends_from: str = "split_points"
 
 
 def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):

@@ -86,7 +86,7 @@ ELONGATION_THRESHOLD = 2.0
 GUIDE_TIE = 1e-2
 
 #: Distance from the polygon, in typical widths, beyond which guide samples are ignored.
-GUIDE_REACH = 1.0
+GUIDE_REACH = 2.0
 
 #: Two ends closer than this fraction of the bounding-box diagonal are the same end (see rule 4).
 MIN_SEPARATION = 1e-5
