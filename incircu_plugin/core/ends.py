@@ -185,7 +185,7 @@ def _validate_guide(guide):
 def _cancel_check(progress):
     """Return ``check(fraction)`` that raises :class:`Cancelled` when ``progress(fraction)`` is False."""
 
-    def check(fraction=None):
+    def check(fraction):
         if progress is not None and progress(fraction) is False:
             raise Cancelled()
 
@@ -212,14 +212,13 @@ def _find_ends(polygon, rule, guide, check):
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
     check(0.5)
     weights, guided = _edge_weights(local, nodes, spans, edges, rule, None if guide is None else to_local(guide))
-    sweep_fraction = iter(np.linspace(0.5, 0.9, 1000))
     path = heaviest_path(
         len(nodes),
         edges,
         weights,
         int(np.argmax(radii)),
         acyclic=len(local.interiors) == 0,
-        check=lambda: check(float(next(sweep_fraction, 0.9))),
+        check=lambda: check(0.7),
     )
     trunk = nodes[path]
     trunk_radii = radii[path]
