@@ -6,7 +6,8 @@ Rows: boxes ``1 x h`` from ``h = 1e-1`` down to ``1e-6`` (4 vertices, the skelet
 with the aspect ratio up to ``skeleton.MAX_SAMPLES``), the issue's meander with 2,333 to 100,000 boundary
 vertices, synthetic rivers (``geometry_cases.synthetic_river``) and the Gambia outline (Natural Earth 1:10m,
 ``tests/data``). Columns: input vertices, boundary samples of the skeleton (after simplification and
-densification), median wall time of ``--repeats`` runs, and microseconds per input vertex and per sample.
+densification), median wall and CPU time of ``--repeats`` runs (the CPU time does not count waiting for a
+core on a shared machine), and CPU microseconds per input vertex and per sample.
 
 Target (issue 14): thin boxes well under a second; <= 3 us per boundary vertex on large real-like outlines.
 """
@@ -50,20 +51,21 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
     arguments = parser.parse_args()
-    print("| input | vertices | samples | time (s) | us / vertex | us / sample |")
-    print("|---|---:|---:|---:|---:|---:|")
+    print("| input | vertices | samples | wall (s) | CPU (s) | CPU us / vertex | CPU us / sample |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for name, polygon in cases():
         vertices = int(shapely.get_num_coordinates(polygon)) - 1 - len(polygon.interiors)
         samples = sample_count(polygon)
-        times = []
+        walls, cpus = [], []
         for _ in range(arguments.repeats):
-            begin = time.perf_counter()
+            wall, cpu = time.perf_counter(), time.process_time()
             find_ends(polygon)
-            times.append(time.perf_counter() - begin)
-        elapsed = statistics.median(times)
+            walls.append(time.perf_counter() - wall)
+            cpus.append(time.process_time() - cpu)
+        cpu = statistics.median(cpus)
         print(
-            f"| {name} | {vertices:,} | {samples:,} | {elapsed:.3f} | {1e6 * elapsed / vertices:.1f} "
-            f"| {1e6 * elapsed / samples:.1f} |",
+            f"| {name} | {vertices:,} | {samples:,} | {statistics.median(walls):.3f} | {cpu:.3f} "
+            f"| {1e6 * cpu / vertices:.1f} | {1e6 * cpu / samples:.1f} |",
             flush=True,
         )
 

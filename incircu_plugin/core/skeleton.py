@@ -145,8 +145,10 @@ def _conforming_triangulation(rings, step):
         )
         corners, corner_ids = _delaunay(samples, step)
         side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
-        boundary_keys = _edge_keys(np.arange(count), following, count)
-        missing = ~np.isin(boundary_keys, _edge_keys(side_start, side_end, count))
+        present = np.zeros(count, dtype=bool)
+        present[side_start[following[side_start] == side_end]] = True
+        present[side_end[following[side_end] == side_start]] = True
+        missing = ~present
         if not np.any(missing):
             break
         rings = _split_segments(rings, missing)
@@ -154,14 +156,12 @@ def _conforming_triangulation(rings, step):
 
 
 def _dual_graph(corners, corner_ids, following):
-    """Return the nodes, radii and edges of the dual graph of the triangles inside the rings.
+    """Return the nodes, radii, spans and edges of the dual graph of the triangles inside the rings.
 
     Inside triangles are those whose counter-clockwise sides run along the boundary the way the (oriented)
     rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat triangles
     of nearly collinear samples, whose orientation means nothing) take no part.
     """
-    count = len(following)
-    boundary_keys = _edge_keys(np.arange(count), following, count)
     first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
     signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
     clockwise = signed < 0.0
@@ -169,18 +169,24 @@ def _dual_graph(corners, corner_ids, following):
     corner_ids[clockwise] = corner_ids[clockwise][:, ::-1]
     double_area = np.abs(signed)
     side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
-    side_keys = _edge_keys(side_start, side_end, count)
-    on_boundary = np.isin(side_keys, boundary_keys).reshape(-1, 3)
-    forward = np.isin(side_start.astype(np.int64) * count + side_end, np.arange(count) * count + following)
+    forward = following[side_start] == side_end
+    on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
     side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
     solid = double_area > SLIVER * np.max(side_lengths, axis=1) ** 2
-    region = _components(len(corners), side_keys, ~on_boundary.ravel() & np.repeat(solid, 3))
+    shared_side, first, second = _shared_sides(side_start, side_end, len(following))
+    linking = ~on_boundary.ravel()[shared_side] & solid[first] & solid[second]
+    region = connected_labels(len(corners), first[linking], second[linking])
     seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
     inside = solid & np.isin(region, np.unique(region[seeds]))
+    renumbered = np.cumsum(inside) - 1
+    both = linking & inside[first] & inside[second]
+    edges = np.stack([renumbered[first[both]], renumbered[second[both]]], axis=1)
     corners, on_boundary, side_lengths = corners[inside], on_boundary[inside], side_lengths[inside]
-    side_keys = side_keys.reshape(-1, 3)[inside]
-    nodes = _circumcentres(corners)
+    double_area = double_area[inside]
+    circumcentres = _circumcentres(corners)
+    nodes = circumcentres.copy()
     radii = np.hypot(*(nodes - corners[:, 0]).T)
+    spans = 2.0 * radii
     # An obtuse triangle whose longest side is on the boundary has its circumcentre beyond that side, outside
     # the polygon: place its node at its centroid instead, with the centroid's distance to that side.
     longest = np.argmax(side_lengths, axis=1)
@@ -189,45 +195,36 @@ def _dual_graph(corners, corner_ids, following):
     obtuse = 2.0 * squared[rows, longest] > squared.sum(axis=1)
     beyond = obtuse & on_boundary[rows, longest]
     nodes[beyond] = corners[beyond].mean(axis=1)
-    radii[beyond] = double_area[inside][beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
+    radii[beyond] = double_area[beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
     # Across a channel sampled coarser than its width, the circumcircle overestimates the width: the height
     # of the triangle over its longest boundary side is the distance to the other bank.
     boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1)
-    spans = 2.0 * np.hypot(*(_circumcentres(corners) - corners[:, 0]).T)
     across = boundary_side > 0.0
-    spans[across] = np.minimum(spans[across], double_area[inside][across] / boundary_side[across])
-    keys = side_keys.ravel()
-    owner = np.repeat(rows, 3)
-    order = np.argsort(keys, kind="stable")
-    keys, owner = keys[order], owner[order]
-    shared = np.flatnonzero(keys[1:] == keys[:-1])
-    edges = np.stack([owner[shared], owner[shared + 1]], axis=1)
+    spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
     return nodes, radii, spans, edges
 
 
-def _components(count, side_keys, linking):
-    """Label the triangles connected through shared sides that are not on the boundary.
+def _shared_sides(side_start, side_end, count):
+    """Return the pairs of triangles sharing a side.
 
     Parameters
     ----------
+    side_start, side_end : ndarray of int
+        Sample indices of the sides, three per triangle in order.
     count : int
-        Number of triangles.
-    side_keys : ndarray of shape (3 * count,)
-        Key of each triangle side (see :func:`_edge_keys`), three per triangle in order.
-    linking : ndarray of shape (3 * count,) of bool
-        Sides that may join two triangles.
+        Number of samples.
 
     Returns
     -------
-    ndarray of shape (count,) of int
-        The smallest triangle index of each triangle's component.
+    side : ndarray of int
+        Index of the shared side in the first triangle's sides (``3 * triangle + k``).
+    first, second : ndarray of int
+        The two triangles.
     """
-    owner = np.repeat(np.arange(count), 3)[linking]
-    keys = side_keys[linking]
+    keys = _edge_keys(side_start, side_end, count)
     order = np.argsort(keys, kind="stable")
-    keys, owner = keys[order], owner[order]
-    shared = np.flatnonzero(keys[1:] == keys[:-1])
-    return connected_labels(count, owner[shared], owner[shared + 1])
+    shared = np.flatnonzero(keys[order][1:] == keys[order][:-1])
+    return order[shared], order[shared] // 3, order[shared + 1] // 3
 
 
 def connected_labels(count, first, second):
