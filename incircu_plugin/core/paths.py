@@ -67,8 +67,9 @@ class _Chains:
     """A graph's chains of two-neighbour nodes, contracted into weighted edges between key nodes.
 
     Every directed edge ``h`` (``tail[h] -> head[h]``) whose head is not a key node continues with the other
-    edge out of its head, ``following[h]``; ``total[h]`` is the weight from ``h`` to the end of its chain and
-    ``last[h]`` the chain's last directed edge, whose head is a key node.
+    edge out of its head, ``following[h]``; ``total[h]`` is the weight from ``h`` to the end of its chain,
+    ``steps[h]`` the number of edges, and ``last[h]`` the chain's last directed edge, whose head is a key
+    node.
     """
 
     def __init__(self, count, edges, weights):
@@ -95,7 +96,8 @@ class _Chains:
         other = order[first_out[self.head[through]] + 1]
         self.following = np.full(2 * edge_count, -1, dtype=np.int64)
         self.following[through] = np.where(one == twin[through], other, one)
-        self.total, self.last = _rank(self.following, np.concatenate([weights, weights]).astype(float))
+        weights = np.concatenate([weights, weights]).astype(float)
+        (self.total, self.steps), self.last = _rank(self.following, (weights, np.ones(len(weights), np.int64)))
 
     def contracted(self):
         """Return the contracted graph in compressed adjacency: ``(start, neighbour, weight, via)`` lists.
@@ -123,40 +125,46 @@ class _Chains:
 
     def expand(self, key_path, via):
         """Return the skeleton nodes of a contracted path (its key nodes and the chains ``via`` between)."""
-        nodes = [int(self.keys[key_path[0]])]
+        # Directed edges grouped by chain, each chain from its first edge to its last: a chain's edges from
+        # ``edge`` on are the ``steps[edge]`` entries from ``edge``'s position.
+        order = np.lexsort((-self.steps, self.last))
+        position = np.empty_like(order)
+        position[order] = np.arange(len(order))
+        pieces = [self.keys[key_path[:1]]]
         for edge in via:
-            while edge != -1:
-                nodes.append(int(self.head[edge]))
-                edge = int(self.following[edge])
-        return np.asarray(nodes, dtype=np.int64)
+            begin = position[edge]
+            pieces.append(self.head[order[begin : begin + self.steps[edge]]])
+        return np.concatenate(pieces).astype(np.int64)
 
 
 def _rank(following, weights):
-    """Pointer jumping: the weight from each directed edge to the end of its chain, and that end.
+    """Pointer jumping: the sums of weights from each directed edge to the end of its chain, and that end.
 
     Parameters
     ----------
     following : ndarray of int
         Next directed edge of each one's chain, ``-1`` at a chain's end.
-    weights : ndarray of float
-        Weight of each directed edge.
+    weights : tuple of ndarray
+        Weights of each directed edge, one array per kind.
 
     Returns
     -------
-    total : ndarray of float
+    totals : tuple of ndarray
+        One per kind of weight.
     last : ndarray of int
     """
-    total = weights.copy()
+    totals = tuple(weight.copy() for weight in weights)
     last = np.arange(len(following))
     successor = following.copy()
     active = np.flatnonzero(successor >= 0)
     while len(active):
         ahead = successor[active]
-        total[active] += total[ahead]
+        for total in totals:
+            total[active] += total[ahead]
         last[active] = last[ahead]
         successor[active] = successor[ahead]
         active = active[successor[active] >= 0]
-    return total, last
+    return totals, last
 
 
 def _sweep(graph, source, acyclic, check):
