@@ -39,8 +39,9 @@ import numpy as np
 import shapely
 from shapely.geometry import LinearRing, LineString, Polygon
 
-from .chains import COINCIDENCE_TOLERANCE, arc_lengths, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, extent_of, signed_area
 from .errors import IncirCuError, InvalidGeometryError, format_point
+from .polyline import cumulative_lengths
 
 #: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
 TIE_TOLERANCE = 1e-9
@@ -140,7 +141,7 @@ def bridge_islands(c1, c2, holes):
     detours = {}
     for island_index in _reverse_join_order(joins, count):
         trimmed = _trimmed(walks[island_index], half_width)
-        length = float(arc_lengths(trimmed)[-1])
+        length = float(cumulative_lengths(trimmed)[-1])
         children = [
             (min(max(position - half_width, 0.0), length), child, foot)
             for position, child, foot in joins[2 + island_index]
@@ -430,7 +431,7 @@ def _splice(path, joins, detours, half_width, merge):
     """
     if not joins:
         return path.copy()
-    positions = arc_lengths(path)
+    positions = cumulative_lengths(path)
     pieces = []
     done = 0
     for position, island_index, _ in sorted(joins, key=lambda join: (join[0], join[1])):
@@ -452,7 +453,7 @@ def _splice(path, joins, detours, half_width, merge):
 
 def _trimmed(walk, half_width):
     """Return a closed walk without its first and last ``half_width`` of arc length (the slit's two sides)."""
-    positions = arc_lengths(walk)
+    positions = cumulative_lengths(walk)
     total = positions[-1]
     if total <= 2.0 * half_width:
         return walk.copy()

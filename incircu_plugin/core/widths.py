@@ -11,8 +11,8 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .chains import arc_lengths
 from .errors import IncirCuError
+from .polyline import cumulative_lengths
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,7 @@ def vertex_chainages(result):
         Chainage of every vertex, CRS units; 0 at the first, the line's length at the last.
     """
     vertices = shapely.get_coordinates(result.line)
-    return arc_lengths(vertices)
+    return cumulative_lengths(vertices)
 
 
 def incircle_polygons(result, quad_segs=16):
