@@ -222,8 +222,8 @@ def split_polygon(polygon, split_points, tolerance=None):
     extent = extent_of(ring)
     if tolerance is None:
         tolerance = 1e-6 * extent
-    merge = COINCIDENCE_TOLERANCE * extent
-    ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", merge), ring[:1]])
+    coincidence = COINCIDENCE_TOLERANCE * extent
+    ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", coincidence), ring[:1]])
     exterior = LineString(ring)
     positions = cumulative_lengths(ring)
     along = []
@@ -237,13 +237,13 @@ def split_polygon(polygon, split_points, tolerance=None):
             )
         along.append(exterior.project(Point(point)))
     perimeter = positions[-1]
-    along = [0.0 if position >= perimeter - merge else position for position in along]
+    along = [0.0 if position >= perimeter - coincidence else position for position in along]
     gap = abs(along[0] - along[1])
-    if min(gap, perimeter - gap) <= max(tolerance, merge):
+    if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     for position in along:
         point = np.asarray(exterior.interpolate(position).coords[0])
-        ring, positions = _insert_at(ring, positions, position, point, merge)
+        ring, positions = _insert_at(ring, positions, position, point, coincidence)
     start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
     loop = ring[:-1]
     n = len(loop)
@@ -272,9 +272,9 @@ def orient_bank_lines(line_a, line_b):
     """
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
-    merge = COINCIDENCE_TOLERANCE * extent_of(a, b)
-    a = clean_chain(a, "first line", merge)
-    b = clean_chain(b, "second line", merge)
+    coincidence = COINCIDENCE_TOLERANCE * extent_of(a, b)
+    a = clean_chain(a, "first line", coincidence)
+    b = clean_chain(b, "second line", coincidence)
     ensure_simple(a, "first line")
     ensure_simple(b, "second line")
     touching = shapely.intersection(LineString(a), LineString(b))
