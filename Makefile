@@ -69,7 +69,7 @@ test: setup
 # The fast path: numpy, shapely, pyproj and the test tools only; pytest-qgis is switched off, so no QGIS starts
 # (nor needs to be installed). Tests marked slow (pytest.ini) run in `make test` only.
 test-core: $(VENV)/.installed
-	$(PYTHON) -m pytest -p no:cacheprovider -p no:pytest_qgis -m "not slow" tests/test_core_*.py $(CORE_DOCTESTS)
+	$(PYTHON) -m pytest -p no:cacheprovider -p no:pytest_qgis -m "not slow" tests/test_core_*.py tests/test_docs.py $(CORE_DOCTESTS)
 
 lint: setup
 	$(PYTHON) -m ruff check .
