@@ -8,7 +8,6 @@ the only length that sets how far a reasonable "end" can be from the true one.
 import math
 import warnings
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
@@ -18,10 +17,11 @@ from shapely.ops import unary_union
 
 from incircu_plugin.core import Cancelled, find_ends, polygon_centerline
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
+from tests.support import geometry_cases
 
 #: Fraction of the channel width within which a found end must match a flat cap's midpoint. A flat cap is
 #: centred exactly by construction (midpoint between its two corners); what remains is the simplification
-#: of the outline before sampling (1e-3 of the width) and rounding.
+#: of the outline before the skeleton is built (its cap centring uses the exact outline) and rounding.
 FLAT_CAP_TOLERANCE = 0.01
 
 #: Fraction of the width within which a rounded cap's apex must be matched: the buffer approximates the
