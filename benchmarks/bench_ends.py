@@ -23,12 +23,10 @@ from shapely.geometry import box
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
-
-import geometry_cases
 
 from incircu_plugin.core import find_ends
 from incircu_plugin.core.skeleton import boundary_samples
+from tests.support import geometry_cases
 
 
 def sample_count(polygon):

@@ -1,15 +1,19 @@
 """``END_RULE`` and ``GUIDE_LINES`` of ``incircu:polygoncenterline``, on a synthetic river with a long side arm.
 
-The river is 1000 long and 40 wide with a 900 x 6 arm (``test_core_end_rules.straight_river_with_long_arm``):
-the main stem ends at the middles of the river's flat caps, the longest path at the arm's tip.
+The river is 1000 long and 40 wide with a 900 x 6 arm (``tests/support/reservoirs.py``): the main stem ends at
+the middles of the river's flat caps, the longest path at the arm's tip.
 """
 
 import processing
 import shapely
 from qgis.core import QgsFeature, QgsGeometry, QgsVectorLayer
-from test_core_end_rules import FLAT_CAP_TOLERANCE, straight_river_with_long_arm
+
+from tests.support.reservoirs import straight_river_with_long_arm
 
 RIVER_WIDTH = 40.0
+
+#: Fraction of the river's width within which an end must match a flat cap's middle (as in test_core_ends).
+FLAT_CAP_TOLERANCE = 0.01
 
 
 def memory_layer(kind, geometries, crs="EPSG:2180"):

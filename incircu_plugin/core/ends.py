@@ -57,11 +57,12 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .chains import arc_lengths, extent_of, validate_polygon
+from .chains import extent_of, validate_polygon
 from .engine import Cancelled
 from .errors import IncirCuError, InvalidGeometryError
 from .paths import heaviest_path
-from .skeleton import skeleton_graph, typical_width
+from .polyline import cumulative_lengths, typical_width
+from .skeleton import skeleton_graph
 
 #: Rules for the automatic ends (see the module docstring).
 END_RULES = ("main_stem", "longest_path")
@@ -223,7 +224,7 @@ def _find_ends(polygon, rule, guide, check):
     trunk = nodes[path]
     trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
-    along = arc_lengths(trunk)
+    along = cumulative_lengths(trunk)
     first = _centred_end(local, trunk, trunk_radii, junction, along, 1.0, step)
     second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
     if np.hypot(*(first - second)) <= MIN_SEPARATION:
@@ -276,7 +277,7 @@ def _guide_earnings(polygon, nodes, spans, guide):
     The guide is resampled at about the skeleton's node spacing; samples farther than ``GUIDE_REACH``
     typical widths from the polygon are dropped.
     """
-    width = typical_width(polygon)
+    width = typical_width(polygon.area, polygon.length / 2.0)
     parts = shapely.get_parts(guide)
     parts = parts[shapely.length(parts) > 0.0]
     if len(parts) == 0:

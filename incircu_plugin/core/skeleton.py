@@ -20,6 +20,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from .errors import InvalidGeometryError
+from .polyline import typical_width
 
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
 SAMPLES_PER_WIDTH = 3
@@ -48,11 +49,6 @@ SWEEP_ANGLE = 0.1
 #: step (far below ``SLIVER``, so straight banks stay slivers); a failing triangulation is retried with
 #: the larger values.
 JITTER = (1e-9, 1e-7, 1e-5)
-
-
-def typical_width(polygon):
-    """Return ``2 * area / perimeter``, CRS units: about the width of an elongated polygon."""
-    return 2.0 * polygon.area / polygon.length
 
 
 def skeleton_graph(polygon):
@@ -109,7 +105,7 @@ def boundary_samples(polygon):
     step : float
         Densification step, CRS units.
     """
-    width = typical_width(polygon)
+    width = typical_width(polygon.area, polygon.length / 2.0)
     simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=False)
     if not (isinstance(simplified, Polygon) and simplified.is_valid):
         simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True)
