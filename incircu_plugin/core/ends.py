@@ -18,8 +18,8 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
      gets that arm; a delta's distributaries are compared by area only.
    - ``"longest_path"``: each edge weighs its length: the tips of the two longest arms.
    - with a *guide* line (``guide=``): each skeleton node earns the guide length lying nearest to it (after
-     densifying the guide to the skeleton's step and dropping what lies farther than a typical width from
-     the polygon) times its width, and each edge half the earnings of its two nodes, plus ``GUIDE_TIE``
+     resampling the guide every eighth of the typical width and dropping what lies farther than
+     ``GUIDE_REACH`` typical widths from the polygon) times its width, and each edge half the earnings of its two nodes, plus ``GUIDE_TIE``
      times its main-stem weight: the path covers as much of the guide as a skeleton path can, and beyond
      the guide it follows the main stem. Gaps, offsets, pieces outside the polygon and generalisation of
      the guide only remove a little of the earnings; a tributary in the guide is followed only if its
@@ -274,11 +274,17 @@ def _edge_weights(polygon, nodes, spans, edges, rule, guide):
 def _guide_earnings(polygon, nodes, spans, guide):
     """Return what each skeleton node earns from the guide: the guide length nearest to it times its width.
 
-    The guide is resampled at about the skeleton's node spacing; samples farther than ``GUIDE_REACH``
+    The guide is resampled every eighth of the typical width; samples farther than ``GUIDE_REACH``
     typical widths from the polygon are dropped.
     """
     width = typical_width(polygon.area, polygon.length / 2.0)
-    parts = shapely.get_parts(guide)
+    reach = GUIDE_REACH * width
+    west, south, east, north = polygon.bounds
+    # Only the guide near the polygon counts: a long river crossing a small lake costs no more than its
+    # stretch across the lake's box.
+    clipped = shapely.clip_by_rect(guide, west - reach, south - reach, east + reach, north + reach)
+    parts = shapely.get_parts(shapely.get_parts(clipped))
+    parts = parts[shapely.get_type_id(parts) == 1]
     parts = parts[shapely.length(parts) > 0.0]
     if len(parts) == 0:
         return None
@@ -289,7 +295,7 @@ def _guide_earnings(polygon, nodes, spans, guide):
     piece = shapely.length(parts)[owner] / counts[owner]
     samples = shapely.line_interpolate_point(parts[owner], (rank + 0.5) * piece)
     shapely.prepare(polygon)
-    near = shapely.dwithin(polygon, samples, GUIDE_REACH * width)
+    near = shapely.dwithin(polygon, samples, reach)
     if not np.any(near):
         return None
     tree = shapely.STRtree(shapely.points(nodes))
