@@ -47,6 +47,7 @@ def test_width_statistics_weights_the_mean_by_length(plugin_module):
         "width_max": 8.0,
         "n_vertices": 4,
         "ends_found": True,
+        "ends_from": None,
     }
 
 
@@ -61,6 +62,16 @@ def test_width_statistics_of_several_parts(plugin_module):
     assert (statistics["width_min"], statistics["width_max"]) == (2.0, 8.0)
     assert statistics["width_mean"] == pytest.approx((60.0 + 30.0) / (10.0 + 15.0), rel=1e-12)
     assert statistics["ends_found"] is False
+
+
+def test_width_statistics_names_where_the_ends_came_from(plugin_module):
+    width_statistics = plugin_module("algorithms.outputs").width_statistics
+    polygon_result = plugin_module("incircu_plugin.core.api").PolygonCenterlineResult
+    line = result(plugin_module, [0, 10], [1, 1])
+    guided = polygon_result(line.line, line.radii, line.foot_a, line.foot_b, ends_from="guide")
+    given = polygon_result(line.line, line.radii, line.foot_a, line.foot_b, ends_from="split_points")
+    assert width_statistics([guided])["ends_from"] == "guide"
+    assert width_statistics([guided, given, guided])["ends_from"] == "guide,split_points"
 
 
 def test_width_statistics_with_one_or_no_positive_width(plugin_module):
