@@ -70,22 +70,22 @@ def test_polish_locale_translates_the_toolbox(provider, qgis_iface):
 
     registry = QgsApplication.processingRegistry()
     algorithm = registry.algorithmById("incircu:polygoncenterline")
-    assert algorithm.displayName() == "Centerline of polygons (IncirCu)"
+    assert algorithm.displayName() == "Centerline of polygons"
     settings = QgsSettings()
     previous = settings.value("locale/userLocale", "")
     settings.setValue("locale/userLocale", "pl_PL")
     try:
         polish_plugin = sys.modules[PLUGIN_NAME].classFactory(qgis.utils.iface)
         try:
-            assert algorithm.displayName() == "Linia środkowa poligonów (IncirCu)"
+            assert algorithm.displayName() == "Linia środkowa poligonów"
             assert algorithm.group() == "Linie środkowe"
             assert algorithm.shortHelpString().startswith("Wyznacza jedną nierozgałęzioną linię środkową")
             fresh = registry.createAlgorithmById("incircu:polygoncenterline")
             assert fresh.parameterDefinition("SPLIT_POINTS").description() == "Punkty podziału"
             lines = registry.algorithmById("incircu:linescenterline")
-            assert lines.displayName() == "Linia środkowa między dwiema liniami (IncirCu)"
+            assert lines.displayName() == "Linia środkowa między dwiema liniami"
         finally:
             polish_plugin.unload()
     finally:
         settings.setValue("locale/userLocale", previous)
-    assert algorithm.displayName() == "Centerline of polygons (IncirCu)"
+    assert algorithm.displayName() == "Centerline of polygons"
