@@ -9,11 +9,15 @@ PYTHON := $(VENV)/bin/python
 SYSTEM_PYTHON := /usr/bin/python3
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEBIAN_PACKAGES := qgis python3-qgis qgis-providers python3-numpy python3-pyproj python3-venv python3-pip python3-dev \
-	libgeos-dev build-essential pyqt5-dev-tools qttools5-dev-tools git make
-# Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely built against the system GEOS, since
-# the wheel's bundled GEOS clashes with the one QGIS links; numpy and pyproj come from Debian.
+	libgeos-dev build-essential pkg-config pyqt5-dev-tools qttools5-dev-tools git make
+# The distribution's Shapely, installed with the packages above where it is Shapely 2 (Debian 13, Ubuntu 24.04).
+SHAPELY_PACKAGE = $$(apt-cache policy python3-shapely | sed -n 's/^ *Candidate: *[2-9]\..*/python3-shapely/p')
+# Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely on the system GEOS, since the wheel's
+# bundled GEOS clashes with the one QGIS links. The distribution's Shapely 2 when there is one, else built here
+# from the pin; numpy and pyproj come from the distribution.
 QGIS_SITE := $(VENV)/qgis-site
-SHAPELY_PIN := $(shell grep -E '^shapely==' requirements.txt)
+SHAPELY_PIN := $(shell sed -n 's/^\(shapely==[^ ;]*\).*/\1/p' requirements.txt)
+SYSTEM_HAS_SHAPELY2 := import shapely, sys; sys.exit(int(shapely.__version__.split(".")[0]) < 2)
 PROFILE ?= default
 QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
@@ -44,7 +48,8 @@ system-packages:
 	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1; then \
 	  echo "Installing QGIS and tools from the distribution's packages"; \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -q && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES); \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES) \
+	    $(SHAPELY_PACKAGE); \
 	fi
 
 $(VENV)/.installed: requirements.txt requirements-dev.txt
@@ -53,8 +58,13 @@ $(VENV)/.installed: requirements.txt requirements-dev.txt
 	@touch $@
 
 $(QGIS_SITE)/.installed: requirements.txt
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
-	  --target $(QGIS_SITE) "$(SHAPELY_PIN)"
+	@mkdir -p $(QGIS_SITE)
+	@if $(SYSTEM_PYTHON) -c '$(SYSTEM_HAS_SHAPELY2)' 2>/dev/null; then \
+	  echo "QGIS's Python uses the distribution's Shapely 2: nothing to build"; \
+	else \
+	  $(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
+	    --target $(QGIS_SITE) "$(SHAPELY_PIN)"; \
+	fi
 	@touch $@
 
 demo: setup

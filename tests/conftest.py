@@ -19,7 +19,10 @@ REPOSITORY = Path(__file__).resolve().parent.parent
 DATA = REPOSITORY / "tests" / "data"
 ARTIFACTS = REPOSITORY / "tests" / "artifacts"
 PLUGIN_NAME = "incircu"
-#: Shapely built against the system GEOS for QGIS's own Python (``make setup``); numpy and pyproj come from Debian.
+#: The Python QGIS runs (the distribution's).
+SYSTEM_PYTHON = "/usr/bin/python3"
+#: Shapely built against the system GEOS for QGIS's own Python (``make setup``; empty where the distribution's
+#: Shapely is version 2); numpy and pyproj come from the distribution.
 QGIS_SITE = Path(os.environ.get("INCIRCU_QGIS_SITE", REPOSITORY / ".venv" / "qgis-site"))
 
 
@@ -100,7 +103,13 @@ def qgis_process(plugin_folder, tmp_path_factory):
         ``run(*arguments)`` -> ``subprocess.CompletedProcess`` (text output, never raising on failure).
     """
     profile = tmp_path_factory.mktemp("qgis_profile")
-    assert (QGIS_SITE / "shapely").is_dir(), "Shapely for QGIS's Python is missing: run `make setup`"
+    probe = subprocess.run(
+        [SYSTEM_PYTHON, "-c", "import shapely"],
+        env={**os.environ, "PYTHONPATH": str(QGIS_SITE)},
+        capture_output=True,
+        check=False,
+    )
+    assert probe.returncode == 0, "Shapely for QGIS's Python is missing: run `make setup`"
     environment = dict(os.environ)
     environment.update(
         {
