@@ -21,7 +21,8 @@ SYSTEM_HAS_SHAPELY2 := import shapely, sys; sys.exit(int(shapely.__version__.spl
 PROFILE ?= default
 QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
-# What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip.
+# What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip; the
+# packaged README links what it references outside the zip on the repository (scripts/release_links.py).
 RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n
 export QT_QPA_PLATFORM := offscreen
 # Keep the tests' and the demo's QGIS settings out of the user's profile.
@@ -80,6 +81,7 @@ lint: setup
 package:
 	@mkdir -p $(DIST)
 	git archive --format=zip --prefix=$(PLUGIN)/ -o $(DIST)/$(PLUGIN)-$(VERSION).zip HEAD $(RELEASE_PATHS)
+	$(SYSTEM_PYTHON) scripts/release_links.py $(DIST)/$(PLUGIN)-$(VERSION).zip
 	@echo "$(DIST)/$(PLUGIN)-$(VERSION).zip"
 
 deploy: package

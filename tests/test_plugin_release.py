@@ -1,6 +1,7 @@
 """Release packaging and translations: the zip users install, and the Polish user interface."""
 
 import configparser
+import re
 import subprocess
 import sys
 import zipfile
@@ -39,6 +40,22 @@ def test_release_zip_layout(tmp_path):
     for excluded in ("/tests/", "__pycache__", ".pyc", "/.ci/", "/benchmarks/", "/scripts/", "/.venv", "Makefile"):
         assert not [name for name in names if excluded in name], excluded
     assert packaged_metadata["general"]["version"] == metadata()["version"]
+
+
+def test_packaged_readme_references_only_what_the_zip_holds_or_absolute_addresses(tmp_path):
+    subprocess.run(["make", "-s", "package", f"DIST={tmp_path}"], cwd=REPOSITORY, check=True, capture_output=True)
+    archive = tmp_path / "{}-{}.zip".format(PLUGIN_NAME, metadata()["version"])
+    with zipfile.ZipFile(archive) as release:
+        names = set(release.namelist())
+        readme = release.read(f"{PLUGIN_NAME}/README.md").decode("utf-8")
+    targets = re.findall(r"!?\[[^\]]*\]\(([^)\s]+)\)", readme)
+    assert any(target.endswith("scripts/demo.png") for target in targets)
+    for target in targets:
+        if re.match(r"^(https?:|mailto:|#)", target):
+            continue
+        assert f"{PLUGIN_NAME}/{target.split('#')[0]}" in names, target
+    repository = metadata()["repository"]
+    assert f"{repository}/raw/main/scripts/demo.png" in targets
 
 
 def test_release_zip_plugin_imports_from_extracted_folder(tmp_path):
