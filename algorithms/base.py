@@ -30,8 +30,10 @@ def homepage():
 def length_parameter(name, description, default, parent_layer):
     """A non-negative length in the units of ``parent_layer``, or in metres when that layer is in degrees.
 
-    A ``QgsProcessingParameterDistance`` tied to the layer, so the dialog shows the layer's unit next to the
-    box and converts what the user types in another unit of the same kind.
+    A ``QgsProcessingParameterDistance`` tied to the layer (``qgis_process``, batch dialog and modeler show
+    it as QGIS does); the toolbox dialog shows it with :class:`.length_widget.LengthWidgetWrapper`, which
+    names the layer's unit next to the box and "meters" for a layer in degrees, where QGIS would say
+    "degrees".
 
     Parameters
     ----------
@@ -48,6 +50,7 @@ def length_parameter(name, description, default, parent_layer):
     """
     parameter = QgsProcessingParameterDistance(name, description, default, parent_layer, True, 0.0)
     parameter.setDefaultUnit(DistanceUnit.Meters)
+    parameter.setMetadata({"widget_wrapper": {"class": f"{__package__}.length_widget.LengthWidgetWrapper"}})
     return parameter
 
 
