@@ -9,7 +9,8 @@ PYTHON := $(VENV)/bin/python
 SYSTEM_PYTHON := /usr/bin/python3
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEBIAN_PACKAGES := qgis python3-qgis qgis-providers python3-numpy python3-pyproj python3-venv python3-pip python3-dev \
-	libgeos-dev build-essential pkg-config pyqt5-dev-tools qttools5-dev-tools git make
+	libgeos-dev proj-bin build-essential pkg-config pyqt5-dev-tools qttools5-dev-tools git make
+# proj-bin: the distribution's pyproj finds PROJ's data next to the `proj` program when it runs in the venv.
 # The distribution's Shapely, installed with the packages above where it is Shapely 2 (Debian 13, Ubuntu 24.04).
 SHAPELY_PACKAGE = $$(apt-cache policy python3-shapely | sed -n 's/^ *Candidate: *[2-9]\..*/python3-shapely/p')
 # Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely on the system GEOS, since the wheel's
@@ -46,7 +47,8 @@ setup: system-packages $(VENV)/.installed $(QGIS_SITE)/.installed
 system-packages:
 	@if ! $(SYSTEM_PYTHON) -c "import qgis.core, pyproj, numpy, venv, ensurepip" 2>/dev/null \
 	    || ! command -v qgis_process.bin >/dev/null 2>&1 || ! command -v lrelease >/dev/null 2>&1 \
-	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1; then \
+	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1 \
+	    || ! command -v proj >/dev/null 2>&1; then \
 	  echo "Installing QGIS and tools from the distribution's packages"; \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -q && \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES) \

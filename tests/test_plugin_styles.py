@@ -63,7 +63,7 @@ def run_as_the_dialog_does(algorithm_id, parameters, project):
         parameters[name] = QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", project)
     results, ok = algorithm.run(parameters, context, feedback)
     assert ok, results
-    assert handleAlgorithmResults(algorithm, context, feedback, False, results)
+    assert handleAlgorithmResults(algorithm, context, feedback, parameters=results)
     return results
 
 
