@@ -33,7 +33,7 @@ CENTERLINE_COLOUR = "200,30,45,255"
 WIDTH_BAND_COLOUR = "240,150,40,80"
 INCIRCLE_COLOUR = "30,110,180,45"
 TRANSECT_COLOUR = "60,60,60,220"
-VERTEX_COLOUR = "120,20,30,255"
+VERTEX_COLOUR = "120,20,30,200"
 
 
 def centerline_symbol(width_band):
@@ -85,7 +85,7 @@ def transect_symbol():
 def vertex_symbol():
     """Small dark red dots."""
     return QgsMarkerSymbol.createSimple(
-        {"name": "circle", "color": VERTEX_COLOUR, "size": "1.4", "size_unit": "MM", "outline_style": "no"}
+        {"name": "circle", "color": VERTEX_COLOUR, "size": "1.8", "size_unit": "MM", "outline_style": "no"}
     )
 
 

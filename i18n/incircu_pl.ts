@@ -4,57 +4,57 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="97"/>
+        <location filename="../algorithms/base.py" line="100"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="167"/>
+        <location filename="../algorithms/base.py" line="170"/>
         <source>Boundary sampling distance (0 = automatic)</source>
         <translation>Odległość próbkowania obrysu (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="179"/>
+        <location filename="../algorithms/base.py" line="182"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="224"/>
+        <location filename="../algorithms/base.py" line="227"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="234"/>
+        <location filename="../algorithms/base.py" line="237"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="234"/>
+        <location filename="../algorithms/base.py" line="237"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="238"/>
+        <location filename="../algorithms/base.py" line="241"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="238"/>
+        <location filename="../algorithms/base.py" line="241"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -104,44 +104,44 @@
         <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="167"/>
+        <location filename="../algorithms/base.py" line="170"/>
         <source>Distance between consecutive samples of the boundary, in layer units (metres for a layer in degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.</source>
         <translation>Odległość między kolejnymi próbkami obrysu, w jednostkach warstwy (w metrach dla warstwy w stopniach). 0 dobiera ją na podstawie kształtu. Mniejsze wartości dają gładszą, ale wolniej liczoną linię środkową.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="179"/>
+        <location filename="../algorithms/base.py" line="182"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="185"/>
+        <location filename="../algorithms/base.py" line="188"/>
         <source>Line layer: input attributes plus length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width), n_vertices and ends_found.</source>
         <translation>Warstwa liniowa: atrybuty wejściowe oraz length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości), n_vertices i ends_found.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="224"/>
+        <location filename="../algorithms/base.py" line="227"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/outputs.py" line="195"/>
+        <location filename="../algorithms/outputs.py" line="205"/>
         <source>Could not write a centerline: {}</source>
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
-        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co &apos;Odległość między przekrojami&apos;, z szerokością i kilometrażem.</translation>
+        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
 </context>
 <context>
@@ -239,12 +239,12 @@
     <message>
         <location filename="../algorithms/lines_centerline.py" line="63"/>
         <source>Optional; a line of the first lines is paired with the line of the second lines that has the same value in &apos;Pairing field of the second lines&apos;.</source>
-        <translation>Opcjonalne; linia z pierwszych linii łączona jest w parę z linią z drugich linii o tej samej wartości w &apos;Pole parujące drugich linii&apos;.</translation>
+        <translation>Opcjonalne; linia z pierwszych linii łączona jest w parę z linią z drugich linii o tej samej wartości w 'Pole parujące drugich linii'.</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="75"/>
         <source>Optional; required together with &apos;Pairing field of the first lines&apos;.</source>
-        <translation>Opcjonalne; wymagane razem z &apos;Pole parujące pierwszych linii&apos;.</translation>
+        <translation>Opcjonalne; wymagane razem z 'Pole parujące pierwszych linii'.</translation>
     </message>
 </context>
 <context>
@@ -337,12 +337,12 @@
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="51"/>
         <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma &apos;Punktami podziału&apos; leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="68"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
-        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do &apos;Tolerancja przyciągania punktów podziału&apos; od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
+        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
 </context>
 </TS>
