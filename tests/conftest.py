@@ -19,10 +19,7 @@ REPOSITORY = Path(__file__).resolve().parent.parent
 DATA = REPOSITORY / "tests" / "data"
 ARTIFACTS = REPOSITORY / "tests" / "artifacts"
 PLUGIN_NAME = "incircu"
-#: The Python QGIS runs (the distribution's).
-SYSTEM_PYTHON = "/usr/bin/python3"
-#: Shapely built against the system GEOS for QGIS's own Python (``make setup``; empty where the distribution's
-#: Shapely is version 2); numpy and pyproj come from the distribution.
+#: Shapely built against the system GEOS for QGIS's own Python (``make setup``); numpy and pyproj come from Debian.
 QGIS_SITE = Path(os.environ.get("INCIRCU_QGIS_SITE", REPOSITORY / ".venv" / "qgis-site"))
 
 
@@ -103,8 +100,9 @@ def qgis_process(plugin_folder, tmp_path_factory):
         ``run(*arguments)`` -> ``subprocess.CompletedProcess`` (text output, never raising on failure).
     """
     profile = tmp_path_factory.mktemp("qgis_profile")
+    # Empty where the distribution's Shapely is Shapely 2 (Debian 13): QGIS's Python then imports that one.
     probe = subprocess.run(
-        [SYSTEM_PYTHON, "-c", "import shapely"],
+        ["/usr/bin/python3", "-c", "import shapely"],
         env={**os.environ, "PYTHONPATH": str(QGIS_SITE)},
         capture_output=True,
         check=False,

@@ -1,10 +1,12 @@
 """The toolbox dialog of each algorithm, built offscreen and saved as PNG under tests/artifacts/."""
 
 import pytest
-from conftest import DATA
+from conftest import REPOSITORY
 from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtGui import QImage
 from qgis.PyQt.QtWidgets import QApplication, QDialogButtonBox, QLabel
+
+DATA = REPOSITORY / "tests" / "data"
 
 #: Algorithm, the input layer put in the project (selected by the dialog) and its distance parameters.
 DIALOGS = {

@@ -7,7 +7,7 @@ then rendered in layer-tree order to ``tests/artifacts/styled_<algorithm>.png``.
 """
 
 import pytest
-from conftest import DATA
+from conftest import REPOSITORY
 from qgis.core import (
     QgsApplication,
     QgsFillSymbol,
@@ -23,6 +23,8 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QSize
 from qgis.PyQt.QtGui import QColor
+
+DATA = REPOSITORY / "tests" / "data"
 
 OUTPUTS = ("OUTPUT", "OUTPUT_VERTICES", "OUTPUT_TRANSECTS", "OUTPUT_CIRCLES")
 
