@@ -289,3 +289,15 @@ def test_progress_reports_fractions_and_cancel_stops():
     with pytest.raises(Cancelled):
         find_ends(polygon, progress=lambda fraction: calls.append(fraction) or False)
     assert len(calls) == 1
+
+
+def test_a_tiny_polygon_far_from_the_origin_gets_ends_on_its_ring():
+    # 1.4e-5 across at 1e6 from the origin: coordinates are rounded to about 1e-10, a millionth of its size.
+    angles = np.linspace(0.0, 2.0 * math.pi, 7, endpoint=False)
+    size = 1.4030173759013428e-05
+    centre = (727280.18049115, 962390.08013269)
+    polygon = Polygon(np.c_[centre[0] + size * np.cos(angles), centre[1] + size * np.sin(angles)])
+    ends = find_ends(polygon)
+    for end in (ends.start, ends.end):
+        assert polygon.exterior.distance(end) <= 1e-7 * 2.0 * size
+    assert polygon_centerline(polygon).line.length > 0.0

@@ -92,6 +92,10 @@ GUIDE_REACH = 2.0
 #: Two ends closer than this fraction of the bounding-box diagonal are the same end (see rule 4).
 MIN_SEPARATION = 1e-5
 
+#: Largest distance of an end from the exterior ring, as a fraction of the bounding-box diagonal (a tenth of
+#: the default snap tolerance of the split points).
+ON_RING = 1e-7
+
 #: Largest and smallest bounding-box diagonal, CRS units, that the computation handles.
 LARGEST_EXTENT = 1e300
 SMALLEST_EXTENT = 1e-300
@@ -233,7 +237,10 @@ def _find_ends(polygon, rule, guide, check):
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
     elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
-    first, second = sorted([first * scale + origin, second * scale + origin], key=lambda xy: (xy[0], xy[1]))
+    ends = [xy * scale + origin for xy in (first, second)]
+    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
+        ends = [_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in ends]
+    first, second = sorted(ends, key=lambda xy: (xy[0], xy[1]))
     return EndsResult(
         start=Point(first),
         end=Point(second),
@@ -301,6 +308,23 @@ def _guide_earnings(polygon, nodes, spans, guide):
     tree = shapely.STRtree(shapely.points(nodes))
     _, nearest = tree.query_nearest(samples[near], all_matches=False)
     return np.bincount(nearest, weights=piece[near], minlength=len(nodes)) * spans
+
+
+def _on_ring(exterior, xy, tolerance):
+    """Return ``xy`` moved onto the ring when it is farther than ``tolerance`` from it, CRS units.
+
+    Back in the input's coordinates an end can lie off the ring by the rounding of coordinates far from the
+    origin (a polygon 1e-5 across at 1e6, the only case where this is called): it goes to the nearest point
+    of the ring, or, should rounding leave that one off too, to the nearest vertex (exactly on the ring).
+    """
+    point = Point(xy)
+    if exterior.distance(point) <= tolerance:
+        return xy
+    point = exterior.interpolate(exterior.project(point))
+    if exterior.distance(point) <= tolerance:
+        return np.asarray(point.coords[0])
+    vertices = shapely.get_coordinates(exterior)
+    return vertices[int(np.argmin(np.hypot(*(vertices - np.asarray(point.coords[0])).T)))]
 
 
 def _opposite_point(exterior, xy):
