@@ -17,6 +17,7 @@ from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
+from .network import NetworkBranch, NetworkResult, polygon_network
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
 __all__ = [
@@ -30,6 +31,8 @@ __all__ = [
     "Incircle",
     "InvalidGeometryError",
     "LocalProjection",
+    "NetworkBranch",
+    "NetworkResult",
     "PartOutcome",
     "SplitPointError",
     "Transect",
@@ -41,6 +44,7 @@ __all__ = [
     "multipolygon_centerlines",
     "orient_bank_lines",
     "polygon_centerline",
+    "polygon_network",
     "split_polygon",
     "transects",
     "vertex_chainages",

@@ -19,6 +19,12 @@ from .islands import bridge_islands
 ISLAND_MODES = ("main_channel", "ignore")
 
 
+def check_island_mode(islands):
+    """Raise :class:`IncirCuError` unless ``islands`` is one of :data:`ISLAND_MODES`."""
+    if islands not in ISLAND_MODES:
+        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+
+
 def polygon_centerline(
     polygon,
     split_points=None,
@@ -67,8 +73,7 @@ def polygon_centerline(
     ((0.0, 5.0), (100.0, 5.0), 10.0)
     """
     validate_polygon(polygon)
-    if islands not in ISLAND_MODES:
-        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    check_island_mode(islands)
     notes = []
     ends_found = split_points is None or len(split_points) == 0
     if ends_found:
