@@ -167,6 +167,33 @@ def test_two_split_points_give_exactly_the_polygon_centerline():
         assert len(network.junctions) == 0
 
 
+def test_two_split_points_with_islands_give_exactly_the_polygon_centerline():
+    polygon, caps = cases.reservoir()
+    holes = [Point(-3.0, 2.0).buffer(3.0), box(60.0, -14.0, 80.0, -8.0)]
+    with_islands = Polygon(polygon.exterior.coords, [hole.exterior.coords for hole in holes])
+    (branch,) = polygon_network(with_islands, caps[:2]).branches
+    assert branch.result.line.equals_exact(polygon_centerline(with_islands, caps[:2]).line, 0.0)
+
+
+def test_rectangle_split_at_its_corners_is_its_whole_medial_axis():
+    # Chains are the four sides: the corner bisectors meet at (w/2, w/2) and (L - w/2, w/2), joined along
+    # y = w/2 (a branch between the two long sides).
+    network = polygon_network(box(0.0, 0.0, 100.0, 10.0), [(0, 0), (100, 0), (100, 10), (0, 10)], spacing=1.0)
+    assert max(junction_errors(network, [np.array([5.0, 5.0]), np.array([95.0, 5.0])])) <= RELATIVE * 100.0
+    (middle,) = [b for b in network.branches if b.start_point is None]
+    assert {middle.right_chain, middle.left_chain} == {0, 2}
+    assert np.all(shapely.get_coordinates(middle.result.line)[:, 1] == 5.0)
+    assert middle.result.length == pytest.approx(90.0, abs=RELATIVE * 100.0)
+    check_network(box(0.0, 0.0, 100.0, 10.0), network, coverage=10.0 / 100.0)
+
+
+def test_six_arm_delta_is_a_tree_of_four_junctions_on_the_oracle_axis():
+    polygon, caps = cases.delta()
+    network = polygon_network(polygon, caps)
+    assert len(network.junctions) == 4 and len(network.branches) == 9
+    check_network(polygon, network, coverage=8.0 / 100.0)
+
+
 def test_symmetric_y_meets_at_the_centre_of_its_three_reflex_corners():
     polygon, caps, expected, radius = cases.symmetric_y()
     network = polygon_network(polygon, caps)

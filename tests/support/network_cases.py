@@ -132,3 +132,19 @@ def reservoir():
     polygon = shapely.set_precision(unary_union([basin, *shapes]), 0.0).normalize()
     caps = [np.asarray(line.coords[-1], dtype=float) for line, _ in arms]
     return polygon, caps
+
+
+def delta():
+    """Six straight arms of half widths 4 to 9 fanning out from a round basin of radius 9; flat ends.
+
+    No closed form: the oracle alone checks it (four junctions).
+    """
+    angles = np.radians([0.0, 40.0, 80.0, 120.0, 160.0, 250.0])
+    lines = [
+        LineString([(0.0, 0.0), (50.0 * math.cos(a), 50.0 * math.sin(a) + (10.0 if i % 2 else 0.0))])
+        for i, a in enumerate(angles)
+    ]
+    arms = [line.buffer(4.0 + i, cap_style="flat") for i, line in enumerate(lines)]
+    basin = LineString([(0.0, 0.0), (1.0, 0.0)]).buffer(9.0)
+    polygon = shapely.set_precision(unary_union([*arms, basin]), 0.0).normalize()
+    return polygon, [np.asarray(line.coords[-1], dtype=float) for line in lines]
