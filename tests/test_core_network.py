@@ -11,10 +11,17 @@ missing branch would be a whole arm away).
 import numpy as np
 import pytest
 import shapely
+import shapely.affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
-from incircu_plugin.core import IncirCuError, SplitPointError, polygon_centerline, polygon_network
+from incircu_plugin.core import (
+    IncirCuError,
+    SplitPointError,
+    multipolygon_networks,
+    polygon_centerline,
+    polygon_network,
+)
 from tests.support import network_cases as cases
 from tests.support.oracle import MedialOracle, segment_distances
 
@@ -299,3 +306,21 @@ def test_bad_split_points_are_typed_errors():
         polygon_network(polygon, [*caps, caps[0]])
     with pytest.raises(IncirCuError, match="island mode"):
         polygon_network(polygon, caps, islands="drop")
+
+
+def test_multipart_networks_number_split_points_among_all_candidates():
+    y_polygon, y_caps, _, _ = cases.symmetric_y()
+    t_polygon, t_caps, _, _ = cases.t_junction()
+    t_polygon = shapely.affinity.translate(t_polygon, 200.0, 0.0)
+    t_caps = [(x + 200.0, y) for x, y in t_caps]
+    candidates = [t_caps[0], *y_caps, *t_caps[1:], (500.0, 500.0)]
+    outcomes = multipolygon_networks(shapely.MultiPolygon([y_polygon, t_polygon, box(400, 0, 410, 10)]), candidates)
+    assert [o.error is None for o in outcomes] == [True, True, False]
+    assert "has 0 split points" in str(outcomes[2].error)
+    for outcome, expected in zip(outcomes, ({1, 2, 3}, {0, 4, 5})):
+        network = outcome.result
+        assert {b.start_point for b in network.branches} == expected
+        assert set(network.point_indices) == expected
+        for branch in network.branches:
+            start = shapely.get_coordinates(branch.result.line)[0]
+            assert np.hypot(*(start - np.asarray(candidates[branch.start_point]))) <= 1e-12

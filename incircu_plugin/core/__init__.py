@@ -17,7 +17,7 @@ from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
-from .network import NetworkBranch, NetworkResult, polygon_network
+from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
 __all__ = [
@@ -42,6 +42,7 @@ __all__ = [
     "incircle_polygons",
     "lines_centerline",
     "multipolygon_centerlines",
+    "multipolygon_networks",
     "orient_bank_lines",
     "polygon_centerline",
     "polygon_network",

@@ -29,7 +29,7 @@ The result is checked to be a tree with exactly ``k`` leaves at the split points
 three or more; otherwise :class:`IncirCuError` says so.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from typing import Optional
 
@@ -37,7 +37,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .api import check_island_mode
+from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .chains import COINCIDENCE_TOLERANCE, extent_of, positions_on_ring, split_polygon, validate_polygon
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, SplitPointError, format_point
@@ -89,12 +89,16 @@ class NetworkResult:
         For each chain, the input indices of the split points at its start and end (counter-clockwise).
     junctions : ndarray of shape (m, 2)
         The junctions, CRS units.
+    point_indices : tuple of int or None
+        Set by :func:`multipolygon_networks`: the index of each row of ``split_points`` among all the
+        candidate split points (the numbers used by ``chains`` and the branches).
     """
 
     branches: tuple
     split_points: np.ndarray
     chains: tuple
     junctions: np.ndarray
+    point_indices: Optional[tuple] = None
 
 
 def polygon_network(
@@ -166,6 +170,78 @@ def polygon_network(
         chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
         junctions=centres,
     )
+
+
+def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **options):
+    """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
+
+    A part takes the split points within ``snap_tolerance`` of its exterior ring; fewer than two is an
+    error for that part. A part that fails does not stop the others.
+
+    Parameters
+    ----------
+    geometry : Polygon or MultiPolygon
+        CRS units.
+    split_points : sequence of Point or (x, y)
+        Candidate split points for all parts.
+    snap_tolerance : float, optional
+        CRS units; default ``1e-6`` of the geometry's extent.
+    **options
+        Passed to :func:`polygon_network` (``spacing``, ``islands``, ``progress``, ...).
+
+    Returns
+    -------
+    list of PartOutcome
+        One per part, in input order; a result's split point indices refer to ``split_points``.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+
+    Examples
+    --------
+    >>> from shapely.geometry import MultiPolygon, box
+    >>> parts = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
+    >>> outcomes = multipolygon_networks(parts, [(0, 12), (50, 2), (50, 12), (0, 2)], spacing=1.0)
+    >>> [[(b.start_point, b.end_point) for b in o.result.branches] for o in outcomes]
+    [[(1, 3)], [(0, 2)]]
+    """
+    parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
+    progress = options.pop("progress", None)
+    outcomes = []
+    for index, (part, near) in enumerate(parts):
+        try:
+            if len(near) < 2:
+                raise SplitPointError(
+                    f"Part {index} has {len(near)} split points within {snap_tolerance:.6g} of its boundary; "
+                    "a network needs at least 2."
+                )
+            network = polygon_network(
+                part,
+                [points[i] for i in near],
+                snap_tolerance=snap_tolerance,
+                progress=part_progress(progress, index, len(parts)),
+                **options,
+            )
+            outcomes.append(PartOutcome(index, _renumbered(network, near), None))
+        except IncirCuError as error:
+            outcomes.append(PartOutcome(index, None, error))
+    return outcomes
+
+
+def _renumbered(network, indices):
+    """Return a network whose split point indices ``m`` become ``indices[m]``."""
+
+    def renumber(m):
+        return None if m is None else indices[m]
+
+    branches = tuple(
+        replace(branch, start_point=renumber(branch.start_point), end_point=renumber(branch.end_point))
+        for branch in network.branches
+    )
+    chains = tuple((renumber(start), renumber(end)) for start, end in network.chains)
+    return replace(network, branches=branches, chains=chains, point_indices=tuple(indices))
 
 
 def _as_xy(point):
