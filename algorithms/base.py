@@ -114,14 +114,18 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
         )
 
-    def add_result_parameters(self):
-        """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
+    def add_m_parameter(self):
+        """Add ``ADD_M`` (store the local width as M value)."""
         self.add_parameter(
             QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
             self.tr(
                 "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
             ),
         )
+
+    def add_result_parameters(self):
+        """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
+        self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT,
@@ -169,10 +173,11 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
             advanced=True,
         )
-        self.add_output(
-            QgsProcessingOutputNumber(self.CENTERLINE_COUNT, self.tr("Number of centerlines")),
-            self.tr("Number of centerline features written."),
-        )
+        self.add_count_outputs(self.tr("Number of centerlines"), self.tr("Number of centerline features written."))
+
+    def add_count_outputs(self, description, help_text):
+        """Declare ``CENTERLINE_COUNT`` (features written, described as given) and ``SKIPPED_COUNT``."""
+        self.add_output(QgsProcessingOutputNumber(self.CENTERLINE_COUNT, description), help_text)
         self.add_output(
             QgsProcessingOutputNumber(self.SKIPPED_COUNT, self.tr("Number of skipped features")),
             self.tr("Number of input features (or parts) skipped with a warning."),

@@ -21,9 +21,14 @@ from .convert import collect_lines, from_shapely, line_with_m
 if Qgis.QGIS_VERSION_INT >= 33800:
     from qgis.PyQt.QtCore import QMetaType
 
-    DOUBLE, INTEGER, BOOLEAN = QMetaType.Type.Double, QMetaType.Type.Int, QMetaType.Type.Bool
+    DOUBLE, INTEGER, BOOLEAN, STRING = (
+        QMetaType.Type.Double,
+        QMetaType.Type.Int,
+        QMetaType.Type.Bool,
+        QMetaType.Type.QString,
+    )
 else:
-    DOUBLE, INTEGER, BOOLEAN = QVariant.Double, QVariant.Int, QVariant.Bool
+    DOUBLE, INTEGER, BOOLEAN, STRING = QVariant.Double, QVariant.Int, QVariant.Bool, QVariant.String
 
 
 def make_fields(definitions):

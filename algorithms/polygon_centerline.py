@@ -1,22 +1,16 @@
 """Processing algorithm ``incircu:polygoncenterline``: one unbranched centerline per polygon (part)."""
 
-import math
-
 from qgis.core import (
-    QgsFeatureRequest,
-    QgsGeometry,
-    QgsPointXY,
     QgsProcessing,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
-    QgsRectangle,
-    QgsSpatialIndex,
     QgsWkbTypes,
 )
 
 from .base import IncirCuAlgorithm
 from .running import FeatureRun
+from .split_points import SplitPoints
 
 
 class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
@@ -113,23 +107,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
-        points, index = [], QgsSpatialIndex()
-        if split_source is not None:
-            request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
-            for feature in split_source.getFeatures(request):
-                for vertex in feature.geometry().vertices():
-                    index.addFeature(len(points), QgsRectangle(vertex.x(), vertex.y(), vertex.x(), vertex.y()))
-                    points.append(vertex)
+        split_points = SplitPoints(split_source, crs, context)
 
         for feature in run.features(source):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             shape = run.frame.to_core(geometry)
-            margin = _layer_margin(snap_tolerance, geometry, crs.isGeographic())
-            nearby = [points[i] for i in index.intersects(geometry.boundingBox().buffered(margin))]
-            candidates = [
-                run.frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(point.x(), point.y()))) for point in nearby
-            ]
+            candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
             outcomes = run.compute(
                 feature.id(),
                 None,
@@ -154,11 +138,3 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 parts.append((outcome.part_index, outcome.result))
             run.write(feature, parts)
         return run.finish()
-
-
-def _layer_margin(distance, geometry, geographic):
-    """Return ``distance`` (metres when ``geographic``) as a safe bounding-box margin in layer units."""
-    if not geographic:
-        return distance
-    latitude = geometry.boundingBox().center().y()
-    return 2.0 * distance / (111_000.0 * max(math.cos(math.radians(latitude)), 0.01))

@@ -75,9 +75,17 @@ class FeatureRun:
         algorithm, parameters, context = self.algorithm, self.parameters, self.context
         interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
         add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
-        self.writer = self.writer_class(algorithm, parameters, context, fields, crs, multi, add_m, interval)
-        if self.writer.sink is None:
-            raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
+        self.use_writer(self.writer_class(algorithm, parameters, context, fields, crs, multi, add_m, interval), crs)
+
+    def use_writer(self, writer, crs):
+        """Write results through ``writer`` and compute in the working frame of ``crs``.
+
+        ``writer`` has ``sink`` (None when it could not be created), ``write(attributes, source_fid, parts,
+        frame)``, ``destinations()`` and ``centerline_count``, like :class:`CenterlineWriter`.
+        """
+        if writer.sink is None:
+            raise QgsProcessingException(self.algorithm.invalidSinkError(self.parameters, self.algorithm.OUTPUT))
+        self.writer = writer
         self.frame = self.frame_class(crs)
 
     def features(self, source, request=None):
