@@ -22,6 +22,7 @@ from incircu_plugin.core import (
     polygon_centerline,
     polygon_network,
 )
+from incircu_plugin.core import network as network_module
 from tests.support import network_cases as cases
 from tests.support.oracle import MedialOracle, segment_distances
 
@@ -324,3 +325,16 @@ def test_multipart_networks_number_split_points_among_all_candidates():
         for branch in network.branches:
             start = shapely.get_coordinates(branch.result.line)[0]
             assert np.hypot(*(start - np.asarray(candidates[branch.start_point]))) <= 1e-12
+
+
+def test_a_branch_shorter_than_the_sampling_is_recovered_between_two_junctions():
+    # A run whose vertices jump from the left side's label straight to the right side's (no vertex on the
+    # middle branch along the top): the point equidistant from the bottom, left and right sides, (50, 50),
+    # has the top side inside its circle, so the change splits into the junctions (5, 5) and (95, 5).
+    chains = [np.array(c, dtype=float) for c in ([(0, 0), (100, 0)], [(100, 0), (100, 10)], [(100, 10), (0, 10)])]
+    chains.append(np.array([(0, 10), (0, 0)], dtype=float))
+    junctions = network_module._Junctions(network_module._Boundary(chains, float(np.hypot(100.0, 10.0))))
+    found = junctions.between(0, 3, 1, np.array([3.0, 3.0]), np.array([97.0, 3.0]))
+    assert [key for key, _, _ in found] == [(0, 2, 3), (0, 1, 2)]
+    assert np.allclose([centre for _, centre, _ in found], [(5.0, 5.0), (95.0, 5.0)], rtol=0.0, atol=1e-12)
+    assert [radius for _, _, radius in found] == pytest.approx([5.0, 5.0], abs=1e-12)

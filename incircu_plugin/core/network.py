@@ -395,7 +395,7 @@ class _Junctions:
         """
         key = tuple(sorted((i, a, b)))
         if key not in self.by_chains:
-            centre = _newton_junction(self.boundary, key, 0.5 * (start + end))
+            centre = _newton_junction(self.boundary, key, start, end)
             distances = self.boundary.distances(centre)
             radius = float(np.mean(distances[list(key)]))
             inside = [
@@ -407,7 +407,8 @@ class _Junctions:
                 between = _between_in_order(i, a, b, int(inside[0]), len(self.boundary.chains))
                 if between is None or depth > len(self.boundary.chains):
                     raise IncirCuError(
-                        f"The junction near {format_point(centre)} could not be located; try a smaller spacing."
+                        f"The junction near {format_point(centre)} could not be located: its circle holds another "
+                        "chain out of order. Move the split points farther out along the arms."
                     )
                 return self.between(i, a, between, start, centre, depth + 1) + self.between(
                     i, between, b, centre, end, depth + 1
@@ -423,16 +424,20 @@ def _between_in_order(i, a, b, m, k):
     return m if rank[0] < rank[1] < rank[2] else None
 
 
-def _newton_junction(boundary, key, start):
+def _newton_junction(boundary, key, start, end):
     """Locate the point equidistant from three chains by Newton's method on the exact distances.
+
+    The iteration starts midway between two run vertices on either side of the junction, then (when it
+    meets a singular step, e.g. from a point outside the region, or does not settle) at other points
+    between them.
 
     Parameters
     ----------
     boundary : _Boundary
     key : tuple of three int
         The chains.
-    start : ndarray of shape (2,)
-        First guess, CRS units (between two run vertices on either side of the junction).
+    start, end : ndarray of shape (2,)
+        The two run vertices, CRS units.
 
     Returns
     -------
@@ -441,9 +446,20 @@ def _newton_junction(boundary, key, start):
     Raises
     ------
     IncirCuError
-        When the iteration does not settle.
+        When no start settles.
     """
-    x = np.asarray(start, dtype=float)
+    for fraction in (0.5, 0.25, 0.75, 0.0, 1.0):
+        found = _newton_from(boundary, key, start + fraction * (end - start))
+        if found is not None:
+            return found
+    raise IncirCuError(
+        f"The junction near {format_point(0.5 * (start + end))} could not be located: its circle touches a chain "
+        "at several places or a split point itself. Move the split points farther out along the arms."
+    )
+
+
+def _newton_from(boundary, key, x):
+    """Run Newton's method for :func:`_newton_junction` from ``x``; None when it does not settle."""
     step_floor = 4.0 * float(np.spacing(np.max(np.abs(x)) + boundary.extent))
 
     def residual(point):
@@ -454,13 +470,12 @@ def _newton_junction(boundary, key, start):
     value, distances, feet = residual(x)
     for _ in range(NEWTON_STEPS):
         if np.any(distances <= 0.0):
-            break
+            return None
         gradients = (x - feet) / distances[:, None]
-        jacobian = gradients[0] - gradients[1:]
         try:
-            step = np.linalg.solve(jacobian, -value)
+            step = np.linalg.solve(gradients[0] - gradients[1:], -value)
         except np.linalg.LinAlgError:
-            break
+            return None
         for _ in range(40):
             trial = residual(x + step)
             if np.max(np.abs(trial[0])) < np.max(np.abs(value)) or np.hypot(*step) <= step_floor:
@@ -470,9 +485,7 @@ def _newton_junction(boundary, key, start):
         value, distances, feet = trial
         if np.hypot(*step) <= step_floor:
             return x
-    if np.max(np.abs(value)) <= JUNCTION_TOLERANCE * boundary.extent:
-        return x
-    raise IncirCuError(f"The junction near {format_point(start)} could not be located; try a smaller spacing.")
+    return x if np.max(np.abs(value)) <= JUNCTION_TOLERANCE * boundary.extent else None
 
 
 def _run_pieces(result, i, labels, junctions):
@@ -637,5 +650,5 @@ def _check_tree(edges, k, boundary):
         raise IncirCuError(
             f"The network found is not a tree with one end at each of the {k} split points "
             f"({len(edges)} branches, {len(leaves)} ends, {len(weak)} junctions of degree below 3); "
-            "try a smaller spacing."
+            "a split point may lie on a junction's circle: move the split points farther out along the arms."
         )
