@@ -24,12 +24,22 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     ISLANDS = "ISLANDS"
 
     ICON = "polygoncenterline.svg"
+    #: Section of the README (for the help URL) and the layer the lengths refer to.
+    HELP_ANCHOR = "network-between-three-or-more-ends--incircupolygonnetwork"
+    LENGTH_PARENT = INPUT
 
     def name(self):
         return "polygonnetwork"
 
     def displayName(self):
         return self.tr("Centerline network of polygons (IncirCu)")
+
+    def shortDescription(self):
+        return self.tr("The medial-axis tree between the arm ends of a confluence, a delta or a road junction.")
+
+    def centerline_output_name(self):
+        """Return the label of the branch output."""
+        return self.tr("Network branches")
 
     def tags(self):
         return self.tr("network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width").split(",")
@@ -100,7 +110,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
-                self.OUTPUT, self.tr("Network branches"), QgsProcessing.SourceType.TypeVectorLine
+                self.OUTPUT, self.centerline_output_name(), QgsProcessing.SourceType.TypeVectorLine
             ),
             self.tr(
                 "Line layer, one feature per branch: input attributes plus from_point, to_point (split point ids "
