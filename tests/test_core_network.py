@@ -16,6 +16,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
 from incircu_plugin.core import (
+    Cancelled,
     IncirCuError,
     SplitPointError,
     multipolygon_networks,
@@ -107,17 +108,19 @@ def check_topology(network, k):
     return degree
 
 
-def check_network(polygon, network, attached=None, coverage=None):
+def check_network(polygon, network, attached=None, coverage=None, sites=None):
     """Assert every invariant of a network; return the worst vertex error, CRS units.
 
     Each vertex ``v`` (junctions included) of a branch with radius ``r`` lies at distance ``r`` from its right
     and left chains and no nearer to any other chain; each junction is equidistant from at least three
-    chains; with ``coverage`` (no islands), the branches along each chain ``i`` are the oracle's medial axis
+    chains (``sites`` replaces the chains cut here, e.g. by the core's chains with their island slits); with
+    ``coverage`` (no islands), the branches along each chain ``i`` are the oracle's medial axis
     between ``C_i`` and the rest of the ring: every vertex on it and every point of it near them.
     """
     k = len(network.split_points)
     check_topology(network, k)
-    chains, sites = ring_chains(polygon, network, attached)
+    chains, ring_sites = ring_chains(polygon, network, attached)
+    sites = ring_sites if sites is None else sites
     extent = float(max(np.ptp(shapely.get_coordinates(polygon), axis=0)))
     tolerance = RELATIVE * extent
     worst = 0.0
@@ -338,3 +341,32 @@ def test_a_branch_shorter_than_the_sampling_is_recovered_between_two_junctions()
     assert [key for key, _, _ in found] == [(0, 2, 3), (0, 1, 2)]
     assert np.allclose([centre for _, centre, _ in found], [(5.0, 5.0), (95.0, 5.0)], rtol=0.0, atol=1e-12)
     assert [radius for _, _, radius in found] == pytest.approx([5.0, 5.0], abs=1e-12)
+
+
+def test_island_in_the_confluence_basin_is_passed_on_the_far_side_of_its_slit():
+    # The island is nearest chain 1 (the west bank) and joins it through a slit: for the core the slit is
+    # part of that chain, and a branch may touch it (as the polygon centerline may), so the branches are
+    # checked against the core's bridged chains; that no circle holds any of the island is checked apart.
+    polygon, caps = cases.reservoir()
+    island = Point(-3.0, 2.0).buffer(3.0)
+    with_island = Polygon(polygon.exterior.coords, [island.exterior.coords])
+    network = polygon_network(with_island, caps)
+    order = network_module._ring_order(with_island, caps, None)
+    bridged = network_module._bridged_chains(with_island, [np.asarray(caps[i]) for i in order], None, "main_channel")
+    check_network(with_island, network, sites=[[chain] for chain in bridged])
+    for branch in network.branches:
+        assert not branch.result.line.intersects(island)
+        vertices = shapely.get_coordinates(branch.result.line)
+        ring = shapely.get_coordinates(island.exterior)
+        assert np.all(segment_distances(vertices, ring) >= branch.result.radii - RELATIVE * 300.0)
+
+
+def test_progress_runs_from_zero_to_one_and_cancel_stops():
+    polygon, caps = cases.delta()
+    fractions = []
+    polygon_network(polygon, caps, progress=lambda fraction: fractions.append(fraction) or True)
+    assert fractions and 0.0 <= min(fractions) and max(fractions) <= 1.0
+    assert max(fractions) >= 0.99
+    assert np.all(np.diff(fractions) >= 0.0)
+    with pytest.raises(Cancelled):
+        polygon_network(polygon, caps, progress=lambda fraction: fraction < 0.5)

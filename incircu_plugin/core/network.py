@@ -251,7 +251,7 @@ def _as_xy(point):
 
 def _run_progress(progress, run, runs, fraction):
     """Report the progress of run ``run`` of ``runs`` as a fraction of the whole network."""
-    return progress((run + fraction) / runs)
+    return progress(float((run + fraction) / runs))
 
 
 def _ring_order(polygon, split_points, tolerance):
