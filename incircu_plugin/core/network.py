@@ -157,10 +157,10 @@ def polygon_network(
     junctions = _Junctions(boundary)
     pieces = []
     for i in range(k - 1):
-        c2, labels = _complement(chains, i)
+        c2 = _complement(chains, i)
         report = None if progress is None else partial(_run_progress, progress, i, k - 1)
         result = centerline_from_chains(chains[i], c2, spacing, progress=report, **engine_options)
-        pieces.extend(_run_pieces(result, i, _vertex_labels(result, c2, labels, i, k), junctions))
+        pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
     branches, centres = _assemble(pieces, junctions, order)
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
@@ -326,43 +326,54 @@ def _bridged_chains(polygon, points, tolerance, islands):
 
 
 def _complement(chains, i):
-    """Return ``D_i`` (from ``p_i`` backwards to ``p_{i+1}``) and the chain index of each of its segments."""
+    """Return ``D_i``: the other chains from ``p_i`` backwards to ``p_{i+1}``, as one chain."""
     k = len(chains)
-    pieces, labels = [], []
-    for step in range(1, k):
-        j = (i - step) % k
-        piece = chains[j][::-1]
-        pieces.append(piece if step == 1 else piece[1:])
-        labels.append(np.full(len(chains[j]) - 1, j))
-    return np.concatenate(pieces), np.concatenate(labels)
+    return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
 
 
-def _vertex_labels(result, c2, segment_labels, i, k):
+def _vertex_labels(result, i, boundary):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
+    The feet follow ``D_i`` along the line, so the labels only change ``k - 2`` times at most: they are
+    found by bisection (the nearest chain of a foot is computed for O(k log n) vertices, not all of them).
     Labels that go back against ``D_i``'s order (a foot at the very junction) take the label before them.
     """
+    k = len(boundary.chains)
     feet = np.asarray(result.foot_b, dtype=float)
-    segment = IndexedPolyline(c2).tree.query_nearest(shapely.points(feet), all_matches=False)[1]
-    labels = segment_labels[segment]
+    count = len(feet)
+    labels = np.full(count, -1)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
-    rank = np.mod(i - 1 - labels, k)
-    rank = np.maximum.accumulate(rank)
+    others = [j for j in range(k) if j != i]
+
+    def label(index):
+        if labels[index] < 0:
+            labels[index] = others[int(np.argmin([boundary.nearest(feet[index], j)[0] for j in others]))]
+        return labels[index]
+
+    spans = [(0, count - 1)]
+    while spans:
+        low, high = spans.pop()
+        if label(low) == label(high):
+            labels[low:high] = labels[low]
+        elif high - low > 1:
+            middle = (low + high) // 2
+            spans.extend([(low, middle), (middle, high)])
+    rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
     return np.mod(i - 1 - rank, k)
 
 
 class _Boundary:
-    """The chains with spatial indices: exact distances and feet from points to each chain."""
+    """The chains with spatial indices (built when first needed): exact distances and feet to each chain."""
 
     def __init__(self, chains, extent):
         self.chains = chains
-        self.indexed = [IndexedPolyline(chain) for chain in chains]
+        self.indexed = [None] * len(chains)
         self.extent = extent
-        self.region = shapely.Polygon(np.concatenate([chain[:-1] for chain in chains]))
-        shapely.prepare(self.region)
 
     def nearest(self, point, chain):
         """Return the distance from ``point`` to chain ``chain`` and the foot there."""
+        if self.indexed[chain] is None:
+            self.indexed[chain] = IndexedPolyline(self.chains[chain])
         distance, _, foot = self.indexed[chain].nearest(np.asarray(point, dtype=float)[None])
         return float(distance[0]), foot[0]
 
