@@ -118,7 +118,9 @@ def polygon_network(
     polygon : Polygon
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of Point or (x, y)
-        At least two points within ``snap_tolerance`` of the exterior ring, in any order.
+        At least two points within ``snap_tolerance`` of the exterior ring. The first one starts chain 0,
+        the others follow counter-clockwise whatever their order; with two points the branch runs from the
+        first to the second, as :func:`polygon_centerline`'s line.
     spacing : float, optional
         Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
     snap_tolerance : float, optional
@@ -148,6 +150,7 @@ def polygon_network(
     """
     validate_polygon(polygon)
     check_island_mode(islands)
+    split_points = [] if split_points is None else list(split_points)
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
     chains = _bridged_chains(polygon, points, snap_tolerance, islands)
@@ -262,10 +265,9 @@ def _ring_order(polygon, split_points, tolerance):
     SplitPointError
         Fewer than two points, a point too far from the ring, or two points at the same place.
     """
-    points = [] if split_points is None else list(split_points)
-    if len(points) < 2:
-        raise SplitPointError(f"A network needs at least 2 split points on the boundary, got {len(points)}.")
-    xy = [_as_xy(point) for point in points]
+    if len(split_points) < 2:
+        raise SplitPointError(f"A network needs at least 2 split points on the boundary, got {len(split_points)}.")
+    xy = [_as_xy(point) for point in split_points]
     if not all(np.all(np.isfinite(p)) for p in xy):
         raise SplitPointError("A split point has a NaN or infinite coordinate.")
     exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
@@ -558,7 +560,7 @@ def _junction_clusters(junctions):
     return cluster
 
 
-def _end_of(node, piece, junctions, cluster):
+def _end_of(node, junctions, cluster):
     """Return a piece end as (graph node, centre or None for a leaf already among the vertices, radius)."""
     kind, value = node
     if kind == "leaf":
@@ -616,7 +618,7 @@ def _assemble(pieces, junctions, order):
     cluster = _junction_clusters(junctions)
     branches, edges = [], []
     for piece in pieces:
-        ends = [_end_of(node, piece, junctions, cluster) for node in piece["ends"]]
+        ends = [_end_of(node, junctions, cluster) for node in piece["ends"]]
         if ends[0][0] == ends[1][0]:
             continue
         arrays = _piece_arrays(piece, ends, junctions)
@@ -634,12 +636,12 @@ def _assemble(pieces, junctions, order):
         point_of = [order[node[1]] if node[0] == "leaf" else None for node, _, _ in ends]
         branches.append(NetworkBranch(result, point_of[0], point_of[1], right, left))
         edges.append((ends[0][0], ends[1][0]))
-    _check_tree(edges, len(order), junctions.boundary)
+    _check_tree(edges, len(order))
     used = sorted({node[1] for edge in edges for node in edge if node[0] == "junction"})
     return branches, np.array([junctions.by_chains[key][0] for key in used]).reshape(-1, 2)
 
 
-def _check_tree(edges, k, boundary):
+def _check_tree(edges, k):
     """Raise :class:`IncirCuError` unless the edges form a tree with leaves 0..k-1 and junctions of degree >= 3."""
     degree = {}
     for edge in edges:
