@@ -149,3 +149,22 @@ def test_geographic_layer_is_computed_in_metres(provider):
     for feature in results["OUTPUT"].getFeatures():
         assert feature["length"] == pytest.approx(60.0, rel=5e-3)
         assert feature["width_max"] == pytest.approx(2.0 * radius, rel=5e-3)
+
+
+def test_branches_of_a_geopackage_feature_get_their_own_fid(provider, tmp_path):
+    # A GeoPackage's fid is unique: only the first branch of a feature keeps the input's fid.
+    polygon, caps, _, _ = cases.t_junction()
+    written = processing.run(
+        "native:reprojectlayer",
+        {
+            "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "T")]),
+            "TARGET_CRS": "EPSG:2180",
+            "OUTPUT": str(tmp_path / "in.gpkg"),
+        },
+    )["OUTPUT"]
+    target = tmp_path / "network.gpkg"
+    results, feedback = run({"INPUT": written, "SPLIT_POINTS": split_layer(caps), "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 3, feedback.warnings
+    output = QgsVectorLayer(str(target), "network", "ogr")
+    assert output.featureCount() == 3
+    assert len({feature["fid"] for feature in output.getFeatures()}) == 3
