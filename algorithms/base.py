@@ -7,6 +7,7 @@ from qgis.core import (
     QgsProcessingAlgorithm,
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterNumber,
     QgsProcessingUtils,
@@ -112,6 +113,36 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
                 "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.",
             ),
+        )
+
+    def add_snap_tolerance_parameter(self, name="SNAP_TOLERANCE"):
+        """Add the split point snapping tolerance (layer units or metres)."""
+        self.add_parameter(
+            self.length_parameter(name, self.tr("Split point snapping tolerance"), 1.0),
+            self.tr(
+                "Largest distance between a split point and the polygon's exterior ring, layer units "
+                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
+            ),
+        )
+
+    def add_islands_parameter(self, help_text, name="ISLANDS"):
+        """Add the island mode, its choices in the order of the core's ``ISLAND_MODES``.
+
+        Parameters
+        ----------
+        help_text : str
+            What the choices do in this algorithm, already translated.
+        name : str
+            Parameter name.
+        """
+        self.add_parameter(
+            QgsProcessingParameterEnum(
+                name,
+                self.tr("Islands (holes)"),
+                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
+                defaultValue=0,
+            ),
+            help_text,
         )
 
     def add_m_parameter(self):

@@ -3,7 +3,6 @@
 from qgis.core import (
     QgsProcessing,
     QgsProcessingParameterBoolean,
-    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
     QgsWkbTypes,
 )
@@ -64,25 +63,14 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
             ),
         )
-        self.add_parameter(
-            self.length_parameter(self.SNAP_TOLERANCE, self.tr("Split point snapping tolerance"), 1.0),
-            self.tr(
-                "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
-            ),
-        )
+        self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
         self.add_spacing_parameter()
-        self.add_parameter(
-            QgsProcessingParameterEnum(
-                self.ISLANDS,
-                self.tr("Islands (holes)"),
-                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
-                defaultValue=0,
-            ),
+        self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: the line never crosses an island and goes round it on the "
                 "side of the wider channel. Ignore islands: holes are filled before computing."
             ),
+            self.ISLANDS,
         )
         self.add_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),

@@ -2,7 +2,6 @@
 
 from qgis.core import (
     QgsProcessing,
-    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
@@ -86,26 +85,15 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 "Attribute naming each split point in from_point, to_point and the chains; default: its feature id."
             ),
         )
-        self.add_parameter(
-            self.length_parameter(self.SNAP_TOLERANCE, self.tr("Split point snapping tolerance"), 1.0),
-            self.tr(
-                "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
-            ),
-        )
+        self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
         self.add_spacing_parameter()
-        self.add_parameter(
-            QgsProcessingParameterEnum(
-                self.ISLANDS,
-                self.tr("Islands (holes)"),
-                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
-                defaultValue=0,
-            ),
+        self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: no branch crosses an island; each island belongs to the chain it "
                 "is nearer to, so the branches go round it on the side of the wider channel. Ignore islands: "
                 "holes are filled before computing."
             ),
+            self.ISLANDS,
         )
         self.add_m_parameter()
         self.add_parameter(
