@@ -133,6 +133,17 @@ def check_network(polygon, network, attached=None, coverage=None, sites=None):
             worst = max(worst, float(error.max()))
             assert error.max() <= tolerance, f"chain {chain}: a vertex is {error.max():.3g} off its circle"
         assert np.all(distances.min(axis=0) >= radii - tolerance), "a circle holds another chain"
+        # foot_a lies on the right chain, foot_b on the left one, each at the radius from its vertex, on its side.
+        feet = (np.asarray(branch.result.foot_a), np.asarray(branch.result.foot_b))
+        for foot, chain, side in ((feet[0], branch.right_chain, -1.0), (feet[1], branch.left_chain, 1.0)):
+            assert distance_to(foot, sites[chain]).max() <= tolerance
+            assert np.abs(np.hypot(*(foot - vertices).T) - radii).max() <= tolerance
+            direction = vertices[2:] - vertices[:-2]
+            offset = foot[1:-1] - vertices[1:-1]
+            cross = direction[:, 0] * offset[:, 1] - direction[:, 1] * offset[:, 0]
+            assert np.all(side * cross >= -tolerance * np.hypot(*direction.T)), (
+                f"a foot of chain {chain} is on the wrong side"
+            )
         assert np.all(branch.result.widths == 2.0 * radii)
     for junction in network.junctions:
         distances = np.array([distance_to(junction[None], site)[0] for site in sites])
