@@ -39,7 +39,7 @@ from shapely.geometry import LineString, Point
 
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .chains import COINCIDENCE_TOLERANCE, extent_of, positions_on_ring, split_polygon, validate_polygon
-from .engine import CenterlineResult, centerline_from_chains
+from .engine import Cancelled, CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
@@ -163,6 +163,8 @@ def polygon_network(
         c2 = _complement(chains, i)
         report = None if progress is None else partial(_run_progress, progress, i, k - 1)
         result = centerline_from_chains(chains[i], c2, spacing, progress=report, **engine_options)
+        if report is not None and report(1.0) is False:
+            raise Cancelled()
         pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
     branches, centres = _assemble(pieces, junctions, order)
     snapped = np.empty((k, 2))
