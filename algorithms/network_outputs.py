@@ -4,6 +4,7 @@ import numpy as np
 from qgis.core import QgsFeature, QgsFeatureSink, QgsGeometry, QgsProcessingException, QgsProcessingUtils, QgsWkbTypes
 from qgis.PyQt.QtCore import QCoreApplication
 
+from .compat import WkbType
 from .convert import line_with_m
 from .outputs import DOUBLE, INTEGER, STRING, make_fields, width_statistics
 
@@ -43,7 +44,7 @@ class NetworkWriter:
 
     def __init__(self, algorithm, parameters, context, input_fields, crs, add_m):
         self.add_m = add_m
-        line_type = QgsWkbTypes.addM(QgsWkbTypes.Type.LineString) if add_m else QgsWkbTypes.Type.LineString
+        line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
         # A GeoPackage's ``fid`` must stay unique: only the first branch of a feature keeps it.
         self.fid_index = input_fields.lookupField("fid")

@@ -1,14 +1,13 @@
 """Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between three or more split points."""
 
 from qgis.core import (
-    QgsProcessing,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
-    QgsWkbTypes,
 )
 
 from .base import IncirCuAlgorithm
+from .compat import GeometryType, ProcessingSourceType
 from .running import FeatureRun
 from .split_points import SplitPoints
 
@@ -31,7 +30,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         return "polygonnetwork"
 
     def displayName(self):
-        return self.tr("Centerline network of polygons (IncirCu)")
+        return self.tr("Centerline network of polygons")
 
     def shortDescription(self):
         return self.tr("The medial-axis tree between the arm ends of a confluence, a delta or a road junction.")
@@ -60,13 +59,13 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def initAlgorithm(self, configuration=None):
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
-                self.INPUT, self.tr("Polygon layer"), [QgsProcessing.SourceType.TypeVectorPolygon]
+                self.INPUT, self.tr("Polygon layer"), [ProcessingSourceType.VectorPolygon]
             ),
             self.tr("Polygons with several arms (confluences, deltas, road junctions); each part gets its network."),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
-                self.SPLIT_POINTS, self.tr("Split points"), [QgsProcessing.SourceType.TypeVectorPoint]
+                self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint]
             ),
             self.tr(
                 "The ends of the network: at least two per polygon part, within SNAP_TOLERANCE of its exterior "
@@ -98,7 +97,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
-                self.OUTPUT, self.centerline_output_name(), QgsProcessing.SourceType.TypeVectorLine
+                self.OUTPUT, self.centerline_output_name(), ProcessingSourceType.VectorLine
             ),
             self.tr(
                 "Line layer, one feature per branch: input attributes plus from_point, to_point (split point ids "
@@ -113,9 +112,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         run = FeatureRun(self, parameters, context, feedback)
         from .network_outputs import NetworkWriter  # after FeatureRun: it needs Shapely, checked there
 
-        source = run.source(self.INPUT, QgsWkbTypes.GeometryType.PolygonGeometry)
+        source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
-        split_source = run.source(self.SPLIT_POINTS, QgsWkbTypes.GeometryType.PointGeometry)
+        split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         id_field = self.parameterAsString(parameters, self.SPLIT_ID_FIELD, context)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
