@@ -7,6 +7,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 from .compat import WkbType
 from .convert import line_with_m
 from .outputs import DOUBLE, INTEGER, STRING, make_fields, width_statistics
+from .styles import CENTERLINE, style_outputs_on_load
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
 #: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
@@ -52,10 +53,12 @@ class NetworkWriter:
             parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
         )
         self.centerline_count = 0
+        self.output_name = algorithm.OUTPUT
+        style_outputs_on_load(context, {CENTERLINE: self.sink_id})
 
     def destinations(self):
         """Return the output id keyed by parameter name."""
-        return {"OUTPUT": self.sink_id}
+        return {self.output_name: self.sink_id}
 
     def write(self, attributes, source_fid, parts, frame):
         """Write the branches of the networks of one input feature.
