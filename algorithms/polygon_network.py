@@ -44,16 +44,15 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
     def shortHelpString(self):
         return self.tr(
-            "Computes, for each polygon (each part of a multipart polygon) with two or more SPLIT_POINTS on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial "
-            "axis that separates the outline's chains between consecutive split points: a tree with one end at "
-            "each split point and junctions where a circle touches three chains, without side branches. Each "
-            "branch is one line feature with the ids of the split points at its ends ('junction' at a "
-            "junction), the chains on its right and left, its length and widths; the M value of each vertex is "
-            "the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed "
-            "on the side of the wider channel, or ignored. Geographic layers are computed in a local metric "
-            "projection; distances are then in metres. A polygon that cannot be processed is skipped with a "
-            "warning naming its id and the reason."
+            "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
+            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
+            "that separates the outline's chains between consecutive split points: a tree with one end at each split "
+            "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
+            "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
+            " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
+            "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
+            " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
+            "that cannot be processed is skipped with a warning naming its id and the reason."
         )
 
     def initAlgorithm(self, configuration=None):
@@ -68,9 +67,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint]
             ),
             self.tr(
-                "The ends of the network: at least two per polygon part, within SNAP_TOLERANCE of its exterior "
-                "ring, typically one across each arm's end. A part with fewer is skipped. Another CRS is "
-                "reprojected to the polygon layer's."
+                "The ends of the network: at least two per polygon part, within 'Split point snapping "
+                "tolerance' of its exterior ring, typically one across each arm's end. A part with fewer is "
+                "skipped. Another CRS is reprojected to the polygon layer's."
             ),
         )
         self.add_parameter(
