@@ -1,15 +1,10 @@
 """Processing algorithm ``incircu:polygoncenterline``: one unbranched centerline per polygon (part)."""
 
-import math
-
 from qgis.core import (
     QgsFeatureRequest,
-    QgsGeometry,
-    QgsPointXY,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
-    QgsRectangle,
     QgsSpatialIndex,
     QgsWkbTypes,
 )
@@ -17,6 +12,7 @@ from qgis.core import (
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
 from .running import FeatureRun
+from .split_points import SplitPoints
 
 
 class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
@@ -81,27 +77,14 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
             ),
         )
-        self.add_length_parameter(
-            self.SNAP_TOLERANCE,
-            self.tr("Split point snapping tolerance"),
-            1.0,
-            self.tr(
-                "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
-            ),
-        )
+        self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
         self.add_spacing_parameter()
-        self.add_optional_parameter(
-            QgsProcessingParameterEnum(
-                self.ISLANDS,
-                self.tr("Islands (holes)"),
-                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
-                defaultValue=0,
-            ),
+        self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: the line never crosses an island and goes round it on the "
                 "side of the wider channel. Ignore islands: holes are filled before computing."
             ),
+            self.ISLANDS,
         )
         self.add_optional_parameter(
             QgsProcessingParameterEnum(
@@ -153,13 +136,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
-        points, index = [], QgsSpatialIndex()
-        if split_source is not None:
-            request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
-            for feature in split_source.getFeatures(request):
-                for vertex in feature.geometry().vertices():
-                    index.addFeature(len(points), QgsRectangle(vertex.x(), vertex.y(), vertex.x(), vertex.y()))
-                    points.append(vertex)
+        split_points = SplitPoints(split_source, crs, context)
 
         guides, guide_index = [], QgsSpatialIndex()
         if parameters.get(self.GUIDE_LINES) not in (None, ""):
@@ -175,11 +152,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             run.frame.centre_on(geometry)
             shape = run.frame.to_core(geometry)
             guide = _guide_near(run.frame, geometry, guides, guide_index)
-            margin = _layer_margin(snap_tolerance, geometry, crs.isGeographic())
-            nearby = [points[i] for i in index.intersects(geometry.boundingBox().buffered(margin))]
-            candidates = [
-                run.frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(point.x(), point.y()))) for point in nearby
-            ]
+            candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
             outcomes = run.compute(
                 feature.id(),
                 None,
@@ -225,11 +198,3 @@ def _guide_near(frame, geometry, guides, index):
         if part.geom_type == "LineString" and not part.is_empty
     ]
     return shapely.MultiLineString(parts) if parts else None
-
-
-def _layer_margin(distance, geometry, geographic):
-    """Return ``distance`` (metres when ``geographic``) as a safe bounding-box margin in layer units."""
-    if not geographic:
-        return distance
-    latitude = geometry.boundingBox().center().y()
-    return 2.0 * distance / (111_000.0 * max(math.cos(math.radians(latitude)), 0.01))

@@ -109,7 +109,7 @@ def test_a_release_candidate_of_shapely_2_is_not_older_than_2_0(plugin_module):
     assert dependencies.version_tuple("1.8.5") < dependencies.MINIMUM_SHAPELY
 
 
-# _layer_margin (algorithms/polygon_centerline.py) --------------------------------------------------------
+# layer_margin (algorithms/split_points.py) --------------------------------------------------------------
 
 
 def box_around_latitude(latitude):
@@ -118,7 +118,7 @@ def box_around_latitude(latitude):
 
 
 def test_layer_margin_in_a_projected_layer_is_the_distance(plugin_module):
-    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    layer_margin = plugin_module("algorithms.split_points").layer_margin
     assert layer_margin(25.0, box_around_latitude(52.0), False) == 25.0
 
 
@@ -134,7 +134,7 @@ def test_layer_margin_in_a_projected_layer_is_the_distance(plugin_module):
     ],
 )
 def test_layer_margin_in_a_geographic_layer_is_in_degrees(plugin_module, latitude, expected_degrees):
-    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    layer_margin = plugin_module("algorithms.split_points").layer_margin
     geometry = box_around_latitude(latitude)
     assert geometry.boundingBox().center().y() == pytest.approx(latitude, abs=1e-12)
     assert layer_margin(111.0, geometry, True) == pytest.approx(expected_degrees, rel=1e-9)

@@ -24,6 +24,7 @@ from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
+from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
 __all__ = [
@@ -38,6 +39,8 @@ __all__ = [
     "Incircle",
     "InvalidGeometryError",
     "LocalProjection",
+    "NetworkBranch",
+    "NetworkResult",
     "PartOutcome",
     "PolygonCenterlineResult",
     "SplitPointError",
@@ -48,8 +51,10 @@ __all__ = [
     "incircle_polygons",
     "lines_centerline",
     "multipolygon_centerlines",
+    "multipolygon_networks",
     "orient_bank_lines",
     "polygon_centerline",
+    "polygon_network",
     "split_polygon",
     "transects",
     "vertex_chainages",

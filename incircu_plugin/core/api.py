@@ -22,6 +22,12 @@ ISLAND_MODES = ("main_channel", "ignore")
 ENDS_PROGRESS_SHARE = 0.2
 
 
+def check_island_mode(islands):
+    """Raise :class:`IncirCuError` unless ``islands`` is one of :data:`ISLAND_MODES`."""
+    if islands not in ISLAND_MODES:
+        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+
+
 def polygon_centerline(
     polygon,
     split_points=None,
@@ -80,8 +86,7 @@ def polygon_centerline(
     ((0.0, 5.0), (100.0, 5.0), 10.0)
     """
     validate_polygon(polygon)
-    if islands not in ISLAND_MODES:
-        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    check_island_mode(islands)
     if end_rule not in END_RULES:
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     notes = []
@@ -183,6 +188,52 @@ def _part_progress(progress, index, count, fraction):
     return progress((index + fraction) / count)
 
 
+def polygon_parts(geometry, split_points=None, snap_tolerance=None):
+    """Split a polygon or multipolygon into parts, each with the split points near its exterior ring.
+
+    Parameters
+    ----------
+    geometry : Polygon or MultiPolygon
+        CRS units.
+    split_points : sequence of Point or (x, y), optional
+    snap_tolerance : float, optional
+        Largest distance, CRS units, between a part's exterior ring and its split points; default ``1e-6``
+        of the geometry's extent.
+
+    Returns
+    -------
+    parts : list of (Polygon, list of int)
+        Each part with the indices of the split points within ``snap_tolerance`` of its exterior ring.
+    points : list of Point
+        The split points.
+    snap_tolerance : float
+        The tolerance used, CRS units.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+    """
+    if geometry is None or geometry.is_empty:
+        raise InvalidGeometryError("The polygon is empty or null.")
+    if isinstance(geometry, Polygon):
+        parts = [geometry]
+    elif isinstance(geometry, MultiPolygon):
+        parts = list(geometry.geoms)
+    else:
+        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
+    if snap_tolerance is None:
+        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
+    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    near = [[i for i, p in enumerate(points) if part.exterior.distance(p) <= snap_tolerance] for part in parts]
+    return list(zip(parts, near)), points, snap_tolerance
+
+
+def part_progress(progress, index, count):
+    """Return a progress callback for part ``index`` of ``count`` (None when ``progress`` is None)."""
+    return None if progress is None else partial(_part_progress, progress, index, count)
+
+
 def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None, **options):
     """Centerline of each part of a polygon or multipolygon.
 
@@ -219,22 +270,12 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     >>> [round(o.result.length, 6) for o in outcomes]
     [50.0, 50.0]
     """
-    if geometry is None or geometry.is_empty:
-        raise InvalidGeometryError("The polygon is empty or null.")
-    if isinstance(geometry, Polygon):
-        parts = [geometry]
-    elif isinstance(geometry, MultiPolygon):
-        parts = list(geometry.geoms)
-    else:
-        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
-    if snap_tolerance is None:
-        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
-    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     progress = options.pop("progress", None)
     outcomes = []
-    for index, part in enumerate(parts):
+    for index, (part, near) in enumerate(parts):
         try:
-            mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
+            mine = [points[i] for i in near]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
                     f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
@@ -244,7 +285,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
                 part,
                 mine or None,
                 snap_tolerance=snap_tolerance,
-                progress=None if progress is None else partial(_part_progress, progress, index, len(parts)),
+                progress=part_progress(progress, index, len(parts)),
                 **options,
             )
             outcomes.append(PartOutcome(index, result, None))
