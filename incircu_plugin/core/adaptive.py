@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -439,7 +439,7 @@ class _Tracer:
             )
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
-            accepted = (status[count:] == CLEAR) | ((status[count:] != SKIPPED) & (site[count:] == curves.site0[owner]))
+            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
             station_index = self.add(
                 probes.subset(slice(count, None)), t[count:], status[count:], site[count:], accepted, site[count:]
             )
@@ -463,7 +463,7 @@ class _Tracer:
             samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.8 * done)
         )
         site = sites.canonical(site)
-        emit = np.isfinite(t) & (status != SKIPPED)
+        emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         self.add(samples, t, status, site, emit, site)
         edge = np.arange(b.segment_count)
         reflex = np.flatnonzero(spans.kind == FAN)
@@ -553,6 +553,15 @@ class _Tracer:
             event = found & (np.abs(self.sites.distance(intervals.site0, centre) - t) <= slack)
             return event & (np.abs(self.sites.distance(intervals.site1, centre) - t) <= slack)
 
+    def _at_split_point(self, site):
+        """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
+        evidence of a contact with the other chain (it also lies on the own one)."""
+        b = self.boundary
+        ends = b.segment_count + np.array(
+            [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
+        )
+        return self.closed & np.isin(site, ends)
+
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
 
@@ -564,7 +573,7 @@ class _Tracer:
         other0 = self.sites.chain(intervals.site0) == 1 - chain
         other1 = self.sites.chain(intervals.site1) == 1 - chain
         forced = event & (status == SKIPPED) & (other0 | other1)
-        emit = (status == CLEAR) | ((status != SKIPPED) & event) | forced
+        emit = (status == CLEAR) | ((status == TIED) & event & ~self._at_split_point(site)) | forced
         other_site = np.where(forced, np.where(other0, intervals.site0, intervals.site1), site)
         return emit, other_site
 

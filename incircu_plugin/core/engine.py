@@ -219,6 +219,17 @@ def _distinct(points, tolerance):
     return keep
 
 
+def _first_of_each_centre(centres, resolution):
+    """Sorted indices of the first of the points sharing one centre (to ``resolution``, CRS units).
+
+    A junction of the axis is found from several sides, with different feet and so different places in the
+    order; keeping its first place only, the line passes it once.
+    """
+    cells = np.round(centres / resolution)
+    _, first = np.unique(cells, axis=0, return_index=True)
+    return np.sort(first)
+
+
 def _fewest_vertices(points, tolerance):
     """Mask of the vertices a Douglas-Peucker simplification to ``tolerance`` keeps (the ends among them).
 
@@ -365,7 +376,9 @@ def centerline_from_chains(
         region = Polygon(np.concatenate([local[0], local[1][::-1]]))
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
-    centre, radius, foot_a, foot_b = _with_ends(_ordered(points, side, lengths, coincidence), local, closed)
+    ordered = _ordered(points, side, lengths, coincidence)
+    ordered = ordered.subset(_first_of_each_centre(ordered.centre, DISTINCT_TOLERANCE * extent))
+    centre, radius, foot_a, foot_b = _with_ends(ordered, local, closed)
     keep = _distinct(centre, DISTINCT_TOLERANCE * extent)
     if not fixed and keep.sum() > 2:
         keep[keep] = _fewest_vertices(centre[keep], SIMPLIFY_SHARE * tolerance)
