@@ -478,7 +478,7 @@ class _Tracer:
         between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0)
         middle_edge = edge[between_corners]
         middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
-        middle_t, middle_status, _, _, middle_site = solve_in_chunks(
+        middle_t, middle_status, _, _, middle_site = _solve_all(
             middles,
             np.arange(len(middle_edge)),
             b,
@@ -586,7 +586,7 @@ class _Tracer:
         ends = b.segment_count + np.array(
             [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
         )
-        return self.closed & np.isin(site, ends)
+        return self.closed & np.any(site[:, None] == ends, axis=1)
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -639,6 +639,13 @@ class _Tracer:
             other_foot,
             other_position,
         )
+
+
+def _solve_all(samples, index, *arguments):
+    """:func:`.contacts.solve_in_chunks`, without its set-up when there is nothing to solve."""
+    if len(index) == 0:
+        return np.empty(0), np.empty(0, dtype=np.int8), np.empty((0, 2)), np.empty(0), np.empty(0, dtype=int)
+    return solve_in_chunks(samples, index, *arguments)
 
 
 def _initial_samples(spans, sites, closed, boundary):
