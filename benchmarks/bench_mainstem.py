@@ -96,6 +96,20 @@ def table(rows, names):
     return "\n".join(lines)
 
 
+def differences(rows, names):
+    """One sentence naming the water bodies where the two end rules' shares differ by 0.01 or more."""
+    changed = [
+        f"{name} {main[0]:.2f} vs {longest[0]:.2f}"
+        for name, (main, longest, *_) in zip(names, rows)
+        if not isinstance(main, str) and not isinstance(longest, str) and abs(main[0] - longest[0]) >= 0.01
+    ]
+    return (
+        f"The two end rules' lines differ (share, main stem vs longest path) on {len(changed)} of {len(names)}: "
+        + ("; ".join(changed) or "none")
+        + "."
+    )
+
+
 def write_docs(markdown):
     """Put ``markdown`` between the markers of ``docs/benchmark.md``."""
     section = f"{BEGIN}\n{markdown}\n{END}"
@@ -126,6 +140,9 @@ stem given as `guide`. Peers as in the comparison above (pygeoops `extend=True`;
 w/10, w/100 of the mean width 2A/P), all in local metres.
 
 {table(rows, names)}
+
+{differences(rows, names)} A high share with a low cover is a line that stops short of the main stem's
+ends; a low share with a high cover, side branches left on the line.
 """
     print(markdown)
     write_docs(markdown)
