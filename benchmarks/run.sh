@@ -9,7 +9,8 @@
 #   - benchmarks/.cache/world-atlas: the npm package `world-atlas` (Natural Earth countries, ISC licence),
 #     fetched with `npm pack`.
 # Then runs bench_compare.py (tools side by side + scaling), bench_paper.py (Fig. 4 and Table 1 of the
-# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/.
+# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/;
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page.
 #
 # Options: --quick (no GRASS, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
@@ -78,4 +79,5 @@ started=$(date +%s)
 "$PYTHON" "$BENCH_DIR/bench_paper.py"
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
+"$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
 echo "== benchmark done in $(( $(date +%s) - started )) s; see docs/benchmark.md"
