@@ -8,8 +8,10 @@ forking, so no run pays for an import.
 import multiprocessing
 import os
 import signal
+import time
 import traceback
 
+import shapely
 from metrics import Measurement, measure, time_call
 
 
@@ -50,6 +52,63 @@ def run_tool(tool, case, timeout_seconds=90.0, budget_seconds=2.0):
         pass
     process.join()
     return Measurement(tool.name, case.name, None, 0, error=f"timeout > {timeout_seconds:.0f} s"), None
+
+
+def _layer_child(connection, tool, cases):
+    os.setpgrp()
+    for index, case in enumerate(cases):
+        started = time.perf_counter()
+        try:
+            geometry = tool.run(case)
+            seconds = time.perf_counter() - started
+            wkb = None if geometry is None else shapely.to_wkb(geometry)
+            connection.send((index, seconds, wkb, "" if wkb else "no output"))
+        except Exception as error:  # noqa: BLE001 (a peer failing on a polygon is a result, not a crash)
+            message = f"{type(error).__name__}: {error}".splitlines()[0][:160]
+            connection.send((index, time.perf_counter() - started, None, message))
+    connection.send(None)
+    connection.close()
+
+
+def run_layer(tool, cases, timeout_seconds):
+    """Run ``tool`` on every case in turn in one forked child, killed past ``timeout_seconds`` in all.
+
+    Returns
+    -------
+    results : list of (seconds, geometry or None, error) or None
+        One entry per case; None for the cases not reached before the time limit. ``seconds`` is the
+        tool call alone (no transfer).
+    note : str
+        Empty, or why the run stopped early (time limit, child died).
+    """
+    context = multiprocessing.get_context("fork")
+    receiver, sender = context.Pipe(duplex=False)
+    process = context.Process(target=_layer_child, args=(sender, tool, cases))
+    process.start()
+    sender.close()
+    deadline = time.monotonic() + timeout_seconds
+    results, note = [None] * len(cases), ""
+    while True:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0 or not receiver.poll(remaining):
+            note = f"timeout > {timeout_seconds:.0f} s"
+            break
+        try:
+            message = receiver.recv()
+        except EOFError:
+            note = "child died"
+            break
+        if message is None:
+            break
+        index, seconds, wkb, error = message
+        results[index] = (seconds, None if wkb is None else shapely.from_wkb(wkb), error)
+    if note:
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    process.join()
+    return results, note
 
 
 def preload():
