@@ -125,7 +125,7 @@ def lines_per_case(geometries, case_list):
     return [shapely.MultiLineString(lines) if lines else None for lines in grouped]
 
 
-def qgis_runs(qgis, files, case_list, timeout):
+def qgis_runs(qgis, files, case_list, timeout, grass=True):
     """The whole-layer ``qgis_process`` runs: {tool name: (wall seconds or None, geometry per case, note)}."""
     width = float(np.median([mean_width(case.polygon) for case in case_list]))
     calls = {
@@ -143,6 +143,8 @@ def qgis_runs(qgis, files, case_list, timeout):
             "-s=true",
         ],
     }
+    if not grass:
+        del calls["GRASS v.voronoi.skeleton (qgis_process)"]
     runs = {}
     for name, (algorithm, *parameters) in calls.items():
         output = files.directory / f"{name.split()[0]}-{len(runs)}.gpkg"
@@ -199,7 +201,7 @@ def summarise(tool_name, case_list, per_case, seconds, note, whole_layer):
     }
 
 
-def benchmark_layer(name, case_list, tools, qgis, timeout, crs):
+def benchmark_layer(name, case_list, tools, qgis, timeout, crs, grass=True):
     """Every tool on one layer; returns the layer's record for ``layer.json``."""
     print(
         f"== {name}: {len(case_list)} polygons, {sum(c.vertex_count for c in case_list):,} boundary vertices",
@@ -214,7 +216,7 @@ def benchmark_layer(name, case_list, tools, qgis, timeout, crs):
         print(f"  {tool.name:<44} {seconds:8.2f} s {note}", flush=True)
     if qgis is not None:
         files = LayerFiles(qgis, case_list, crs, name.split()[0].lower() + f"-{len(case_list)}")
-        for tool_name, (seconds, geometries, note) in qgis_runs(qgis, files, case_list, timeout).items():
+        for tool_name, (seconds, geometries, note) in qgis_runs(qgis, files, case_list, timeout, grass).items():
             per_case = [(geometry, "" if geometry is not None else "no output") for geometry in geometries]
             if seconds is None:
                 per_case = [None] * len(case_list)
@@ -247,6 +249,7 @@ def main(argv=None):
     parser.add_argument("--timeout", type=float, default=900.0, help="seconds per tool on the river layer")
     parser.add_argument("--outline-timeout", type=float, default=60.0, help="seconds per tool on one outline")
     parser.add_argument("--no-qgis", action="store_true", help="skip the qgis_process runs (IncirCu, GRASS)")
+    parser.add_argument("--no-grass", action="store_true", help="skip GRASS (the slowest run)")
     parser.add_argument("--no-outlines", action="store_true", help="the river layer only")
     arguments = parser.parse_args(argv)
     RESULTS_DIR.mkdir(exist_ok=True)
@@ -258,23 +261,18 @@ def main(argv=None):
     with tempfile.TemporaryDirectory(prefix="incircu-layer-") as work_dir:
         qgis = None if arguments.no_qgis else QgisProcess(work_dir, plugins=["incircu", "grassprovider"])
         startup = None if qgis is None else qgis_startup(qgis)
+        grass = not arguments.no_grass
         rivers = bench_cases.river_cases(arguments.count, arguments.seed)
-        layers.append(
-            benchmark_layer(
-                f"Rivers ({arguments.count}, seed {arguments.seed})",
-                rivers,
-                tools,
-                qgis,
-                arguments.timeout,
-                "EPSG:32633",
-            )
-        )
+        name = f"Rivers ({arguments.count}, seed {arguments.seed})"
+        layers.append(benchmark_layer(name, rivers, tools, qgis, arguments.timeout, "EPSG:32633", grass))
         if not arguments.no_outlines:
             for case in bench_cases.outline_cases():
-                layers.append(benchmark_layer(case.name, [case], tools, qgis, arguments.outline_timeout, OUTLINE_CRS))
+                timeout = arguments.outline_timeout
+                layers.append(benchmark_layer(case.name, [case], tools, qgis, timeout, OUTLINE_CRS, grass))
     results = {
         "layers": layers,
         "count": arguments.count,
+        "grass": grass,
         "seed": arguments.seed,
         "qgis_startup_seconds": startup,
         "tolerance_keyword": core_accepts("tolerance"),
