@@ -24,6 +24,7 @@ import dataclasses
 import json
 import os
 import sqlite3
+import subprocess
 import sys
 import tempfile
 import time
@@ -152,7 +153,11 @@ def qgis_runs(qgis, files, case_list, timeout, grass=True):
         started = time.perf_counter()
         try:
             qgis.call(["run", algorithm, "--", *parameters, f"{key}={output}"], timeout=timeout)
-        except Exception as error:  # noqa: BLE001 (a failing or timed-out tool is a result)
+        except subprocess.TimeoutExpired:
+            runs[name] = (None, [None] * len(case_list), f"timeout > {timeout:.0f} s")
+            print(f"  {name:<44} {runs[name][2]}", flush=True)
+            continue
+        except Exception as error:  # noqa: BLE001 (a failing tool is a result)
             runs[name] = (None, [None] * len(case_list), f"{type(error).__name__}: {error}".splitlines()[0][:160])
             print(f"  {name:<44} failed: {runs[name][2]}", flush=True)
             continue
@@ -162,7 +167,7 @@ def qgis_runs(qgis, files, case_list, timeout, grass=True):
     return runs
 
 
-def summarise(tool_name, case_list, per_case, seconds, note, whole_layer):
+def summarise(tool_name, case_list, per_case, seconds, note, whole_layer, timeout):
     """One table row: speed, output vertices against input vertices, clean lines and deviation."""
     measurements = []
     for case, entry in zip(case_list, per_case):
@@ -198,6 +203,7 @@ def summarise(tool_name, case_list, per_case, seconds, note, whole_layer):
         "median_max_dev_rel": float(np.median([m.max_dev_rel for m in deviations])) if deviations else None,
         "max_end_gap_rel": float(max(max(m.end_gap_rel) for m in done)) if done else None,
         "note": note,
+        "timeout_seconds": timeout if note.startswith("timeout") else None,
     }
 
 
@@ -212,7 +218,7 @@ def benchmark_layer(name, case_list, tools, qgis, timeout, crs, grass=True):
         results, note = run_layer(tool, case_list, timeout)
         seconds = sum(entry[0] for entry in results if entry is not None)
         per_case = [None if entry is None else (entry[1], entry[2]) for entry in results]
-        rows.append(summarise(tool.name, case_list, per_case, seconds, note, False))
+        rows.append(summarise(tool.name, case_list, per_case, seconds, note, False, timeout))
         print(f"  {tool.name:<44} {seconds:8.2f} s {note}", flush=True)
     if qgis is not None:
         files = LayerFiles(qgis, case_list, crs, name.split()[0].lower() + f"-{len(case_list)}")
@@ -220,7 +226,7 @@ def benchmark_layer(name, case_list, tools, qgis, timeout, crs, grass=True):
             per_case = [(geometry, "" if geometry is not None else "no output") for geometry in geometries]
             if seconds is None:
                 per_case = [None] * len(case_list)
-            rows.append(summarise(tool_name, case_list, per_case, seconds, note, True))
+            rows.append(summarise(tool_name, case_list, per_case, seconds, note, True, timeout))
     kinds = [case.axis_kind for case in case_list]
     return {
         "name": name,

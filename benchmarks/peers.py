@@ -13,6 +13,7 @@ import inspect
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -180,13 +181,24 @@ class QgisProcess:
             self.call(["plugins", "enable", plugin])
 
     def call(self, arguments, timeout=900):
-        """Run ``qgis_process.bin *arguments``; its stdout, or RuntimeError with its stderr when it fails."""
-        completed = subprocess.run(
-            [QGIS_PROCESS, *arguments], env=self.env, capture_output=True, text=True, timeout=timeout, check=False
+        """Run ``qgis_process.bin *arguments``; its stdout, or RuntimeError with its stderr when it fails.
+
+        Past ``timeout`` seconds the call and everything it started (GRASS) are killed and
+        ``subprocess.TimeoutExpired`` is raised.
+        """
+        process = subprocess.Popen(
+            [QGIS_PROCESS, *arguments], env=self.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+            start_new_session=True,
         )
-        if completed.returncode != 0:
-            raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {completed.stderr[-2000:]}")
-        return completed.stdout
+        try:
+            stdout, stderr = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.communicate()
+            raise
+        if process.returncode != 0:
+            raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {stderr[-2000:]}")
+        return stdout
 
 
 class GrassRunner:
