@@ -146,6 +146,7 @@ def main():
     print("|---:|---:|---:|---:|---:|")
     previous = None
     environment = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    load_before = os.getloadavg()
     rows = []
     for exponent in range(3, arguments.max_exponent + 1):
         n = 10**exponent
@@ -173,7 +174,8 @@ def main():
     for name, seconds in hydro.items():
         print(f"The same meander, {name}: median {seconds * 1e3:.1f} ms over {arguments.repeats} runs.")
     if arguments.json:
-        results = {"rivers": rows, "end_to_end": end_to_end, "meander_seconds": median, "meander_variants": hydro}
+        results = {"rivers": rows, "end_to_end": end_to_end, "meander_seconds": median, "meander_variants": hydro,
+                   "load_average": {"start": load_before, "end": os.getloadavg()}}
         arguments.json.write_text(json.dumps(results, indent=1))
 
 
