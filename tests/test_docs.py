@@ -1,4 +1,5 @@
-"""The README's benchmark numbers are the generated ones, and those are the benchmark results' (issue 13).
+"""The documentation agrees with the measurements: the README's benchmark numbers are the generated ones, and
+those are the benchmark results' (issue 13).
 
 ``benchmarks/write_docs.py`` writes ``docs/benchmark-summary.json`` from ``benchmarks/results/*.json`` and the
 README's block between the benchmark markers from the summary, every number in bold. These tests recompute
@@ -8,13 +9,13 @@ or a README block left stale fails here.
 
 import json
 import re
-from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
+from tests.support.project import REPOSITORY as ROOT
+
 RESULTS = ROOT / "benchmarks" / "results"
-SUMMARY = json.loads((ROOT / "docs" / "benchmark-summary.json").read_text())
+SUMMARY = json.loads((ROOT / "docs" / "benchmark-summary.json").read_text(encoding="utf-8"))
 QUOTES = SUMMARY["quotes"]
 START, END = "<!-- benchmark numbers:", "<!-- end of benchmark numbers -->"
 #: Relative rounding of a quoted number (two significant digits at worst, see ``write_docs._quote``).
@@ -27,7 +28,7 @@ def _results(name):
 
 
 def _readme_block():
-    text = (ROOT / "README.md").read_text()
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
     start = text.index(START)
     return text[text.index("-->", start) + 3 : text.index(END, start)]
 
