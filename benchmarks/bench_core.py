@@ -64,12 +64,31 @@ def _measure_end_to_end(n_vertices):
                       "output_vertices": len(result.line.coords)}))
 
 
+#: Longest run of one child (s) and the address space it may use: past them the row reports why it stopped.
+CHILD_TIMEOUT_SECONDS = 900
+CHILD_MEMORY_BYTES = 8 * 2**30
+
+
+def _limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (CHILD_MEMORY_BYTES, CHILD_MEMORY_BYTES))
+
+
 def _child_row(option, n, environment):
-    """Run this script with ``option n`` in a fresh process and return its JSON row."""
-    output = subprocess.run(
-        [sys.executable, __file__, option, str(n)], check=True, capture_output=True, text=True, env=environment
-    ).stdout
-    return json.loads(output.strip().splitlines()[-1])
+    """Run this script with ``option n`` in a fresh process (capped at ``CHILD_MEMORY_BYTES`` of address space
+    and ``CHILD_TIMEOUT_SECONDS``) and return its JSON row, or ``{"error": why}``."""
+    try:
+        completed = subprocess.run(
+            [sys.executable, __file__, option, str(n)], capture_output=True, text=True, env=environment,
+            timeout=CHILD_TIMEOUT_SECONDS, preexec_fn=_limit_memory, check=False,
+        )
+    except subprocess.TimeoutExpired:
+        return {"error": f"stopped after {CHILD_TIMEOUT_SECONDS} s", "vertices": n}
+    if completed.returncode != 0:
+        last = (completed.stderr.strip().splitlines() or ["no message"])[-1][:160]
+        if "MemoryError" in last:
+            last = f"MemoryError: over {CHILD_MEMORY_BYTES / 2**30:.0f} GiB of address space"
+        return {"error": last, "vertices": n}
+    return json.loads(completed.stdout.strip().splitlines()[-1])
 
 
 def _measure_meander(repeats):
@@ -149,6 +168,9 @@ def main():
         n = 10**exponent
         row = dict(_child_row("--child", n, environment), samples=n)
         rows.append(row)
+        if "error" in row:
+            print(f"| {n:,} | {row['error']} | | | |")
+            break
         growth = "" if previous is None else "{:.1f}".format(row["seconds"] / previous)
         print(
             "| {:,} | {:.3f} | {:.2f} | {} | {:.0f} |".format(
@@ -157,11 +179,14 @@ def main():
         )
         previous = row["seconds"]
     end_to_end = _child_row("--child-end-to-end", 10**arguments.max_exponent, environment)
-    print(
-        f"\nEnd to end from the polygon, core defaults: {end_to_end['vertices']:,} boundary vertices in "
-        f"{end_to_end['seconds']:.2f} s, peak memory {end_to_end['peak_bytes'] / 2**20:.0f} MiB, "
-        f"{end_to_end['output_vertices']:,} output vertices."
-    )
+    if "error" in end_to_end:
+        print(f"\nEnd to end from the polygon, core defaults, {end_to_end['vertices']:,} vertices: {end_to_end['error']}")
+    else:
+        print(
+            f"\nEnd to end from the polygon, core defaults: {end_to_end['vertices']:,} boundary vertices in "
+            f"{end_to_end['seconds']:.2f} s, peak memory {end_to_end['peak_bytes'] / 2**20:.0f} MiB, "
+            f"{end_to_end['output_vertices']:,} output vertices."
+        )
     median, vertices = _measure_meander(arguments.repeats)
     print(
         f"\nConstant-width meander (2 km, width 20, {vertices:,} boundary vertices, spacing 2): "

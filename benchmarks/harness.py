@@ -7,6 +7,7 @@ forking, so no run pays for an import.
 
 import multiprocessing
 import os
+import resource
 import signal
 import time
 import traceback
@@ -14,9 +15,22 @@ import traceback
 import shapely
 from metrics import Measurement, measure, time_call
 
+#: Address space a benchmark child may add to what it inherits (bytes): a runaway tool stops with a
+#: MemoryError instead of pushing the shared machine into the OOM killer.
+CHILD_MEMORY_BYTES = 6 * 2**30
+
+
+def limit_memory(extra_bytes=CHILD_MEMORY_BYTES):
+    """Cap this process's address space at its current size plus ``extra_bytes`` (Linux)."""
+    with open("/proc/self/status") as status:
+        current = next(int(line.split()[1]) * 1024 for line in status if line.startswith("VmSize"))
+    resource.setrlimit(resource.RLIMIT_AS, (current + extra_bytes, current + extra_bytes))
+
 
 def _child(connection, tool, case, budget_seconds):
     os.setpgrp()  # its own process group, so a timeout also kills what it started (qgis_process, GRASS)
+    if not tool.external:
+        limit_memory()
     try:
         geometry, seconds, runs = time_call(tool.run, case, budget_seconds=budget_seconds)
         measurement = measure(tool.name, case, geometry, seconds, runs)
@@ -56,6 +70,8 @@ def run_tool(tool, case, timeout_seconds=90.0, budget_seconds=2.0):
 
 def _layer_child(connection, tool, cases):
     os.setpgrp()
+    if not tool.external:
+        limit_memory()
     for index, case in enumerate(cases):
         started = time.perf_counter()
         try:

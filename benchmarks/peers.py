@@ -254,6 +254,8 @@ class Tool:
     run: Callable
     single_line: bool
     note: str = ""
+    #: Runs another program (qgis_process): no memory cap on the child, which that program would inherit.
+    external: bool = False
 
 
 def peer_tools(grass_runner=None):
@@ -266,7 +268,7 @@ def peer_tools(grass_runner=None):
         Tool("SFCGAL straight skeleton", run_sfcgal_straight_skeleton, False, "straight_skeleton"),
     ]
     if grass_runner is not None:
-        tools.append(Tool("GRASS v.voronoi.skeleton", grass_runner, True, "-s thin=-1 via qgis_process"))
+        tools.append(Tool("GRASS v.voronoi.skeleton", grass_runner, True, "-s thin=-1 via qgis_process", external=True))
     return tools
 
 

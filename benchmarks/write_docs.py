@@ -306,11 +306,16 @@ def issue9_verdicts(compare, layer_results, core):
         None if ratio is None else ratio >= 10)
     end = core["end_to_end"] if core else None
     million = end is not None and end["vertices"] >= 1_000_000
-    add("10^6 boundary vertices end to end ≤ 5 s",
-        f"{_seconds(end['seconds'])} ({end['vertices']:,} v)" if end else "–",
-        end["seconds"] <= 5 if million else None)
-    add("… peak memory ≤ 1 GiB", f"{end['peak_bytes'] / 2**20:,.0f} MiB" if end else "–",
-        end["peak_bytes"] <= 2**30 if million else None)
+    if end and "error" in end:
+        add("10^6 boundary vertices end to end ≤ 5 s", f"{end['vertices']:,} v: {end['error']}",
+            False if million else None)
+        add("… peak memory ≤ 1 GiB", "–", False if million and "MemoryError" in end["error"] else None)
+    else:
+        add("10^6 boundary vertices end to end ≤ 5 s",
+            f"{_seconds(end['seconds'])} ({end['vertices']:,} v)" if end else "–",
+            end["seconds"] <= 5 if million else None)
+        add("… peak memory ≤ 1 GiB", f"{end['peak_bytes'] / 2**20:,.0f} MiB" if end else "–",
+            end["peak_bytes"] <= 2**30 if million else None)
     return "| target (issue 9) | measured | verdict |\n|---|---|---|\n" + "\n".join(rows) + "\n", failed
 
 
@@ -378,7 +383,7 @@ def summary(compare, layer_results, core):
             "layer.json: IncirCu (qgis_process) / GRASS (qgis_process), polygons/s")
         put("layer_output_vs_input", ours["output_vertices"] / ours["input_vertices"],
             "layer.json: IncirCu (core) output vertices / input vertices")
-    if core:
+    if core and "error" not in core["end_to_end"]:
         end = core["end_to_end"]
         put("end_to_end_vertices", end["vertices"], "core.json: end_to_end vertices")
         put("end_to_end_seconds", end["seconds"], "core.json: end_to_end seconds")

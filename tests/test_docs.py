@@ -80,7 +80,7 @@ def _layer_values():
 
 def _core_values():
     core = _results("core.json")
-    if core is None:
+    if core is None or "error" in core["end_to_end"]:
         return {}
     end = core["end_to_end"]
     return {
