@@ -55,7 +55,7 @@ def _accuracy_factors():
                 deviations.setdefault(r["case"], {})[r["tool"]] = r["mean_dev_rel"]
         for tools in deviations.values():
             ours = tools.pop("IncirCu", None)
-            if ours and tools and min(tools.values()) > 0:
+            if ours and tools and min(ours, *tools.values()) > SUMMARY["accuracy_floor"]:
                 factors.append(min(tools.values()) / ours)
     return factors
 
