@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -34,8 +34,14 @@ EDGE, FAN = 0, 1
 #: inserted into an edge is straight to about the coordinates' rounding over the edge's length).
 STRAIGHT_TURN = 1e-9
 
-#: Relative agreement (of the radius) under which a probe's first contact is the event of its interval.
+#: Relative agreement (of the radius) under which a probe's disk touches both sites of its interval: exactly
+#: (the probe is emitted as the event even when rounding called it skipped), and loosely (its interval is
+#: resolved; near a nearly straight convex corner the junction is known to about 1e-7 only).
 EVENT_TOLERANCE = 1e-8
+LOOSE_EVENT_TOLERANCE = 1e-6
+
+#: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
+SETTLED_CHORD = 1.0 / 16.0
 
 #: Relative slack under which a slightly negative discriminant is a double root (a contact sliding off a
 #: segment's end onto its vertex).
@@ -44,8 +50,9 @@ DOUBLE_ROOT = 1e-8
 #: Most rounds of event location (each round at least halves the open intervals' count of unknown sites).
 MAX_ROUNDS = 64
 
-#: Intervals narrower than this fraction of their span (or of a radian) are closed.
-SMALLEST_INTERVAL = 1e-10
+#: Intervals over which the sample point (or on a fan, the disk's centre) moves less than this fraction of the
+#: tolerance are closed.
+SMALLEST_MOVE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -283,7 +290,8 @@ def _radius_at(spans, span, terms, u):
 
 
 def _crossing(spans, intervals, terms0, terms1):
-    """Parameter in ``[u0, u1]`` where both sites' radii are equal, and whether there is one."""
+    """Parameter inside ``(u0, u1)`` where both sites' radii are equal (else the middle), whether there is
+    one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -308,9 +316,9 @@ def _crossing(spans, intervals, terms0, terms1):
     for candidate in (np.where(edge, e, f) for e, f in zip(edge_roots, fan_roots)):
         inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
         chosen[inside], found[inside] = candidate[inside], True
-    # A crossing at an end was probed there already (the probe of the previous round): bisect instead.
-    found &= (chosen > u0 + slack) & (chosen < u1 - slack)
-    return np.where(found, chosen, middle), found
+    at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
+    found &= at_end < 0
+    return np.where(found, chosen, middle), found, at_end
 
 
 def _parabola_stations(focus, anchor, unit, ends, tolerance):
@@ -403,7 +411,11 @@ class _Tracer:
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
-            event_u, event_trial, found = self._event_candidates(events)
+            event_u, event_trial, found, at_end = self._event_candidates(events)
+            settled = self._settle_at_ends(events, at_end)
+            carried = events.subset(settled)
+            events = events.subset(~settled)
+            event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
             owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
@@ -418,14 +430,16 @@ class _Tracer:
             )
             site = self.sites.canonical(site)
             count = len(event_u)
-            event = self._is_event(events, probes.subset(slice(0, count)), t[:count], found)
-            emit, other_site = self._event_emission(events, status[:count], site[:count], event)
+            event_probes = probes.subset(slice(0, count))
+            event = self._is_event(events, event_probes, t[:count], found, LOOSE_EVENT_TOLERANCE)
+            exact = self._is_event(events, event_probes, t[:count], found, EVENT_TOLERANCE)
+            emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
             event_index = self.add(
                 probes.subset(slice(0, count)), t[:count], status[:count], site[:count], emit, other_site
             )
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
-            accepted = (status[count:] == CLEAR) | ((status[count:] != SKIPPED) & (site[count:] == curves.site0[owner]))
+            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
             station_index = self.add(
                 probes.subset(slice(count, None)), t[count:], status[count:], site[count:], accepted, site[count:]
             )
@@ -433,6 +447,7 @@ class _Tracer:
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
                     _split_at_stations(curves, owner, station_u, station_index, site[count:]),
+                    carried,
                 ]
             )
         return self._points()
@@ -448,7 +463,7 @@ class _Tracer:
             samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.8 * done)
         )
         site = sites.canonical(site)
-        emit = np.isfinite(t) & (status != SKIPPED)
+        emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         self.add(samples, t, status, site, emit, site)
         edge = np.arange(b.segment_count)
         reflex = np.flatnonzero(spans.kind == FAN)
@@ -469,11 +484,17 @@ class _Tracer:
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
-        scale = np.where(self.spans.kind[intervals.span] == EDGE, self.spans.length[intervals.span], 1.0)
         finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        wide = intervals.u1 - intervals.u0 > SMALLEST_INTERVAL * scale
+        radius = np.fmax(self.t[intervals.left], self.t[intervals.right])
+        move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
+        wide = move > SMALLEST_MOVE * self.tolerance
         known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
-        return (intervals.site0 != intervals.site1) & finite & wide & known
+        # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
+        # event there may be ill-conditioned (a nearly straight convex corner's junction).
+        with np.errstate(invalid="ignore"):
+            chord = np.hypot(*(self.centres(intervals.left) - self.centres(intervals.right)).T)
+            apart = chord > SETTLED_CHORD * self.tolerance
+        return (intervals.site0 != intervals.site1) & finite & wide & known & apart
 
     def _is_curved(self, intervals):
         """Intervals between samples touching one site of the other chain where the axis is a parabola.
@@ -499,21 +520,47 @@ class _Tracer:
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms0 = self.sites.radius_terms(self.spans, span, intervals.site0, middle)
         terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
-        u, found = _crossing(self.spans, intervals, terms0, terms1)
+        u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
-        trial = np.where(
-            found & np.isfinite(radius), 1.001 * radius, np.where(np.isfinite(known), 1.25 * known, self.width)
-        )
-        return u, np.maximum(trial, 0.0) + self.min_t, found
+        known = np.where(np.isfinite(known), 1.25 * known, self.width)
+        # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
+        trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
+        return u, np.maximum(trial, self.width / 16.0), found, at_end
 
-    def _is_event(self, intervals, probes, t, found):
-        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first."""
+    def _settle_at_ends(self, intervals, at_end):
+        """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
+
+        Returns the mask of those intervals, whose sites are made equal in place.
+        """
+        end = np.where(at_end == 0, intervals.left, intervals.right)
+        centre = self.centres(end)
+        slack = EVENT_TOLERANCE * self.t[end] + self.min_t
+        with np.errstate(invalid="ignore"):
+            touching = np.abs(self.sites.distance(intervals.site0, centre) - self.t[end]) <= slack
+            touching &= np.abs(self.sites.distance(intervals.site1, centre) - self.t[end]) <= slack
+        settled = (at_end >= 0) & touching
+        intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
+        intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
+        return settled
+
+    def _is_event(self, intervals, probes, t, found, tolerance):
+        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first,
+        to ``tolerance`` relative to its radius."""
         centre = probes.point + t[:, None] * probes.direction
-        slack = EVENT_TOLERANCE * t + self.min_t
+        slack = tolerance * t + self.min_t
         with np.errstate(invalid="ignore"):
             event = found & (np.abs(self.sites.distance(intervals.site0, centre) - t) <= slack)
             return event & (np.abs(self.sites.distance(intervals.site1, centre) - t) <= slack)
+
+    def _at_split_point(self, site):
+        """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
+        evidence of a contact with the other chain (it also lies on the own one)."""
+        b = self.boundary
+        ends = b.segment_count + np.array(
+            [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
+        )
+        return self.closed & np.isin(site, ends)
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -526,7 +573,7 @@ class _Tracer:
         other0 = self.sites.chain(intervals.site0) == 1 - chain
         other1 = self.sites.chain(intervals.site1) == 1 - chain
         forced = event & (status == SKIPPED) & (other0 | other1)
-        emit = (status == CLEAR) | ((status != SKIPPED) & event) | forced
+        emit = (status == CLEAR) | ((status == TIED) & event & ~self._at_split_point(site)) | forced
         other_site = np.where(forced, np.where(other0, intervals.site0, intervals.site1), site)
         return emit, other_site
 

@@ -42,8 +42,9 @@ DISTINCT_TOLERANCE = 1e-9
 #: keys closer than this are ties, ordered by the direction of travel.
 ORDER_RESOLUTION = 1e-11
 
-#: Fraction of the tolerance under which a vertex between two others on a straight stretch is dropped.
-STRAIGHT_FRACTION = 1e-3
+#: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
+PARABOLA_SHARE = 0.5
+SIMPLIFY_SHARE = 0.5
 
 
 class Cancelled(Exception):
@@ -218,12 +219,28 @@ def _distinct(points, tolerance):
     return keep
 
 
-def _off_straight(points, tolerance):
-    """Mask keeping the ends and every vertex whose removal (Douglas-Peucker) would move the line by more
-    than ``tolerance``."""
-    kept = shapely.get_coordinates(shapely.simplify(LineString(points), tolerance, preserve_topology=False))
+def _first_of_each_centre(centres, resolution):
+    """Sorted indices of the first of the points sharing one centre (to ``resolution``, CRS units).
+
+    A junction of the axis is found from several sides, with different feet and so different places in the
+    order; keeping its first place only, the line passes it once.
+    """
+    cells = np.round(centres / resolution)
+    _, first = np.unique(cells, axis=0, return_index=True)
+    return np.sort(first)
+
+
+def _fewest_vertices(points, tolerance):
+    """Mask of the vertices a Douglas-Peucker simplification to ``tolerance`` keeps (the ends among them).
+
+    The kept vertices are a subset of the given ones, so they stay on the medial axis; every dropped vertex
+    lies within ``tolerance`` of the chord that replaces it, so the line moves by at most ``tolerance``.
+    GEOS's topology-preserving variant keeps the line simple.
+    """
+    line = shapely.simplify(LineString(points), tolerance, preserve_topology=True)
+    kept = np.ascontiguousarray(shapely.get_coordinates(line))
     keys = np.ascontiguousarray(points).view(np.complex128).ravel()
-    return np.isin(keys, np.ascontiguousarray(kept).view(np.complex128).ravel())
+    return np.isin(keys, kept.view(np.complex128).ravel())
 
 
 def _ordered(points, side, lengths, coincidence):
@@ -352,15 +369,19 @@ def centerline_from_chains(
         points = fixed_axis_points(local, boundary, side, spacings, width, max_t, min_t, report)
     else:
         tolerance = tolerance or default_tolerance(*local)
-        points = adaptive_axis_points(local, (side, -side), boundary, closed, tolerance, width, max_t, min_t, report)
+        points = adaptive_axis_points(
+            local, (side, -side), boundary, closed, PARABOLA_SHARE * tolerance, width, max_t, min_t, report
+        )
     if not closed:
         region = Polygon(np.concatenate([local[0], local[1][::-1]]))
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
-    centre, radius, foot_a, foot_b = _with_ends(_ordered(points, side, lengths, coincidence), local, closed)
+    ordered = _ordered(points, side, lengths, coincidence)
+    ordered = ordered.subset(_first_of_each_centre(ordered.centre, DISTINCT_TOLERANCE * extent))
+    centre, radius, foot_a, foot_b = _with_ends(ordered, local, closed)
     keep = _distinct(centre, DISTINCT_TOLERANCE * extent)
     if not fixed and keep.sum() > 2:
-        keep[keep] = _off_straight(centre[keep], STRAIGHT_FRACTION * tolerance)
+        keep[keep] = _fewest_vertices(centre[keep], SIMPLIFY_SHARE * tolerance)
     centre, radius, foot_a, foot_b = centre[keep], radius[keep], foot_a[keep], foot_b[keep]
     if len(centre) < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
