@@ -12,7 +12,8 @@ Rows:
 - the same meander through ``polygon_centerline`` without split points (ends found automatically), and with
   40 islands (radius 2 to 4, off the axis; main-channel mode), median of ``--repeats`` runs;
 - end to end (issue 9): the largest river through ``polygon_centerline`` from the polygon and its split points,
-  at the core's defaults, in a fresh process: wall time and peak resident memory (input generation included).
+  at the core's defaults, in a fresh process: wall time and peak resident memory (input generation included);
+  when that run fails (memory or time limit), the same at a tenth of the size.
 
 ``--json PATH`` also writes every number to PATH (``benchmarks/run.sh`` writes ``benchmarks/results/core.json``
 for ``write_docs.py``).
@@ -179,8 +180,13 @@ def main():
         )
         previous = row["seconds"]
     end_to_end = _child_row("--child-end-to-end", 10**arguments.max_exponent, environment)
+    smaller = None
     if "error" in end_to_end:
         print(f"\nEnd to end from the polygon, core defaults, {end_to_end['vertices']:,} vertices: {end_to_end['error']}")
+        smaller = _child_row("--child-end-to-end", 10 ** (arguments.max_exponent - 1), environment)
+        if "error" not in smaller:
+            print(f"At {smaller['vertices']:,} vertices: {smaller['seconds']:.2f} s, "
+                  f"peak memory {smaller['peak_bytes'] / 2**20:.0f} MiB.")
     else:
         print(
             f"\nEnd to end from the polygon, core defaults: {end_to_end['vertices']:,} boundary vertices in "
@@ -196,7 +202,8 @@ def main():
     for name, seconds in hydro.items():
         print(f"The same meander, {name}: median {seconds * 1e3:.1f} ms over {arguments.repeats} runs.")
     if arguments.json:
-        results = {"rivers": rows, "end_to_end": end_to_end, "meander_seconds": median, "meander_variants": hydro,
+        results = {"rivers": rows, "end_to_end": end_to_end, "end_to_end_smaller": smaller,
+                   "meander_seconds": median, "meander_variants": hydro,
                    "load_average": {"start": load_before, "end": os.getloadavg()}}
         arguments.json.write_text(json.dumps(results, indent=1))
 
