@@ -227,15 +227,8 @@ class _Sites:
         return foot, position
 
     def distance(self, site, centre):
-        """Distance from ``centre`` to each site (a segment site: its whole straight run), CRS units."""
-        b = self.boundary
-        is_segment = site < b.segment_count
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
-        nearest = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
-        return np.where(site >= 0, np.hypot(*(centre - nearest).T), np.inf)
+        """Distance from ``centre`` to each site (inf for no site), CRS units."""
+        return np.where(site >= 0, np.hypot(*(centre - self.feet(site, centre)[0]).T), np.inf)
 
     def radius_terms(self, spans, span, site, u_ref):
         """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
@@ -383,23 +376,42 @@ class _Tracer:
         self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
-        self.samples = None
-        self.t = self.status = self.site = self.other_site = self.emit = np.empty(0)
+        self.count = 0
+        self.store = {}
 
-    def add(self, samples, t, status, site, emit, other_site):
-        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain."""
-        start = len(self.t)
-        self.samples = samples if self.samples is None else Samples.concatenate([self.samples, samples])
-        self.t = np.concatenate([self.t, t])
-        self.status = np.concatenate([self.status, status]).astype(np.int8)
-        self.site = np.concatenate([self.site, site]).astype(int)
-        self.emit = np.concatenate([self.emit, emit]).astype(bool)
-        self.other_site = np.concatenate([self.other_site, other_site]).astype(int)
-        return np.arange(start, len(self.t))
+    def add(self, samples, t, emit, other_site):
+        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain.
+
+        The arrays grow by doubling, so a round costs its own samples only.
+        """
+        columns = {
+            "point": samples.point,
+            "direction": samples.direction,
+            "chain": samples.chain,
+            "position": samples.position,
+            "t": t,
+            "emit": emit,
+            "other_site": other_site,
+        }
+        start, self.count = self.count, self.count + len(t)
+        for name, values in columns.items():
+            stored = self.store.get(name)
+            if stored is None or len(stored) < self.count:
+                grown = np.empty((max(2 * self.count, 64),) + values.shape[1:], dtype=values.dtype)
+                if stored is not None:
+                    grown[:start] = stored[:start]
+                self.store[name] = stored = grown
+            stored[start : self.count] = values
+        return np.arange(start, self.count)
+
+    @property
+    def t(self):
+        """First-contact parameter of every sample so far (a view)."""
+        return self.store["t"][: self.count]
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.samples.point[index] + self.t[index, None] * self.samples.direction[index]
+        return self.store["point"][index] + self.store["t"][index, None] * self.store["direction"][index]
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints`."""
@@ -420,29 +432,17 @@ class _Tracer:
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
             probes = self.spans.samples(span, u, self.boundary)
-            t, status, _, _, site = solve(
-                probes,
-                np.arange(len(u)),
-                self.boundary,
-                np.concatenate([event_trial, station_trial]),
-                self.max_t,
-                self.min_t,
-            )
-            site = self.sites.canonical(site)
+            t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
             event_probes = probes.subset(slice(0, count))
             event = self._is_event(events, event_probes, t[:count], found, LOOSE_EVENT_TOLERANCE)
             exact = self._is_event(events, event_probes, t[:count], found, EVENT_TOLERANCE)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
-            event_index = self.add(
-                probes.subset(slice(0, count)), t[:count], status[:count], site[:count], emit, other_site
-            )
+            event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
             accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
-            station_index = self.add(
-                probes.subset(slice(count, None)), t[count:], status[count:], site[count:], accepted, site[count:]
-            )
+            station_index = self.add(probes.subset(slice(count, None)), t[count:], accepted, site[count:])
             intervals = _Intervals.concatenate(
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
@@ -452,35 +452,61 @@ class _Tracer:
             )
         return self._points()
 
+    def _solve_probes(self, probes, trial):
+        """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
+        spatial-index queries); returns ``t``, status and canonical site in the probes' order."""
+        order = np.lexsort((probes.position, probes.chain))
+        t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
+        t[order], status[order], _, _, site[order] = solve(
+            probes, order, self.boundary, trial[order], self.max_t, self.min_t
+        )
+        return t, status, self.sites.canonical(site)
+
     def _initial(self, report):
-        """Solve the samples at both ends of every edge; returns the intervals of every span between them."""
+        """Solve the samples at both ends of every edge, and in the middle of an edge between two convex
+        corners (both its ends are given the corners' own edges: its axis point would take a round to find);
+        returns the intervals of every span between them."""
         spans, sites, b = self.spans, self.sites, self.boundary
         samples, synthetic_site, synthetic_status = _initial_samples(spans, sites, self.closed, b)
         solved = np.flatnonzero(synthetic_site < 0)
         t = np.zeros(len(synthetic_site))
         status, site = synthetic_status.copy(), synthetic_site.copy()
         t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
-            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.8 * done)
+            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
         )
-        site = sites.canonical(site)
-        emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
-        self.add(samples, t, status, site, emit, site)
         edge = np.arange(b.segment_count)
+        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0)
+        middle_edge = edge[between_corners]
+        middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
+        middle_t, middle_status, _, _, middle_site = _solve_all(
+            middles,
+            np.arange(len(middle_edge)),
+            b,
+            0.625 * self.width,
+            self.max_t,
+            self.min_t,
+            lambda done: report(0.6 + 0.2 * done),
+        )
+        samples = Samples.concatenate([samples, middles])
+        t = np.concatenate([t, middle_t])
+        status = np.concatenate([status, middle_status])
+        site = sites.canonical(np.concatenate([site, middle_site]))
+        emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
+        self.add(samples, t, emit, site)
+        middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
         reflex = np.flatnonzero(spans.kind == FAN)
         incoming = spans.segment[reflex]
-        left = np.concatenate([2 * edge, 2 * incoming + 1])
-        right = np.concatenate([2 * edge + 1, 2 * (incoming + 1)])
-        span = np.concatenate([edge, reflex])
-        return _Intervals(
-            span,
-            np.zeros(len(span)),
-            spans.length[span],
-            left,
-            right,
-            site[left],
-            site[right],
-            np.zeros(len(span), bool),
+        whole = edge[~between_corners]
+        span = np.concatenate([whole, middle_edge, middle_edge, reflex])
+        u0 = np.concatenate(
+            [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
         )
+        u1 = np.concatenate(
+            [spans.length[whole], 0.5 * spans.length[middle_edge], spans.length[middle_edge], spans.length[reflex]]
+        )
+        left = np.concatenate([2 * whole, 2 * middle_edge, middle_index, 2 * incoming + 1])
+        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
+        return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
@@ -560,7 +586,7 @@ class _Tracer:
         ends = b.segment_count + np.array(
             [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
         )
-        return self.closed & np.isin(site, ends)
+        return self.closed & np.any(site[:, None] == ends, axis=1)
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -600,18 +626,26 @@ class _Tracer:
 
     def _points(self):
         """The emitted samples as :class:`AxisPoints`."""
-        index = np.flatnonzero(self.emit & np.isfinite(self.t))
+        store = {name: values[: self.count] for name, values in self.store.items()}
+        index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
         centre = self.centres(index)
-        other_foot, other_position = self.sites.feet(self.other_site[index], centre)
+        other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
         return AxisPoints.from_chain_feet(
-            self.samples.chain[index],
+            store["chain"][index],
             centre,
-            self.t[index],
-            self.samples.point[index],
-            self.samples.position[index],
+            store["t"][index],
+            store["point"][index],
+            store["position"][index],
             other_foot,
             other_position,
         )
+
+
+def _solve_all(samples, index, *arguments):
+    """:func:`.contacts.solve_in_chunks`, without its set-up when there is nothing to solve."""
+    if len(index) == 0:
+        return np.empty(0), np.empty(0, dtype=np.int8), np.empty((0, 2)), np.empty(0), np.empty(0, dtype=int)
+    return solve_in_chunks(samples, index, *arguments)
 
 
 def _initial_samples(spans, sites, closed, boundary):
@@ -699,26 +733,9 @@ def _split_at_stations(intervals, owner, u, probe_index, probe_site):
 def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
     """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
 
-    Parameters
-    ----------
-    chains : sequence of two ndarray of shape (n, 2)
-        The chains in the engine's local frame, CRS units.
-    sides : sequence of two float
-        +1 when the region lies left of the chain, -1 when right.
-    boundary : Boundary
-    closed : bool
-        The chains share both end points (a polygon split at two points).
-    tolerance : float
-        Largest distance between a parabola of the axis and its chords, CRS units.
-    width : float
-        Typical width, CRS units (the first trial radius).
-    max_t, min_t : float
-        Largest disk parameter searched, and the smallest one that counts as a contact, CRS units.
-    report : callable
-        ``report(done_fraction)``; raises to cancel.
-
-    Returns
-    -------
-    AxisPoints
+    ``sides`` gives, per chain, +1 when the region lies left of it and -1 when right; ``closed`` is true
+    when the chains share both end points; ``tolerance`` (CRS units) bounds the distance between a parabola
+    of the axis and its chords. ``chains``, ``boundary``, ``width``, ``max_t``, ``min_t`` and ``report`` are
+    as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     return _Tracer(chains, sides, boundary, closed, tolerance, width, max_t, min_t).trace(report)

@@ -307,7 +307,11 @@ def solve(samples, index, boundary, trial, max_t, min_t):
             segment,
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
-        t[own_segment | (t <= min_t)] = np.inf
+        # The own segments' end vertices too (the next segment answers for the last one's end).
+        own_vertex = (touched >= boundary.start_site[samples.first_own[sample]]) & (
+            touched <= boundary.start_site[samples.last_own[sample]] + 1
+        )
+        t[own_segment | own_vertex | (t <= min_t)] = np.inf
         on_own = boundary.chain_id[segment] == samples.chain[sample]
         t_own = np.where(on_own, t, np.inf)
         t_other = np.where(on_own, np.inf, t)
