@@ -19,7 +19,7 @@ from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
 
-DOUBLE, INTEGER, BOOLEAN = FieldType.Double, FieldType.Int, FieldType.Bool
+DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
 
 
 def make_fields(definitions):
@@ -38,6 +38,7 @@ CENTERLINE_FIELDS = (
     ("width_max", DOUBLE),
     ("n_vertices", INTEGER),
     ("ends_found", BOOLEAN),
+    ("ends_from", STRING),
 )
 VERTEX_FIELDS = (
     ("source_fid", INTEGER),
@@ -78,7 +79,8 @@ def width_statistics(results):
     -------
     dict
         ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
-        (True when every part had automatic ends); lengths in working-frame units.
+        (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
+        ``automatic``, comma-separated; None for lines); lengths in working-frame units.
     """
     widths, integral, span = [], 0.0, 0.0
     for result in results:
@@ -97,6 +99,7 @@ def width_statistics(results):
         "width_max": max(widths) if widths else None,
         "n_vertices": int(sum(len(result.line.coords) for result in results)),
         "ends_found": all(bool(result.ends_found) for result in results),
+        "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
     }
 
 

@@ -11,7 +11,8 @@
 # Then runs bench_compare.py (tools side by side + scaling), bench_layer.py (whole layers: 400 river-like
 # polygons and the real outlines, issue 9), bench_core.py (10^6 vertices end to end, peak memory),
 # bench_paper.py (Fig. 4 and Table 1 of the paper), profile_incircu.py, and writes docs/benchmark.md,
-# docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/.
+# docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/;
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page.
 #
 # Options: --quick (no GRASS, 40 rivers, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
@@ -87,4 +88,5 @@ fi
 "$PYTHON" "$BENCH_DIR/bench_paper.py"
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
+"$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
 echo "== benchmark done in $(( $(date +%s) - started )) s; see docs/benchmark.md"

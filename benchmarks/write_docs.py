@@ -10,6 +10,7 @@ sit between :data:`README_START` and :data:`README_END` and are rewritten from t
 import json
 import os
 import platform
+import re
 import subprocess
 import sys
 import textwrap
@@ -463,6 +464,15 @@ def update_readme(numbers, path=README_PATH):
     path.write_text(text[:start] + readme_block(numbers["quotes"], numbers["largest_load_average"]) + text[end:])
 
 
+def kept_sections(path):
+    """The sections other scripts add to the page between ``<!-- name:begin -->`` and ``<!-- name:end -->``
+    (``bench_mainstem.py``), kept when this page is rewritten."""
+    if not path.exists():
+        return ""
+    pattern = r"\n<!-- (\w+):begin -->.*?<!-- \1:end -->\n"
+    return "".join(match.group(0) for match in re.finditer(pattern, path.read_text(), flags=re.DOTALL))
+
+
 def _optional_json(name):
     path = RESULTS_DIR / name
     return json.loads(path.read_text()) if path.exists() else None
@@ -585,7 +595,7 @@ case d (every vertex is a sample too, so the curve flattens once the vertices do
 cProfile of `polygon_centerline` (top functions by own time):
 {profile_section(profiles)}
 """
-    DOC_PATH.write_text(page)
+    DOC_PATH.write_text(page + kept_sections(DOC_PATH))
     numbers = summary(compare, layer_results, core)
     SUMMARY_PATH.write_text(json.dumps(numbers, indent=1, ensure_ascii=False) + "\n")
     update_readme(numbers)
