@@ -53,6 +53,9 @@ QUERY_GROUP = 2
 #: Consecutive segments that share one entry of the spatial index.
 INDEX_RUN = 4
 
+#: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
+ALL_PAIRS = 1 << 15
+
 
 @dataclass(frozen=True)
 class Samples:
@@ -131,18 +134,31 @@ class Boundary:
         self.run_low = np.minimum.reduceat(low, run_start)
         self.run_high = np.maximum.reduceat(high, run_start)
         self.run_size = np.diff(np.append(run_start, len(self.start)))
-        self.tree = shapely.STRtree(
-            shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
-        )
+        self._tree = None
+
+    @property
+    def tree(self):
+        """The spatial index of the runs of segments, built on first use (small inputs never need it)."""
+        if self._tree is None:
+            self._tree = shapely.STRtree(
+                shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
+            )
+        return self._tree
 
     def candidates(self, low, high):
         """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
 
-        The index is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper
-        than one query per box when consecutive boxes overlap, as they do along a chain; the hits are then
-        filtered segment by segment and box by box.
+        With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
+        query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
+        per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper than one query per box when
+        consecutive boxes overlap, as they do along a chain; the hits are then filtered segment by segment
+        and box by box. Both give the same pairs.
         """
         count = len(low)
+        if count * self.segment_count <= ALL_PAIRS:
+            meets = (self.low_x <= high[:, 0, None]) & (self.high_x >= low[:, 0, None])
+            meets &= (self.low_y <= high[:, 1, None]) & (self.high_y >= low[:, 1, None])
+            return np.nonzero(meets)
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
@@ -352,10 +368,10 @@ def solve(samples, index, boundary, trial, max_t, min_t):
 def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
     """Settle ``index`` (sorted by position) from coarse to fine.
 
-    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk) is
-    solved first from a global trial radius, then each finer level from trial radii interpolated between
-    the coarser levels' first contacts: a trial close to the answer keeps the candidate boxes tight where
-    the width varies. ``report(done)`` is called after each level with the number of samples settled.
+    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk; all
+    at once up to ``COARSE_STRIDE ** 2`` samples) is solved first from a global trial radius, then each finer
+    level from trial radii interpolated between the coarser levels' first contacts: a trial close to the
+    answer keeps the candidate boxes tight where the width varies. ``report(done)`` is called after each level with the number of samples settled.
     """
     count = len(index)
     contact_t = np.full(count, np.nan)
@@ -365,7 +381,11 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     site = np.empty(count, dtype=int)
     # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
     along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
-    stride = COARSE_STRIDE**COARSE_LEVELS if count > COARSE_STRIDE ** (COARSE_LEVELS + 1) else COARSE_STRIDE
+    if count > COARSE_STRIDE ** (COARSE_LEVELS + 1):
+        stride = COARSE_STRIDE**COARSE_LEVELS
+    else:
+        # A few samples: one level (the coarse one would cost a whole round of overhead to save little).
+        stride = COARSE_STRIDE if count > COARSE_STRIDE**2 else 1
     while stride >= 1:
         level = np.zeros(count, dtype=bool)
         level[::stride] = True
