@@ -50,8 +50,10 @@ SMALLEST_TRIAL = 1.0 / 16.0
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 2
 
-#: Consecutive segments that share one entry of the spatial index.
+#: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS box per
+#: segment costs about 0.5 kB), and the most segments indexed one by one (faster to query).
 INDEX_RUN = 4
+SINGLE_INDEX = 1 << 17
 
 #: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
 ALL_PAIRS = 1 << 15
@@ -128,9 +130,10 @@ class Boundary:
         low, high = np.minimum(self.start, self.end), np.maximum(self.start, self.end)
         self.low_x, self.low_y = low[:, 0].copy(), low[:, 1].copy()
         self.high_x, self.high_y = high[:, 0].copy(), high[:, 1].copy()
-        # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer GEOS geometries to
-        # build, store and search; a run's hits are filtered segment by segment.
-        run_start = np.arange(0, len(self.start), INDEX_RUN)
+        # The index of a large boundary holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer
+        # GEOS geometries to build, store and search; a run's hits are filtered segment by segment.
+        self.index_run = 1 if count <= SINGLE_INDEX else INDEX_RUN
+        run_start = np.arange(0, len(self.start), self.index_run)
         self.run_low = np.minimum.reduceat(low, run_start)
         self.run_high = np.maximum.reduceat(high, run_start)
         self.run_size = np.diff(np.append(run_start, len(self.start)))
@@ -138,7 +141,7 @@ class Boundary:
 
     @property
     def tree(self):
-        """The spatial index of the runs of segments, built on first use (small inputs never need it)."""
+        """The spatial index of the segments (or their runs), built on first use (small inputs never need it)."""
         if self._tree is None:
             self._tree = shapely.STRtree(
                 shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
@@ -152,19 +155,22 @@ class Boundary:
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
         per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper than one query per box when
         consecutive boxes overlap, as they do along a chain; the hits are then filtered segment by segment
-        and box by box. Both give the same pairs.
+        and box by box. An index of single segments is queried with every box at once. All give the same
+        pairs.
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
             meets = (self.low_x <= high[:, 0, None]) & (self.high_x >= low[:, 0, None])
             meets &= (self.low_y <= high[:, 1, None]) & (self.high_y >= low[:, 1, None])
             return np.nonzero(meets)
+        if self.index_run == 1:
+            return self._query_each(low, high)
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
         group, run = self.tree.query(shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1]))
         pair, offset = ranges(self.run_size[run])
-        group, segment = group[pair], run[pair] * INDEX_RUN + offset
+        group, segment = group[pair], run[pair] * self.index_run + offset
         keep = self._overlaps(segment, group_low[group], group_high[group])
         group, segment = group[keep], segment[keep]
 
@@ -175,6 +181,14 @@ class Boundary:
         segment = segment[first_hit[box_group[box]] + offset]
         keep = self._overlaps(segment, low[box], high[box])
         return box[keep], segment[keep]
+
+    def _query_each(self, low, high):
+        """Pairs (box index, segment index), sorted by box, from an index of single segments."""
+        box, segment = self.tree.query(shapely.box(low[:, 0], low[:, 1], high[:, 0], high[:, 1]))
+        if np.any(box[1:] < box[:-1]):
+            order = np.argsort(box, kind="stable")
+            box, segment = box[order], segment[order]
+        return box, segment
 
     def _overlaps(self, segment, low, high):
         """Whether each segment's bounding box meets the matching box ``low..high``."""
