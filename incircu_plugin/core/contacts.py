@@ -143,9 +143,7 @@ class Boundary:
     def tree(self):
         """The spatial index of the segments (or their runs), built on first use (small inputs never need it)."""
         if self._tree is None:
-            self._tree = shapely.STRtree(
-                shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
-            )
+            self._tree = shapely.STRtree(_diagonals(self.run_low, self.run_high))
         return self._tree
 
     def candidates(self, low, high):
@@ -168,7 +166,7 @@ class Boundary:
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
-        group, run = self.tree.query(shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1]))
+        group, run = self.tree.query(_diagonals(group_low, group_high))
         pair, offset = ranges(self.run_size[run])
         group, segment = group[pair], run[pair] * self.index_run + offset
         keep = self._overlaps(segment, group_low[group], group_high[group])
@@ -184,7 +182,7 @@ class Boundary:
 
     def _query_each(self, low, high):
         """Pairs (box index, segment index), sorted by box, from an index of single segments."""
-        box, segment = self.tree.query(shapely.box(low[:, 0], low[:, 1], high[:, 0], high[:, 1]))
+        box, segment = self.tree.query(_diagonals(low, high))
         if np.any(box[1:] < box[:-1]):
             order = np.argsort(box, kind="stable")
             box, segment = box[order], segment[order]
@@ -197,6 +195,12 @@ class Boundary:
         keep &= self.low_y[segment] <= high[:, 1]
         keep &= self.high_y[segment] >= low[:, 1]
         return keep
+
+
+def _diagonals(low, high):
+    """Two-point lines from the corners ``low`` to ``high`` of boxes: their envelopes are the boxes (all an
+    ``STRtree`` query without a predicate compares) and they are about twice as cheap to build as polygons."""
+    return shapely.linestrings(np.stack([low, high], axis=1))
 
 
 def ranges(counts):
