@@ -435,8 +435,7 @@ class _Tracer:
             t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
             event_probes = probes.subset(slice(0, count))
-            event = self._is_event(events, event_probes, t[:count], found, LOOSE_EVENT_TOLERANCE)
-            exact = self._is_event(events, event_probes, t[:count], found, EVENT_TOLERANCE)
+            event, exact = self._is_event(events, event_probes, t[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
             event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
@@ -570,14 +569,17 @@ class _Tracer:
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
 
-    def _is_event(self, intervals, probes, t, found, tolerance):
+    def _is_event(self, intervals, probes, t, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first,
-        to ``tolerance`` relative to its radius."""
+        to ``LOOSE_EVENT_TOLERANCE`` and to ``EVENT_TOLERANCE`` relative to its radius (two masks)."""
         centre = probes.point + t[:, None] * probes.direction
-        slack = tolerance * t + self.min_t
         with np.errstate(invalid="ignore"):
-            event = found & (np.abs(self.sites.distance(intervals.site0, centre) - t) <= slack)
-            return event & (np.abs(self.sites.distance(intervals.site1, centre) - t) <= slack)
+            gap0 = np.abs(self.sites.distance(intervals.site0, centre) - t)
+            gap1 = np.abs(self.sites.distance(intervals.site1, centre) - t)
+            return tuple(
+                found & (gap0 <= tolerance * t + self.min_t) & (gap1 <= tolerance * t + self.min_t)
+                for tolerance in (LOOSE_EVENT_TOLERANCE, EVENT_TOLERANCE)
+            )
 
     def _at_split_point(self, site):
         """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no

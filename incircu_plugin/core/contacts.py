@@ -50,8 +50,13 @@ SMALLEST_TRIAL = 1.0 / 16.0
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 2
 
-#: Consecutive segments that share one entry of the spatial index.
+#: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS box per
+#: segment costs about 0.5 kB), and the most segments indexed one by one (faster to query).
 INDEX_RUN = 4
+SINGLE_INDEX = 1 << 17
+
+#: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
+ALL_PAIRS = 1 << 15
 
 
 @dataclass(frozen=True)
@@ -125,30 +130,45 @@ class Boundary:
         low, high = np.minimum(self.start, self.end), np.maximum(self.start, self.end)
         self.low_x, self.low_y = low[:, 0].copy(), low[:, 1].copy()
         self.high_x, self.high_y = high[:, 0].copy(), high[:, 1].copy()
-        # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer GEOS geometries to
-        # build, store and search; a run's hits are filtered segment by segment.
-        run_start = np.arange(0, len(self.start), INDEX_RUN)
+        # The index of a large boundary holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer
+        # GEOS geometries to build, store and search; a run's hits are filtered segment by segment.
+        self.index_run = 1 if count <= SINGLE_INDEX else INDEX_RUN
+        run_start = np.arange(0, len(self.start), self.index_run)
         self.run_low = np.minimum.reduceat(low, run_start)
         self.run_high = np.maximum.reduceat(high, run_start)
         self.run_size = np.diff(np.append(run_start, len(self.start)))
-        self.tree = shapely.STRtree(
-            shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
-        )
+        self._tree = None
+
+    @property
+    def tree(self):
+        """The spatial index of the segments (or their runs), built on first use (small inputs never need it)."""
+        if self._tree is None:
+            self._tree = shapely.STRtree(_diagonals(self.run_low, self.run_high))
+        return self._tree
 
     def candidates(self, low, high):
         """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
 
-        The index is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper
-        than one query per box when consecutive boxes overlap, as they do along a chain; the hits are then
-        filtered segment by segment and box by box.
+        With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
+        query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
+        per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper than one query per box when
+        consecutive boxes overlap, as they do along a chain; the hits are then filtered segment by segment
+        and box by box. An index of single segments is queried with every box at once. All give the same
+        pairs.
         """
         count = len(low)
+        if count * self.segment_count <= ALL_PAIRS:
+            meets = (self.low_x <= high[:, 0, None]) & (self.high_x >= low[:, 0, None])
+            meets &= (self.low_y <= high[:, 1, None]) & (self.high_y >= low[:, 1, None])
+            return np.nonzero(meets)
+        if self.index_run == 1:
+            return self._query_each(low, high)
         starts = np.arange(0, count, QUERY_GROUP)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
-        group, run = self.tree.query(shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1]))
+        group, run = self.tree.query(_diagonals(group_low, group_high))
         pair, offset = ranges(self.run_size[run])
-        group, segment = group[pair], run[pair] * INDEX_RUN + offset
+        group, segment = group[pair], run[pair] * self.index_run + offset
         keep = self._overlaps(segment, group_low[group], group_high[group])
         group, segment = group[keep], segment[keep]
 
@@ -160,6 +180,14 @@ class Boundary:
         keep = self._overlaps(segment, low[box], high[box])
         return box[keep], segment[keep]
 
+    def _query_each(self, low, high):
+        """Pairs (box index, segment index), sorted by box, from an index of single segments."""
+        box, segment = self.tree.query(_diagonals(low, high))
+        if np.any(box[1:] < box[:-1]):
+            order = np.argsort(box, kind="stable")
+            box, segment = box[order], segment[order]
+        return box, segment
+
     def _overlaps(self, segment, low, high):
         """Whether each segment's bounding box meets the matching box ``low..high``."""
         keep = self.low_x[segment] <= high[:, 0]
@@ -167,6 +195,12 @@ class Boundary:
         keep &= self.low_y[segment] <= high[:, 1]
         keep &= self.high_y[segment] >= low[:, 1]
         return keep
+
+
+def _diagonals(low, high):
+    """Two-point lines from the corners ``low`` to ``high`` of boxes: their envelopes are the boxes (all an
+    ``STRtree`` query without a predicate compares) and they are about twice as cheap to build as polygons."""
+    return shapely.linestrings(np.stack([low, high], axis=1))
 
 
 def ranges(counts):
@@ -352,10 +386,10 @@ def solve(samples, index, boundary, trial, max_t, min_t):
 def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
     """Settle ``index`` (sorted by position) from coarse to fine.
 
-    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk) is
-    solved first from a global trial radius, then each finer level from trial radii interpolated between
-    the coarser levels' first contacts: a trial close to the answer keeps the candidate boxes tight where
-    the width varies. ``report(done)`` is called after each level with the number of samples settled.
+    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk; all
+    at once up to ``COARSE_STRIDE ** 2`` samples) is solved first from a global trial radius, then each finer
+    level from trial radii interpolated between the coarser levels' first contacts: a trial close to the
+    answer keeps the candidate boxes tight where the width varies. ``report(done)`` is called after each level with the number of samples settled.
     """
     count = len(index)
     contact_t = np.full(count, np.nan)
@@ -365,7 +399,11 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     site = np.empty(count, dtype=int)
     # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
     along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
-    stride = COARSE_STRIDE**COARSE_LEVELS if count > COARSE_STRIDE ** (COARSE_LEVELS + 1) else COARSE_STRIDE
+    if count > COARSE_STRIDE ** (COARSE_LEVELS + 1):
+        stride = COARSE_STRIDE**COARSE_LEVELS
+    else:
+        # A few samples: one level (the coarse one would cost a whole round of overhead to save little).
+        stride = COARSE_STRIDE if count > COARSE_STRIDE**2 else 1
     while stride >= 1:
         level = np.zeros(count, dtype=bool)
         level[::stride] = True
