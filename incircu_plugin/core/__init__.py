@@ -17,7 +17,7 @@ from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .geodesy import LocalProjection
-from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
+from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
     "ISLAND_MODES",
@@ -44,4 +44,5 @@ __all__ = [
     "split_polygon",
     "transects",
     "vertex_chainages",
+    "width_statistics",
 ]
