@@ -89,6 +89,27 @@ class LocalProjection:
         )
 
 
+def degrees_covering(distance, latitude):
+    """Return an angle, degrees, that spans at least ``distance`` metres east-west and north-south.
+
+    A safe bounding-box margin in longitude/latitude around a feature at ``latitude`` (poles capped at a
+    hundredth of the equator's scale).
+
+    Parameters
+    ----------
+    distance : float or ndarray
+        Metres.
+    latitude : float or ndarray
+        Degrees.
+
+    Returns
+    -------
+    float or ndarray
+        Degrees, twice the equatorial equivalent divided by the cosine of the latitude.
+    """
+    return 2.0 * distance / (111_000.0 * np.maximum(np.cos(np.radians(latitude)), 0.01))
+
+
 @functools.lru_cache(maxsize=16)
 def _ellipsoid(geographic_crs):
     """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
