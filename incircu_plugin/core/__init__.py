@@ -16,6 +16,7 @@ from .chains import orient_bank_lines, split_polygon
 from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
+from .frames import centerlines
 from .geodesy import LocalProjection
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
@@ -34,6 +35,7 @@ __all__ = [
     "SplitPointError",
     "Transect",
     "centerline_from_chains",
+    "centerlines",
     "default_spacing",
     "find_ends",
     "incircle_polygons",
