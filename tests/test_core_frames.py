@@ -12,6 +12,7 @@ import os
 import numpy as np
 import pytest
 import shapely
+from frame_cases import channels_lonlat
 from shapely.geometry import LineString, MultiLineString, MultiPolygon, Point, Polygon, box
 
 from incircu_plugin.core import IncirCuError, LocalProjection, centerlines, multipolygon_centerlines, width_statistics
@@ -63,7 +64,7 @@ def assert_rows_equal_core(result, data, points, **options):
     for label, shape in data.geometry.items():
         line, statistics, error = expected_row(shape, coordinates, data.crs, **options)
         row = result.loc[label]
-        assert row["error"] == error, label
+        assert (None if pandas.isna(row["error"]) else row["error"]) == error, label
         if line is None:
             assert row.geometry is None and np.isnan(row["length"]) and pandas.isna(row["ends_found"]), label
             continue
@@ -103,7 +104,7 @@ def test_bad_rows_report_the_core_error_and_never_stop_the_frame():
     result = centerlines(frame, points)
     assert_rows_equal_core(result, frame, points)
     good_rows = [i for i, name in enumerate(bad["name"]) if name == "good"] + [len(frame) - 1]
-    assert [i for i, error in enumerate(result["error"]) if error is None] == good_rows
+    assert np.flatnonzero(result["error"].isna().to_numpy()).tolist() == good_rows
     assert result.geometry.iloc[good_rows].notna().all()
     assert result["error"].iloc[len(bad)] == "The polygon is empty or null."
 
@@ -188,4 +189,37 @@ def assert_frames_identical(one, other):
         one["ends_found"].astype(object).fillna("na").tolist()
         == other["ends_found"].astype(object).fillna("na").tolist()
     )
-    assert one["error"].tolist() == other["error"].tolist()
+    assert one["error"].fillna("").tolist() == other["error"].fillna("").tolist()
+    assert one["error"].isna().tolist() == other["error"].isna().tolist()
+
+
+@pytest.mark.slow
+def test_dask_cluster_on_geoparquet_equals_the_serial_run(tmp_path, monkeypatch):
+    dask_geopandas = pytest.importorskip("dask_geopandas")
+    distributed = pytest.importorskip("distributed")
+    pytest.importorskip("pyarrow")
+    count = 10_000
+    channels, split_points, bad_rows = channels_lonlat(count, seed=12)
+    layer = geopandas.GeoDataFrame({"row": np.arange(count)}, geometry=channels, crs="EPSG:4326")
+    layer.index = 3 * layer.index + 7  # not a RangeIndex: the index must come back as it was
+    dask_geopandas.from_geopandas(layer, npartitions=8, sort=False).to_parquet(tmp_path / "channels")
+    geopandas.GeoDataFrame(geometry=split_points, crs="EPSG:4326").to_parquet(tmp_path / "ends.parquet")
+    ends = geopandas.read_parquet(tmp_path / "ends.parquet")
+    # Spawned workers import the core from the repository, as an installed package would be imported.
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(filter(None, [REPOSITORY, os.environ.get("PYTHONPATH")])))
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        distributed.Client(cluster),
+    ):
+        lazy_layer = dask_geopandas.read_parquet(tmp_path / "channels")
+        assert lazy_layer.npartitions > 1 and lazy_layer.crs == "EPSG:4326"
+        lazy = centerlines(lazy_layer, ends, spacing=20.0)
+        lazy.to_parquet(tmp_path / "centerlines")
+        read_layer = lazy_layer.compute()
+    distributed_result = geopandas.read_parquet(tmp_path / "centerlines")
+    serial = centerlines(read_layer, ends, spacing=20.0)
+    assert len(serial) == count
+    assert_frames_identical(distributed_result, serial)
+    errors = set(np.flatnonzero(serial["error"].notna().to_numpy()).tolist())
+    assert errors == bad_rows
+    assert serial.geometry.iloc[sorted(set(range(count)) - bad_rows)].notna().all()

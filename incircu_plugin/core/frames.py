@@ -9,8 +9,8 @@ Example
 >>> from shapely.geometry import box
 >>> rivers = geopandas.GeoSeries([box(0, 0, 100, 10), box(0, 0, 1, 1).buffer(-1)], crs="EPSG:2180")
 >>> result = centerlines(rivers)
->>> round(float(result.loc[0, "width_max"]), 6), result.loc[1, "error"]
-(10.0, 'The polygon is empty or null.')
+>>> round(float(result.loc[0, "width_max"]), 6), result.loc[1, "error"], result["error"].isna().tolist()
+(10.0, 'The polygon is empty or null.', [True, False])
 """
 
 import numpy as np
@@ -23,14 +23,14 @@ from .geodesy import LocalProjection, degrees_covering
 from .widths import width_statistics
 
 #: Columns of the result besides the geometry, with their pandas dtypes (widths and lengths in metres for
-#: geographic CRSs, CRS units otherwise).
+#: geographic CRSs, CRS units otherwise). Nullable types, missing as ``<NA>``: GeoParquet keeps them.
 RESULT_COLUMNS = {
     "length": "float64",
     "width_min": "float64",
     "width_mean": "float64",
     "width_max": "float64",
     "ends_found": "boolean",
-    "error": "object",
+    "error": "string",
 }
 
 
@@ -82,7 +82,7 @@ def centerlines(
         Same index and CRS as ``data`` (lazy for a dask frame). ``geometry``: a LineString per polygon, a
         MultiLineString of the successful parts per multipolygon, None when nothing succeeded; ``length``,
         ``width_min``, ``width_mean``, ``width_max`` (metres when geographic, NaN without a line);
-        ``ends_found`` (True when every part found its ends itself, <NA> without a line); ``error`` (None, or
+        ``ends_found`` (True when every part found its ends itself, <NA> without a line); ``error`` (<NA>, or
         the message of the core's typed error, prefixed with ``part i:`` for a part of a multipolygon).
 
     Examples
