@@ -4,7 +4,7 @@ per feature against the QGIS algorithm on the same layer; prints a Markdown tabl
 Usage: ``.venv/bin/python benchmarks/bench_frames.py [--count 10000] [--quick] [--no-qgis]``
 (the project's venv: it has geopandas, dask-geopandas and distributed from ``requirements-dev.txt``).
 
-The layer is ``tests/frame_cases.channels_lonlat``: small bent channels in EPSG:4326, split points at their
+The layer is ``tests/support/frame_cases.channels_lonlat``: small bent channels in EPSG:4326, split points at their
 ends (every 50th finds its ends itself), a few bad rows. Rows:
 
 - ``centerlines`` on the GeoPandas frame in this process (no dask), the reference the others must equal;
@@ -29,14 +29,13 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests"))
 sys.path.insert(0, str(ROOT))
 
-import frame_cases
 import geopandas
 import numpy as np
 
 from incircu_plugin.core import centerlines
+from tests.support import frame_cases
 
 SPACING = 20.0
 PARTITIONS = 16

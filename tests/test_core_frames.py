@@ -12,22 +12,21 @@ import os
 import numpy as np
 import pytest
 import shapely
-from frame_cases import channels_lonlat
 from shapely.geometry import LineString, MultiLineString, MultiPolygon, Point, Polygon, box
 
 from incircu_plugin.core import IncirCuError, LocalProjection, centerlines, multipolygon_centerlines, width_statistics
+from tests.support.frame_cases import channels_lonlat
+from tests.support.project import DATA, REPOSITORY
 
 geopandas = pytest.importorskip("geopandas")
 pandas = pytest.importorskip("pandas")
 
-REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DATA = os.path.join(REPOSITORY, "tests", "data")
 STATISTICS = ("length", "width_min", "width_mean", "width_max")
 
 
 def read_geojson(name, crs):
     """A GeoDataFrame of a fixture (its attributes and geometries), in ``crs``."""
-    with open(os.path.join(DATA, name), encoding="utf-8") as stream:
+    with open(DATA / name, encoding="utf-8") as stream:
         document = json.load(stream)
     features = document["features"] if document["type"] == "FeatureCollection" else [document]
     rows = [feature["properties"] or {} for feature in features]
@@ -206,7 +205,7 @@ def test_dask_cluster_on_geoparquet_equals_the_serial_run(tmp_path, monkeypatch)
     geopandas.GeoDataFrame(geometry=split_points, crs="EPSG:4326").to_parquet(tmp_path / "ends.parquet")
     ends = geopandas.read_parquet(tmp_path / "ends.parquet")
     # Spawned workers import the core from the repository, as an installed package would be imported.
-    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(filter(None, [REPOSITORY, os.environ.get("PYTHONPATH")])))
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(filter(None, [str(REPOSITORY), os.environ.get("PYTHONPATH")])))
     with (
         distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
         distributed.Client(cluster),

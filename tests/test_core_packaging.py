@@ -6,7 +6,6 @@ for the build); installing it fetches numpy, Shapely and pyproj from the package
 ``pip install`` (the test skips when the index cannot be reached).
 """
 
-import configparser
 import email
 import subprocess
 import sys
@@ -15,7 +14,8 @@ import venv
 import zipfile
 
 import pytest
-from conftest import REPOSITORY
+
+from tests.support.project import REPOSITORY, metadata
 
 CORE = REPOSITORY / "incircu_plugin" / "core"
 
@@ -65,21 +65,21 @@ def wheel(tmp_path_factory):
 def test_wheel_holds_the_core_as_incircu_and_nothing_of_qgis(wheel):
     with zipfile.ZipFile(wheel) as archive:
         names = archive.namelist()
-        metadata = email.message_from_bytes(archive.read(next(n for n in names if n.endswith(".dist-info/METADATA"))))
+        wheel_metadata = email.message_from_bytes(
+            archive.read(next(n for n in names if n.endswith(".dist-info/METADATA")))
+        )
     modules = sorted(name for name in names if not name.split("/")[0].endswith(".dist-info"))
     expected = sorted(f"incircu/{path.relative_to(CORE).as_posix()}" for path in CORE.rglob("*.py"))
     assert modules == expected
-    plugin = configparser.ConfigParser(interpolation=None)
-    plugin.read(REPOSITORY / "metadata.txt", encoding="utf-8")
-    assert metadata["Name"] == "incircu"
-    assert metadata["Version"] == plugin["general"]["version"]
-    requirements = metadata.get_all("Requires-Dist")
+    assert wheel_metadata["Name"] == "incircu"
+    assert wheel_metadata["Version"] == metadata()["version"]
+    requirements = wheel_metadata.get_all("Requires-Dist")
     assert {r.split(";")[0].split(">")[0].split("=")[0].strip() for r in requirements if "extra" not in r} == {
         "numpy",
         "shapely",
         "pyproj",
     }
-    assert {"geopandas", "dask"} <= set(metadata.get_all("Provides-Extra"))
+    assert {"geopandas", "dask"} <= set(wheel_metadata.get_all("Provides-Extra"))
 
 
 @pytest.mark.slow

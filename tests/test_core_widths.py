@@ -8,7 +8,6 @@ a chord of the true axis, off by at most its sagitta, which ``axis_tolerance`` o
 
 import math
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
@@ -23,6 +22,7 @@ from incircu_plugin.core.widths import (
     vertex_chainages,
     width_statistics,
 )
+from tests.support import geometry_cases
 
 #: Relative accuracy (of the extent) of the engine's vertices and radii.
 ENGINE_ACCURACY = 1e-9

@@ -1,6 +1,6 @@
 """Generated layers for the data-frame API: many small channels in longitude/latitude, some of them bad.
 
-Shared by ``tests/test_core_frames.py`` and ``benchmarks/bench_frames.py``.
+Shared by ``tests/test_core_frames.py`` and ``benchmarks/bench_frames.py``; numpy and shapely only.
 """
 
 import numpy as np
