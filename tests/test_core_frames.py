@@ -146,8 +146,11 @@ def test_core_keywords_are_forwarded_only_when_given(monkeypatch):
     centerlines(frame, guide=geopandas.GeoSeries([LineString([(0, 5), (100, 5)])], crs="EPSG:2180"))
     assert "tolerance" not in seen[-1] and "end_rule" not in seen[-1]
     assert seen[-1]["guide"].equals(MultiLineString([[(0, 5), (100, 5)]]))
-    centerlines(frame, guide=geopandas.GeoSeries([LineString([(500, 5), (600, 5)])], crs="EPSG:2180"))
-    assert "guide" not in seen[-1]  # no guide line near this feature
+    # As in the plugin, a guide is near when its box meets the feature's grown by a quarter of its larger side.
+    centerlines(frame, guide=geopandas.GeoSeries([LineString([(120, 5), (200, 5)])], crs="EPSG:2180"))
+    assert seen[-1]["guide"].equals(MultiLineString([[(120, 5), (200, 5)]]))
+    centerlines(frame, guide=geopandas.GeoSeries([LineString([(130, 5), (200, 5)])], crs="EPSG:2180"))
+    assert "guide" not in seen[-1]
     result = centerlines(frame, tolerance=0.5, end_rule="longest_path")  # a core without them: an error per row
     assert seen[-1]["tolerance"] == 0.5 and seen[-1]["end_rule"] == "longest_path"
     assert len(result) == 1

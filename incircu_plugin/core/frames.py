@@ -68,8 +68,8 @@ def centerlines(
     end_rule : str, optional
         How automatic ends are chosen; passed to the core only when given.
     guide : GeoSeries, GeoDataFrame or sequence of line geometries, optional
-        Guide lines; each feature gets those whose bounding box meets its own (within ``snap_tolerance``),
-        as one MultiLineString. Passed to the core only when given and near the feature.
+        Guide lines; each feature gets those whose bounding box meets its own grown by a quarter of its
+        larger side (as the plugin), as one MultiLineString. Passed to the core only when one is near.
     spacing : float, optional
         Distance between boundary samples, CRS units (metres when geographic); None: automatic.
     snap_tolerance : float
@@ -144,9 +144,10 @@ def _frame_centerlines(data, points, guides, snap_tolerance, options):
     shapes = np.asarray(geometry.values, dtype=object)
     crs = geometry.crs
     geographic = crs is not None and crs.is_geographic
-    margins = _margins(shapes, snap_tolerance or 0.0, geographic)
-    nearby_points = _nearby(shapes, margins, None if points is None else shapely.points(points))
-    nearby_guides = _nearby(shapes, margins, guides)
+    nearby_points = _nearby(
+        shapes, _margins(shapes, snap_tolerance or 0.0, geographic), None if points is None else shapely.points(points)
+    )
+    nearby_guides = _nearby(shapes, _guide_margins(shapes), guides)
     crs_name = crs.srs if geographic else None
     rows = [
         _row(shape, nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options)
@@ -167,6 +168,12 @@ def _margins(shapes, distance, geographic):
     bounds = shapely.bounds(shapes)
     latitudes = np.nan_to_num(0.5 * (bounds[:, 1] + bounds[:, 3]))
     return np.asarray(degrees_covering(float(distance), latitudes), dtype=float).reshape(len(shapes))
+
+
+def _guide_margins(shapes):
+    """Bounding-box margin for guide lines, as the plugin's: a quarter of the larger side of each box."""
+    bounds = shapely.bounds(shapes)
+    return 0.25 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
 
 
 def _nearby(shapes, margins, candidates):
