@@ -156,6 +156,20 @@ def test_core_keywords_are_forwarded_only_when_given(monkeypatch):
     assert len(result) == 1
 
 
+def test_an_unexpected_exception_in_one_row_is_reported_there(monkeypatch):
+    from incircu_plugin.core import frames
+
+    def fail_on_the_wide_one(shape, points, **options):
+        if shape.bounds[3] > 10:
+            raise RuntimeError("boom")
+        return multipolygon_centerlines(shape, points, **options)
+
+    monkeypatch.setattr(frames, "multipolygon_centerlines", fail_on_the_wide_one)
+    result = centerlines(geopandas.GeoSeries([box(0, 0, 100, 10), box(0, 0, 100, 20)], crs="EPSG:2180"))
+    assert pandas.isna(result["error"].iloc[0]) and result["length"].iloc[0] > 0
+    assert result["error"].iloc[1] == "unexpected RuntimeError: boom" and result.geometry.iloc[1] is None
+
+
 def test_empty_frame_gives_an_empty_result_with_the_columns():
     result = centerlines(geopandas.GeoDataFrame(geometry=[], crs="EPSG:4326"))
     assert len(result) == 0 and result.crs == "EPSG:4326"

@@ -191,39 +191,42 @@ def _nearby(shapes, margins, candidates):
 
 
 def _row(shape, points, guides, crs_name, snap_tolerance, options):
-    """The centerline of one row: ``(geometry, attributes)``; errors go into ``attributes["error"]``."""
-    empty = dict.fromkeys(RESULT_COLUMNS)
+    """The centerline of one row: ``(geometry, attributes)``; any failure goes into ``attributes["error"]``."""
     try:
-        geographic = crs_name is not None and shape is not None and not shape.is_empty
-        projection = LocalProjection.around(shape, crs_name) if geographic else None
-        local = shape if projection is None else projection.to_local(shape)
-        candidates = [np.asarray(point.coords[0]) for point in points]
-        extra = {}
-        if guides:
-            extra["guide"] = MultiLineString([part for guide in guides for part in shapely.get_parts(guide)])
-        if projection is not None:
-            candidates = [projection.to_local(point) for point in candidates]
-            extra = {name: projection.to_local(value) for name, value in extra.items()}
-        outcomes = multipolygon_centerlines(
-            local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
-        )
+        return _row_centerline(shape, points, guides, crs_name, snap_tolerance, options)
     except Exception as error:  # noqa: BLE001 - one bad row must not stop a frame of millions
-        return None, {**empty, "error": _message(error)}
-    results = [outcome.result for outcome in outcomes if outcome.error is None]
+        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": _message(error)}
+
+
+def _row_centerline(shape, points, guides, crs_name, snap_tolerance, options):
+    """:func:`_row` without the safety net: the parts that failed are named in ``error``, the others kept."""
+    geographic = crs_name is not None and shape is not None and not shape.is_empty
+    projection = LocalProjection.around(shape, crs_name) if geographic else None
+    local = shape if projection is None else projection.to_local(shape)
+    candidates = [np.asarray(point.coords[0]) for point in points]
+    extra = {}
+    if guides:
+        extra["guide"] = MultiLineString([part for guide in guides for part in shapely.get_parts(guide)])
+    if projection is not None:
+        candidates = [projection.to_local(point) for point in candidates]
+        extra = {name: projection.to_local(value) for name, value in extra.items()}
+    outcomes = multipolygon_centerlines(
+        local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
+    )
     several = isinstance(shape, MultiPolygon)
-    errors = [
+    error = "; ".join(
         (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
         for outcome in outcomes
         if outcome.error is not None
-    ]
+    )
+    results = [outcome.result for outcome in outcomes if outcome.error is None]
     if not results:
-        return None, {**empty, "error": "; ".join(errors)}
+        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": error}
     statistics = width_statistics(results)
     attributes = {name: statistics[name] for name in RESULT_COLUMNS if name in statistics}
-    attributes["error"] = "; ".join(errors) or None
+    attributes["error"] = error or None
     lines = [result.line if projection is None else projection.to_geographic(result.line) for result in results]
-    line = MultiLineString(lines) if several else LineString(lines[0])
-    return line, attributes
+    return (MultiLineString(lines) if several else LineString(lines[0])), attributes
 
 
 def _message(error):
