@@ -89,6 +89,26 @@ class LocalProjection:
         )
 
 
+@functools.lru_cache(maxsize=16)
+def _ellipsoid(geographic_crs):
+    """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
+    geographic = pyproj.CRS(geographic_crs)
+    if not geographic.is_geographic:
+        raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
+    ellipsoid = geographic.ellipsoid
+    if ellipsoid.inverse_flattening:
+        return f"+a={ellipsoid.semi_major_metre!r} +rf={ellipsoid.inverse_flattening!r}"
+    return f"+R={ellipsoid.semi_major_metre!r}"
+
+
+def _transform_array(transformer, xy, direction):
+    flat = np.asarray(xy, dtype=float).reshape(-1, 2)
+    # pyproj takes a one-element array for a scalar (deprecated in numpy); give it at least two points.
+    padded = np.concatenate([flat, flat[:1]]) if len(flat) == 1 else flat
+    x, y = transformer.transform(padded[:, 0], padded[:, 1], direction=direction)
+    return np.stack([x, y], axis=-1)[: len(flat)].reshape(np.shape(xy))
+
+
 def degrees_covering(distance, latitude):
     """Return an angle, degrees, that spans at least ``distance`` metres east-west and north-south.
 
@@ -108,23 +128,3 @@ def degrees_covering(distance, latitude):
         Degrees, twice the equatorial equivalent divided by the cosine of the latitude.
     """
     return 2.0 * distance / (111_000.0 * np.maximum(np.cos(np.radians(latitude)), 0.01))
-
-
-@functools.lru_cache(maxsize=16)
-def _ellipsoid(geographic_crs):
-    """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
-    geographic = pyproj.CRS(geographic_crs)
-    if not geographic.is_geographic:
-        raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
-    ellipsoid = geographic.ellipsoid
-    if ellipsoid.inverse_flattening:
-        return f"+a={ellipsoid.semi_major_metre!r} +rf={ellipsoid.inverse_flattening!r}"
-    return f"+R={ellipsoid.semi_major_metre!r}"
-
-
-def _transform_array(transformer, xy, direction):
-    flat = np.asarray(xy, dtype=float).reshape(-1, 2)
-    # pyproj takes a one-element array for a scalar (deprecated in numpy); give it at least two points.
-    padded = np.concatenate([flat, flat[:1]]) if len(flat) == 1 else flat
-    x, y = transformer.transform(padded[:, 0], padded[:, 1], direction=direction)
-    return np.stack([x, y], axis=-1)[: len(flat)].reshape(np.shape(xy))
