@@ -9,8 +9,7 @@
 #   - benchmarks/.cache/world-atlas: the npm package `world-atlas` (Natural Earth countries, ISC licence),
 #     fetched with `npm pack`.
 # Then runs bench_compare.py (tools side by side + scaling), bench_paper.py (Fig. 4 and Table 1 of the
-# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/; last,
-# bench_frames.py (the data-frame API on 1 and 2 dask workers against qgis_process) prints its table.
+# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/.
 #
 # Options: --quick (no GRASS, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
@@ -79,7 +78,8 @@ started=$(date +%s)
 "$PYTHON" "$BENCH_DIR/bench_paper.py"
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
-# The data-frame API on dask (issue 12) needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
+# Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
+# (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
 if [ -x "$REPO_ROOT/.venv/bin/python" ]; then
   "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_frames.py" $QUICK
 else
