@@ -9,15 +9,21 @@ PYTHON := $(VENV)/bin/python
 SYSTEM_PYTHON := /usr/bin/python3
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEBIAN_PACKAGES := qgis python3-qgis qgis-providers python3-numpy python3-pyproj python3-venv python3-pip python3-dev \
-	libgeos-dev build-essential pyqt5-dev-tools qttools5-dev-tools git make
-# Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely built against the system GEOS, since
-# the wheel's bundled GEOS clashes with the one QGIS links; numpy and pyproj come from Debian.
+	libgeos-dev proj-bin build-essential pkg-config pyqt5-dev-tools qttools5-dev-tools git make
+# proj-bin: the distribution's pyproj finds PROJ's data next to the `proj` program when it runs in the venv.
+# The distribution's Shapely, installed with the packages above where it is Shapely 2 (Debian 13, Ubuntu 24.04).
+SHAPELY_PACKAGE = $$(apt-cache policy python3-shapely | sed -n 's/^ *Candidate: *[2-9]\..*/python3-shapely/p')
+# Python packages for QGIS's own Python (qgis_process, QGIS desktop): Shapely on the system GEOS, since the wheel's
+# bundled GEOS clashes with the one QGIS links. The distribution's Shapely 2 when there is one, else built here
+# from the pin; numpy and pyproj come from the distribution.
 QGIS_SITE := $(VENV)/qgis-site
-SHAPELY_PIN := $(shell grep -E '^shapely==' requirements.txt)
+SHAPELY_PIN := $(shell sed -n 's/^\(shapely==[^ ;]*\).*/\1/p' requirements.txt)
+SYSTEM_HAS_SHAPELY2 := import shapely, sys; sys.exit(int(shapely.__version__.split(".")[0]) < 2)
 PROFILE ?= default
 QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
-# What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip.
+# What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip; the
+# packaged README links what it references outside the zip on the repository (scripts/release_links.py).
 RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n
 export QT_QPA_PLATFORM := offscreen
 # Keep the tests' and the demo's QGIS settings out of the user's profile.
@@ -42,10 +48,12 @@ setup: system-packages $(VENV)/.installed $(QGIS_SITE)/.installed
 system-packages:
 	@if ! $(SYSTEM_PYTHON) -c "import qgis.core, pyproj, numpy, venv, ensurepip" 2>/dev/null \
 	    || ! command -v qgis_process.bin >/dev/null 2>&1 || ! command -v lrelease >/dev/null 2>&1 \
-	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1; then \
+	    || ! command -v geos-config >/dev/null 2>&1 || ! command -v gcc >/dev/null 2>&1 \
+	    || ! command -v proj >/dev/null 2>&1; then \
 	  echo "Installing QGIS and tools from the distribution's packages"; \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -q && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES); \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $(DEBIAN_PACKAGES) \
+	    $(SHAPELY_PACKAGE); \
 	fi
 
 $(VENV)/.installed: requirements.txt requirements-dev.txt
@@ -54,8 +62,13 @@ $(VENV)/.installed: requirements.txt requirements-dev.txt
 	@touch $@
 
 $(QGIS_SITE)/.installed: requirements.txt
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
-	  --target $(QGIS_SITE) "$(SHAPELY_PIN)"
+	@mkdir -p $(QGIS_SITE)
+	@if $(SYSTEM_PYTHON) -c '$(SYSTEM_HAS_SHAPELY2)' 2>/dev/null; then \
+	  echo "QGIS's Python uses the distribution's Shapely 2: nothing to build"; \
+	else \
+	  $(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
+	    --target $(QGIS_SITE) "$(SHAPELY_PIN)"; \
+	fi
 	@touch $@
 
 demo: setup
@@ -77,6 +90,7 @@ lint: setup
 package:
 	@mkdir -p $(DIST)
 	git archive --format=zip --prefix=$(PLUGIN)/ -o $(DIST)/$(PLUGIN)-$(VERSION).zip HEAD $(RELEASE_PATHS)
+	$(SYSTEM_PYTHON) scripts/release_links.py $(DIST)/$(PLUGIN)-$(VERSION).zip
 	@echo "$(DIST)/$(PLUGIN)-$(VERSION).zip"
 
 deploy: package

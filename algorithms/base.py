@@ -1,26 +1,64 @@
 """Base class of the IncirCu algorithms: translation, instances, help, icon and shared parameters."""
 
+import configparser
 from pathlib import Path
 
 from qgis.core import (
-    QgsProcessing,
     QgsProcessingAlgorithm,
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
+    QgsProcessingParameterDistance,
     QgsProcessingParameterFeatureSink,
-    QgsProcessingParameterNumber,
     QgsProcessingUtils,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
-ICON_PATH = Path(__file__).resolve().parent.parent / "icons"
+from .compat import DistanceUnit, ProcessingParameterFlag, ProcessingSourceType
+
+PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
+ICON_PATH = PLUGIN_FOLDER / "icons"
+
+
+def homepage():
+    """Return the project's web address (``homepage`` of ``metadata.txt``), where the README is shown."""
+    parser = configparser.ConfigParser(interpolation=None)
+    parser.read(PLUGIN_FOLDER / "metadata.txt", encoding="utf-8")
+    return parser["general"]["homepage"]
+
+
+def length_parameter(name, description, default, parent_layer):
+    """A non-negative length in the units of ``parent_layer``, or in metres when that layer is in degrees.
+
+    A ``QgsProcessingParameterDistance`` tied to the layer (``qgis_process``, batch dialog and modeler show
+    it as QGIS does); the toolbox dialog shows it with :class:`.length_widget.LengthWidgetWrapper`, which
+    names the layer's unit next to the box and "meters" for a layer in degrees, where QGIS would say
+    "degrees".
+
+    Parameters
+    ----------
+    name, description : str
+        Parameter name and dialog label.
+    default : float
+        Default value, layer units (metres for a layer in degrees).
+    parent_layer : str
+        Name of the layer parameter the length refers to.
+
+    Returns
+    -------
+    QgsProcessingParameterDistance
+    """
+    parameter = QgsProcessingParameterDistance(name, description, default, parent_layer, True, 0.0)
+    parameter.setDefaultUnit(DistanceUnit.Meters)
+    parameter.setMetadata({"widget_wrapper": {"class": f"{__package__}.length_widget.LengthWidgetWrapper"}})
+    return parameter
 
 
 class IncirCuAlgorithm(QgsProcessingAlgorithm):
     """Common behaviour of the IncirCu Processing algorithms.
 
-    Subclasses define ``name``, ``displayName``, ``shortHelpString`` and ``initAlgorithm`` and add their
+    Subclasses define ``name``, ``displayName``, ``shortDescription``, ``shortHelpString``,
+    ``centerline_output_name``, ``initAlgorithm``, ``HELP_ANCHOR`` and ``LENGTH_PARENT``, and add their
     parameters with :meth:`add_parameter`, which also records the parameter's help text.
     """
 
@@ -36,6 +74,10 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
 
     #: File name of the algorithm's icon under ``icons/``.
     ICON = "incircu.svg"
+    #: Anchor of the algorithm's section in the README (GitHub's heading slug).
+    HELP_ANCHOR = ""
+    #: Name of the input layer whose units the length parameters are in (metres when it is in degrees).
+    LENGTH_PARENT = ""
 
     def __init__(self):
         super().__init__()
@@ -66,6 +108,13 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def svgIconPath(self):
         return str(ICON_PATH / self.ICON)
 
+    def centerline_output_name(self):
+        """Return the label of the centerline output, also the name of the layer it loads as."""
+        raise NotImplementedError
+
+    def helpUrl(self):
+        return f"{homepage()}#{self.HELP_ANCHOR}"
+
     def helpString(self):
         help_map = {"ALG_DESC": self.shortHelpString(), "ALG_CREATOR": "IncirCu", **self.parameter_help}
         return QgsProcessingUtils.formatHelpMapAsHtml(help_map, self)
@@ -82,9 +131,8 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             Show the parameter under "Advanced parameters".
         """
         if advanced:
-            parameter.setFlags(parameter.flags() | parameter.Flag.FlagAdvanced)
-        if hasattr(parameter, "setHelp"):
-            parameter.setHelp(help_text)
+            parameter.setFlags(parameter.flags() | ProcessingParameterFlag.Advanced)
+        parameter.setHelp(help_text)
         self.parameter_help[parameter.name()] = help_text
         self.addParameter(parameter)
 
@@ -93,21 +141,36 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.parameter_help[output.name()] = help_text
         self.addOutput(output)
 
-    @staticmethod
-    def length_parameter(name, description, default):
-        """A non-negative length in layer units, or in metres for a layer in degrees.
+    def add_length_parameter(self, name, description, default, help_text, advanced=False):
+        """Add an optional, non-negative length with its default, in the units of ``LENGTH_PARENT``.
 
-        A plain number rather than ``QgsProcessingParameterDistance``: for a layer in degrees that widget
-        would label the value "degrees", while IncirCu computes geographic layers in metres.
+        The dialog shows the unit next to the box (see :func:`length_parameter`); a layer in
+        degrees is computed in metres. Optional because it has a default, so the modeler does not require it.
+
+        Parameters
+        ----------
+        name, description : str
+            Parameter name and (translated) dialog label.
+        default : float
+            Default length, layer units (metres for a layer in degrees).
+        help_text : str
+            As for :meth:`add_parameter`.
+        advanced : bool
+            Show the parameter under "Advanced parameters".
         """
-        return QgsProcessingParameterNumber(
-            name, description, QgsProcessingParameterNumber.Type.Double, default, minValue=0.0
-        )
+        self.add_parameter(length_parameter(name, description, default, self.LENGTH_PARENT), help_text, advanced)
+
+    def add_optional_parameter(self, parameter, help_text, advanced=False):
+        """Add a parameter that has a default as optional, so the modeler does not require a value for it."""
+        parameter.setFlags(parameter.flags() | ProcessingParameterFlag.Optional)
+        self.add_parameter(parameter, help_text, advanced)
 
     def add_spacing_parameter(self):
         """Add ``SPACING`` (distance between boundary samples, layer units or metres)."""
-        self.add_parameter(
-            self.length_parameter(self.SPACING, self.tr("Boundary sampling distance (0 = automatic)"), 0.0),
+        self.add_length_parameter(
+            self.SPACING,
+            self.tr("Boundary sampling distance (0 = automatic)"),
+            0.0,
             self.tr(
                 "Distance between consecutive samples of the boundary, in layer units (metres for a layer in "
                 "degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.",
@@ -116,7 +179,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
 
     def add_result_parameters(self):
         """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
-        self.add_parameter(
+        self.add_optional_parameter(
             QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
             self.tr(
                 "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
@@ -125,8 +188,8 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT,
-                self.tr("Centerlines"),
-                QgsProcessing.SourceType.TypeVectorLine,
+                self.centerline_output_name(),
+                ProcessingSourceType.VectorLine,
             ),
             self.tr(
                 "Line layer: input attributes plus length, width_min, width_mean, width_max (incircle "
@@ -137,22 +200,22 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             (
                 self.OUTPUT_VERTICES,
                 self.tr("Centerline vertices"),
-                QgsProcessing.SourceType.TypeVectorPoint,
+                ProcessingSourceType.VectorPoint,
                 self.tr("Optional point layer: every centerline vertex with its chainage, incircle radius and width."),
             ),
             (
                 self.OUTPUT_CIRCLES,
                 self.tr("Incircles"),
-                QgsProcessing.SourceType.TypeVectorPolygon,
+                ProcessingSourceType.VectorPolygon,
                 self.tr("Optional polygon layer: the incircle of every vertex, with its radius and chainage."),
             ),
             (
                 self.OUTPUT_TRANSECTS,
                 self.tr("Transects"),
-                QgsProcessing.SourceType.TypeVectorLine,
+                ProcessingSourceType.VectorLine,
                 self.tr(
-                    "Optional line layer: cross-sections from bank to bank through the centerline, every "
-                    "TRANSECT_INTERVAL, with their width and chainage.",
+                    "Optional line layer: cross-sections from bank to bank through the centerline, one every "
+                    "'Distance between transects', with their width and chainage.",
                 ),
             ),
         )
@@ -161,8 +224,10 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 QgsProcessingParameterFeatureSink(name, description, layer_type, optional=True, createByDefault=False),
                 help_text,
             )
-        self.add_parameter(
-            self.length_parameter(self.TRANSECT_INTERVAL, self.tr("Distance between transects (0 = mean width)"), 0.0),
+        self.add_length_parameter(
+            self.TRANSECT_INTERVAL,
+            self.tr("Distance between transects (0 = mean width)"),
+            0.0,
             self.tr(
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
                 "degrees); 0 uses the mean width of each centerline.",

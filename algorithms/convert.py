@@ -2,7 +2,6 @@
 
 import shapely
 from qgis.core import (
-    QgsCoordinateReferenceSystem,
     QgsGeometry,
     QgsLineString,
     QgsMultiLineString,
@@ -10,6 +9,7 @@ from qgis.core import (
 )
 
 from ..incircu_plugin.core.geodesy import LocalProjection
+from .compat import CrsWktVariant
 
 
 def to_shapely(geometry):
@@ -105,9 +105,7 @@ class WorkingFrame:
         if crs.isGeographic():
             authority = crs.authid()
             self.geographic_crs = (
-                authority
-                if authority.upper().startswith("EPSG:")
-                else crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT2_2019)
+                authority if authority.upper().startswith("EPSG:") else crs.toWkt(CrsWktVariant.Wkt2_2019)
             )
         self.projection = None
 

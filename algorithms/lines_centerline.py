@@ -3,15 +3,13 @@
 from qgis.core import (
     QgsFeatureRequest,
     QgsGeometry,
-    QgsProcessing,
     QgsProcessingException,
-    QgsProcessingFeatureSource,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
-    QgsWkbTypes,
 )
 
 from .base import IncirCuAlgorithm
+from .compat import GeometryType, ProcessingFeatureSourceFlag, ProcessingSourceType
 from .running import FeatureRun
 
 
@@ -24,12 +22,20 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     PAIR_FIELD_B = "PAIR_FIELD_B"
 
     ICON = "linescenterline.svg"
+    HELP_ANCHOR = "centerline-between-two-lines--incirculinescenterline"
+    LENGTH_PARENT = LINES_A
 
     def name(self):
         return "linescenterline"
 
     def displayName(self):
-        return self.tr("Centerline between two lines (IncirCu)")
+        return self.tr("Centerline between two lines")
+
+    def shortDescription(self):
+        return self.tr("One unbranched centerline between two lines, such as the two banks of a river.")
+
+    def centerline_output_name(self):
+        return self.tr("Centerline between lines")
 
     def tags(self):
         return self.tr("centerline,centreline,medial axis,banks,river,road,width,incircle").split(",")
@@ -38,21 +44,21 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         return self.tr(
             "Computes one unbranched centerline between two lines (for example the two banks of a river) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
-            "are paired by equal values of PAIR_FIELD_A and PAIR_FIELD_B; without them each layer holds one "
-            "line (its features and parts are merged). The lines must not cross. The M value of each vertex "
-            "is the local width. LINES_B is reprojected to the CRS of LINES_A; geographic layers are "
+            "are paired by equal values of the two pairing fields; without them each layer holds one line "
+            "(its features and parts are merged). The lines must not cross. The M value of each vertex is "
+            "the local width. The second lines are reprojected to the CRS of the first; geographic layers are "
             "computed in a local metric projection and distances are then in metres."
         )
 
     def initAlgorithm(self, configuration=None):
-        line = [QgsProcessing.SourceType.TypeVectorLine]
+        line = [ProcessingSourceType.VectorLine]
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.LINES_A, self.tr("First lines (bank A)"), line),
             self.tr("Line layer of one side; the output has its CRS and its attributes."),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.LINES_B, self.tr("Second lines (bank B)"), line),
-            self.tr("Line layer of the other side; reprojected to the CRS of LINES_A when needed."),
+            self.tr("Line layer of the other side; reprojected to the CRS of the first lines when needed."),
         )
         self.add_parameter(
             QgsProcessingParameterField(
@@ -61,7 +67,10 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                 parentLayerParameterName=self.LINES_A,
                 optional=True,
             ),
-            self.tr("Optional; a line of LINES_A is paired with the line of LINES_B having the same value."),
+            self.tr(
+                "Optional; a line of the first lines is paired with the line of the second lines that has the same "
+                "value in 'Pairing field of the second lines'."
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterField(
@@ -70,14 +79,14 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                 parentLayerParameterName=self.LINES_B,
                 optional=True,
             ),
-            self.tr("Optional; required together with PAIR_FIELD_A."),
+            self.tr("Optional; required together with 'Pairing field of the first lines'."),
         )
         self.add_spacing_parameter()
         self.add_result_parameters()
 
     def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)
-        line_type = QgsWkbTypes.GeometryType.LineGeometry
+        line_type = GeometryType.Line
         source_a = run.source(self.LINES_A, line_type)
         source_b = run.source(self.LINES_B, line_type)
         field_a = self.parameterAsString(parameters, self.PAIR_FIELD_A, context)
@@ -153,7 +162,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         """
         groups = {}
         index = source.fields().lookupField(field_name) if field_name else -1
-        for feature in source.getFeatures(request, QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks):
+        for feature in source.getFeatures(request, ProcessingFeatureSourceFlag.SkipGeometryValidityChecks):
             if not feature.hasGeometry() or feature.geometry().isEmpty():
                 continue
             key = feature.attributes()[index] if index >= 0 else None

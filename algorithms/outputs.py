@@ -2,7 +2,6 @@
 
 import numpy as np
 from qgis.core import (
-    Qgis,
     QgsFeature,
     QgsFeatureSink,
     QgsField,
@@ -13,17 +12,14 @@ from qgis.core import (
     QgsProcessingUtils,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QCoreApplication, QVariant
+from qgis.PyQt.QtCore import QCoreApplication
 
 from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages, width_statistics
+from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
+from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
 
-if Qgis.QGIS_VERSION_INT >= 33800:
-    from qgis.PyQt.QtCore import QMetaType
-
-    DOUBLE, INTEGER, BOOLEAN = QMetaType.Type.Double, QMetaType.Type.Int, QMetaType.Type.Bool
-else:
-    DOUBLE, INTEGER, BOOLEAN = QVariant.Double, QVariant.Int, QVariant.Bool
+DOUBLE, INTEGER, BOOLEAN = FieldType.Double, FieldType.Int, FieldType.Bool
 
 
 def make_fields(definitions):
@@ -87,10 +83,11 @@ class CenterlineWriter:
     """
 
     def __init__(self, algorithm, parameters, context, input_fields, crs, multi, add_m, transect_interval):
+        self.algorithm = algorithm
         self.add_m = add_m
         self.multi = multi
         self.transect_interval = transect_interval
-        line_type = QgsWkbTypes.Type.MultiLineString if multi else QgsWkbTypes.Type.LineString
+        line_type = WkbType.MultiLineString if multi else WkbType.LineString
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(CENTERLINE_FIELDS))
@@ -101,28 +98,38 @@ class CenterlineWriter:
             parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
         )
         self.vertices, self.vertices_id = algorithm.parameterAsSink(
-            parameters, algorithm.OUTPUT_VERTICES, context, make_fields(VERTEX_FIELDS), QgsWkbTypes.Type.Point, crs
+            parameters, algorithm.OUTPUT_VERTICES, context, make_fields(VERTEX_FIELDS), WkbType.Point, crs
         )
         self.circles, self.circles_id = algorithm.parameterAsSink(
-            parameters, algorithm.OUTPUT_CIRCLES, context, make_fields(CIRCLE_FIELDS), QgsWkbTypes.Type.Polygon, crs
+            parameters, algorithm.OUTPUT_CIRCLES, context, make_fields(CIRCLE_FIELDS), WkbType.Polygon, crs
         )
         self.transects, self.transects_id = algorithm.parameterAsSink(
             parameters,
             algorithm.OUTPUT_TRANSECTS,
             context,
             make_fields(TRANSECT_FIELDS),
-            QgsWkbTypes.Type.LineString,
+            WkbType.LineString,
             crs,
         )
         self.centerline_count = 0
+        style_outputs_on_load(
+            context,
+            {
+                CENTERLINE: self.sink_id,
+                VERTICES: self.vertices_id,
+                TRANSECTS: self.transects_id,
+                INCIRCLES: self.circles_id,
+            },
+        )
 
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
+        algorithm = self.algorithm
         return {
-            "OUTPUT": self.sink_id,
-            "OUTPUT_VERTICES": self.vertices_id,
-            "OUTPUT_CIRCLES": self.circles_id,
-            "OUTPUT_TRANSECTS": self.transects_id,
+            algorithm.OUTPUT: self.sink_id,
+            algorithm.OUTPUT_VERTICES: self.vertices_id,
+            algorithm.OUTPUT_CIRCLES: self.circles_id,
+            algorithm.OUTPUT_TRANSECTS: self.transects_id,
         }
 
     def write(self, attributes, source_fid, parts, frame):
@@ -158,7 +165,7 @@ class CenterlineWriter:
             if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(
                     QCoreApplication.translate("IncirCuAlgorithm", "Could not write a centerline: {}").format(
-                        self.sink.lastError() if hasattr(self.sink, "lastError") else ""
+                        self.sink.lastError()
                     )
                 )
             self.centerline_count += 1

@@ -4,7 +4,6 @@ from qgis.core import (
     QgsFeatureRequest,
     QgsGeometry,
     QgsPointXY,
-    QgsProcessing,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
@@ -14,6 +13,7 @@ from qgis.core import (
 )
 
 from .base import IncirCuAlgorithm
+from .compat import GeometryType, ProcessingSourceType
 from .running import FeatureRun
 
 
@@ -27,12 +27,20 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SEPARATE_PARTS = "SEPARATE_PARTS"
 
     ICON = "polygoncenterline.svg"
+    HELP_ANCHOR = "centerline-of-polygons--incircupolygoncenterline"
+    LENGTH_PARENT = INPUT
 
     def name(self):
         return "polygoncenterline"
 
     def displayName(self):
-        return self.tr("Centerline of polygons (IncirCu)")
+        return self.tr("Centerline of polygons")
+
+    def shortDescription(self):
+        return self.tr("One unbranched centerline through each elongated polygon (river, road, dike).")
+
+    def centerline_output_name(self):
+        return self.tr("Centerlines of polygons")
 
     def tags(self):
         return self.tr("centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle").split(",")
@@ -41,8 +49,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         return self.tr(
             "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
-            "outline. The line runs between the two SPLIT_POINTS lying on the polygon's outline, or, without "
-            "them, between the two ends of the shape's longest internal path. Islands (holes) are passed on "
+            "outline. The line runs between the two 'Split points' lying on the polygon's outline, or, "
+            "without them, between the two ends of the shape's longest internal path. Islands (holes) are passed on "
             "the side of the wider channel, or ignored. The M value of each vertex is the local width. "
             "Geographic layers are computed in a local metric projection; distances are then in metres. "
             "A polygon that cannot be processed is skipped with a warning naming its id and the reason."
@@ -51,7 +59,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     def initAlgorithm(self, configuration=None):
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
-                self.INPUT, self.tr("Polygon layer"), [QgsProcessing.SourceType.TypeVectorPolygon]
+                self.INPUT, self.tr("Polygon layer"), [ProcessingSourceType.VectorPolygon]
             ),
             self.tr("Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part."),
         )
@@ -59,24 +67,26 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             QgsProcessingParameterFeatureSource(
                 self.SPLIT_POINTS,
                 self.tr("Split points"),
-                [QgsProcessing.SourceType.TypeVectorPoint],
+                [ProcessingSourceType.VectorPoint],
                 optional=True,
             ),
             self.tr(
                 "Points marking where each centerline starts and ends: two per polygon part, within "
-                "SNAP_TOLERANCE of its exterior ring. A part with none gets automatic ends; a part with one "
+                "'Split point snapping tolerance' of its exterior ring. A part with none gets automatic ends; a part with one "
                 "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
             ),
         )
-        self.add_parameter(
-            self.length_parameter(self.SNAP_TOLERANCE, self.tr("Split point snapping tolerance"), 1.0),
+        self.add_length_parameter(
+            self.SNAP_TOLERANCE,
+            self.tr("Split point snapping tolerance"),
+            1.0,
             self.tr(
                 "Largest distance between a split point and the polygon's exterior ring, layer units "
                 "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
             ),
         )
         self.add_spacing_parameter()
-        self.add_parameter(
+        self.add_optional_parameter(
             QgsProcessingParameterEnum(
                 self.ISLANDS,
                 self.tr("Islands (holes)"),
@@ -88,7 +98,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "side of the wider channel. Ignore islands: holes are filled before computing."
             ),
         )
-        self.add_parameter(
+        self.add_optional_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
                 "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
@@ -99,11 +109,11 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):
         run = FeatureRun(self, parameters, context, feedback)
-        source = run.source(self.INPUT, QgsWkbTypes.GeometryType.PolygonGeometry)
+        source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
         split_source = None
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
-            split_source = run.source(self.SPLIT_POINTS, QgsWkbTypes.GeometryType.PointGeometry)
+            split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
         # The enum's choices are in the order of the core's ISLAND_MODES.

@@ -1,14 +1,15 @@
 """Per-feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts."""
 
-from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsProcessingFeatureSource, QgsWkbTypes
+from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsWkbTypes
 from qgis.PyQt.QtCore import QCoreApplication
 
+from .compat import GeometryType, ProcessingFeatureSourceFlag
 from .dependencies import require_core
 
 GEOMETRY_TYPE_NAMES = {
-    QgsWkbTypes.GeometryType.PointGeometry: "point",
-    QgsWkbTypes.GeometryType.LineGeometry: "line",
-    QgsWkbTypes.GeometryType.PolygonGeometry: "polygon",
+    GeometryType.Point: "point",
+    GeometryType.Line: "line",
+    GeometryType.Polygon: "polygon",
 }
 
 
@@ -29,12 +30,6 @@ class FeatureRun:
 
     def __init__(self, algorithm, parameters, context, feedback):
         self.core = require_core()
-        # Imported only now: these modules need Shapely, whose presence require_core has just checked.
-        from .convert import WorkingFrame
-        from .outputs import CenterlineWriter
-
-        self.writer_class = CenterlineWriter
-        self.frame_class = WorkingFrame
         self.algorithm = algorithm
         self.parameters = parameters
         self.context = context
@@ -72,13 +67,17 @@ class FeatureRun:
 
     def open_outputs(self, fields, crs, multi):
         """Create the output sinks and the working frame of the layer's CRS."""
+        # Imported only now: these modules need Shapely, whose presence require_core has checked.
+        from .convert import WorkingFrame
+        from .outputs import CenterlineWriter
+
         algorithm, parameters, context = self.algorithm, self.parameters, self.context
         interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
         add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
-        self.writer = self.writer_class(algorithm, parameters, context, fields, crs, multi, add_m, interval)
+        self.writer = CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval)
         if self.writer.sink is None:
             raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
-        self.frame = self.frame_class(crs)
+        self.frame = WorkingFrame(crs)
 
     def features(self, source, request=None):
         """Yield the features of ``source`` with progress, stopping when the user cancels.
@@ -89,7 +88,7 @@ class FeatureRun:
         total = source.featureCount()
         self.progress_step = 100.0 / total if total > 0 else 0.0
         features = source.getFeatures(
-            request or QgsFeatureRequest(), QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks
+            request or QgsFeatureRequest(), ProcessingFeatureSourceFlag.SkipGeometryValidityChecks
         )
         for current, feature in enumerate(features):
             if self.feedback.isCanceled():
@@ -124,11 +123,8 @@ class FeatureRun:
         )
 
     def warn(self, message):
-        """Show a warning in the log (``pushWarning`` where QGIS has it)."""
-        if hasattr(self.feedback, "pushWarning"):
-            self.feedback.pushWarning(message)
-        else:
-            self.feedback.reportError(message, False)
+        """Show a warning in the log."""
+        self.feedback.pushWarning(message)
 
     @staticmethod
     def where(feature_id, part_index):

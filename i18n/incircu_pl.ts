@@ -4,57 +4,57 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="125"/>
+        <location filename="../algorithms/base.py" line="100"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="109"/>
+        <location filename="../algorithms/base.py" line="170"/>
         <source>Boundary sampling distance (0 = automatic)</source>
         <translation>Odległość próbkowania obrysu (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="119"/>
+        <location filename="../algorithms/base.py" line="182"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="164"/>
+        <location filename="../algorithms/base.py" line="227"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="172"/>
+        <location filename="../algorithms/base.py" line="237"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="172"/>
+        <location filename="../algorithms/base.py" line="237"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="176"/>
+        <location filename="../algorithms/base.py" line="241"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="176"/>
+        <location filename="../algorithms/base.py" line="241"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -69,260 +69,280 @@
         <translation>IncirCu wymaga Shapely 2.0 lub nowszego, a zainstalowany jest Shapely {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="61"/>
+        <location filename="../algorithms/running.py" line="56"/>
         <source>{} must be a {} layer, but &apos;{}&apos; holds {} geometries.</source>
         <translation>{} musi być warstwą typu {}, a '{}' zawiera geometrie typu {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="100"/>
+        <location filename="../algorithms/running.py" line="99"/>
         <source>the feature has no geometry</source>
         <translation>obiekt nie ma geometrii</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="112"/>
+        <location filename="../algorithms/running.py" line="111"/>
         <source>Feature {} skipped: {}</source>
         <translation>Obiekt {} pominięty: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="120"/>
+        <location filename="../algorithms/running.py" line="119"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="138"/>
+        <location filename="../algorithms/running.py" line="134"/>
         <source>{} (part {})</source>
         <translation>{} (część {})</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="155"/>
+        <location filename="../algorithms/running.py" line="151"/>
         <source>unexpected {}: {} (please report this with the feature)</source>
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="171"/>
+        <location filename="../algorithms/running.py" line="167"/>
         <source>{} centerlines written, {} features or parts skipped.</source>
         <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="109"/>
+        <location filename="../algorithms/base.py" line="170"/>
         <source>Distance between consecutive samples of the boundary, in layer units (metres for a layer in degrees). 0 chooses it from the shape. Smaller values give a smoother, slower centerline.</source>
         <translation>Odległość między kolejnymi próbkami obrysu, w jednostkach warstwy (w metrach dla warstwy w stopniach). 0 dobiera ją na podstawie kształtu. Mniejsze wartości dają gładszą, ale wolniej liczoną linię środkową.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="119"/>
+        <location filename="../algorithms/base.py" line="182"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="125"/>
+        <location filename="../algorithms/base.py" line="188"/>
         <source>Line layer: input attributes plus length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width), n_vertices and ends_found.</source>
         <translation>Warstwa liniowa: atrybuty wejściowe oraz length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości), n_vertices i ends_found.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="199"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
-        <source>Optional line layer: cross-sections from bank to bank through the centerline, every TRANSECT_INTERVAL, with their width and chainage.</source>
-        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową co TRANSECT_INTERVAL, z szerokością i kilometrażem.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="164"/>
+        <location filename="../algorithms/base.py" line="227"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/outputs.py" line="198"/>
+        <location filename="../algorithms/outputs.py" line="205"/>
         <source>Could not write a centerline: {}</source>
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="199"/>
+        <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
+        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
 </context>
 <context>
     <name>LinesCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="32"/>
-        <source>Centerline between two lines (IncirCu)</source>
-        <translation>Linia środkowa między dwiema liniami (IncirCu)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="35"/>
+        <location filename="../algorithms/lines_centerline.py" line="41"/>
         <source>centerline,centreline,medial axis,banks,river,road,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,brzegi,rzeka,droga,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="38"/>
-        <source>Computes one unbranched centerline between two lines (for example the two banks of a river) with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines are paired by equal values of PAIR_FIELD_A and PAIR_FIELD_B; without them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is the local width. LINES_B is reprojected to the CRS of LINES_A; geographic layers are computed in a local metric projection and distances are then in metres.</source>
-        <translation>Wyznacza jedną nierozgałęzioną linię środkową między dwiema liniami (na przykład brzegami rzeki) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu linii. Linie łączone są w pary według równych wartości PAIR_FIELD_A i PAIR_FIELD_B; bez nich każda warstwa zawiera jedną linię (jej obiekty i części są scalane). Linie nie mogą się przecinać. Wartość M każdego wierzchołka to lokalna szerokość. LINES_B jest przeliczana do układu LINES_A; warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym, a odległości są wtedy w metrach.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="49"/>
+        <location filename="../algorithms/lines_centerline.py" line="55"/>
         <source>First lines (bank A)</source>
         <translation>Pierwsze linie (brzeg A)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="49"/>
+        <location filename="../algorithms/lines_centerline.py" line="55"/>
         <source>Line layer of one side; the output has its CRS and its attributes.</source>
         <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="53"/>
+        <location filename="../algorithms/lines_centerline.py" line="59"/>
         <source>Second lines (bank B)</source>
         <translation>Drugie linie (brzeg B)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="53"/>
-        <source>Line layer of the other side; reprojected to the CRS of LINES_A when needed.</source>
-        <translation>Warstwa liniowa drugiej strony; w razie potrzeby przeliczana do układu LINES_A.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="57"/>
+        <location filename="../algorithms/lines_centerline.py" line="63"/>
         <source>Pairing field of the first lines</source>
         <translation>Pole parujące pierwszych linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="57"/>
-        <source>Optional; a line of LINES_A is paired with the line of LINES_B having the same value.</source>
-        <translation>Opcjonalne; linia z LINES_A łączona jest w parę z linią z LINES_B o tej samej wartości.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="66"/>
+        <location filename="../algorithms/lines_centerline.py" line="75"/>
         <source>Pairing field of the second lines</source>
         <translation>Pole parujące drugich linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="66"/>
-        <source>Optional; required together with PAIR_FIELD_A.</source>
-        <translation>Opcjonalne; wymagane razem z PAIR_FIELD_A.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="86"/>
+        <location filename="../algorithms/lines_centerline.py" line="95"/>
         <source>Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).</source>
         <translation>Podaj oba pola PAIR_FIELD_A i PAIR_FIELD_B albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="99"/>
+        <location filename="../algorithms/lines_centerline.py" line="108"/>
         <source>{} holds no line.</source>
         <translation>{} nie zawiera żadnej linii.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="102"/>
+        <location filename="../algorithms/lines_centerline.py" line="111"/>
         <source>{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and PAIR_FIELD_B to pair them, or merge them into one line.</source>
         <translation>{} zawiera {} osobne linie, które nie łączą się w jedną; podaj PAIR_FIELD_A i PAIR_FIELD_B, aby je sparować, albo scal je w jedną linię.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="116"/>
+        <location filename="../algorithms/lines_centerline.py" line="125"/>
         <source>no line in LINES_B has {} = {!r}</source>
         <translation>żadna linia w LINES_B nie ma {} = {!r}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="121"/>
+        <location filename="../algorithms/lines_centerline.py" line="130"/>
         <source>the lines of LINES_A with this pairing value do not join into one</source>
         <translation>linie LINES_A o tej wartości parującej nie łączą się w jedną</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="124"/>
+        <location filename="../algorithms/lines_centerline.py" line="133"/>
         <source>the lines of LINES_B with this pairing value do not join into one</source>
         <translation>linie LINES_B o tej wartości parującej nie łączą się w jedną</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="138"/>
+        <location filename="../algorithms/lines_centerline.py" line="147"/>
         <source>No line in LINES_A has {} = {!r}; line {} of LINES_B unused.</source>
         <translation>Żadna linia w LINES_A nie ma {} = {!r}; linia {} z LINES_B nie została użyta.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="32"/>
+        <source>Centerline between two lines</source>
+        <translation>Linia środkowa między dwiema liniami</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="35"/>
+        <source>One unbranched centerline between two lines, such as the two banks of a river.</source>
+        <translation>Jedna nierozgałęziona linia środkowa między dwiema liniami, na przykład brzegami rzeki.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="38"/>
+        <source>Centerline between lines</source>
+        <translation>Linia środkowa między liniami</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="44"/>
+        <source>Computes one unbranched centerline between two lines (for example the two banks of a river) with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines are paired by equal values of the two pairing fields; without them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is the local width. The second lines are reprojected to the CRS of the first; geographic layers are computed in a local metric projection and distances are then in metres.</source>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową między dwiema liniami (na przykład brzegami rzeki) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu linii. Linie łączone są w pary według równych wartości obu pól parujących; bez nich każda warstwa zawiera jedną linię (jej obiekty i części są scalane). Linie nie mogą się przecinać. Wartość M każdego wierzchołka to lokalna szerokość. Drugie linie są przeliczane do układu pierwszych; warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym, a odległości są wtedy w metrach.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="59"/>
+        <source>Line layer of the other side; reprojected to the CRS of the first lines when needed.</source>
+        <translation>Warstwa liniowa drugiej strony; w razie potrzeby przeliczana do układu pierwszych linii.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="63"/>
+        <source>Optional; a line of the first lines is paired with the line of the second lines that has the same value in &apos;Pairing field of the second lines&apos;.</source>
+        <translation>Opcjonalne; linia z pierwszych linii łączona jest w parę z linią z drugich linii o tej samej wartości w 'Pole parujące drugich linii'.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="75"/>
+        <source>Optional; required together with &apos;Pairing field of the first lines&apos;.</source>
+        <translation>Opcjonalne; wymagane razem z 'Pole parujące pierwszych linii'.</translation>
     </message>
 </context>
 <context>
     <name>PolygonCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="37"/>
-        <source>Centerline of polygons (IncirCu)</source>
-        <translation>Linia środkowa poligonów (IncirCu)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="40"/>
+        <location filename="../algorithms/polygon_centerline.py" line="48"/>
         <source>centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="43"/>
-        <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two SPLIT_POINTS lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma punktami SPLIT_POINTS leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="54"/>
+        <location filename="../algorithms/polygon_centerline.py" line="62"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="54"/>
+        <location filename="../algorithms/polygon_centerline.py" line="62"/>
         <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part.</source>
         <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="60"/>
+        <location filename="../algorithms/polygon_centerline.py" line="68"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="60"/>
-        <source>Points marking where each centerline starts and ends: two per polygon part, within SNAP_TOLERANCE of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
-        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do SNAP_TOLERANCE od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="73"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Split point snapping tolerance</source>
         <translation>Tolerancja przyciągania punktów podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="73"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees); 0 = a millionth of the polygon&apos;s size.</source>
         <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="81"/>
+        <location filename="../algorithms/polygon_centerline.py" line="91"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="81"/>
+        <location filename="../algorithms/polygon_centerline.py" line="91"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="81"/>
+        <location filename="../algorithms/polygon_centerline.py" line="91"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="81"/>
+        <location filename="../algorithms/polygon_centerline.py" line="91"/>
         <source>Pass through the main channel: the line never crosses an island and goes round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
         <translation>Prowadź głównym korytem: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. Pomijaj wyspy: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="93"/>
+        <location filename="../algorithms/polygon_centerline.py" line="103"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="93"/>
+        <location filename="../algorithms/polygon_centerline.py" line="103"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="151"/>
+        <location filename="../algorithms/polygon_centerline.py" line="161"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="153"/>
+        <location filename="../algorithms/polygon_centerline.py" line="163"/>
         <source>no split points given, ends found automatically</source>
         <translation>nie podano punktów podziału, końce wyznaczono automatycznie</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="39"/>
+        <source>Centerline of polygons</source>
+        <translation>Linia środkowa poligonów</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="42"/>
+        <source>One unbranched centerline through each elongated polygon (river, road, dike).</source>
+        <translation>Jedna nierozgałęziona linia środkowa każdego wydłużonego poligonu (rzeki, drogi, wału).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="45"/>
+        <source>Centerlines of polygons</source>
+        <translation>Linie środkowe poligonów</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="51"/>
+        <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="68"/>
+        <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
+        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
 </context>
 </TS>

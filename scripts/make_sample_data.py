@@ -185,12 +185,15 @@ def write_model(path):
     application = QgsApplication([], False, tempfile.mkdtemp(prefix="incircu-model-"))
     application.initQgis()
     model = QgsProcessingModelAlgorithm("Fix, centerline, smooth", "IncirCu tests", "incircutests")
-    for name, label, kind, optional in (
-        ("polygons", "Polygons", QgsProcessing.SourceType.TypeVectorPolygon, False),
-        ("split_points", "Split points", QgsProcessing.SourceType.TypeVectorPoint, True),
+    # Laid out top to bottom as the modeler draws it: the two inputs side by side, then one step per row.
+    for name, label, kind, optional, position in (
+        ("polygons", "Polygons", QgsProcessing.SourceType.TypeVectorPolygon, False, (120, 60)),
+        ("split_points", "Split points", QgsProcessing.SourceType.TypeVectorPoint, True, (400, 60)),
     ):
         parameter = QgsProcessingParameterFeatureSource(name, label, [kind], optional=optional)
-        model.addModelParameter(parameter, QgsProcessingModelParameter(name))
+        component = QgsProcessingModelParameter(name)
+        component.setPosition(QPointF(*position))
+        model.addModelParameter(parameter, component)
 
     def child(child_id, algorithm_id, sources, position):
         step = QgsProcessingModelChildAlgorithm(algorithm_id)
@@ -205,7 +208,7 @@ def write_model(path):
         "fix",
         "native:fixgeometries",
         {"INPUT": QgsProcessingModelChildParameterSource.fromModelParameter("polygons")},
-        (200, 100),
+        (120, 160),
     )
     centerline = child(
         "centerline",
@@ -217,7 +220,7 @@ def write_model(path):
             "SPACING": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
             "ADD_M": QgsProcessingModelChildParameterSource.fromStaticValue(False),
         },
-        (200, 200),
+        (260, 260),
     )
     smooth = child(
         "smooth",
@@ -228,11 +231,12 @@ def write_model(path):
             "OFFSET": QgsProcessingModelChildParameterSource.fromStaticValue(0.25),
             "MAX_ANGLE": QgsProcessingModelChildParameterSource.fromStaticValue(180.0),
         },
-        (200, 300),
+        (260, 360),
     )
     output = QgsProcessingModelOutput("smoothed", "Smoothed centerlines")
     output.setChildOutputName("OUTPUT")
     output.setChildId("smooth")
+    output.setPosition(QPointF(260, 460))
     smooth.setModelOutputs({"smoothed": output})
     for step in (fixed, centerline, smooth):
         model.addChildAlgorithm(step)

@@ -80,7 +80,14 @@ def qgis_process(plugin_folder, tmp_path_factory):
         ``run(*arguments)`` -> ``subprocess.CompletedProcess`` (text output, never raising on failure).
     """
     profile = tmp_path_factory.mktemp("qgis_profile")
-    assert (QGIS_SITE / "shapely").is_dir(), "Shapely for QGIS's Python is missing: run `make setup`"
+    # Empty where the distribution's Shapely is Shapely 2 (Debian 13): QGIS's Python then imports that one.
+    probe = subprocess.run(
+        ["/usr/bin/python3", "-c", "import shapely"],
+        env={**os.environ, "PYTHONPATH": str(QGIS_SITE)},
+        capture_output=True,
+        check=False,
+    )
+    assert probe.returncode == 0, "Shapely for QGIS's Python is missing: run `make setup`"
     environment = dict(os.environ)
     environment.update(
         {

@@ -1,34 +1,118 @@
 """The toolbox dialog of each algorithm, built offscreen and saved as PNG under tests/artifacts/."""
 
 import pytest
-from qgis.core import QgsApplication
+from conftest import REPOSITORY
+from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtGui import QImage
-from qgis.PyQt.QtWidgets import QApplication
+from qgis.PyQt.QtWidgets import QApplication, QDialogButtonBox, QLabel
+
+DATA = REPOSITORY / "tests" / "data"
+
+#: Algorithm, the input layer put in the project (selected by the dialog) and its distance parameters.
+DIALOGS = {
+    "polygoncenterline": ("river", ("SNAP_TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+    "linescenterline": ("banks_a", ("SPACING", "TRANSECT_INTERVAL")),
+}
 
 
-@pytest.mark.parametrize("algorithm_id", ["incircu:polygoncenterline", "incircu:linescenterline"])
-def test_toolbox_dialog_renders(provider, artifacts, algorithm_id, qgis_parent, qgis_iface, monkeypatch):
+@pytest.fixture
+def toolbox_dialog(provider, qgis_parent, qgis_iface, monkeypatch):
+    """Build the toolbox dialog of an algorithm with one layer in the project; close it afterwards."""
     from processing.gui.AlgorithmDialog import AlgorithmDialog
     from qgis.gui import QgsBrowserGuiModel
 
     browser = QgsBrowserGuiModel()
     monkeypatch.setattr(qgis_iface, "browserModel", lambda: browser, raising=False)
+    dialogs = []
 
-    algorithm = QgsApplication.processingRegistry().createAlgorithmById(algorithm_id)
-    dialog = AlgorithmDialog(algorithm, False, qgis_parent)
-    dialog.resize(900, 1000)
-    dialog.show()
+    def build(algorithm_name, layer_file):
+        project = QgsProject.instance()
+        project.clear()
+        project.addMapLayer(QgsVectorLayer(str(DATA / layer_file), layer_file.split(".")[0], "ogr"))
+        algorithm = QgsApplication.processingRegistry().createAlgorithmById(f"incircu:{algorithm_name}")
+        dialog = AlgorithmDialog(algorithm, False, qgis_parent)
+        dialog.resize(900, 1000)
+        dialog.show()
+        QApplication.processEvents()
+        dialogs.append(dialog)
+        return algorithm, dialog
+
+    yield build
+    for dialog in dialogs:
+        dialog.close()
+        dialog.deleteLater()
+    QgsProject.instance().clear()
     QApplication.processEvents()
-    assert dialog.windowTitle() == algorithm.displayName()
+
+
+def unit_shown(dialog, name):
+    """Return the visible unit text next to the box of parameter ``name``."""
+    container = dialog.mainWidget().wrappers[name].widget
+    return [label.text() for label in container.findChildren(QLabel) if not label.isHidden() and label.text()]
+
+
+@pytest.mark.parametrize("algorithm_name", sorted(DIALOGS))
+def test_toolbox_dialog_renders_with_help_and_units(toolbox_dialog, artifacts, algorithm_name):
+    layer, distances = DIALOGS[algorithm_name]
+    algorithm, dialog = toolbox_dialog(algorithm_name, f"{layer}_2180.geojson")
+    assert dialog.windowTitle().endswith(algorithm.displayName())  # QGIS 3.40 puts the group first
     panel = dialog.mainWidget()
     for parameter in algorithm.parameterDefinitions():
         assert parameter.name() in panel.wrappers, parameter.name()
+    assert dialog.buttonBox().button(QDialogButtonBox.StandardButton.Help) is not None
+    for name in distances:
+        assert unit_shown(dialog, name) == ["meters"], name
     path = artifacts / f"dialog_{algorithm.name()}.png"
     assert dialog.grab().save(str(path))
     image = QImage(str(path))
     assert image.width() == dialog.width() and image.height() == dialog.height()
     colours = {image.pixel(x, y) for x in range(0, image.width(), 7) for y in range(0, image.height(), 7)}
     assert len(colours) > 10, "the dialog image is blank"
+
+
+def test_lengths_of_a_layer_in_degrees_are_metres(toolbox_dialog, artifacts):
+    _, dialog = toolbox_dialog("polygoncenterline", "river_4326.geojson")
+    for name in DIALOGS["polygoncenterline"][1]:
+        assert unit_shown(dialog, name) == ["meters"], name
+    dialog.mainWidget().wrappers["SNAP_TOLERANCE"].setValue(2.5)
+    parameters = dialog.createProcessingParameters()
+    assert parameters["SNAP_TOLERANCE"] == 2.5
+    assert dialog.grab().save(str(artifacts / "dialog_polygoncenterline_degrees.png"))
+
+
+def test_batch_dialog_keeps_the_qgis_distance_widget(provider, qgis_parent, qgis_iface, monkeypatch):
+    from processing.gui.BatchAlgorithmDialog import BatchAlgorithmDialog
+    from processing.gui.wrappers import WidgetWrapper
+    from qgis.gui import QgsBrowserGuiModel
+
+    browser = QgsBrowserGuiModel()
+    monkeypatch.setattr(qgis_iface, "browserModel", lambda: browser, raising=False)
+    algorithm = QgsApplication.processingRegistry().createAlgorithmById("incircu:polygoncenterline")
+    dialog = BatchAlgorithmDialog(algorithm, qgis_parent)
+    dialog.show()
+    QApplication.processEvents()
+    wrappers = dialog.mainWidget().wrappers[0]
+    snap = next(wrapper for wrapper in wrappers if wrapper.parameterDefinition().name() == "SNAP_TOLERANCE")
+    assert not isinstance(snap, WidgetWrapper)
+    assert snap.parameterDefinition().type() == "distance"
+    dialog.close()
+    dialog.deleteLater()
+    QApplication.processEvents()
+
+
+def test_modeler_keeps_the_qgis_distance_widget_with_model_inputs(provider):
+    from processing.modeler.ModelerParametersDialog import ModelerParametersDialog
+    from qgis.core import QgsProcessingModelAlgorithm
+    from qgis.gui import QgsProcessingModelerParameterWidget
+
+    model = QgsProcessingModelAlgorithm()
+    assert model.fromFile(str(DATA / "fix_centerline_smooth.model3"))
+    algorithm = QgsApplication.processingRegistry().createAlgorithmById("incircu:polygoncenterline")
+    dialog = ModelerParametersDialog(algorithm, model, "centerline")
+    QApplication.processEvents()
+    snap = dialog.widget.widget.wrappers["SNAP_TOLERANCE"]
+    assert isinstance(snap, QgsProcessingModelerParameterWidget)
+    assert snap.value().staticValue() == 1.0
     dialog.close()
     dialog.deleteLater()
     QApplication.processEvents()

@@ -120,3 +120,54 @@ def test_public_parameter_names(provider):
         polygon.parameterDefinition("SPLIT_POINTS").flags()
         & polygon.parameterDefinition("SPLIT_POINTS").Flag.FlagOptional
     )
+
+
+def github_slug(heading):
+    """The anchor GitHub gives a Markdown heading: lower case, punctuation dropped, spaces as hyphens."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+def test_help_button_url_names_the_algorithms_readme_section(provider):
+    from conftest import REPOSITORY
+
+    readme = (REPOSITORY / "README.md").read_text(encoding="utf-8")
+    anchors = {github_slug(line.lstrip("#")) for line in readme.splitlines() if line.startswith("#")}
+    registry = QgsApplication.processingRegistry()
+    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline"):
+        algorithm = registry.algorithmById(algorithm_id)
+        address, _, anchor = algorithm.helpUrl().partition("#")
+        assert address == metadata()["homepage"]
+        assert anchor in anchors, anchor
+        assert algorithm.id() in readme
+        assert algorithm.shortDescription().endswith(".")
+        assert "IncirCu" not in algorithm.displayName()
+
+
+def test_help_names_parameters_by_their_dialog_labels(provider):
+    registry = QgsApplication.processingRegistry()
+    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline"):
+        algorithm = registry.algorithmById(algorithm_id)
+        names = [definition.name() for definition in algorithm.parameterDefinitions()]
+        texts = [algorithm.shortHelpString(), algorithm.helpString()]
+        texts += [definition.help() for definition in algorithm.parameterDefinitions()]
+        for text in texts:
+            used = [name for name in names if re.search(rf"\b{name}\b", text)]
+            assert used == [], (used, text)
+
+
+def test_distances_carry_the_unit_of_the_input_layer(provider):
+    from incircu.algorithms.compat import ProcessingParameterFlag
+
+    registry = QgsApplication.processingRegistry()
+    for algorithm_id, layer, distances in (
+        ("incircu:polygoncenterline", "INPUT", ("SNAP_TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+        ("incircu:linescenterline", "LINES_A", ("SPACING", "TRANSECT_INTERVAL")),
+    ):
+        algorithm = registry.algorithmById(algorithm_id)
+        for name in distances:
+            definition = algorithm.parameterDefinition(name)
+            assert definition.type() == "distance", name
+            assert definition.parentParameterName() == layer, name
+            assert definition.minimum() == 0.0
+            assert definition.defaultValue() is not None
+            assert definition.flags() & ProcessingParameterFlag.Optional, "a default makes it optional in the modeler"

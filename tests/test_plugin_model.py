@@ -33,6 +33,19 @@ def test_model_lists_the_three_steps():
     assert algorithm_ids == ["incircu:polygoncenterline", "native:fixgeometries", "native:smoothgeometry"]
 
 
+def test_model_validates_and_is_laid_out(provider):
+    model = QgsProcessingModelAlgorithm()
+    assert model.fromFile(str(MODEL))
+    valid, issues = model.validate()
+    assert valid, issues
+    components = [*model.parameterComponents().values(), *model.childAlgorithms().values()]
+    components += [output for child in model.childAlgorithms().values() for output in child.modelOutputs().values()]
+    positions = [(component.position().x(), component.position().y()) for component in components]
+    assert len(components) == 6
+    assert len(set(positions)) == len(positions), positions
+    assert (0.0, 0.0) not in positions
+
+
 def test_model_runs_in_process(provider, tmp_path):
     model = QgsProcessingModelAlgorithm()
     assert model.fromFile(str(MODEL))

@@ -315,7 +315,7 @@ def test_unpaired_line_is_skipped(provider):
     "algorithm, parameters, message",
     [
         ("polygoncenterline", {"INPUT": str(DATA / "split_points_2180.geojson")}, "polygon"),
-        ("polygoncenterline", {"INPUT": str(DATA / "does_not_exist.geojson")}, ""),
+        ("polygoncenterline", {"INPUT": str(DATA / "does_not_exist.geojson")}, "does_not_exist.geojson not found"),
         (
             "polygoncenterline",
             {"INPUT": str(DATA / "river_2180.geojson"), "SPLIT_POINTS": str(DATA / "banks_a_2180.geojson")},

@@ -1,6 +1,7 @@
 """Release packaging and translations: the zip users install, and the Polish user interface."""
 
 import configparser
+import re
 import subprocess
 import sys
 import zipfile
@@ -42,6 +43,22 @@ def test_release_zip_layout(tmp_path):
     assert packaged_metadata["general"]["version"] == metadata()["version"]
 
 
+def test_packaged_readme_references_only_what_the_zip_holds_or_absolute_addresses(tmp_path):
+    subprocess.run(["make", "-s", "package", f"DIST={tmp_path}"], cwd=REPOSITORY, check=True, capture_output=True)
+    archive = tmp_path / "{}-{}.zip".format(PLUGIN_NAME, metadata()["version"])
+    with zipfile.ZipFile(archive) as release:
+        names = set(release.namelist())
+        readme = release.read(f"{PLUGIN_NAME}/README.md").decode("utf-8")
+    targets = re.findall(r"!?\[[^\]]*\]\(([^)\s]+)\)", readme)
+    assert any(target.endswith("scripts/demo.png") for target in targets)
+    for target in targets:
+        if re.match(r"^(https?:|mailto:|#)", target):
+            continue
+        assert f"{PLUGIN_NAME}/{target.split('#')[0]}" in names, target
+    repository = metadata()["repository"]
+    assert f"{repository}/raw/main/scripts/demo.png" in targets
+
+
 def test_release_zip_plugin_imports_from_extracted_folder(tmp_path):
     subprocess.run(["make", "-s", "package", f"DIST={tmp_path}"], cwd=REPOSITORY, check=True)
     archive = tmp_path / "{}-{}.zip".format(PLUGIN_NAME, metadata()["version"])
@@ -71,22 +88,22 @@ def test_polish_locale_translates_the_toolbox(provider, qgis_iface):
 
     registry = QgsApplication.processingRegistry()
     algorithm = registry.algorithmById("incircu:polygoncenterline")
-    assert algorithm.displayName() == "Centerline of polygons (IncirCu)"
+    assert algorithm.displayName() == "Centerline of polygons"
     settings = QgsSettings()
     previous = settings.value("locale/userLocale", "")
     settings.setValue("locale/userLocale", "pl_PL")
     try:
         polish_plugin = sys.modules[PLUGIN_NAME].classFactory(qgis.utils.iface)
         try:
-            assert algorithm.displayName() == "Linia środkowa poligonów (IncirCu)"
+            assert algorithm.displayName() == "Linia środkowa poligonów"
             assert algorithm.group() == "Linie środkowe"
             assert algorithm.shortHelpString().startswith("Wyznacza jedną nierozgałęzioną linię środkową")
             fresh = registry.createAlgorithmById("incircu:polygoncenterline")
             assert fresh.parameterDefinition("SPLIT_POINTS").description() == "Punkty podziału"
             lines = registry.algorithmById("incircu:linescenterline")
-            assert lines.displayName() == "Linia środkowa między dwiema liniami (IncirCu)"
+            assert lines.displayName() == "Linia środkowa między dwiema liniami"
         finally:
             polish_plugin.unload()
     finally:
         settings.setValue("locale/userLocale", previous)
-    assert algorithm.displayName() == "Centerline of polygons (IncirCu)"
+    assert algorithm.displayName() == "Centerline of polygons"

@@ -314,7 +314,8 @@ class MedialOracle:
             s = s[::-1]
         middle = 0.5 * np.abs(s[:-1] + s[1:])
         deviation = np.diff(s) ** 2 / (8.0 * np.hypot(focus_h, middle))
-        self.discretisation_error = max(self.discretisation_error, float(deviation.max()) / self.scale)
+        if deviation.size:  # a zero-length edge (both ends at one station) has no chord
+            self.discretisation_error = max(self.discretisation_error, float(deviation.max()) / self.scale)
         t = s + focus_t
         h = (s**2 + focus_h**2) / (2.0 * focus_h)
         points = anchor + t[:, None] * unit + h[:, None] * normal

@@ -1,0 +1,80 @@
+"""Toolbox dialog widget of the IncirCu lengths: the number and its unit, metres for a layer in degrees.
+
+QGIS's own distance widget labels a length "degrees" when the layer is geographic, but IncirCu computes such
+layers in a local metric projection, so its lengths are metres there. The parameters name this wrapper in
+their metadata (:func:`.base.length_parameter`); Processing imports it only when it builds a dialog, so
+``qgis_process`` never loads this module. The batch dialog and the modeler keep QGIS's own widgets.
+"""
+
+from processing.gui.wrappers import DIALOG_STANDARD, WidgetWrapper, WidgetWrapperFactory, dialogTypes
+from qgis.core import QgsProcessingParameters, QgsUnitTypes
+from qgis.gui import QgsDoubleSpinBox
+from qgis.PyQt.QtWidgets import QHBoxLayout, QLabel, QWidget
+
+from .compat import DistanceUnit
+
+#: Parameter copies without the wrapper metadata, kept alive for the QGIS widgets built on them.
+PLAIN_PARAMETERS = []
+
+
+def default_wrapper(parameter, dialog, row, col):
+    """Return the widget wrapper QGIS itself gives ``parameter`` in ``dialog``."""
+    plain = parameter.clone()
+    plain.setMetadata({})
+    PLAIN_PARAMETERS.append(plain)
+    return WidgetWrapperFactory.create_wrapper(plain, dialog, row, col)
+
+
+def unit_text(crs):
+    """Return the unit IncirCu reads a length in for a layer of ``crs``: its map unit, metres when in degrees."""
+    if not crs.isValid():
+        return ""
+    return QgsUnitTypes.toString(DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits())
+
+
+class LengthWidgetWrapper(WidgetWrapper):
+    """A non-negative number with the unit of the parent layer next to it (metres for degrees)."""
+
+    def __new__(cls, parameter, dialog, row=0, col=0):
+        if dialogTypes.get(type(dialog).__name__, DIALOG_STANDARD) != DIALOG_STANDARD:
+            return default_wrapper(parameter, dialog, row, col)
+        return super().__new__(cls)
+
+    def createWidget(self):
+        parameter = self.parameterDefinition()
+        self.spin_box = QgsDoubleSpinBox()
+        self.spin_box.setDecimals(6)
+        self.spin_box.setRange(max(parameter.minimum(), 0.0), parameter.maximum())
+        self.spin_box.setShowClearButton(True)
+        self.spin_box.setClearValue(float(parameter.defaultValue() or 0.0))
+        self.spin_box.setToolTip(parameter.toolTip())
+        self.unit_label = QLabel()
+        container = QWidget()
+        layout = QHBoxLayout(container)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.spin_box, 1)
+        layout.addWidget(self.unit_label)
+        return container
+
+    def postInitialize(self, wrappers):
+        parent_name = self.parameterDefinition().parentParameterName()
+        for wrapper in wrappers:
+            if wrapper.parameterDefinition().name() == parent_name:
+                wrapper.widgetValueHasChanged.connect(self.show_unit)
+                self.show_unit(wrapper)
+
+    def show_unit(self, parent_wrapper):
+        """Show the unit of the layer chosen in ``parent_wrapper``."""
+        from processing.tools.dataobjects import createContext
+
+        definition = parent_wrapper.parameterDefinition()
+        value = parent_wrapper.parameterValue()
+        crs = QgsProcessingParameters.parameterAsCrs(definition, {definition.name(): value}, createContext())
+        self.unit_label.setText(unit_text(crs))
+
+    def setValue(self, value):
+        if value is not None and value != "":
+            self.spin_box.setValue(float(value))
+
+    def value(self):
+        return self.spin_box.value()
