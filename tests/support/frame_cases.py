@@ -12,15 +12,18 @@ METRES_PER_DEGREE = (110_540.0, 111_320.0)
 BOWTIE_EVERY, ONE_POINT_EVERY, NULL_EVERY = 997, 1009, 1013
 #: Every how many rows the channel has no split points and finds its ends itself.
 AUTOMATIC_EVERY = 50
+#: Every how many rows the channel bends (a straight one costs the core about half as much).
+BENT_EVERY = 5
 
 
 def channels_lonlat(count, seed=0):
-    """Gently bent channels, 150 to 400 m long and 8 to 30 m wide, anywhere between 60° S and 60° N.
+    """Small channels, 150 to 400 m long and 8 to 30 m wide, anywhere between 60° S and 60° N.
 
-    Each channel is a hexagon (the two long sides bend at their middle) with split points at the middle of
-    its two short sides. Rows that are multiples of :data:`BOWTIE_EVERY` cross themselves, of
-    :data:`ONE_POINT_EVERY` get one split point only, of :data:`NULL_EVERY` have no geometry; rows that are
-    multiples of :data:`AUTOMATIC_EVERY` (and none of those) have no split points.
+    Each channel is a hexagon with split points at the middle of its two short sides; in every
+    :data:`BENT_EVERY`-th row its two long sides bend at their middle, elsewhere they are straight. Rows that
+    are multiples of :data:`BOWTIE_EVERY` cross themselves, of :data:`ONE_POINT_EVERY` get one split point
+    only, of :data:`NULL_EVERY` have no geometry; rows that are multiples of :data:`AUTOMATIC_EVERY` (and none
+    of those) have no split points.
 
     Parameters
     ----------
@@ -40,6 +43,8 @@ def channels_lonlat(count, seed=0):
     longitude, latitude = rng.uniform(-170.0, 170.0, count), rng.uniform(-60.0, 60.0, count)
     half_length, half_width = rng.uniform(75.0, 200.0, count), rng.uniform(4.0, 15.0, count)
     bend, angle = rng.uniform(-1.0, 1.0, count) * half_width, rng.uniform(0.0, np.pi, count)
+    rows = np.arange(count)
+    bend[rows % BENT_EVERY != 0] = 0.0
     zero = np.zeros(count)
     outline = np.stack(
         [
@@ -52,7 +57,6 @@ def channels_lonlat(count, seed=0):
         ]
     ).transpose(2, 0, 1)  # (count, 6, 2) metres
     ends = np.stack([[-half_length, zero], [half_length, zero]]).transpose(2, 0, 1)
-    rows = np.arange(count)
     bowtie = rows % BOWTIE_EVERY == BOWTIE_EVERY - 1
     outline[bowtie] = outline[bowtie][:, [0, 1, 3, 2, 4, 5]]
     to_degrees = _metres_to_degrees(longitude, latitude, angle)
