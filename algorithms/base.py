@@ -8,6 +8,7 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterDistance,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingUtils,
 )
@@ -177,14 +178,50 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
         )
 
-    def add_result_parameters(self):
-        """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
+    def add_snap_tolerance_parameter(self, name="SNAP_TOLERANCE"):
+        """Add the split point snapping tolerance (layer units or metres)."""
+        self.add_length_parameter(
+            name,
+            self.tr("Split point snapping tolerance"),
+            1.0,
+            self.tr(
+                "Largest distance between a split point and the polygon's exterior ring, layer units "
+                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
+            ),
+        )
+
+    def add_islands_parameter(self, help_text, name="ISLANDS"):
+        """Add the island mode, its choices in the order of the core's ``ISLAND_MODES``.
+
+        Parameters
+        ----------
+        help_text : str
+            What the choices do in this algorithm, already translated.
+        name : str
+            Parameter name.
+        """
+        self.add_optional_parameter(
+            QgsProcessingParameterEnum(
+                name,
+                self.tr("Islands (holes)"),
+                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
+                defaultValue=0,
+            ),
+            help_text,
+        )
+
+    def add_m_parameter(self):
+        """Add ``ADD_M`` (store the local width as M value)."""
         self.add_optional_parameter(
             QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
             self.tr(
                 "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
             ),
         )
+
+    def add_result_parameters(self):
+        """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
+        self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
                 self.OUTPUT,
@@ -234,10 +271,11 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
             advanced=True,
         )
-        self.add_output(
-            QgsProcessingOutputNumber(self.CENTERLINE_COUNT, self.tr("Number of centerlines")),
-            self.tr("Number of centerline features written."),
-        )
+        self.add_count_outputs(self.tr("Number of centerlines"), self.tr("Number of centerline features written."))
+
+    def add_count_outputs(self, description, help_text):
+        """Declare ``CENTERLINE_COUNT`` (features written, described as given) and ``SKIPPED_COUNT``."""
+        self.add_output(QgsProcessingOutputNumber(self.CENTERLINE_COUNT, description), help_text)
         self.add_output(
             QgsProcessingOutputNumber(self.SKIPPED_COUNT, self.tr("Number of skipped features")),
             self.tr("Number of input features (or parts) skipped with a warning."),

@@ -19,7 +19,7 @@ from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
 
-DOUBLE, INTEGER, BOOLEAN = FieldType.Double, FieldType.Int, FieldType.Bool
+DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
 
 
 def make_fields(definitions):
@@ -38,6 +38,7 @@ CENTERLINE_FIELDS = (
     ("width_max", DOUBLE),
     ("n_vertices", INTEGER),
     ("ends_found", BOOLEAN),
+    ("ends_from", STRING),
 )
 VERTEX_FIELDS = (
     ("source_fid", INTEGER),

@@ -2,12 +2,9 @@
 
 from qgis.core import (
     QgsFeatureRequest,
-    QgsGeometry,
-    QgsPointXY,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
-    QgsRectangle,
     QgsSpatialIndex,
     QgsWkbTypes,
 )
@@ -15,6 +12,7 @@ from qgis.core import (
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
 from .running import FeatureRun
+from .split_points import SplitPoints
 
 
 class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
@@ -25,6 +23,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
+    END_RULE = "END_RULE"
+    GUIDE_LINES = "GUIDE_LINES"
 
     ICON = "polygoncenterline.svg"
     HELP_ANCHOR = "centerline-of-polygons--incircupolygoncenterline"
@@ -50,7 +50,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
             "outline. The line runs between the two 'Split points' lying on the polygon's outline, or, "
-            "without them, between the two ends of the shape's longest internal path. Islands (holes) are passed on "
+            "without them, between automatic ends: those of the internal path along the 'Guide lines', else of "
+            "the main stem (or the longest internal path, see 'Automatic ends'). Islands (holes) are passed on "
             "the side of the wider channel, or ignored. The M value of each vertex is the local width. "
             "Geographic layers are computed in a local metric projection; distances are then in metres. "
             "A polygon that cannot be processed is skipped with a warning naming its id and the reason."
@@ -76,26 +77,39 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
             ),
         )
-        self.add_length_parameter(
-            self.SNAP_TOLERANCE,
-            self.tr("Split point snapping tolerance"),
-            1.0,
-            self.tr(
-                "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
-            ),
-        )
+        self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
         self.add_spacing_parameter()
-        self.add_optional_parameter(
-            QgsProcessingParameterEnum(
-                self.ISLANDS,
-                self.tr("Islands (holes)"),
-                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
-                defaultValue=0,
-            ),
+        self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: the line never crosses an island and goes round it on the "
                 "side of the wider channel. Ignore islands: holes are filled before computing."
+            ),
+            self.ISLANDS,
+        )
+        self.add_optional_parameter(
+            QgsProcessingParameterEnum(
+                self.END_RULE,
+                self.tr("Automatic ends"),
+                [self.tr("Main stem (widest path)"), self.tr("Longest path")],
+                defaultValue=0,
+            ),
+            self.tr(
+                "For polygons without split points. Main stem: the internal path that sweeps the largest "
+                "channel area (length times width), so a wide main river wins over a longer but narrow side "
+                "arm. Longest path: the tips of the two longest arms."
+            ),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(
+                self.GUIDE_LINES,
+                self.tr("Guide lines"),
+                [ProcessingSourceType.VectorLine],
+                optional=True,
+            ),
+            self.tr(
+                "Rough river lines (a national network, OpenStreetMap waterways) for polygons without split "
+                "points: the ends are those of the internal path that best covers the guide lines near the "
+                "polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected."
             ),
         )
         self.add_optional_parameter(
@@ -118,26 +132,27 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
-        points, index = [], QgsSpatialIndex()
-        if split_source is not None:
+        split_points = SplitPoints(split_source, crs, context)
+
+        guides, guide_index = [], QgsSpatialIndex()
+        if parameters.get(self.GUIDE_LINES) not in (None, ""):
+            guide_source = run.source(self.GUIDE_LINES, GeometryType.Line)
             request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
-            for feature in split_source.getFeatures(request):
-                for vertex in feature.geometry().vertices():
-                    index.addFeature(len(points), QgsRectangle(vertex.x(), vertex.y(), vertex.x(), vertex.y()))
-                    points.append(vertex)
+            for guide_feature in guide_source.getFeatures(request):
+                if guide_feature.hasGeometry():
+                    guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
+                    guides.append(guide_feature.geometry())
 
         for feature in run.features(source):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             shape = run.frame.to_core(geometry)
-            margin = _layer_margin(snap_tolerance, geometry, crs.isGeographic())
-            nearby = [points[i] for i in index.intersects(geometry.boundingBox().buffered(margin))]
-            candidates = [
-                run.frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(point.x(), point.y()))) for point in nearby
-            ]
+            guide = _guide_near(run.frame, geometry, guides, guide_index)
+            candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
             outcomes = run.compute(
                 feature.id(),
                 None,
@@ -147,6 +162,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 snap_tolerance=snap_tolerance or None,
                 spacing=spacing,
                 islands=islands,
+                end_rule=end_rule,
+                guide=guide,
             )
             several = len(outcomes or ()) > 1
             parts = []
@@ -164,10 +181,20 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         return run.finish()
 
 
-def _layer_margin(distance, geometry, geographic):
-    """Return ``distance`` (metres when ``geographic``) as a safe bounding-box margin in layer units."""
-    if not geographic:
-        return distance
-    from ..incircu_plugin.core.geodesy import degrees_covering  # after require_core: the core needs Shapely
+def _guide_near(frame, geometry, guides, index):
+    """Return the guide lines whose box meets the polygon's (grown by a quarter) as one core MultiLineString.
 
-    return float(degrees_covering(distance, geometry.boundingBox().center().y()))
+    Returns None without guide lines there; the core keeps only the guide lying near the polygon.
+    """
+    # Imported here, like the core (see ``running.FeatureRun``), so a missing Shapely gets its install message.
+    import shapely
+
+    box = geometry.boundingBox()
+    nearby = [guides[i] for i in index.intersects(box.buffered(0.25 * max(box.width(), box.height())))]
+    parts = [
+        part
+        for guide in nearby
+        for part in shapely.get_parts(frame.to_core(guide))
+        if part.geom_type == "LineString" and not part.is_empty
+    ]
+    return shapely.MultiLineString(parts) if parts else None

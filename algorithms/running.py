@@ -67,16 +67,25 @@ class FeatureRun:
 
     def open_outputs(self, fields, crs, multi):
         """Create the output sinks and the working frame of the layer's CRS."""
-        # Imported only now: these modules need Shapely, whose presence require_core has checked.
-        from .convert import WorkingFrame
+        # Imported only now: it needs Shapely, whose presence require_core has checked.
         from .outputs import CenterlineWriter
 
         algorithm, parameters, context = self.algorithm, self.parameters, self.context
         interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
         add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
-        self.writer = CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval)
-        if self.writer.sink is None:
-            raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
+        self.use_writer(CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval), crs)
+
+    def use_writer(self, writer, crs):
+        """Write results through ``writer`` and compute in the working frame of ``crs``.
+
+        ``writer`` has ``sink`` (None when it could not be created), ``write(attributes, source_fid, parts,
+        frame)``, ``destinations()`` and ``centerline_count``, like :class:`CenterlineWriter`.
+        """
+        from .convert import WorkingFrame  # needs Shapely, checked by require_core
+
+        if writer.sink is None:
+            raise QgsProcessingException(self.algorithm.invalidSinkError(self.parameters, self.algorithm.OUTPUT))
+        self.writer = writer
         self.frame = WorkingFrame(crs)
 
     def features(self, source, request=None):

@@ -336,13 +336,43 @@
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="51"/>
-        <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between the two ends of the shape&apos;s longest internal path. Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między dwoma końcami najdłuższej drogi wewnątrz kształtu. Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
+        <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between automatic ends: those of the internal path along the &apos;Guide lines&apos;, else of the main stem (or the longest internal path, see &apos;Automatic ends&apos;). Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
+        <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między końcami automatycznymi: końcami drogi wewnątrz kształtu wzdłuż 'Linii prowadzących', a bez nich głównego nurtu (lub najdłuższej drogi wewnątrz kształtu, zob. 'Końce automatyczne'). Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="68"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>Automatic ends</source>
+        <translation>Końce automatyczne</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>Main stem (widest path)</source>
+        <translation>Główny nurt (najszersza droga)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>Longest path</source>
+        <translation>Najdłuższa droga</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>For polygons without split points. Main stem: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. Longest path: the tips of the two longest arms.</source>
+        <translation>Dla poligonów bez punktów podziału. Główny nurt: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. Najdłuższa droga: końce dwóch najdłuższych ramion.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>Guide lines</source>
+        <translation>Linie prowadzące</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="106"/>
+        <source>Rough river lines (a national network, OpenStreetMap waterways) for polygons without split points: the ends are those of the internal path that best covers the guide lines near the polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected.</source>
+        <translation>Przybliżone linie rzek (sieć krajowa, cieki OpenStreetMap) dla poligonów bez punktów podziału: końcami są końce drogi wewnątrz kształtu, która najlepiej pokrywa linie prowadzące w pobliżu poligonu. Przerwy, przesunięcia, uogólnione fragmenty i dopływy nie przeszkadzają. Inny układ współrzędnych jest przeliczany.</translation>
     </message>
 </context>
 </TS>

@@ -46,6 +46,8 @@ class IncirCuProvider(QgsProcessingProvider):
     def loadAlgorithms(self):
         from ..algorithms.lines_centerline import LinesCenterlineAlgorithm
         from ..algorithms.polygon_centerline import PolygonCenterlineAlgorithm
+        from ..algorithms.polygon_network import PolygonNetworkAlgorithm
 
         self.addAlgorithm(PolygonCenterlineAlgorithm())
         self.addAlgorithm(LinesCenterlineAlgorithm())
+        self.addAlgorithm(PolygonNetworkAlgorithm())

@@ -15,13 +15,13 @@ from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
 from shapely.geometry.polygon import orient
 from shapely.ops import unary_union
 
-from incircu_plugin.core import find_ends, polygon_centerline
-from incircu_plugin.core.errors import InvalidGeometryError
+from incircu_plugin.core import Cancelled, find_ends, polygon_centerline
+from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
 from tests.support import geometry_cases
 
 #: Fraction of the channel width within which a found end must match a flat cap's midpoint. A flat cap is
 #: centred exactly by construction (midpoint between its two corners); what remains is the simplification
-#: of the outline before sampling (1e-3 of the width) and rounding.
+#: of the outline before the skeleton is built (its cap centring uses the exact outline) and rounding.
 FLAT_CAP_TOLERANCE = 0.01
 
 #: Fraction of the width within which a rounded cap's apex must be matched: the buffer approximates the
@@ -238,3 +238,66 @@ def test_polygon_centerline_warns_when_the_shape_is_not_elongated():
     result = polygon_centerline(Point(0.0, 0.0).buffer(10.0), spacing=0.5)
     assert result.ends_found
     assert any("not elongated" in note for note in result.notes)
+
+
+@pytest.mark.parametrize("height", [1e-3, 1e-4, 1e-5])
+def test_thin_boxes_get_the_middles_of_their_short_sides(height):
+    found, ends = found_pair(box(0.0, 0.0, 1.0, height))
+    assert ends.elongated
+    assert pair_error(found, [(0.0, height / 2.0), (1.0, height / 2.0)]) <= FLAT_CAP_TOLERANCE * height
+
+
+@pytest.mark.parametrize("scale", [1e-170, 1e-30, 1e30, 1e155])
+def test_the_answer_scales_with_the_coordinates(scale):
+    found, _ = found_pair(box(0.0, 0.0, 10.0 * scale, scale))
+    assert pair_error(found, [(0.0, scale / 2.0), (10.0 * scale, scale / 2.0)]) <= FLAT_CAP_TOLERANCE * scale
+
+
+def test_absurd_extent_gets_a_typed_error():
+    with pytest.raises(InvalidGeometryError):
+        find_ends(box(0.0, 0.0, 1e301, 1e300))
+
+
+def test_unknown_rule_gets_a_typed_error():
+    with pytest.raises(IncirCuError):
+        find_ends(box(0.0, 0.0, 10.0, 1.0), rule="shortest")
+
+
+def test_the_ends_of_compact_shapes_are_distinct():
+    square = shapely.segmentize(
+        box(499.04325887565847, 203.26611626641056, 500.04325887565847, 204.26611626641056), 1.0 / 14.0
+    )
+    polygons = [square] + [Point(0.0, 0.0).buffer(1.0, quad_segs=k) for k in (1, 2, 3)]
+    for sides in range(3, 14):
+        angles = np.linspace(0.0, 2.0 * math.pi, sides, endpoint=False)
+        polygons.append(Polygon(np.c_[np.cos(angles), np.sin(angles)]))
+    for polygon in polygons:
+        ends = find_ends(polygon)
+        size = math.sqrt(polygon.area)
+        assert ends.start.distance(ends.end) > 0.1 * size
+        assert polygon.exterior.distance(ends.start) <= 1e-9 * size
+        assert polygon.exterior.distance(ends.end) <= 1e-9 * size
+
+
+def test_progress_reports_fractions_and_cancel_stops():
+    polygon = channel([(0.0, 0.0), (400.0, 0.0), (400.0, 300.0)], 4.0)
+    fractions = []
+    find_ends(polygon, progress=lambda fraction: fractions.append(fraction) or True)
+    assert fractions and fractions == sorted(fractions)
+    assert 0.0 <= fractions[0] and fractions[-1] <= 1.0
+    calls = []
+    with pytest.raises(Cancelled):
+        find_ends(polygon, progress=lambda fraction: calls.append(fraction) or False)
+    assert len(calls) == 1
+
+
+def test_a_tiny_polygon_far_from_the_origin_gets_ends_on_its_ring():
+    # 1.4e-5 across at 1e6 from the origin: coordinates are rounded to about 1e-10, a millionth of its size.
+    angles = np.linspace(0.0, 2.0 * math.pi, 7, endpoint=False)
+    size = 1.4030173759013428e-05
+    centre = (727280.18049115, 962390.08013269)
+    polygon = Polygon(np.c_[centre[0] + size * np.cos(angles), centre[1] + size * np.sin(angles)])
+    ends = find_ends(polygon)
+    for end in (ends.start, ends.end):
+        assert polygon.exterior.distance(end) <= 1e-7 * 2.0 * size
+    assert polygon_centerline(polygon).line.length > 0.0

@@ -72,6 +72,7 @@ def assert_rows_equal_core(result, data, points, **options):
             expected = np.nan if statistics[name] is None else statistics[name]
             assert np.array_equal(row[name], expected, equal_nan=True), (label, name, row[name], expected)
         assert bool(row["ends_found"]) == statistics["ends_found"], label
+        assert row["ends_from"] == statistics["ends_from"], label
 
 
 def test_rivers_with_split_points_equal_the_core_feature_by_feature():
@@ -174,7 +175,7 @@ def test_an_unexpected_exception_in_one_row_is_reported_there(monkeypatch):
 def test_empty_frame_gives_an_empty_result_with_the_columns():
     result = centerlines(geopandas.GeoDataFrame(geometry=[], crs="EPSG:4326"))
     assert len(result) == 0 and result.crs == "EPSG:4326"
-    assert {"length", "width_min", "width_mean", "width_max", "ends_found", "error"} <= set(result.columns)
+    assert {"length", "width_min", "width_mean", "width_max", "ends_found", "ends_from", "error"} <= set(result.columns)
 
 
 def test_dask_frame_gives_a_lazy_frame_with_the_right_meta():

@@ -12,6 +12,7 @@ DATA = REPOSITORY / "tests" / "data"
 DIALOGS = {
     "polygoncenterline": ("river", ("SNAP_TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
     "linescenterline": ("banks_a", ("SPACING", "TRANSECT_INTERVAL")),
+    "polygonnetwork": ("river", ("SNAP_TOLERANCE", "SPACING")),
 }
 
 

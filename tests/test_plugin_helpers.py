@@ -47,6 +47,7 @@ def test_width_statistics_weights_the_mean_by_length(plugin_module):
         "width_max": 8.0,
         "n_vertices": 4,
         "ends_found": True,
+        "ends_from": None,
     }
 
 
@@ -61,6 +62,16 @@ def test_width_statistics_of_several_parts(plugin_module):
     assert (statistics["width_min"], statistics["width_max"]) == (2.0, 8.0)
     assert statistics["width_mean"] == pytest.approx((60.0 + 30.0) / (10.0 + 15.0), rel=1e-12)
     assert statistics["ends_found"] is False
+
+
+def test_width_statistics_names_where_the_ends_came_from(plugin_module):
+    width_statistics = plugin_module("algorithms.outputs").width_statistics
+    polygon_result = plugin_module("incircu_plugin.core.api").PolygonCenterlineResult
+    line = result(plugin_module, [0, 10], [1, 1])
+    guided = polygon_result(line.line, line.radii, line.foot_a, line.foot_b, ends_from="guide")
+    given = polygon_result(line.line, line.radii, line.foot_a, line.foot_b, ends_from="split_points")
+    assert width_statistics([guided])["ends_from"] == "guide"
+    assert width_statistics([guided, given, guided])["ends_from"] == "guide,split_points"
 
 
 def test_width_statistics_with_one_or_no_positive_width(plugin_module):
@@ -98,7 +109,7 @@ def test_a_release_candidate_of_shapely_2_is_not_older_than_2_0(plugin_module):
     assert dependencies.version_tuple("1.8.5") < dependencies.MINIMUM_SHAPELY
 
 
-# _layer_margin (algorithms/polygon_centerline.py) --------------------------------------------------------
+# layer_margin (algorithms/split_points.py) --------------------------------------------------------------
 
 
 def box_around_latitude(latitude):
@@ -107,7 +118,7 @@ def box_around_latitude(latitude):
 
 
 def test_layer_margin_in_a_projected_layer_is_the_distance(plugin_module):
-    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    layer_margin = plugin_module("algorithms.split_points").layer_margin
     assert layer_margin(25.0, box_around_latitude(52.0), False) == 25.0
 
 
@@ -123,7 +134,7 @@ def test_layer_margin_in_a_projected_layer_is_the_distance(plugin_module):
     ],
 )
 def test_layer_margin_in_a_geographic_layer_is_in_degrees(plugin_module, latitude, expected_degrees):
-    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    layer_margin = plugin_module("algorithms.split_points").layer_margin
     geometry = box_around_latitude(latitude)
     assert geometry.boundingBox().center().y() == pytest.approx(latitude, abs=1e-12)
     assert layer_margin(111.0, geometry, True) == pytest.approx(expected_degrees, rel=1e-9)

@@ -70,12 +70,12 @@ def test_provider_identity(provider):
     assert provider.versionInfo() == metadata()["version"]
     assert not provider.icon().isNull()
     ids = sorted(algorithm.id() for algorithm in provider.algorithms())
-    assert ids == ["incircu:linescenterline", "incircu:polygoncenterline"]
+    assert ids == ["incircu:linescenterline", "incircu:polygoncenterline", "incircu:polygonnetwork"]
 
 
 def test_algorithms_document_every_parameter(provider):
     registry = QgsApplication.processingRegistry()
-    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline"):
+    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline", "incircu:polygonnetwork"):
         algorithm = registry.algorithmById(algorithm_id)
         assert algorithm.group() == "Centerlines"
         assert algorithm.shortHelpString()
@@ -106,6 +106,8 @@ def test_public_parameter_names(provider):
         "SPLIT_POINTS",
         "SNAP_TOLERANCE",
         "ISLANDS",
+        "END_RULE",
+        "GUIDE_LINES",
         "SEPARATE_PARTS",
     }
     assert {p.name() for p in lines.parameterDefinitions()} == common | {

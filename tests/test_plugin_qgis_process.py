@@ -1,8 +1,13 @@
 """The plugin driven by ``qgis_process`` as a subprocess: exit codes, GeoPackage outputs read back."""
 
+import json
+
+import pytest
 from qgis.core import QgsVectorLayer, QgsWkbTypes
+from shapely.geometry import mapping
 from test_plugin_processing import RIVER_WIDTH, as_shapely, bank_axes, features_by
 
+from tests.support import network_cases
 from tests.support.project import DATA
 
 
@@ -18,6 +23,7 @@ def test_algorithms_are_listed(qgis_process):
     assert listed.returncode == 0, listed.stderr
     assert "incircu:polygoncenterline" in listed.stdout
     assert "incircu:linescenterline" in listed.stdout
+    assert "incircu:polygonnetwork" in listed.stdout
 
 
 def test_help_names_every_parameter(qgis_process):
@@ -142,3 +148,37 @@ def test_output_geometry_matches_in_process_run(qgis_process, tmp_path, provider
     narrowest = min(part.bounds[3] - part.bounds[1] for part in polygon.geoms)
     for a, b in zip(subprocess_lines, in_process_lines):
         assert a.hausdorff_distance(b) < 0.01 * narrowest
+
+
+@pytest.mark.slow
+def test_polygon_network_to_geopackage(qgis_process, tmp_path):
+    polygon, caps, (junction,), radius = network_cases.t_junction()
+    crs = {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2180"}}
+    polygons, points = tmp_path / "t.geojson", tmp_path / "ends.geojson"
+    feature = {"type": "Feature", "properties": {"name": "T"}, "geometry": mapping(polygon)}
+    polygons.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": [feature]}))
+    ends = [
+        {"type": "Feature", "properties": {"end": name}, "geometry": {"type": "Point", "coordinates": list(cap)}}
+        for name, cap in zip(("west", "east", "north"), caps)
+    ]
+    points.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": ends}))
+    output = tmp_path / "network.gpkg"
+    done = qgis_process(
+        "run",
+        "incircu:polygonnetwork",
+        "--",
+        f"INPUT={polygons}",
+        f"SPLIT_POINTS={points}",
+        "SPLIT_ID_FIELD=end",
+        f"OUTPUT={output}",
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "CENTERLINE_COUNT:\t3" in done.stdout
+    layer = read_layer(output)
+    assert QgsWkbTypes.hasM(layer.wkbType())
+    assert {f["from_point"] for f in layer.getFeatures()} == {"west", "east", "north"}
+    for branch in layer.getFeatures():
+        end = as_shapely(branch.geometry()).coords[-1]
+        assert branch["to_point"] == "junction"
+        assert abs(end[0] - junction[0]) + abs(end[1] - junction[1]) <= 1e-9 * 100.0
+        assert abs(branch["width_max"] - 2.0 * radius) <= 1e-9 * 100.0

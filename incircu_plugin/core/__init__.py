@@ -11,16 +11,25 @@ Example
 (100.0, 10.0)
 """
 
-from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_centerlines, polygon_centerline
+from .api import (
+    ISLAND_MODES,
+    PartOutcome,
+    PolygonCenterlineResult,
+    lines_centerline,
+    multipolygon_centerlines,
+    polygon_centerline,
+)
 from .chains import orient_bank_lines, split_polygon
-from .ends import EndsResult, find_ends
+from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .frames import centerlines
 from .geodesy import LocalProjection
+from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
+    "END_RULES",
     "ISLAND_MODES",
     "Cancelled",
     "CenterlineResult",
@@ -31,7 +40,10 @@ __all__ = [
     "Incircle",
     "InvalidGeometryError",
     "LocalProjection",
+    "NetworkBranch",
+    "NetworkResult",
     "PartOutcome",
+    "PolygonCenterlineResult",
     "SplitPointError",
     "Transect",
     "centerline_from_chains",
@@ -41,8 +53,10 @@ __all__ = [
     "incircle_polygons",
     "lines_centerline",
     "multipolygon_centerlines",
+    "multipolygon_networks",
     "orient_bank_lines",
     "polygon_centerline",
+    "polygon_network",
     "split_polygon",
     "transects",
     "vertex_chainages",

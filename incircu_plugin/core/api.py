@@ -1,6 +1,6 @@
 """Public entry points: the centerline of a polygon, of a multipart polygon, and between two lines."""
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields
 from functools import partial
 from typing import Optional
 
@@ -9,7 +9,7 @@ import shapely
 from shapely.geometry import MultiPolygon, Point, Polygon
 
 from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
-from .ends import find_ends
+from .ends import END_RULES, find_ends
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, InvalidGeometryError, SplitPointError
 from .islands import bridge_islands
@@ -17,6 +17,15 @@ from .islands import bridge_islands
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
 ISLAND_MODES = ("main_channel", "ignore")
+
+#: Share of a polygon's progress taken by finding its ends automatically.
+ENDS_PROGRESS_SHARE = 0.2
+
+
+def check_island_mode(islands):
+    """Raise :class:`IncirCuError` unless ``islands`` is one of :data:`ISLAND_MODES`."""
+    if islands not in ISLAND_MODES:
+        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
 
 
 def polygon_centerline(
@@ -27,6 +36,8 @@ def polygon_centerline(
     samples_per_chain=None,
     snap_tolerance=None,
     islands="main_channel",
+    end_rule="main_stem",
+    guide=None,
     progress=None,
 ):
     """Centerline of a polygon between two points of its boundary.
@@ -47,13 +58,21 @@ def polygon_centerline(
     islands : {"main_channel", "ignore"}
         ``"main_channel"``: the line goes around every island on the side of the wider channel (each island
         joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped.
+    end_rule : {"main_stem", "longest_path"}
+        How automatic ends are chosen (see :mod:`.ends`): the skeleton path sweeping the largest channel
+        area (the main stem), or the longest one.
+    guide : LineString or MultiLineString, optional
+        A rough line of the river, CRS units (gaps, offsets, pieces outside the polygon and tributaries are
+        fine): without split points, the ends are those of the skeleton path that best covers it. Ignored
+        when split points are given.
     progress : callable, optional
         See :func:`centerline_from_chains`.
 
     Returns
     -------
-    CenterlineResult
-        ``foot_a`` lies on the boundary counter-clockwise from the first split point.
+    PolygonCenterlineResult
+        ``foot_a`` lies on the boundary counter-clockwise from the first split point; ``ends_from`` says
+        where the ends came from.
 
     Raises
     ------
@@ -67,20 +86,43 @@ def polygon_centerline(
     ((0.0, 5.0), (100.0, 5.0), 10.0)
     """
     validate_polygon(polygon)
-    if islands not in ISLAND_MODES:
-        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    check_island_mode(islands)
+    if end_rule not in END_RULES:
+        raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     notes = []
     ends_found = split_points is None or len(split_points) == 0
+    ends_from = "split_points"
     if ends_found:
-        ends = find_ends(polygon)
+        ends = find_ends(
+            polygon, rule=end_rule, guide=guide, progress=_progress_share(progress, 0.0, ENDS_PROGRESS_SHARE)
+        )
+        progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
+        ends_from = "guide" if ends.guided else "automatic"
+        if guide is not None and not ends.guided:
+            notes.append("The guide line does not come near the polygon; its ends were found automatically.")
         if not ends.elongated:
             notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
-    return replace(result, ends_found=ends_found, notes=tuple(notes))
+    values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
+    values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
+    return PolygonCenterlineResult(**values)
+
+
+@dataclass(frozen=True)
+class PolygonCenterlineResult(CenterlineResult):
+    """A polygon's centerline (see :class:`CenterlineResult`) and where its ends came from.
+
+    Attributes
+    ----------
+    ends_from : {"split_points", "guide", "automatic"}
+        The given split points, the skeleton path following a guide line, or the automatic end rule.
+    """
+
+    ends_from: str = "split_points"
 
 
 def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):
@@ -134,9 +176,62 @@ class PartOutcome:
     error: Optional[IncirCuError]
 
 
+def _progress_share(progress, begin, end):
+    """Return a progress callback reporting ``fraction`` as ``begin + fraction * (end - begin)``, or None."""
+    if progress is None:
+        return None
+    return lambda fraction: progress(begin + fraction * (end - begin))
+
+
 def _part_progress(progress, index, count, fraction):
     """Report the progress of part ``index`` of ``count`` as a fraction of the whole geometry."""
     return progress((index + fraction) / count)
+
+
+def polygon_parts(geometry, split_points=None, snap_tolerance=None):
+    """Split a polygon or multipolygon into parts, each with the split points near its exterior ring.
+
+    Parameters
+    ----------
+    geometry : Polygon or MultiPolygon
+        CRS units.
+    split_points : sequence of Point or (x, y), optional
+    snap_tolerance : float, optional
+        Largest distance, CRS units, between a part's exterior ring and its split points; default ``1e-6``
+        of the geometry's extent.
+
+    Returns
+    -------
+    parts : list of (Polygon, list of int)
+        Each part with the indices of the split points within ``snap_tolerance`` of its exterior ring.
+    points : list of Point
+        The split points.
+    snap_tolerance : float
+        The tolerance used, CRS units.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+    """
+    if geometry is None or geometry.is_empty:
+        raise InvalidGeometryError("The polygon is empty or null.")
+    if isinstance(geometry, Polygon):
+        parts = [geometry]
+    elif isinstance(geometry, MultiPolygon):
+        parts = list(geometry.geoms)
+    else:
+        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
+    if snap_tolerance is None:
+        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
+    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    near = [[i for i, p in enumerate(points) if part.exterior.distance(p) <= snap_tolerance] for part in parts]
+    return list(zip(parts, near)), points, snap_tolerance
+
+
+def part_progress(progress, index, count):
+    """Return a progress callback for part ``index`` of ``count`` (None when ``progress`` is None)."""
+    return None if progress is None else partial(_part_progress, progress, index, count)
 
 
 def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None, **options):
@@ -175,22 +270,12 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     >>> [round(o.result.length, 6) for o in outcomes]
     [50.0, 50.0]
     """
-    if geometry is None or geometry.is_empty:
-        raise InvalidGeometryError("The polygon is empty or null.")
-    if isinstance(geometry, Polygon):
-        parts = [geometry]
-    elif isinstance(geometry, MultiPolygon):
-        parts = list(geometry.geoms)
-    else:
-        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
-    if snap_tolerance is None:
-        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
-    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     progress = options.pop("progress", None)
     outcomes = []
-    for index, part in enumerate(parts):
+    for index, (part, near) in enumerate(parts):
         try:
-            mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
+            mine = [points[i] for i in near]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
                     f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
@@ -200,7 +285,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
                 part,
                 mine or None,
                 snap_tolerance=snap_tolerance,
-                progress=None if progress is None else partial(_part_progress, progress, index, len(parts)),
+                progress=part_progress(progress, index, len(parts)),
                 **options,
             )
             outcomes.append(PartOutcome(index, result, None))

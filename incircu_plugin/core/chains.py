@@ -168,6 +168,41 @@ def _insert_at(ring, positions, position, point, tolerance):
     return np.insert(ring, index, point, axis=0), np.insert(positions, index, position)
 
 
+def positions_on_ring(exterior, points, tolerance):
+    """Return the arc length along a ring of the nearest point to each split point.
+
+    Parameters
+    ----------
+    exterior : LineString or LinearRing
+        The ring, CRS units.
+    points : sequence of ndarray of shape (2,)
+        The split points, CRS units.
+    tolerance : float
+        Largest distance, CRS units, between a split point and the ring.
+
+    Returns
+    -------
+    list of float
+        CRS units from the ring's first vertex.
+
+    Raises
+    ------
+    SplitPointError
+        If a point is farther than ``tolerance`` from the ring.
+    """
+    along = []
+    for point in points:
+        distance = exterior.distance(Point(point))
+        if distance > tolerance:
+            raise SplitPointError(
+                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
+                f"the snap tolerance is {tolerance:.6g}."
+                " Move the point onto the boundary or raise the tolerance."
+            )
+        along.append(exterior.project(Point(point)))
+    return along
+
+
 def split_polygon(polygon, split_points, tolerance=None):
     """Split a polygon's exterior ring into the two chains between two split points.
 
@@ -218,16 +253,7 @@ def split_polygon(polygon, split_points, tolerance=None):
     ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", coincidence), ring[:1]])
     exterior = LineString(ring)
     positions = cumulative_lengths(ring)
-    along = []
-    for point in points:
-        distance = exterior.distance(Point(point))
-        if distance > tolerance:
-            raise SplitPointError(
-                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
-                f"the snap tolerance is {tolerance:.6g}."
-                " Move the point onto the boundary or raise the tolerance."
-            )
-        along.append(exterior.project(Point(point)))
+    along = positions_on_ring(exterior, points, tolerance)
     perimeter = positions[-1]
     along = [0.0 if position >= perimeter - coincidence else position for position in along]
     gap = abs(along[0] - along[1])

@@ -1,22 +1,29 @@
 """Automatic ends: the two boundary points a person would call the ends of an elongated polygon.
 
-The ends are the extremities of the polygon's longest internal path, measured along its skeleton (an
-approximation of the medial axis), not the farthest pair of points in a straight line: a U-shaped or
-meandering river gets its two tips, a Y-shaped one the tips of its two longest arms.
+The ends are the extremities of a path along the polygon's skeleton (an approximation of its medial axis,
+see :mod:`.skeleton`), not the farthest pair of points in a straight line: a U-shaped or meandering river
+gets its two tips, a Y-shaped one the tips of two of its arms.
 
 Rule, step by step (deterministic, about O(n log n) in the number ``n`` of boundary samples):
 
-1. **Skeleton.** The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` and densified to
-   ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (a coarser step when that would
-   add more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the
-   boundary segments that are not edges of it), so no triangle crosses the boundary. The triangles inside
-   the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual
-   graph, each triangle placed at its circumcentre (a Voronoi vertex of the samples, on the approximate
-   medial axis), is the skeleton: every path in it stays in the region and goes around the islands.
-2. **Longest path.** A double sweep (from the first node to the farthest node ``a``, then from ``a`` to the
-   farthest node ``b``) gives the longest skeleton path ``a -> b``. Without holes the skeleton is a tree
-   (the dual graph of a triangulated simple polygon): each sweep is a plain traversal and the result is
-   exact. Around islands each sweep is a Dijkstra search and the result a close approximation.
+1. **Skeleton.** See :mod:`.skeleton`. The polygon is first moved to the origin and scaled to a unit
+   bounding-box diagonal, so any coordinate size (1e-170 to 1e155) gives the same answer.
+2. **Path.** The path between two skeleton leaves that is heaviest under the chosen rule, by a double sweep
+   (see :mod:`.paths`; exact without holes, a close approximation around islands):
+
+   - ``"main_stem"`` (default): each skeleton edge weighs its length times the width there, so the path
+     maximises the channel *area it sweeps*. A wide main river beats a longer but narrower side arm; an arm
+     wins only when its length times its width exceeds what the main river keeps beyond the junction.
+     Limits: a reservoir whose longest arm is also wide (a drowned tributary as wide as the main valley)
+     gets that arm; a delta's distributaries are compared by area only.
+   - ``"longest_path"``: each edge weighs its length: the tips of the two longest arms.
+   - with a *guide* line (``guide=``): each skeleton node earns the guide length lying nearest to it (after
+     resampling the guide every eighth of the typical width and dropping what lies farther than
+     ``GUIDE_REACH`` typical widths from the polygon) times its width, and each edge half the earnings of its two nodes, plus ``GUIDE_TIE``
+     times its main-stem weight: the path covers as much of the guide as a skeleton path can, and beyond
+     the guide it follows the main stem. Gaps, offsets, pieces outside the polygon and generalisation of
+     the guide only remove a little of the earnings; a tributary in the guide is followed only if its
+     covered length times its width exceeds the main river's.
 3. **Cap centring.** Near each end the path runs into a corner or a rounded cap, not to the middle of the
    end. Walking inward from the tip, ``d`` is the distance travelled (plus the tip's own clearance) and
    ``r`` the radius of the largest inscribed disk there. The *last trunk point* ``T`` is the widest
@@ -32,6 +39,8 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    arc-length midpoint between the first and last corner (a flat or oblique cut: the middle of the cut,
    the midpoint of a rectangle's short side), the corner itself when there is one (a pointed end), or the
    arc-length midpoint of the whole cap when there is none (a rounded cap: its apex).
+4. **Distinct ends.** Should both ends fall within ``MIN_SEPARATION`` of the extent of each other (a compact
+   shape), the second end becomes the point of the exterior ring half its perimeter away from the first.
 
 Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at its acute corner; the
 skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
@@ -41,7 +50,6 @@ The *start* is the end with the smaller ``x`` (then smaller ``y``) coordinate, s
 on where the ring starts or which way it turns.
 """
 
-import heapq
 from dataclasses import dataclass
 from typing import Optional
 
@@ -49,25 +57,15 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .chains import arc_lengths, extent_of, validate_polygon
-from .errors import InvalidGeometryError
+from .chains import extent_of, validate_polygon
+from .engine import Cancelled
+from .errors import IncirCuError, InvalidGeometryError
+from .paths import heaviest_path
+from .polyline import cumulative_lengths, typical_width
+from .skeleton import skeleton_graph
 
-#: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
-SAMPLES_PER_WIDTH = 4
-
-#: Tolerance of the simplification before sampling, as a fraction of the typical width (it bounds the
-#: error this adds to the ends, and keeps densely digitised outlines fast).
-SIMPLIFY_FRACTION = 1e-3
-
-#: Rounds of splitting boundary segments that are not Delaunay edges (each round halves them).
-MAX_REFINEMENTS = 12
-
-#: Twice the area, relative to the longest side squared, under which a triangle is a sliver of nearly
-#: collinear boundary samples (rounding on a straight bank) and is not part of the skeleton.
-SLIVER = 1e-6
-
-#: Densification adds at most about this many samples (the step grows when the boundary is longer).
-MAX_SAMPLES = 200_000
+#: Rules for the automatic ends (see the module docstring).
+END_RULES = ("main_stem", "longest_path")
 
 #: ``d / r`` below which a skeleton point still belongs to the end cap: ``1 / sin(40 deg)``, so corners of
 #: 80 degrees or blunter (a flat cap meets its banks at about 90 degrees) and rounded caps are centred.
@@ -85,6 +83,23 @@ CAP_WINDOW = 3.0
 #: elongated (a circle scores 1, a square about 1.4, a 2:1 rectangle about 2.4).
 ELONGATION_THRESHOLD = 2.0
 
+#: Weight of the main-stem rule next to the guide's earnings, which it only breaks ties between.
+GUIDE_TIE = 1e-2
+
+#: Distance from the polygon, in typical widths, beyond which guide samples are ignored.
+GUIDE_REACH = 2.0
+
+#: Two ends closer than this fraction of the bounding-box diagonal are the same end (see rule 4).
+MIN_SEPARATION = 1e-5
+
+#: Largest distance of an end from the exterior ring, as a fraction of the bounding-box diagonal (a tenth of
+#: the default snap tolerance of the split points).
+ON_RING = 1e-7
+
+#: Largest and smallest bounding-box diagonal, CRS units, that the computation handles.
+LARGEST_EXTENT = 1e300
+SMALLEST_EXTENT = 1e-300
+
 
 @dataclass(frozen=True)
 class EndsResult:
@@ -101,24 +116,33 @@ class EndsResult:
         ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends are then arbitrary
         though deterministic, and the caller should warn.
     trunk : LineString or None
-        The longest skeleton path the ends were derived from (diagnostics), CRS units.
+        The skeleton path the ends were derived from (diagnostics), CRS units.
+    guided : bool
+        True when a guide line came near the polygon and chose the path.
     """
 
     start: Point
     end: Point
     elongated: bool
     trunk: Optional[LineString] = None
+    guided: bool = False
 
 
-def find_ends(polygon):
+def find_ends(polygon, *, rule="main_stem", guide=None, progress=None):
     """Find the two boundary points a person would call the ends of a polygon.
 
-    See the module docstring for the rule (longest skeleton path, then cap centring).
+    See the module docstring for the rules (a heaviest skeleton path, then cap centring).
 
     Parameters
     ----------
     polygon : Polygon
         A valid polygon, possibly with holes (islands), CRS units.
+    rule : {"main_stem", "longest_path"}
+        Path rule without a guide, or beyond it.
+    guide : LineString or MultiLineString, optional
+        A rough line of the river (same CRS); where it comes near the polygon the path follows it.
+    progress : callable, optional
+        Called with the fraction done (0 to 1); returning False stops the search with :class:`Cancelled`.
 
     Returns
     -------
@@ -128,8 +152,12 @@ def find_ends(polygon):
     Raises
     ------
     InvalidGeometryError
-        If the polygon is null, empty, not a single polygon, not finite or not valid, or so degenerate
-        that no skeleton can be built.
+        If the polygon (or the guide) is null, empty, of the wrong kind, not finite, not valid or
+        absurdly scaled, or so degenerate that no skeleton can be built.
+    IncirCuError
+        If ``rule`` is unknown.
+    Cancelled
+        If ``progress`` returned False.
 
     Examples
     --------
@@ -138,344 +166,171 @@ def find_ends(polygon):
     >>> [round(c, 6) for c in ends.start.coords[0] + ends.end.coords[0]]
     [0.0, 1.0, 10.0, 1.0]
     """
-    validate_polygon(polygon)
+    if rule not in END_RULES:
+        raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(rule, ", ".join(END_RULES)))
+    try:
+        validate_polygon(polygon)
+        _validate_guide(guide)
+        return _find_ends(polygon, rule, guide, _cancel_check(progress))
+    except shapely.errors.GEOSException as error:
+        raise InvalidGeometryError(f"The ends of the polygon cannot be found: {error}.") from error
+
+
+def _validate_guide(guide):
+    """Raise :class:`InvalidGeometryError` unless ``guide`` is None or a finite (multi)line."""
+    if guide is None:
+        return
+    if getattr(guide, "geom_type", None) not in ("LineString", "MultiLineString"):
+        kind = getattr(guide, "geom_type", type(guide).__name__)
+        raise InvalidGeometryError(f"A guide must be a line or multiline, got a {kind}.")
+    if not np.all(np.isfinite(shapely.get_coordinates(guide))):
+        raise InvalidGeometryError("The guide line has a NaN or infinite coordinate.")
+
+
+def _cancel_check(progress):
+    """Return ``check(fraction)`` that raises :class:`Cancelled` when ``progress(fraction)`` is False."""
+
+    def check(fraction):
+        if progress is not None and progress(fraction) is False:
+            raise Cancelled()
+
+    return check
+
+
+def _find_ends(polygon, rule, guide, check):
+    """Find the ends of a validated polygon (see :func:`find_ends`); ``check(fraction)`` may cancel."""
     bounds = np.asarray(polygon.bounds, dtype=float)
     origin = (bounds[:2] + bounds[2:]) / 2.0
-    local = shapely.geometry.polygon.orient(shapely.transform(polygon, lambda xy: xy - origin), 1.0)
-    extent = extent_of(bounds.reshape(2, 2))
-    nodes, radii, edges, step = _skeleton_graph(local)
+    scale = extent_of(bounds.reshape(2, 2))
+    if not SMALLEST_EXTENT <= scale <= LARGEST_EXTENT:
+        raise InvalidGeometryError(
+            f"The polygon's size ({scale:.3g}) is absurd for its coordinates' units; reproject or rescale it."
+        )
+
+    def to_local(geometry):
+        return shapely.transform(geometry, lambda xy: (xy - origin) / scale)
+
+    local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
+    check(0.0)
+    nodes, radii, spans, edges, step = skeleton_graph(local)
     if len(edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
-    path = _longest_path(nodes, edges, acyclic=len(local.interiors) == 0)
+    check(0.5)
+    weights, guided = _edge_weights(local, nodes, spans, edges, rule, None if guide is None else to_local(guide))
+    path = heaviest_path(
+        len(nodes),
+        edges,
+        weights,
+        int(np.argmax(radii)),
+        acyclic=len(local.interiors) == 0,
+        check=lambda: check(0.7),
+    )
     trunk = nodes[path]
     trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
-    along = arc_lengths(trunk)
-    first = _centred_end(local, trunk, trunk_radii, junction, along, extent, step)
-    second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], extent, step)
+    along = cumulative_lengths(trunk)
+    first = _centred_end(local, trunk, trunk_radii, junction, along, 1.0, step)
+    second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
+    if np.hypot(*(first - second)) <= MIN_SEPARATION:
+        second = _opposite_point(local.exterior, first)
+    check(1.0)
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
     elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
-    first, second = sorted([first + origin, second + origin], key=lambda xy: (xy[0], xy[1]))
+    ends = [xy * scale + origin for xy in (first, second)]
+    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
+        ends = [_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in ends]
+    first, second = sorted(ends, key=lambda xy: (xy[0], xy[1]))
     return EndsResult(
         start=Point(first),
         end=Point(second),
         elongated=elongated,
-        trunk=LineString(trunk + origin) if len(trunk) > 1 else None,
+        trunk=LineString(trunk * scale + origin) if len(trunk) > 1 else None,
+        guided=guided,
     )
 
 
-def _typical_width(polygon):
-    """Return ``2 * area / perimeter``, CRS units: about the width of an elongated polygon."""
-    return 2.0 * polygon.area / polygon.length
-
-
-def _skeleton_graph(polygon):
-    """Return a skeleton of the polygon: the dual graph of a conforming Delaunay triangulation.
-
-    The boundary is simplified by ``SIMPLIFY_FRACTION`` of the typical width (topology preserved) and
-    densified to ``1 / SAMPLES_PER_WIDTH`` of it. The Delaunay triangulation of these samples is made
-    conforming (every boundary segment is an edge of it) by splitting the segments that are not, so every
-    triangle lies either inside the polygon or outside it (in a hole or beyond the exterior); the inside
-    ones are kept. Each is a node placed at its circumcentre (a Voronoi vertex of the samples, on the
-    approximate medial axis), or at its centroid when the circumcentre falls outside the polygon; two nodes
-    are linked when their triangles share a side.
+def _edge_weights(polygon, nodes, spans, edges, rule, guide):
+    """Return the weight of each skeleton edge under ``rule`` and ``guide``, and whether the guide counted.
 
     Parameters
     ----------
     polygon : Polygon
-        Valid polygon, CRS units (shifted near the origin).
+        The polygon, CRS units.
+    nodes, spans, edges
+        The skeleton (see :func:`.skeleton.skeleton_graph`).
+    rule : {"main_stem", "longest_path"}
+    guide : LineString or MultiLineString or None
+        CRS units.
 
     Returns
     -------
-    nodes : ndarray of shape (k, 2)
-        Skeleton vertices, CRS units.
-    radii : ndarray of shape (k,)
-        Clearance of each node: its triangle's circumradius (the radius of an empty disk touching the
-        samples, within ``step**2 / (8 * r)`` of the distance to the boundary), or the exact distance to the
-        boundary for a node placed at a centroid; CRS units.
-    edges : ndarray of shape (e, 2) of int
-        Node indices of each skeleton edge.
-    step : float
-        Densification step, CRS units.
+    weights : ndarray of shape (e,)
+    guided : bool
     """
-    width = _typical_width(polygon)
-    simplified = shapely.geometry.polygon.orient(
-        polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True), 1.0
-    )
-    step = max(width / SAMPLES_PER_WIDTH, simplified.length / MAX_SAMPLES)
-    dense = shapely.segmentize(simplified, step)
-    rings = [shapely.get_coordinates(ring)[:-1] for ring in (dense.exterior, *dense.interiors)]
-    for _ in range(MAX_REFINEMENTS):
-        samples = np.concatenate(rings)
-        count = len(samples)
-        following = np.concatenate(
-            [offset + np.roll(np.arange(len(ring)), -1) for offset, ring in zip(_offsets(rings), rings)]
-        )
-        corners, corner_ids = _delaunay(samples)
-        side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
-        boundary_keys = _edge_keys(np.arange(count), following, count)
-        missing = ~np.isin(boundary_keys, _edge_keys(side_start, side_end, count))
-        if not np.any(missing):
-            break
-        rings = _split_segments(rings, missing)
-    # Inside triangles: those whose counter-clockwise sides run along the boundary the way the (oriented)
-    # rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat
-    # triangles of nearly collinear samples, whose orientation means nothing) take no part.
-    first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
-    signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
-    clockwise = signed < 0.0
-    corners[clockwise] = corners[clockwise][:, ::-1]
-    corner_ids[clockwise] = corner_ids[clockwise][:, ::-1]
-    double_area = np.abs(signed)
-    side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
-    side_keys = _edge_keys(side_start, side_end, count)
-    on_boundary = np.isin(side_keys, boundary_keys).reshape(-1, 3)
-    forward = np.isin(side_start.astype(np.int64) * count + side_end, np.arange(count) * count + following)
-    side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
-    solid = double_area > SLIVER * np.max(side_lengths, axis=1) ** 2
-    region = _components(len(corners), side_keys, ~on_boundary.ravel() & np.repeat(solid, 3))
-    seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
-    inside = solid & np.isin(region, np.unique(region[seeds]))
-    corners, on_boundary, side_lengths = corners[inside], on_boundary[inside], side_lengths[inside]
-    side_keys = side_keys.reshape(-1, 3)[inside]
-    nodes = _circumcentres(corners)
-    radii = np.hypot(*(nodes - corners[:, 0]).T)
-    # An obtuse triangle whose longest side is on the boundary has its circumcentre beyond that side, outside
-    # the polygon: place its node at its centroid instead, with the centroid's distance to that side.
-    longest = np.argmax(side_lengths, axis=1)
-    rows = np.arange(len(corners))
-    squared = side_lengths**2
-    obtuse = 2.0 * squared[rows, longest] > squared.sum(axis=1)
-    beyond = obtuse & on_boundary[rows, longest]
-    nodes[beyond] = corners[beyond].mean(axis=1)
-    radii[beyond] = double_area[inside][beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
-    keys = side_keys.ravel()
-    owner = np.repeat(rows, 3)
-    order = np.argsort(keys, kind="stable")
-    keys, owner = keys[order], owner[order]
-    shared = np.flatnonzero(keys[1:] == keys[:-1])
-    edges = np.stack([owner[shared], owner[shared + 1]], axis=1)
-    return nodes, radii, edges, step
-
-
-def _components(count, side_keys, linking):
-    """Label the triangles connected through shared sides that are not on the boundary.
-
-    Parameters
-    ----------
-    count : int
-        Number of triangles.
-    side_keys : ndarray of shape (3 * count,)
-        Key of each triangle side (see :func:`_edge_keys`), three per triangle in order.
-    linking : ndarray of shape (3 * count,) of bool
-        Sides that may join two triangles.
-
-    Returns
-    -------
-    ndarray of shape (count,) of int
-        The smallest triangle index of each triangle's component.
-    """
-    owner = np.repeat(np.arange(count), 3)[linking]
-    keys = side_keys[linking]
-    order = np.argsort(keys, kind="stable")
-    keys, owner = keys[order], owner[order]
-    shared = np.flatnonzero(keys[1:] == keys[:-1])
-    first, second = owner[shared], owner[shared + 1]
-    label = np.arange(count)
-    while True:
-        low = np.minimum(label[first], label[second])
-        high = np.maximum(label[first], label[second])
-        if np.all(low == high):
-            return label
-        np.minimum.at(label, high, low)
-        while True:
-            jumped = label[label]
-            if np.array_equal(jumped, label):
-                break
-            label = jumped
-
-
-def _offsets(rings):
-    """Return the index of the first sample of each ring in their concatenation."""
-    return np.concatenate([[0], np.cumsum([len(ring) for ring in rings])[:-1]]).astype(np.int64)
-
-
-def _edge_keys(first, second, count):
-    """Return one integer per undirected edge between sample indices ``first`` and ``second``."""
-    low = np.minimum(first, second).astype(np.int64)
-    high = np.maximum(first, second).astype(np.int64)
-    return low * count + high
-
-
-def _delaunay(samples):
-    """Return the Delaunay triangles of the samples, as corners and as sample indices.
-
-    Parameters
-    ----------
-    samples : ndarray of shape (n, 2)
-        Points, CRS units.
-
-    Returns
-    -------
-    corners : ndarray of shape (t, 3, 2)
-    corner_ids : ndarray of shape (t, 3) of int
-        Index in ``samples`` of each corner (one of them for a repeated point).
-    """
-    triangles = shapely.get_parts(shapely.delaunay_triangles(shapely.multipoints(samples)))
-    corners = shapely.get_coordinates(triangles).reshape(-1, 4, 2)[:, :3]
-    # Delaunay keeps the input coordinates exactly: look each corner up among the samples, as complex keys
-    # (numpy orders complex numbers by real, then imaginary part).
-    keys = np.ascontiguousarray(samples).view(np.complex128).ravel()
-    order = np.argsort(keys, kind="stable")
-    position = np.searchsorted(keys[order], np.ascontiguousarray(corners.reshape(-1, 2)).view(np.complex128).ravel())
-    corner_ids = order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
-    return corners, corner_ids
-
-
-def _split_segments(rings, split):
-    """Insert the midpoint of every flagged segment of the rings.
-
-    Parameters
-    ----------
-    rings : list of ndarray of shape (m, 2)
-        Rings without their closing point, CRS units.
-    split : ndarray of bool
-        One flag per segment (from each sample to the next on its ring), in the rings' concatenated order.
-
-    Returns
-    -------
-    list of ndarray
-    """
-    refined = []
-    for offset, ring in zip(_offsets(rings), rings):
-        flags = split[offset : offset + len(ring)]
-        following = np.roll(ring, -1, axis=0)
-        where = np.flatnonzero(flags)
-        refined.append(np.insert(ring, where + 1, 0.5 * (ring[where] + following[where]), axis=0))
-    return refined
-
-
-def _circumcentres(corners):
-    """Return the circumcentres of triangles.
-
-    Parameters
-    ----------
-    corners : ndarray of shape (t, 3, 2)
-        Triangle corners, CRS units (near the origin for accuracy).
-
-    Returns
-    -------
-    ndarray of shape (t, 2)
-        Circumcentres, CRS units; a flat triangle gets its centroid.
-    """
-    a = corners[:, 0]
-    b = corners[:, 1] - a
-    c = corners[:, 2] - a
-    determinant = 2.0 * (b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0])
-    b2 = np.einsum("ij,ij->i", b, b)
-    c2 = np.einsum("ij,ij->i", c, c)
-    flat = np.abs(determinant) <= 1e-12 * np.maximum(b2, c2)
-    safe = np.where(flat, 1.0, determinant)
-    offset = np.stack([(c[:, 1] * b2 - b[:, 1] * c2) / safe, (b[:, 0] * c2 - c[:, 0] * b2) / safe], axis=1)
-    offset[flat] = ((b + c) / 3.0)[flat]
-    return a + offset
-
-
-def _dijkstra(graph, source):
-    """Return the shortest distance from ``source`` to every node and each node's predecessor.
-
-    Parameters
-    ----------
-    graph : (list of int, list of int, list of float)
-        Compressed adjacency: the neighbours of node ``i`` are ``neighbours[start[i]:start[i + 1]]`` at
-        the matching ``lengths`` (CRS units).
-    source : int
-
-    Returns
-    -------
-    distance : ndarray of float
-        ``inf`` for unreachable nodes.
-    predecessor : ndarray of int
-        ``-1`` for the source and unreachable nodes.
-    """
-    start, neighbours, lengths = graph
-    count = len(start) - 1
-    distance = [float("inf")] * count
-    predecessor = [-1] * count
-    distance[source] = 0.0
-    queue = [(0.0, source)]
-    while queue:
-        reached, node = heapq.heappop(queue)
-        if reached > distance[node]:
-            continue
-        for k in range(start[node], start[node + 1]):
-            neighbour = neighbours[k]
-            candidate = reached + lengths[k]
-            if candidate < distance[neighbour]:
-                distance[neighbour] = candidate
-                predecessor[neighbour] = node
-                heapq.heappush(queue, (candidate, neighbour))
-    return np.asarray(distance), np.asarray(predecessor)
-
-
-def _tree_distances(graph, source):
-    """Like :func:`_dijkstra` for a forest, where every reachable node has exactly one path from the source."""
-    start, neighbours, lengths = graph
-    count = len(start) - 1
-    distance = [float("inf")] * count
-    predecessor = [-1] * count
-    distance[source] = 0.0
-    stack = [source]
-    while stack:
-        node = stack.pop()
-        reached = distance[node]
-        for k in range(start[node], start[node + 1]):
-            neighbour = neighbours[k]
-            if predecessor[neighbour] == -1 and neighbour != source:
-                distance[neighbour] = reached + lengths[k]
-                predecessor[neighbour] = node
-                stack.append(neighbour)
-    return np.asarray(distance), np.asarray(predecessor)
-
-
-def _longest_path(nodes, edges, acyclic):
-    """Return the node indices of the longest skeleton path found by a double sweep.
-
-    Parameters
-    ----------
-    nodes : ndarray of shape (k, 2)
-        Skeleton vertices, CRS units.
-    edges : ndarray of shape (e, 2) of int
-        Skeleton edges.
-    acyclic : bool
-        The skeleton is a forest (the polygon has no holes): each sweep is a plain traversal, and the double
-        sweep is exact. Otherwise each sweep is a Dijkstra search.
-
-    Returns
-    -------
-    ndarray of int
-        Node indices from one end of the path to the other.
-    """
-    count = len(nodes)
     lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
-    sources = np.concatenate([edges[:, 0], edges[:, 1]])
-    order = np.argsort(sources, kind="stable")
-    start = np.concatenate([[0], np.cumsum(np.bincount(sources, minlength=count))])
-    graph = (
-        start.tolist(),
-        np.concatenate([edges[:, 1], edges[:, 0]])[order].tolist(),
-        np.concatenate([lengths, lengths])[order].tolist(),
-    )
-    sweep = _tree_distances if acyclic else _dijkstra
-    distance, _ = sweep(graph, 0)
-    first = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
-    distance, predecessor = sweep(graph, first)
-    last = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
-    path = [last]
-    while path[-1] != first:
-        path.append(int(predecessor[path[-1]]))
-    return np.asarray(path[::-1])
+    area = lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
+    weights = area if rule == "main_stem" else lengths
+    earnings = None if guide is None else _guide_earnings(polygon, nodes, spans, guide)
+    if earnings is None or not np.any(earnings > 0.0):
+        return weights, False
+    earned = 0.5 * (earnings[edges[:, 0]] + earnings[edges[:, 1]])
+    return earned + GUIDE_TIE * area, True
+
+
+def _guide_earnings(polygon, nodes, spans, guide):
+    """Return what each skeleton node earns from the guide: the guide length nearest to it times its width.
+
+    The guide is resampled every eighth of the typical width; samples farther than ``GUIDE_REACH``
+    typical widths from the polygon are dropped.
+    """
+    width = typical_width(polygon.area, polygon.length / 2.0)
+    reach = GUIDE_REACH * width
+    west, south, east, north = polygon.bounds
+    # Only the guide near the polygon counts: a long river crossing a small lake costs no more than its
+    # stretch across the lake's box.
+    clipped = shapely.clip_by_rect(guide, west - reach, south - reach, east + reach, north + reach)
+    parts = shapely.get_parts(shapely.get_parts(clipped))
+    parts = parts[shapely.get_type_id(parts) == 1]
+    parts = parts[shapely.length(parts) > 0.0]
+    if len(parts) == 0:
+        return None
+    spacing = width / 8.0
+    counts = np.ceil(shapely.length(parts) / spacing).astype(np.int64)
+    owner = np.repeat(np.arange(len(parts)), counts)
+    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    piece = shapely.length(parts)[owner] / counts[owner]
+    samples = shapely.line_interpolate_point(parts[owner], (rank + 0.5) * piece)
+    shapely.prepare(polygon)
+    near = shapely.dwithin(polygon, samples, reach)
+    if not np.any(near):
+        return None
+    tree = shapely.STRtree(shapely.points(nodes))
+    _, nearest = tree.query_nearest(samples[near], all_matches=False)
+    return np.bincount(nearest, weights=piece[near], minlength=len(nodes)) * spans
+
+
+def _on_ring(exterior, xy, tolerance):
+    """Return ``xy`` moved onto the ring when it is farther than ``tolerance`` from it, CRS units.
+
+    Back in the input's coordinates an end can lie off the ring by the rounding of coordinates far from the
+    origin (a polygon 1e-5 across at 1e6, the only case where this is called): it goes to the nearest point
+    of the ring, or, should rounding leave that one off too, to the nearest vertex (exactly on the ring).
+    """
+    point = Point(xy)
+    if exterior.distance(point) <= tolerance:
+        return xy
+    point = exterior.interpolate(exterior.project(point))
+    if exterior.distance(point) <= tolerance:
+        return np.asarray(point.coords[0])
+    vertices = shapely.get_coordinates(exterior)
+    return vertices[int(np.argmin(np.hypot(*(vertices - np.asarray(point.coords[0])).T)))]
+
+
+def _opposite_point(exterior, xy):
+    """Return the point of the ring half its perimeter along from the point nearest to ``xy``, CRS units."""
+    position = exterior.project(Point(xy)) + exterior.length / 2.0
+    return np.asarray(exterior.interpolate(position % exterior.length).coords[0])
 
 
 def _interpolate(points, along, position):

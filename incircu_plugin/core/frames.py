@@ -30,6 +30,7 @@ RESULT_COLUMNS = {
     "width_mean": "float64",
     "width_max": "float64",
     "ends_found": "boolean",
+    "ends_from": "string",
     "error": "string",
 }
 
@@ -82,7 +83,8 @@ def centerlines(
         Same index and CRS as ``data`` (lazy for a dask frame). ``geometry``: a LineString per polygon, a
         MultiLineString of the successful parts per multipolygon, None when nothing succeeded; ``length``,
         ``width_min``, ``width_mean``, ``width_max`` (metres when geographic, NaN without a line);
-        ``ends_found`` (True when every part found its ends itself, <NA> without a line); ``error`` (<NA>, or
+        ``ends_found`` (True when every part found its ends itself, <NA> without a line); ``ends_from``
+        (``split_points``, ``guide`` or ``automatic``, comma-separated over the parts); ``error`` (<NA>, or
         the message of the core's typed error, prefixed with ``part i:`` for a part of a multipolygon).
 
     Examples

@@ -86,7 +86,8 @@ def width_statistics(results):
     -------
     dict
         ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
-        (True when every part had automatic ends); lengths in the results' CRS units.
+        (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
+        ``automatic``, comma-separated; None for lines); lengths in the results' CRS units.
     """
     widths, integral, span = [], 0.0, 0.0
     for result in results:
@@ -105,6 +106,7 @@ def width_statistics(results):
         "width_max": max(widths) if widths else None,
         "n_vertices": int(sum(len(result.line.coords) for result in results)),
         "ends_found": all(bool(result.ends_found) for result in results),
+        "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
     }
 
 

@@ -1,0 +1,105 @@
+"""Output layer of ``incircu:polygonnetwork``: one line feature per branch of each network."""
+
+import numpy as np
+from qgis.core import QgsFeature, QgsFeatureSink, QgsGeometry, QgsProcessingException, QgsProcessingUtils, QgsWkbTypes
+from qgis.PyQt.QtCore import QCoreApplication
+
+from .compat import WkbType
+from .convert import line_with_m
+from .outputs import DOUBLE, INTEGER, STRING, make_fields, width_statistics
+from .styles import CENTERLINE, style_outputs_on_load
+
+#: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
+#: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
+#: ``right_chain``/``left_chain``: the boundary chain on either side, named "a-b" after the ids of the split
+#: points at its ends (counter-clockwise).
+BRANCH_FIELDS = (
+    ("from_point", STRING),
+    ("to_point", STRING),
+    ("right_chain", STRING),
+    ("left_chain", STRING),
+    ("length", DOUBLE),
+    ("width_min", DOUBLE),
+    ("width_mean", DOUBLE),
+    ("width_max", DOUBLE),
+    ("n_vertices", INTEGER),
+)
+
+#: Value of ``from_point``/``to_point`` at a junction.
+JUNCTION = "junction"
+
+
+class NetworkWriter:
+    """Creates the branch layer of the network algorithm and writes networks into it.
+
+    Parameters
+    ----------
+    algorithm : IncirCuAlgorithm
+    parameters, context : dict, QgsProcessingContext
+    input_fields : QgsFields
+        Attributes copied from the input features.
+    crs : QgsCoordinateReferenceSystem
+    add_m : bool
+        Store the local width as M value.
+    """
+
+    def __init__(self, algorithm, parameters, context, input_fields, crs, add_m):
+        self.add_m = add_m
+        line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
+        self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
+        # A GeoPackage's ``fid`` must stay unique: only the first branch of a feature keeps it.
+        self.fid_index = input_fields.lookupField("fid")
+        self.sink, self.sink_id = algorithm.parameterAsSink(
+            parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
+        )
+        self.centerline_count = 0
+        self.output_name = algorithm.OUTPUT
+        style_outputs_on_load(context, {CENTERLINE: self.sink_id})
+
+    def destinations(self):
+        """Return the output id keyed by parameter name."""
+        return {self.output_name: self.sink_id}
+
+    def write(self, attributes, source_fid, parts, frame):
+        """Write the branches of the networks of one input feature.
+
+        Parameters
+        ----------
+        attributes : list
+            Attribute values of the input feature.
+        source_fid : int
+            Id of the input feature (unused: the branches carry its attributes).
+        parts : sequence of (int, NetworkResult, list)
+            Part index, network and the ids of the split points its indices refer to.
+        frame : WorkingFrame
+            Frame the networks are expressed in.
+        """
+        first = True
+        for _, network, ids in parts:
+            names = [str(point_id) for point_id in ids]
+            chains = [f"{names[start]}-{names[end]}" for start, end in network.chains]
+            for branch in network.branches:
+                result = branch.result
+                coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
+                statistics = width_statistics([result])
+                values = list(attributes)
+                if not first and self.fid_index >= 0:
+                    values[self.fid_index] = None
+                values += [
+                    JUNCTION if branch.start_point is None else names[branch.start_point],
+                    JUNCTION if branch.end_point is None else names[branch.end_point],
+                    chains[branch.right_chain],
+                    chains[branch.left_chain],
+                ]
+                values += [statistics[name] for name, _ in BRANCH_FIELDS[4:]]
+                feature = QgsFeature(self.fields)
+                feature.setGeometry(QgsGeometry(line_with_m(coordinates, result.widths if self.add_m else None)))
+                feature.setAttributes(values)
+                if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
+                    raise QgsProcessingException(
+                        QCoreApplication.translate("IncirCuAlgorithm", "Could not write a branch: {}").format(
+                            self.sink.lastError() if hasattr(self.sink, "lastError") else ""
+                        )
+                    )
+                self.centerline_count += 1
+                first = False

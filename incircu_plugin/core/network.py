@@ -1,0 +1,669 @@
+"""Networks: the medial axis between three or more boundary chains of one polygon (a confluence, a junction).
+
+``k >= 2`` split points on the exterior ring cut it into ``k`` chains ``C_0 .. C_{k-1}`` (counter-clockwise,
+``C_m`` from split point ``p_m`` to ``p_{m+1}``). The *network* is the part of the medial axis whose
+incircles touch two different chains: a tree whose ``k`` leaves are the split points, whose *junctions* are
+the centres of incircles touching three chains, and whose *branches* each separate two chains.
+
+Method (only the engine's public :func:`centerline_from_chains`):
+
+1. Because the ring is cyclic, the complement of ``C_i`` is one chain ``D_i`` (``C_{i-1}, C_{i-2}, ...,
+   C_{i+1}`` run backwards). The centerline between ``C_i`` and ``D_i`` (run ``i``) runs from ``p_i`` to
+   ``p_{i+1}`` through every branch touching ``C_i``; each vertex is labelled with the chain its foot on
+   ``D_i`` lies on. Labels follow ``D_i``'s order along the line.
+2. Where the label changes from ``C_j`` to ``C_j'`` the incircle touches ``C_i``, ``C_j`` and ``C_j'``: a
+   junction. It is located exactly by Newton's method on the exact distances to the three chains (equal
+   distances), starting between the two vertices whose labels differ, and checked to be an empty circle; a
+   fourth chain inside it means a branch shorter than the sampling lies between, and the junction splits in
+   two. Each junction is computed once (keyed by its three chains) and shared by every branch ending there;
+   junctions closer than ``JUNCTION_TOLERANCE`` of the extent (a symmetric crossing) are one junction.
+3. Branch ``(i, j)``, ``i < j``, appears in runs ``i`` and ``j``; it is taken from run ``i`` only. Both
+   runs sample both chains ``C_i`` and ``C_j`` at the same spacing, so either has the same density, and a
+   single run keeps the vertices in the engine's order (no interleaving of two sample sets); for ``k = 2``
+   the network is therefore exactly :func:`polygon_centerline`'s line. Run ``k - 1`` is never needed.
+4. Islands are joined once, for all runs, to the chains of one split of the ring (``C_0`` and ``D_0``)
+   with :func:`bridge_islands`: each island becomes part of the chain its slit starts from, so every run
+   sees the same chains and the network passes each island on the side of the wider channel.
+
+The result is checked to be a tree with exactly ``k`` leaves at the split points and junctions of degree
+three or more; otherwise :class:`IncirCuError` says so.
+"""
+
+from dataclasses import dataclass, replace
+from functools import partial
+from typing import Optional
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, Point
+
+from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
+from .chains import COINCIDENCE_TOLERANCE, extent_of, positions_on_ring, split_polygon, validate_polygon
+from .engine import Cancelled, CenterlineResult, centerline_from_chains
+from .errors import IncirCuError, SplitPointError, format_point
+from .islands import bridge_islands
+from .polyline import IndexedPolyline, cumulative_lengths
+
+#: Junctions closer than this fraction of the extent are one junction (degree four or more).
+JUNCTION_TOLERANCE = 1e-9
+
+#: Relative slack with which a fourth chain still counts as outside a junction's circle.
+EMPTY_CIRCLE_TOLERANCE = 1e-9
+
+#: Most Newton steps locating one junction.
+NEWTON_STEPS = 60
+
+
+@dataclass(frozen=True)
+class NetworkBranch:
+    """One branch of a network: the axis between two chains, from a leaf or junction to another.
+
+    Attributes
+    ----------
+    result : CenterlineResult
+        The branch as a centerline: ``foot_a`` on the right chain, ``foot_b`` on the left chain (walking
+        along the line); radius 0 at a leaf.
+    start_point, end_point : int or None
+        Index (in the input order) of the split point at the branch's start and end; None at a junction.
+    right_chain, left_chain : int
+        Indices into :attr:`NetworkResult.chains` of the chains on either side.
+    """
+
+    result: CenterlineResult
+    start_point: Optional[int]
+    end_point: Optional[int]
+    right_chain: int
+    left_chain: int
+
+
+@dataclass(frozen=True)
+class NetworkResult:
+    """The network of a polygon between its split points.
+
+    Attributes
+    ----------
+    branches : tuple of NetworkBranch
+    split_points : ndarray of shape (k, 2)
+        The split points snapped onto the ring, in the input order, CRS units.
+    chains : tuple of (int, int)
+        For each chain, the input indices of the split points at its start and end (counter-clockwise).
+    junctions : ndarray of shape (m, 2)
+        The junctions, CRS units.
+    point_indices : tuple of int or None
+        Set by :func:`multipolygon_networks`: the index of each row of ``split_points`` among all the
+        candidate split points (the numbers used by ``chains`` and the branches).
+    """
+
+    branches: tuple
+    split_points: np.ndarray
+    chains: tuple
+    junctions: np.ndarray
+    point_indices: Optional[tuple] = None
+
+
+def polygon_network(
+    polygon,
+    split_points,
+    *,
+    spacing=None,
+    snap_tolerance=None,
+    islands="main_channel",
+    progress=None,
+    **engine_options,
+):
+    """Medial-axis network of a polygon between ``k >= 2`` split points on its exterior ring.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units; holes are islands.
+    split_points : sequence of Point or (x, y)
+        At least two points within ``snap_tolerance`` of the exterior ring. The first one starts chain 0,
+        the others follow counter-clockwise whatever their order; with two points the branch runs from the
+        first to the second, as :func:`polygon_centerline`'s line.
+    spacing : float, optional
+        Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
+    snap_tolerance : float, optional
+        Largest distance, CRS units, between a split point and the ring; default ``1e-6`` of the extent.
+    islands : {"main_channel", "ignore"}
+        As in :func:`polygon_centerline`.
+    progress : callable, optional
+        Called with the fraction done; returning False raises :class:`Cancelled`.
+    **engine_options
+        Passed to :func:`centerline_from_chains` (e.g. ``samples_per_chain``).
+
+    Returns
+    -------
+    NetworkResult
+        For two split points, one branch equal to :func:`polygon_centerline`'s line.
+
+    Raises
+    ------
+    InvalidGeometryError, SplitPointError, ChainError, IncirCuError
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> network = polygon_network(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=1.0)
+    >>> [round(branch.result.length, 9) for branch in network.branches]
+    [100.0]
+    """
+    validate_polygon(polygon)
+    check_island_mode(islands)
+    split_points = [] if split_points is None else list(split_points)
+    order = _ring_order(polygon, split_points, snap_tolerance)
+    points = [_as_xy(split_points[index]) for index in order]
+    chains = _bridged_chains(polygon, points, snap_tolerance, islands)
+    k = len(chains)
+    extent = extent_of(*chains)
+    boundary = _Boundary(chains, extent)
+    junctions = _Junctions(boundary)
+    pieces = []
+    for i in range(k - 1):
+        c2 = _complement(chains, i)
+        report = None if progress is None else partial(_run_progress, progress, i, k - 1)
+        result = centerline_from_chains(chains[i], c2, spacing, progress=report, **engine_options)
+        if report is not None and report(1.0) is False:
+            raise Cancelled()
+        pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
+    branches, centres = _assemble(pieces, junctions, order)
+    snapped = np.empty((k, 2))
+    snapped[order] = np.array([chain[0] for chain in chains])
+    return NetworkResult(
+        branches=tuple(branches),
+        split_points=snapped,
+        chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
+        junctions=centres,
+    )
+
+
+def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **options):
+    """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
+
+    A part takes the split points within ``snap_tolerance`` of its exterior ring; fewer than two is an
+    error for that part. A part that fails does not stop the others.
+
+    Parameters
+    ----------
+    geometry : Polygon or MultiPolygon
+        CRS units.
+    split_points : sequence of Point or (x, y)
+        Candidate split points for all parts.
+    snap_tolerance : float, optional
+        CRS units; default ``1e-6`` of the geometry's extent.
+    **options
+        Passed to :func:`polygon_network` (``spacing``, ``islands``, ``progress``, ...).
+
+    Returns
+    -------
+    list of PartOutcome
+        One per part, in input order; a result's split point indices refer to ``split_points``.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+
+    Examples
+    --------
+    >>> from shapely.geometry import MultiPolygon, box
+    >>> parts = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
+    >>> outcomes = multipolygon_networks(parts, [(0, 12), (50, 2), (50, 12), (0, 2)], spacing=1.0)
+    >>> [[(b.start_point, b.end_point) for b in o.result.branches] for o in outcomes]
+    [[(1, 3)], [(0, 2)]]
+    """
+    parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
+    progress = options.pop("progress", None)
+    outcomes = []
+    for index, (part, near) in enumerate(parts):
+        try:
+            if len(near) < 2:
+                raise SplitPointError(
+                    f"Part {index} has {len(near)} split points within {snap_tolerance:.6g} of its boundary; "
+                    "a network needs at least 2."
+                )
+            network = polygon_network(
+                part,
+                [points[i] for i in near],
+                snap_tolerance=snap_tolerance,
+                progress=part_progress(progress, index, len(parts)),
+                **options,
+            )
+            outcomes.append(PartOutcome(index, _renumbered(network, near), None))
+        except IncirCuError as error:
+            outcomes.append(PartOutcome(index, None, error))
+    return outcomes
+
+
+def _renumbered(network, indices):
+    """Return a network whose split point indices ``m`` become ``indices[m]``."""
+
+    def renumber(m):
+        return None if m is None else indices[m]
+
+    branches = tuple(
+        replace(branch, start_point=renumber(branch.start_point), end_point=renumber(branch.end_point))
+        for branch in network.branches
+    )
+    chains = tuple((renumber(start), renumber(end)) for start, end in network.chains)
+    return replace(network, branches=branches, chains=chains, point_indices=tuple(indices))
+
+
+def _as_xy(point):
+    """Return a Point or (x, y) as a float array of shape (2,)."""
+    return np.asarray(point.coords[0] if isinstance(point, Point) else point, dtype=float)[:2]
+
+
+def _run_progress(progress, run, runs, fraction):
+    """Report the progress of run ``run`` of ``runs`` as a fraction of the whole network."""
+    return progress(float((run + fraction) / runs))
+
+
+def _ring_order(polygon, split_points, tolerance):
+    """Return the input indices of the split points counter-clockwise along the ring from the first one.
+
+    Raises
+    ------
+    SplitPointError
+        Fewer than two points, a point too far from the ring, or two points at the same place.
+    """
+    if len(split_points) < 2:
+        raise SplitPointError(f"A network needs at least 2 split points on the boundary, got {len(split_points)}.")
+    xy = [_as_xy(point) for point in split_points]
+    if not all(np.all(np.isfinite(p)) for p in xy):
+        raise SplitPointError("A split point has a NaN or infinite coordinate.")
+    exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
+    extent = extent_of(shapely.get_coordinates(exterior))
+    if tolerance is None or tolerance <= 0:
+        tolerance = 1e-6 * extent
+    perimeter = exterior.length
+    along = positions_on_ring(exterior, xy, tolerance)
+    relative = np.mod(np.asarray(along) - along[0], perimeter)
+    order = [0] + sorted(range(1, len(xy)), key=lambda index: relative[index])
+    gaps = np.diff(np.append(relative[order], perimeter))
+    close = int(np.argmin(gaps))
+    if gaps[close] <= max(tolerance, COINCIDENCE_TOLERANCE * extent):
+        raise SplitPointError(
+            f"Two split points snap to the same place {format_point(xy[order[close]])} of the boundary."
+        )
+    return order
+
+
+def _insert_vertex(chain, point, coincidence):
+    """Return ``chain`` with ``point`` projected onto it as a vertex, and that vertex's index."""
+    exact = np.flatnonzero(np.all(chain == point, axis=1))
+    if len(exact) == 1:
+        return chain, int(exact[0])
+    line = LineString(chain)
+    position = line.project(Point(point))
+    cumulative = cumulative_lengths(chain)
+    nearest = int(np.argmin(np.abs(cumulative - position)))
+    if abs(cumulative[nearest] - position) <= coincidence:
+        return chain, nearest
+    index = int(np.searchsorted(cumulative, position, side="right"))
+    return np.insert(chain, index, np.asarray(line.interpolate(position).coords[0]), axis=0), index
+
+
+def _bridged_chains(polygon, points, tolerance, islands):
+    """Return the chains ``C_0 .. C_{k-1}`` (counter-clockwise, islands joined) between ring-ordered points.
+
+    ``C_0`` and ``D_0`` come from :func:`split_polygon` exactly as in :func:`polygon_centerline`; the other
+    split points are inserted into ``D_0``, the islands are joined to ``C_0`` or ``D_0`` once, and ``D_0`` is
+    cut at the other split points.
+    """
+    c1, c2 = split_polygon(polygon, points[:2], tolerance)
+    coincidence = COINCIDENCE_TOLERANCE * extent_of(c1, c2)
+    for point in points[2:]:
+        c2, _ = _insert_vertex(c2, point, coincidence)
+    if islands == "main_channel" and polygon.interiors:
+        c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
+    cuts = []
+    for point in points[:1:-1]:
+        before = len(c2)
+        c2, index = _insert_vertex(c2, point, coincidence)
+        cuts = [cut + (len(c2) - before if cut >= index else 0) for cut in cuts] + [index]
+    if cuts != sorted(cuts) or len(set(cuts)) != len(cuts) or (cuts and (cuts[0] == 0 or cuts[-1] == len(c2) - 1)):
+        raise IncirCuError("The split points could not be placed in order on the boundary with its islands.")
+    bounds = [0, *cuts, len(c2) - 1]
+    backwards = [c2[start : end + 1][::-1].copy() for start, end in zip(bounds[:-1], bounds[1:])]
+    return [np.asarray(c1, dtype=float)] + backwards[::-1]
+
+
+def _complement(chains, i):
+    """Return ``D_i``: the other chains from ``p_i`` backwards to ``p_{i+1}``, as one chain."""
+    k = len(chains)
+    return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
+
+
+def _vertex_labels(result, i, boundary):
+    """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
+
+    The feet follow ``D_i`` along the line, so the labels only change ``k - 2`` times at most: they are
+    found by bisection (the nearest chain of a foot is computed for O(k log n) vertices, not all of them).
+    Labels that go back against ``D_i``'s order (a foot at the very junction) take the label before them.
+    """
+    k = len(boundary.chains)
+    feet = np.asarray(result.foot_b, dtype=float)
+    count = len(feet)
+    labels = np.full(count, -1)
+    labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
+    others = [j for j in range(k) if j != i]
+
+    def label(index):
+        if labels[index] < 0:
+            labels[index] = others[int(np.argmin([boundary.nearest(feet[index], j)[0] for j in others]))]
+        return labels[index]
+
+    spans = [(0, count - 1)]
+    while spans:
+        low, high = spans.pop()
+        if label(low) == label(high):
+            labels[low:high] = labels[low]
+        elif high - low > 1:
+            middle = (low + high) // 2
+            spans.extend([(low, middle), (middle, high)])
+    rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
+    return np.mod(i - 1 - rank, k)
+
+
+class _Boundary:
+    """The chains with spatial indices (built when first needed): exact distances and feet to each chain."""
+
+    def __init__(self, chains, extent):
+        self.chains = chains
+        self.indexed = [None] * len(chains)
+        self.extent = extent
+
+    def nearest(self, point, chain):
+        """Return the distance from ``point`` to chain ``chain`` and the foot there."""
+        if self.indexed[chain] is None:
+            self.indexed[chain] = IndexedPolyline(self.chains[chain])
+        distance, _, foot = self.indexed[chain].nearest(np.asarray(point, dtype=float)[None])
+        return float(distance[0]), foot[0]
+
+    def distances(self, point):
+        """Return the distance from ``point`` to every chain."""
+        return np.array([self.nearest(point, chain)[0] for chain in range(len(self.chains))])
+
+
+class _Junctions:
+    """Junctions keyed by their three chains, located once and shared by every branch ending there."""
+
+    def __init__(self, boundary):
+        self.boundary = boundary
+        self.by_chains = {}
+
+    def between(self, i, a, b, start, end, depth=0):
+        """Return the junctions on run ``i`` between a vertex labelled ``a`` and the next labelled ``b``.
+
+        Parameters
+        ----------
+        i, a, b : int
+            The run's chain and the labels on either side of the change.
+        start, end : ndarray of shape (2,)
+            The two vertices, CRS units.
+
+        Returns
+        -------
+        list of (tuple of int, ndarray of shape (2,), float)
+            Each junction's three chains (sorted), centre and radius, from ``a``'s side to ``b``'s.
+        """
+        key = tuple(sorted((i, a, b)))
+        if key not in self.by_chains:
+            centre = _newton_junction(self.boundary, key, start, end)
+            distances = self.boundary.distances(centre)
+            radius = float(np.mean(distances[list(key)]))
+            inside = [
+                m
+                for m in np.argsort(distances)
+                if m not in key and distances[m] < radius * (1.0 - EMPTY_CIRCLE_TOLERANCE)
+            ]
+            if inside:
+                between = _between_in_order(i, a, b, int(inside[0]), len(self.boundary.chains))
+                if between is None or depth > len(self.boundary.chains):
+                    raise IncirCuError(
+                        f"The junction near {format_point(centre)} could not be located: its circle holds another "
+                        "chain out of order. Move the split points farther out along the arms."
+                    )
+                return self.between(i, a, between, start, centre, depth + 1) + self.between(
+                    i, between, b, centre, end, depth + 1
+                )
+            self.by_chains[key] = (centre, radius)
+        centre, radius = self.by_chains[key]
+        return [(key, centre, radius)]
+
+
+def _between_in_order(i, a, b, m, k):
+    """Return ``m`` if it lies strictly between ``a`` and ``b`` in ``D_i``'s order, else None."""
+    rank = [(i - 1 - label) % k for label in (a, m, b)]
+    return m if rank[0] < rank[1] < rank[2] else None
+
+
+def _newton_junction(boundary, key, start, end):
+    """Locate the point equidistant from three chains by Newton's method on the exact distances.
+
+    The iteration starts midway between two run vertices on either side of the junction, then (when it
+    meets a singular step, e.g. from a point outside the region, or does not settle) at other points
+    between them.
+
+    Parameters
+    ----------
+    boundary : _Boundary
+    key : tuple of three int
+        The chains.
+    start, end : ndarray of shape (2,)
+        The two run vertices, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (2,)
+
+    Raises
+    ------
+    IncirCuError
+        When no start settles.
+    """
+    for fraction in (0.5, 0.25, 0.75, 0.0, 1.0):
+        found = _newton_from(boundary, key, start + fraction * (end - start))
+        if found is not None:
+            return found
+    raise IncirCuError(
+        f"The junction near {format_point(0.5 * (start + end))} could not be located: its circle touches a chain "
+        "at several places or a split point itself. Move the split points farther out along the arms."
+    )
+
+
+def _newton_from(boundary, key, x):
+    """Run Newton's method for :func:`_newton_junction` from ``x``; None when it does not settle."""
+    step_floor = 4.0 * float(np.spacing(np.max(np.abs(x)) + boundary.extent))
+
+    def residual(point):
+        near = [boundary.nearest(point, chain) for chain in key]
+        distances = np.array([d for d, _ in near])
+        return distances[0] - distances[1:], distances, np.array([foot for _, foot in near])
+
+    value, distances, feet = residual(x)
+    for _ in range(NEWTON_STEPS):
+        if np.any(distances <= 0.0):
+            return None
+        gradients = (x - feet) / distances[:, None]
+        try:
+            step = np.linalg.solve(gradients[0] - gradients[1:], -value)
+        except np.linalg.LinAlgError:
+            return None
+        for _ in range(40):
+            trial = residual(x + step)
+            if np.max(np.abs(trial[0])) < np.max(np.abs(value)) or np.hypot(*step) <= step_floor:
+                break
+            step = 0.5 * step
+        x = x + step
+        value, distances, feet = trial
+        if np.hypot(*step) <= step_floor:
+            return x
+    return x if np.max(np.abs(value)) <= JUNCTION_TOLERANCE * boundary.extent else None
+
+
+def _run_pieces(result, i, labels, junctions):
+    """Cut run ``i`` where its labels change and keep the pieces ``(i, j)`` with ``i < j``.
+
+    Returns
+    -------
+    list of dict
+        ``chains`` (i, j); ``ends``, two nodes, ``("leaf", m)`` for split point ``m`` (ring order) or
+        ``("junction", key)``; ``vertices``, ``radii``, ``foot_a`` (on ``C_i``), ``foot_b`` (on ``C_j``) of
+        the run's vertices on the piece, in run order (a junction is not among them).
+    """
+    k = len(junctions.boundary.chains)
+    arrays = {
+        "vertices": shapely.get_coordinates(result.line),
+        "radii": np.asarray(result.radii, dtype=float),
+        "foot_a": np.asarray(result.foot_a, dtype=float),
+        "foot_b": np.asarray(result.foot_b, dtype=float),
+    }
+    change = np.flatnonzero(labels[1:] != labels[:-1])
+    starts, stops = np.concatenate([[0], change + 1]), np.concatenate([change + 1, [len(labels)]])
+    node = ("leaf", i)
+    pieces = []
+    for first, stop in zip(starts, stops):
+        label = int(labels[first])
+        found = []
+        if stop < len(labels):
+            vertices = arrays["vertices"]
+            found = junctions.between(i, label, int(labels[stop]), vertices[stop - 1], vertices[stop])
+        end = ("junction", found[0][0]) if found else ("leaf", (i + 1) % k)
+        piece = {name: values[first:stop] for name, values in arrays.items()}
+        pieces.append({"chains": (i, label), "ends": (node, end), **piece})
+        for before, after in zip(found[:-1], found[1:]):
+            (shared,) = set(before[0]) & set(after[0]) - {i}
+            pieces.append(
+                {"chains": (i, shared), "ends": (("junction", before[0]), ("junction", after[0])), **_empty()}
+            )
+        if found:
+            node = ("junction", found[-1][0])
+    return [piece for piece in pieces if piece["chains"][0] < piece["chains"][1]]
+
+
+def _empty():
+    """Arrays of a piece with no run vertex (a branch shorter than the sampling)."""
+    return {"vertices": np.empty((0, 2)), "radii": np.empty(0), "foot_a": np.empty((0, 2)), "foot_b": np.empty((0, 2))}
+
+
+def _junction_clusters(junctions):
+    """Map each junction key to the key of its cluster (junctions within ``JUNCTION_TOLERANCE``)."""
+    keys = sorted(junctions.by_chains)
+    tolerance = JUNCTION_TOLERANCE * junctions.boundary.extent
+    cluster = {}
+    for key in keys:
+        centre = junctions.by_chains[key][0]
+        cluster[key] = next(
+            (cluster[other] for other in cluster if np.hypot(*(junctions.by_chains[other][0] - centre)) <= tolerance),
+            key,
+        )
+    return cluster
+
+
+def _end_of(node, junctions, cluster):
+    """Return a piece end as (graph node, centre or None for a leaf already among the vertices, radius)."""
+    kind, value = node
+    if kind == "leaf":
+        return ("leaf", value), None, 0.0
+    centre, radius = junctions.by_chains[cluster[value]]
+    return ("junction", cluster[value]), centre, radius
+
+
+def _piece_arrays(piece, ends, junctions):
+    """Vertices, radii and feet of a piece with its junction ends added (vertices at a junction dropped)."""
+    boundary = junctions.boundary
+    i, j = piece["chains"]
+    tolerance = JUNCTION_TOLERANCE * boundary.extent
+    keep = np.ones(len(piece["vertices"]), dtype=bool)
+    for _, centre, _ in ends:
+        if centre is not None:
+            keep &= np.hypot(*(piece["vertices"] - centre).T) > tolerance
+    parts = {name: [piece[name][keep]] for name in ("vertices", "radii", "foot_a", "foot_b")}
+    for position, (_, centre, radius) in enumerate(ends):
+        if centre is None:
+            continue
+        row = {
+            "vertices": centre[None],
+            "radii": np.array([radius]),
+            "foot_a": boundary.nearest(centre, i)[1][None],
+            "foot_b": boundary.nearest(centre, j)[1][None],
+        }
+        for name, value in row.items():
+            parts[name].insert(0 if position == 0 else len(parts[name]), value)
+    return {name: np.concatenate(values) for name, values in parts.items()}
+
+
+def _assemble(pieces, junctions, order):
+    """Turn the pieces of all runs into oriented branches and check that they form the expected tree.
+
+    Parameters
+    ----------
+    pieces : list of dict
+        See :func:`_run_pieces`.
+    junctions : _Junctions
+    order : list of int
+        Input index of each split point in ring order.
+
+    Returns
+    -------
+    branches : list of NetworkBranch
+    centres : ndarray of shape (m, 2)
+        The junctions the branches end at, CRS units.
+
+    Raises
+    ------
+    IncirCuError
+        When the branches are not a tree with one leaf at each split point and junctions of degree >= 3.
+    """
+    cluster = _junction_clusters(junctions)
+    branches, edges = [], []
+    for piece in pieces:
+        ends = [_end_of(node, junctions, cluster) for node in piece["ends"]]
+        if ends[0][0] == ends[1][0]:
+            continue
+        arrays = _piece_arrays(piece, ends, junctions)
+        if len(arrays["vertices"]) < 2:
+            raise IncirCuError("A branch of the network has fewer than 2 vertices; try a smaller spacing.")
+        right, left = piece["chains"]
+        if ends[0][0][0] == "junction" and ends[1][0][0] == "leaf":
+            ends = ends[::-1]
+            arrays = {name: values[::-1] for name, values in arrays.items()}
+            arrays["foot_a"], arrays["foot_b"] = arrays["foot_b"], arrays["foot_a"]
+            right, left = left, right
+        result = CenterlineResult(
+            line=LineString(arrays["vertices"]), radii=arrays["radii"], foot_a=arrays["foot_a"], foot_b=arrays["foot_b"]
+        )
+        point_of = [order[node[1]] if node[0] == "leaf" else None for node, _, _ in ends]
+        branches.append(NetworkBranch(result, point_of[0], point_of[1], right, left))
+        edges.append((ends[0][0], ends[1][0]))
+    _check_tree(edges, len(order))
+    used = sorted({node[1] for edge in edges for node in edge if node[0] == "junction"})
+    return branches, np.array([junctions.by_chains[key][0] for key in used]).reshape(-1, 2)
+
+
+def _check_tree(edges, k):
+    """Raise :class:`IncirCuError` unless the edges form a tree with leaves 0..k-1 and junctions of degree >= 3."""
+    degree = {}
+    for edge in edges:
+        for node in edge:
+            degree[node] = degree.get(node, 0) + 1
+    leaves = sorted(node[1] for node, count in degree.items() if node[0] == "leaf" and count == 1)
+    weak = [node for node, count in degree.items() if node[0] == "junction" and count < 3]
+    parent = {node: node for node in degree}
+
+    def root(node):
+        while parent[node] != node:
+            node = parent[node]
+        return node
+
+    for a, b in edges:
+        parent[root(a)] = root(b)
+    connected = len({root(node) for node in degree}) == 1
+    if leaves != list(range(k)) or weak or not connected or len(edges) != len(degree) - 1:
+        raise IncirCuError(
+            f"The network found is not a tree with one end at each of the {k} split points "
+            f"({len(edges)} branches, {len(leaves)} ends, {len(weak)} junctions of degree below 3); "
+            "a split point may lie on a junction's circle: move the split points farther out along the arms."
+        )

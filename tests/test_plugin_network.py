@@ -1,0 +1,170 @@
+"""``incircu:polygonnetwork`` through ``processing.run`` on memory layers built from the analytic network shapes.
+
+Expected values come from the shapes (``tests/support/network_cases.py``): the T junction's centre and width
+in closed form, the k = 2 case from ``incircu:polygoncenterline`` on the same input.
+"""
+
+import numpy as np
+import processing
+import pytest
+import shapely
+import shapely.affinity
+from qgis.core import QgsFeature, QgsGeometry, QgsProcessingFeedback, QgsVectorLayer, QgsWkbTypes
+from shapely.geometry import Point, Polygon, box
+
+from tests.support import network_cases as cases
+
+
+class RecordingFeedback(QgsProcessingFeedback):
+    """Feedback that keeps the warnings an algorithm pushes."""
+
+    def __init__(self):
+        super().__init__()
+        self.warnings = []
+
+    def pushWarning(self, message):
+        self.warnings.append(message)
+
+    def reportError(self, message, fatalError=False):
+        self.warnings.append(message)
+
+
+def memory_layer(kind, crs, rows, fields="name:string"):
+    """A memory layer of shapely geometries with one ``name`` attribute each (``rows``: (geometry, name))."""
+    layer = QgsVectorLayer(f"{kind}?crs={crs}&field={fields}", kind, "memory")
+    features = []
+    for geometry, name in rows:
+        feature = QgsFeature(layer.fields())
+        feature.setGeometry(QgsGeometry.fromWkt(geometry.wkt))
+        feature.setAttributes([name])
+        features.append(feature)
+    assert layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def split_layer(points, crs="EPSG:2180", names=None):
+    """A point layer of split points named ``names`` (default A, B, C, ...)."""
+    names = names or [chr(ord("A") + i) for i in range(len(points))]
+    return memory_layer("Point", crs, [(Point(p), name) for p, name in zip(points, names)])
+
+
+def run(parameters, algorithm="polygonnetwork"):
+    """Run an algorithm with a memory output; return (results, feedback)."""
+    feedback = RecordingFeedback()
+    results = processing.run("incircu:" + algorithm, {"OUTPUT": "memory:", **parameters}, feedback=feedback)
+    return results, feedback
+
+
+def as_shapely(geometry):
+    """2-D Shapely copy of a QGIS geometry."""
+    flat = QgsGeometry(geometry)
+    flat.get().dropMValue()
+    return shapely.from_wkb(bytes(flat.asWkb()))
+
+
+def test_t_junction_branches_carry_their_ends_chains_and_widths(provider):
+    polygon, caps, (junction,), radius = cases.t_junction()
+    results, feedback = run(
+        {
+            "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "T")]),
+            "SPLIT_POINTS": split_layer(caps, names=["west", "east", "north"]),
+            "SPLIT_ID_FIELD": "name",
+            "SPACING": 0.25,
+        }
+    )
+    output = results["OUTPUT"]
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert results["CENTERLINE_COUNT"] == 3
+    assert QgsWkbTypes.hasM(output.wkbType())
+    branches = {feature["from_point"]: feature for feature in output.getFeatures()}
+    assert set(branches) == {"west", "east", "north"}
+    extent = 100.0
+    for name, cap in zip(("west", "east", "north"), caps):
+        branch = branches[name]
+        assert branch["name"] == "T" and branch["to_point"] == "junction"
+        line = as_shapely(branch.geometry())
+        assert np.hypot(*(np.asarray(line.coords[0]) - cap)) <= 1e-9 * extent
+        assert np.hypot(*(np.asarray(line.coords[-1]) - junction)) <= 1e-9 * extent
+        m = [vertex.m() for vertex in branch.geometry().vertices()]
+        assert m[0] == 0.0 and m[-1] == pytest.approx(2.0 * radius, abs=1e-9 * extent)
+        assert branch["length"] == pytest.approx(line.length, rel=1e-12)
+        assert branch["width_max"] == pytest.approx(2.0 * radius, abs=1e-9 * extent)
+        assert branch["n_vertices"] == len(line.coords)
+    # Walking from the west end to the junction, the straight road's bottom is on the right: the chain from
+    # the west split point counter-clockwise to the east one.
+    assert (branches["west"]["right_chain"], branches["west"]["left_chain"]) == ("west-east", "north-west")
+    assert (branches["north"]["right_chain"], branches["north"]["left_chain"]) == ("north-west", "east-north")
+
+
+def test_two_split_points_give_the_polygon_centerline(provider):
+    polygon, caps = cases.reservoir()
+    inputs = {
+        "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "reservoir")]),
+        "SPLIT_POINTS": split_layer(caps[:2]),
+    }
+    network, _ = run(inputs)
+    centerline, _ = run(inputs, "polygoncenterline")
+    (branch,) = network["OUTPUT"].getFeatures()
+    (line,) = centerline["OUTPUT"].getFeatures()
+    assert as_shapely(branch.geometry()).equals_exact(as_shapely(line.geometry()), 0.0)
+    for field in ("length", "width_min", "width_mean", "width_max", "n_vertices"):
+        assert branch[field] == line[field]
+
+
+def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provider):
+    y_polygon, y_caps, _, _ = cases.symmetric_y(half_width=8.0)
+    island = box(-2.0, 30.0, 4.0, 45.0)
+    with_island = Polygon(y_polygon.exterior.coords, [island.exterior.coords])
+    lonely = box(500.0, 0.0, 600.0, 10.0)
+    results, feedback = run(
+        {
+            "INPUT": memory_layer("Polygon", "EPSG:2180", [(with_island, "Y"), (lonely, "one point")]),
+            "SPLIT_POINTS": split_layer([*y_caps, (500.0, 5.0)]),
+        }
+    )
+    assert results["CENTERLINE_COUNT"] == 3
+    assert results["SKIPPED_COUNT"] == 1
+    assert any("has 1 split points" in warning for warning in feedback.warnings), feedback.warnings
+    ids = {feature["from_point"] for feature in results["OUTPUT"].getFeatures()}
+    assert ids == {"1", "2", "3"}
+    for feature in results["OUTPUT"].getFeatures():
+        assert not as_shapely(feature.geometry()).intersects(island)
+
+
+def test_geographic_layer_is_computed_in_metres(provider):
+    polygon, caps, _, radius = cases.symmetric_y()
+    # At the equator a degree of longitude is 111,320 m and a degree of latitude 110,574 m (WGS 84): a Y
+    # 120 m across around (10 E, 0 N), in degrees; lengths then agree to the ellipsoid's variation, << 0.5 %.
+    east, north = 1.0 / 111_320.0, 1.0 / 110_574.0
+    in_degrees = shapely.affinity.translate(shapely.affinity.scale(polygon, east, north, origin=(0, 0)), 10.0, 0.0)
+    points = [(10.0 + x * east, y * north) for x, y in caps]
+    results, feedback = run(
+        {
+            "INPUT": memory_layer("Polygon", "EPSG:4326", [(in_degrees, "Y")]),
+            "SPLIT_POINTS": split_layer(points, crs="EPSG:4326"),
+            "SNAP_TOLERANCE": 0.01,
+        }
+    )
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    for feature in results["OUTPUT"].getFeatures():
+        assert feature["length"] == pytest.approx(60.0, rel=5e-3)
+        assert feature["width_max"] == pytest.approx(2.0 * radius, rel=5e-3)
+
+
+def test_branches_of_a_geopackage_feature_get_their_own_fid(provider, tmp_path):
+    # A GeoPackage's fid is unique: only the first branch of a feature keeps the input's fid.
+    polygon, caps, _, _ = cases.t_junction()
+    written = processing.run(
+        "native:reprojectlayer",
+        {
+            "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "T")]),
+            "TARGET_CRS": "EPSG:2180",
+            "OUTPUT": str(tmp_path / "in.gpkg"),
+        },
+    )["OUTPUT"]
+    target = tmp_path / "network.gpkg"
+    results, feedback = run({"INPUT": written, "SPLIT_POINTS": split_layer(caps), "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 3, feedback.warnings
+    output = QgsVectorLayer(str(target), "network", "ogr")
+    assert output.featureCount() == 3
+    assert len({feature["fid"] for feature in output.getFeatures()}) == 3
