@@ -158,6 +158,16 @@ def test_core_keywords_are_forwarded_only_when_given(monkeypatch):
     assert len(result) == 1
 
 
+def test_guide_lines_choose_the_ends_in_any_crs():
+    # A channel with a side arm: the guide runs along the main channel, so the line must follow it.
+    channel = shapely.union_all([box(0, 0, 300, 20), box(140, 20, 160, 400)])
+    guide = geopandas.GeoSeries([LineString([(0, 10), (300, 10)]), Point(0, 0)], crs="EPSG:2180")
+    result = centerlines(geopandas.GeoSeries([channel], crs="EPSG:2180"), guide=guide.to_crs("EPSG:4326"))
+    assert result["ends_from"].iloc[0] == "guide" and pandas.isna(result["error"].iloc[0])
+    line = result.geometry.iloc[0]
+    assert line.length == pytest.approx(300.0, rel=0.1) and line.bounds[3] < 20.0
+
+
 def test_an_unexpected_exception_in_one_row_is_reported_there(monkeypatch):
     from incircu_plugin.core import frames
 

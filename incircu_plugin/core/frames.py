@@ -207,8 +207,10 @@ def _row_centerline(shape, points, guides, crs_name, snap_tolerance, options):
     local = shape if projection is None else projection.to_local(shape)
     candidates = [np.asarray(point.coords[0]) for point in points]
     extra = {}
-    if guides:
-        extra["guide"] = MultiLineString([part for guide in guides for part in shapely.get_parts(guide)])
+    guide_lines = [part for guide in guides for part in shapely.get_parts(guide) if part.geom_type == "LineString"]
+    guide_lines = [line for line in guide_lines if not line.is_empty]
+    if guide_lines:
+        extra["guide"] = MultiLineString(guide_lines)
     if projection is not None:
         candidates = [projection.to_local(point) for point in candidates]
         extra = {name: projection.to_local(value) for name, value in extra.items()}
