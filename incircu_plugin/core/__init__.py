@@ -21,7 +21,7 @@ from .api import (
 )
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends
-from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
+from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
 from .frames import centerlines
 from .geodesy import LocalProjection
@@ -49,6 +49,7 @@ __all__ = [
     "centerline_from_chains",
     "centerlines",
     "default_spacing",
+    "default_tolerance",
     "find_ends",
     "incircle_polygons",
     "lines_centerline",

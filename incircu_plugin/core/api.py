@@ -34,6 +34,7 @@ def polygon_centerline(
     *,
     spacing=None,
     samples_per_chain=None,
+    tolerance=None,
     snap_tolerance=None,
     islands="main_channel",
     end_rule="main_stem",
@@ -49,9 +50,13 @@ def polygon_centerline(
     split_points : sequence of two Point or (x, y), optional
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`find_ends`.
     spacing : float, optional
-        Distance between samples along the boundary, CRS units; None or 0: :func:`default_spacing`.
+        Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
+        adaptive sampling (the default; what a user wants unless reproducing the paper).
     samples_per_chain : int, optional
-        Instead of ``spacing``, this many equidistant samples on each side.
+        Fixed sampling with this many equidistant samples on each side.
+    tolerance : float, optional
+        Adaptive sampling: largest distance between the line and the exact medial axis, CRS units; None
+        or 0: the typical width / 200 (:func:`default_tolerance`).
     snap_tolerance : float, optional
         Largest distance, CRS units, between a split point and the exterior ring; default ``1e-6`` of
         the polygon's extent.
@@ -106,7 +111,9 @@ def polygon_centerline(
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
-    result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+    result = centerline_from_chains(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    )
     values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
     return PolygonCenterlineResult(**values)
@@ -125,7 +132,7 @@ class PolygonCenterlineResult(CenterlineResult):
     ends_from: str = "split_points"
 
 
-def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):
+def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
     """Centerline between two lines, such as the two banks of a river.
 
     The lines are oriented so their starts face each other; the centerline runs from the midpoint of the
@@ -135,7 +142,7 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     ----------
     line_a, line_b : LineString or array_like of shape (n, 2)
         The two lines, CRS units; they must not cross or touch.
-    spacing, samples_per_chain, progress
+    spacing, samples_per_chain, tolerance, progress
         See :func:`polygon_centerline`.
 
     Returns
@@ -154,7 +161,9 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     ((0.0, 4.0), 4.0)
     """
     c1, c2 = orient_bank_lines(line_a, line_b)
-    return centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+    return centerline_from_chains(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    )
 
 
 @dataclass(frozen=True)
@@ -250,7 +259,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
     **options
-        Passed to :func:`polygon_centerline` (``spacing``, ``islands``, ``progress``, ...).
+        Passed to :func:`polygon_centerline` (``spacing``, ``tolerance``, ``islands``, ``progress``, ...).
 
     Returns
     -------
