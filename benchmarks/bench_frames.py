@@ -1,7 +1,7 @@
 """Throughput of the data-frame API on dask: features per second on 1 and 2 worker processes, and the cost
 per feature against the QGIS algorithm on the same layer; prints a Markdown table.
 
-Usage: ``.venv/bin/python benchmarks/bench_frames.py [--count 10000] [--quick] [--no-qgis]``
+Usage: ``.venv/bin/python benchmarks/bench_frames.py [--count 10000] [--spacing 20] [--quick] [--no-qgis]``
 (the project's venv: it has geopandas, dask-geopandas and distributed from ``requirements-dev.txt``).
 
 The layer is ``tests/support/frame_cases.channels_lonlat``: small bent channels in EPSG:4326, split points at their
@@ -37,6 +37,7 @@ import numpy as np
 from incircu_plugin.core import centerlines
 from tests.support import frame_cases
 
+#: Default boundary sampling, metres (the paper's fixed sampling); ``--spacing 0`` takes the core's default.
 SPACING = 20.0
 PARTITIONS = 16
 #: Rows of the small layer whose qgis_process time is taken as QGIS's start-up.
@@ -50,14 +51,14 @@ def make_layer(count, seed=12):
     return layer, geopandas.GeoDataFrame(geometry=split_points, crs="EPSG:4326")
 
 
-def time_serial(layer, ends):
+def time_serial(layer, ends, spacing):
     """Seconds for ``centerlines`` on the whole frame in this process, and the result."""
     started = time.perf_counter()
-    result = centerlines(layer, ends, spacing=SPACING)
+    result = centerlines(layer, ends, spacing=spacing)
     return time.perf_counter() - started, result
 
 
-def time_dask(layer, ends, workers):
+def time_dask(layer, ends, workers, spacing):
     """Seconds for the lazy ``centerlines`` on a LocalCluster of ``workers`` processes, and the result."""
     import dask_geopandas
     import distributed
@@ -71,9 +72,9 @@ def time_dask(layer, ends, workers):
         distributed.Client(cluster) as client,
     ):
         client.run(_import_core)
-        centerlines(frame.head(4 * workers, npartitions=-1, compute=False), ends, spacing=SPACING).compute()
+        centerlines(frame.head(4 * workers, npartitions=-1, compute=False), ends, spacing=spacing).compute()
         started = time.perf_counter()
-        result = centerlines(frame, ends, spacing=SPACING).compute()
+        result = centerlines(frame, ends, spacing=spacing).compute()
         return time.perf_counter() - started, result
 
 
@@ -81,7 +82,7 @@ def _import_core():
     import incircu_plugin.core  # noqa: F401 - warm-up on a worker
 
 
-def time_qgis(layer, ends, work_dir):
+def time_qgis(layer, ends, spacing, work_dir):
     """Seconds per feature of ``incircu:polygoncenterline`` in ``qgis_process``, net of its start-up."""
     executable = shutil.which("qgis_process.bin") or shutil.which("qgis_process")
     if executable is None:
@@ -117,7 +118,7 @@ def time_qgis(layer, ends, work_dir):
             f"INPUT={work_dir / f'{name}.geojson'}",
             f"SPLIT_POINTS={work_dir / 'ends.geojson'}",
             "SNAP_TOLERANCE=1",
-            f"SPACING={SPACING}",
+            f"SPACING={spacing or 0}",
             f"OUTPUT={work_dir / f'{name}-out.gpkg'}",
         )
         seconds[name] = time.perf_counter() - started
@@ -137,27 +138,30 @@ def same_results(one, other):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count", type=int, default=10_000, help="channels in the layer")
+    parser.add_argument("--spacing", type=float, default=SPACING, help="metres; 0: the core's default sampling")
     parser.add_argument("--quick", action="store_true", help="1,000 channels (a smoke run)")
     parser.add_argument("--no-qgis", action="store_true", help="skip the qgis_process row")
     arguments = parser.parse_args(argv)
     count = 1_000 if arguments.quick else arguments.count
+    spacing = arguments.spacing or None
     layer, ends = make_layer(count)
     load_before = os.getloadavg()[0]
     rows = []
-    serial_seconds, serial = time_serial(layer, ends)
+    serial_seconds, serial = time_serial(layer, ends, spacing)
     rows.append(("centerlines, GeoPandas, this process", serial_seconds, True))
     dask_seconds = {}
     for workers in (1, 2):
-        dask_seconds[workers], result = time_dask(layer, ends, workers)
+        dask_seconds[workers], result = time_dask(layer, ends, workers, spacing)
         name = f"centerlines, dask-geopandas, {workers} worker process{'es' if workers > 1 else ''}"
         rows.append((name, dask_seconds[workers], same_results(result, serial)))
     qgis_note = ""
     if not arguments.no_qgis:
         with tempfile.TemporaryDirectory() as work_dir:
-            per_feature, seconds = time_qgis(layer, ends, Path(work_dir))
+            per_feature, seconds = time_qgis(layer, ends, spacing, Path(work_dir))
         rows.append(("incircu:polygoncenterline, qgis_process (net of start-up)", per_feature * count, None))
         qgis_note = f"qgis_process: {seconds['layer']:.1f} s on the layer, {seconds['small']:.1f} s on {SMALL} rows."
-    print(f"{count:,} channels (EPSG:4326), spacing {SPACING:g} m, {PARTITIONS} partitions, {os.cpu_count()} cores\n")
+    sampling = f"spacing {spacing:g} m" if spacing else "the core's default sampling"
+    print(f"{count:,} channels (EPSG:4326), {sampling}, {PARTITIONS} partitions, {os.cpu_count()} cores\n")
     print("| run | seconds | features/s | ms per feature | × serial cost | same as serial |")
     print("|---|---:|---:|---:|---:|---|")
     for name, seconds, same in rows:
