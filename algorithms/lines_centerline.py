@@ -81,7 +81,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             ),
             self.tr("Optional; required together with 'Pairing field of the first lines'."),
         )
-        self.add_spacing_parameter()
+        self.add_sampling_parameters()
         self.add_result_parameters()
 
     def processAlgorithm(self, parameters, context, feedback):
@@ -95,7 +95,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             raise QgsProcessingException(
                 self.tr("Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).")
             )
-        spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
+        sampling = self.sampling_options(parameters, context)
         crs = source_a.sourceCrs()
         run.open_outputs(source_a.fields(), crs, multi=False)
 
@@ -139,7 +139,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                 run.core.lines_centerline,
                 run.frame.to_core(line_a),
                 run.frame.to_core(line_b),
-                spacing=spacing,
+                **sampling,
             )
             run.write(first, [] if result is None else [(0, result)])
         for key, (first, _) in groups_b.items():

@@ -78,7 +78,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
-        self.add_spacing_parameter()
+        self.add_sampling_parameters()
         self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: the line never crosses an island and goes round it on the "
@@ -129,7 +129,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
             split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
+        sampling = self.sampling_options(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
@@ -160,7 +160,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 shape,
                 candidates or None,
                 snap_tolerance=snap_tolerance or None,
-                spacing=spacing,
+                **sampling,
                 islands=islands,
                 end_rule=end_rule,
                 guide=guide,

@@ -84,7 +84,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
-        self.add_spacing_parameter()
+        self.add_sampling_parameters()
         self.add_islands_parameter(
             self.tr(
                 "Pass through the main channel: no branch crosses an island; each island belongs to the chain it "
@@ -116,7 +116,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         id_field = self.parameterAsString(parameters, self.SPLIT_ID_FIELD, context)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
+        sampling = self.sampling_options(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
@@ -134,7 +134,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 run.frame.to_core(geometry),
                 candidates,
                 snap_tolerance=snap_tolerance or None,
-                spacing=spacing,
+                **sampling,
                 islands=islands,
             )
             several = len(outcomes or ()) > 1

@@ -83,3 +83,42 @@ def outline_cases(with_oracle=True):
             case.extra["target_length"] = medial.length
         cases.append(case)
     return cases
+
+
+def _fine_incircu_reference(polygon, ends, width):
+    """Distance to IncirCu's line at a fixed spacing of width/200: the reference where the oracle cannot run."""
+    from metrics import NearestDistance
+
+    from incircu_plugin.core import polygon_centerline
+
+    return NearestDistance(polygon_centerline(polygon, ends, spacing=width / 200.0).line)
+
+
+def river_cases(count, seed, with_reference=True):
+    """The layer of :mod:`rivers` as benchmark cases, split at the caps' midpoints.
+
+    The reference axis is the oracle's target set between the two chains (islands spliced in as IncirCu
+    does); where the oracle rejects the chains (the slits of zero width to islands touch), it is IncirCu's
+    own line at a fixed spacing of width/200 (``axis_kind`` ``"IncirCu w/200"``).
+    """
+    from rivers import river_layer
+
+    from incircu_plugin.core import split_polygon
+    from incircu_plugin.core.islands import bridge_islands
+
+    cases = []
+    for river in river_layer(count, seed):
+        case = Case(name=f"river {river.index}", polygon=river.polygon, ends=river.ends, width=river.width)
+        if with_reference:
+            chain_a, chain_b = split_polygon(river.polygon, river.ends)
+            holes = [shapely.get_coordinates(ring) for ring in river.polygon.interiors]
+            if holes:
+                chain_a, chain_b = bridge_islands(chain_a, chain_b, holes)
+            try:
+                case.axis_distance = oracle.MedialOracle(chain_a, chain_b, region=river.polygon).distance
+                case.axis_kind = "oracle"
+            except ValueError:
+                case.axis_distance = _fine_incircu_reference(river.polygon, river.ends, river.width)
+                case.axis_kind = "IncirCu w/200"
+        cases.append(case)
+    return cases

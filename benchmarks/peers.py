@@ -9,9 +9,11 @@ the same rule: a tenth of the polygon's mean width ``2 * area / perimeter``. pyg
 already relative to the width; SFCGAL has no parameter.
 """
 
+import inspect
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -76,12 +78,47 @@ def mean_width(polygon):
     return 2.0 * polygon.area / polygon.length
 
 
+def core_accepts(keyword):
+    """Whether ``polygon_centerline`` of the checked-out core takes ``keyword`` (``tolerance`` after issue 9)."""
+    from incircu_plugin.core import polygon_centerline
+
+    return keyword in inspect.signature(polygon_centerline).parameters
+
+
+def incircu_options(case, tolerance=None):
+    """Keyword arguments of the core for ``case``: its spacing, and ``tolerance`` (CRS units) when the core has
+    that keyword (before issue 9's engine it has not, and the call runs at the default)."""
+    options = {"spacing": case.spacing}
+    if tolerance is not None and core_accepts("tolerance"):
+        options["tolerance"] = tolerance
+    return options
+
+
 def run_incircu(case):
     """IncirCu through the geometry core, split at the case's two ends (spacing: core default)."""
     from incircu_plugin.core import polygon_centerline
 
-    result = polygon_centerline(case.polygon, [case.ends[0], case.ends[1]], spacing=case.spacing)
+    result = polygon_centerline(case.polygon, [case.ends[0], case.ends[1]], **incircu_options(case))
     return result.line
+
+
+#: Tolerance of the fine IncirCu row of the layer benchmark, × the case width.
+FINE_TOLERANCE = 1e-3
+
+
+def run_incircu_fine(case):
+    """IncirCu through the geometry core at ``tolerance`` = ``FINE_TOLERANCE`` × width (when the core has it)."""
+    from incircu_plugin.core import polygon_centerline
+
+    options = incircu_options(case, tolerance=FINE_TOLERANCE * case.width)
+    return polygon_centerline(case.polygon, [case.ends[0], case.ends[1]], **options).line
+
+
+def run_incircu_automatic_ends(case):
+    """IncirCu through the geometry core, ends found by the core (no split points)."""
+    from incircu_plugin.core import polygon_centerline
+
+    return polygon_centerline(case.polygon, **incircu_options(case)).line
 
 
 def run_pygeoops(case):
@@ -126,6 +163,44 @@ def run_sfcgal_straight_skeleton(case):
     return _from_sfcgal(_to_sfcgal(case.polygon).straight_skeleton())
 
 
+class QgisProcess:
+    """``qgis_process.bin`` in an isolated profile, offscreen, with IncirCu (this checkout) on its plugin path and
+    Shapely for QGIS's Python (``.venv/qgis-site``, built by ``make setup``) on its ``PYTHONPATH``."""
+
+    def __init__(self, work_dir, plugins=()):
+        self.work_dir = Path(work_dir)
+        config_dir = self.work_dir / "qgis-profile"
+        plugin_dir = self.work_dir / "plugins"
+        config_dir.mkdir(parents=True, exist_ok=True)
+        plugin_dir.mkdir(exist_ok=True)
+        if not (plugin_dir / "incircu").exists():
+            (plugin_dir / "incircu").symlink_to(REPO_ROOT, target_is_directory=True)
+        self.env = dict(os.environ, QT_QPA_PLATFORM="offscreen", QGIS_CUSTOM_CONFIG_PATH=str(config_dir),
+                        QGIS_PLUGINPATH=str(plugin_dir), PYTHONPATH=str(REPO_ROOT / ".venv" / "qgis-site"))
+        for plugin in plugins:
+            self.call(["plugins", "enable", plugin])
+
+    def call(self, arguments, timeout=900):
+        """Run ``qgis_process.bin *arguments``; its stdout, or RuntimeError with its stderr when it fails.
+
+        Past ``timeout`` seconds the call and everything it started (GRASS) are killed and
+        ``subprocess.TimeoutExpired`` is raised.
+        """
+        process = subprocess.Popen(
+            [QGIS_PROCESS, *arguments], env=self.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+            start_new_session=True,
+        )
+        try:
+            stdout, stderr = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.communicate()
+            raise
+        if process.returncode != 0:
+            raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {stderr[-2000:]}")
+        return stdout
+
+
 class GrassRunner:
     """GRASS ``v.voronoi.skeleton -s thin=-1`` through ``qgis_process`` (provider grass7, QGIS 3.22).
 
@@ -136,19 +211,8 @@ class GrassRunner:
 
     def __init__(self, work_dir):
         self.work_dir = Path(work_dir)
-        self.config_dir = self.work_dir / "qgis-profile"
-        self.config_dir.mkdir(parents=True, exist_ok=True)
-        self.env = dict(os.environ, QT_QPA_PLATFORM="offscreen", QGIS_CUSTOM_CONFIG_PATH=str(self.config_dir))
-        self._call(["plugins", "enable", "grassprovider"])
+        self._call = QgisProcess(self.work_dir, plugins=["grassprovider"]).call
         self._written = {}
-
-    def _call(self, arguments, timeout=900):
-        completed = subprocess.run(
-            [QGIS_PROCESS, *arguments], env=self.env, capture_output=True, text=True, timeout=timeout, check=False
-        )
-        if completed.returncode != 0:
-            raise RuntimeError(f"qgis_process {' '.join(arguments[:2])} failed: {completed.stderr[-2000:]}")
-        return completed.stdout
 
     def startup(self):
         """One provider-loading ``qgis_process`` call that runs no algorithm (for the start-up cost)."""
@@ -190,6 +254,8 @@ class Tool:
     run: Callable
     single_line: bool
     note: str = ""
+    #: Runs another program (qgis_process): no memory cap on the child, which that program would inherit.
+    external: bool = False
 
 
 def peer_tools(grass_runner=None):
@@ -202,7 +268,7 @@ def peer_tools(grass_runner=None):
         Tool("SFCGAL straight skeleton", run_sfcgal_straight_skeleton, False, "straight_skeleton"),
     ]
     if grass_runner is not None:
-        tools.append(Tool("GRASS v.voronoi.skeleton", grass_runner, True, "-s thin=-1 via qgis_process"))
+        tools.append(Tool("GRASS v.voronoi.skeleton", grass_runner, True, "-s thin=-1 via qgis_process", external=True))
     return tools
 
 

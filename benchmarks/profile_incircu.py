@@ -1,4 +1,6 @@
-"""Where IncirCu's time goes: cProfile of ``polygon_centerline`` on the meander and on a long river.
+"""Where IncirCu's time goes: cProfile of ``polygon_centerline`` on the meander, on the first rivers of the
+layer benchmark (one profile over all of them) and on a synthetic river of 10^4 vertices (at 10^5 the
+adaptive engine of issue 9 needed minutes and gigabytes; the scaling run and ``bench_core.py`` cover sizes).
 
 Writes ``benchmarks/results/profile.json`` (the top functions by own time, per input) for
 docs/benchmark.md, and prints the same.
@@ -17,26 +19,35 @@ if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
 import cases as bench_cases
+from harness import limit_memory
 from peers import run_incircu
 
 RESULTS_DIR = BENCH_DIR / "results"
 TOP_FUNCTIONS = 12
 
+#: Rivers of the layer benchmark profiled together.
+LAYER_RIVERS = 20
+
 #: Stages of ``polygon_centerline`` whose cumulative time is reported.
 STAGES = ("validate_polygon", "split_polygon", "centerline_from_chains")
 
 
-def profile(case, repeats):
-    """Median wall time of ``repeats`` runs, then the top functions of one profiled run."""
-    run_incircu(case)
+def profile(name, case_list, repeats):
+    """Median wall time of ``repeats`` runs over ``case_list``, then the top functions of one profiled run."""
+
+    def run_all():
+        for case in case_list:
+            run_incircu(case)
+
+    run_all()
     durations = []
     for _ in range(repeats):
         started = time.perf_counter()
-        run_incircu(case)
+        run_all()
         durations.append(time.perf_counter() - started)
     profiler = cProfile.Profile()
     profiler.enable()
-    run_incircu(case)
+    run_all()
     profiler.disable()
     stats = pstats.Stats(profiler)
     total = stats.total_tt
@@ -54,13 +65,21 @@ def profile(case, repeats):
         matching = [row["cumulative_seconds"] for row in rows if row["function"].endswith(f"({stage})")]
         if matching:
             stages[stage] = max(matching)
-    return {"case": case.name, "vertices": case.vertex_count, "median_seconds": statistics.median(durations),
+    vertices = sum(case.vertex_count for case in case_list)
+    return {"case": name, "vertices": vertices, "median_seconds": statistics.median(durations),
             "profiled_seconds": total, "stages": stages, "top": rows[:TOP_FUNCTIONS]}
 
 
 def main():
     RESULTS_DIR.mkdir(exist_ok=True)
-    results = [profile(bench_cases.meander_case(), repeats=7), profile(bench_cases.river_case(100_000), repeats=1)]
+    limit_memory()
+    meander, river = bench_cases.meander_case(), bench_cases.river_case(10_000)
+    rivers = bench_cases.river_cases(LAYER_RIVERS, seed=0, with_reference=False)
+    results = [
+        profile(meander.name, [meander], repeats=7),
+        profile(f"the layer's first {LAYER_RIVERS} rivers", rivers, repeats=1),
+        profile(river.name, [river], repeats=1),
+    ]
     for result in results:
         print(f"== {result['case']}: {result['median_seconds'] * 1e3:.1f} ms median, "
               f"{result['profiled_seconds'] * 1e3:.1f} ms under the profiler")

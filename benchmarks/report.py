@@ -51,3 +51,37 @@ def format_measurements(measurements, title):
             f"{_number(record['outside_rel'])} |"
         )
     return header + "\n".join(rows) + "\n"
+
+
+def layer_reference(layer, row):
+    """The IncirCu row a row's speed is compared with: the whole-layer ``qgis_process`` run for whole-layer
+    calls, the core with split points otherwise."""
+    name = "IncirCu (qgis_process)" if row["whole_layer_call"] else "IncirCu (core)"
+    return next((r for r in layer["rows"] if r["tool"] == name and r["polygons_per_second"]), None)
+
+
+def format_layer(layer):
+    """One Markdown table for one layer of the layer benchmark (``bench_layer.py``)."""
+    reference_kinds = ", ".join(f"{kind}: {count}" for kind, count in layer["reference"].items())
+    text = (
+        f"\n### {layer['name']}: {layer['polygons']:,} polygons, {layer['vertices']:,} boundary vertices"
+        f", {layer['islands']} islands (reference axis: {reference_kinds})\n\n"
+        "| tool | polygons/s | IncirCu × faster | time | done | one clean line | output v / polygon "
+        "| output v / input v | mean dev /w | median max dev /w | max dev /w | largest end gap /w | note |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n"
+    )
+    for row in layer["rows"]:
+        reference = layer_reference(layer, row)
+        rate = row["polygons_per_second"]
+        ratio = reference["polygons_per_second"] / rate if reference and rate else None
+        done = row["done"]
+        per_polygon = row["output_vertices"] / done if done else None
+        out_in = row["output_vertices"] / row["input_vertices"] if row["input_vertices"] else None
+        note = "; ".join(filter(None, [row["note"], *row["errors"]])).replace("|", "/")
+        text += (
+            f"| {row['tool']} | {_number(rate)} | {_number(ratio)} | {_seconds(row['seconds'])} | "
+            f"{done} of {row['polygons']} | {row['clean']} | {_number(per_polygon)} | {_number(out_in)} | "
+            f"{_number(row['mean_dev_rel'])} | {_number(row['median_max_dev_rel'])} | {_number(row['max_dev_rel'])} | "
+            f"{_number(row['max_end_gap_rel'])} | {note} |\n"
+        )
+    return text

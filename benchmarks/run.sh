@@ -8,10 +8,13 @@
 #     calls work unpatched; pygeoops, centerline, pysfcgal, pyvoronoi, matplotlib, shapely 2, pyproj).
 #   - benchmarks/.cache/world-atlas: the npm package `world-atlas` (Natural Earth countries, ISC licence),
 #     fetched with `npm pack`.
-# Then runs bench_compare.py (tools side by side + scaling), bench_paper.py (Fig. 4 and Table 1 of the
-# paper), profile_incircu.py, and writes docs/benchmark.md with the PNG plots in benchmarks/results/.
+# Then runs bench_compare.py (tools side by side + scaling), bench_layer.py (whole layers: 400 river-like
+# polygons and the real outlines, issue 9), bench_core.py (10^6 vertices end to end, peak memory),
+# bench_paper.py (Fig. 4 and Table 1 of the paper), profile_incircu.py, and writes docs/benchmark.md,
+# docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/;
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page.
 #
-# Options: --quick (no GRASS, smaller scaling range: a smoke run of a few minutes); --no-setup.
+# Options: --quick (no GRASS, 40 rivers, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
 
 BENCH_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -75,9 +78,17 @@ cd "$REPO_ROOT"
 PYTHON="$VENV/bin/python"
 started=$(date +%s)
 "$PYTHON" "$BENCH_DIR/bench_compare.py" $QUICK
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_layer.py" --count 40 --no-grass --no-outlines
+  "$PYTHON" "$BENCH_DIR/bench_core.py" --max-exponent 5 --repeats 5 --json "$BENCH_DIR/results/core.json"
+else
+  "$PYTHON" "$BENCH_DIR/bench_layer.py"
+  "$PYTHON" "$BENCH_DIR/bench_core.py" --json "$BENCH_DIR/results/core.json"
+fi
 "$PYTHON" "$BENCH_DIR/bench_paper.py"
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
+"$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
 # Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
 # (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
 if [ -x "$REPO_ROOT/.venv/bin/python" ]; then

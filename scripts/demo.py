@@ -15,8 +15,6 @@ SAMPLES = REPOSITORY / "scripts" / "data"
 OUT = REPOSITORY / "out"
 GEOPACKAGE = OUT / "demo.gpkg"
 PICTURE = OUT / "demo.png"
-#: Distance between centerline samples for the demo, metres (coarser than automatic, to keep the picture legible).
-SPACING = 4.0
 #: Distance between transects, metres.
 TRANSECT_INTERVAL = 60.0
 
@@ -69,7 +67,6 @@ def compute():
         "INPUT={}".format(SAMPLES / "river.geojson"),
         "SPLIT_POINTS={}".format(SAMPLES / "split_points.geojson"),
         "SNAP_TOLERANCE=1",
-        f"SPACING={SPACING}",
         "OUTPUT={}".format(table("centerlines")),
         "OUTPUT_CIRCLES={}".format(table("incircles")),
         "OUTPUT_TRANSECTS={}".format(table("transects")),
@@ -83,7 +80,6 @@ def compute():
         "LINES_B={}".format(SAMPLES / "banks_b.geojson"),
         "PAIR_FIELD_A=reach",
         "PAIR_FIELD_B=reach",
-        f"SPACING={SPACING}",
         "OUTPUT={}".format(table("bank_centerlines")),
     )
 

@@ -10,9 +10,9 @@ DATA = REPOSITORY / "tests" / "data"
 
 #: Algorithm, the input layer put in the project (selected by the dialog) and its distance parameters.
 DIALOGS = {
-    "polygoncenterline": ("river", ("SNAP_TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
-    "linescenterline": ("banks_a", ("SPACING", "TRANSECT_INTERVAL")),
-    "polygonnetwork": ("river", ("SNAP_TOLERANCE", "SPACING")),
+    "polygoncenterline": ("river", ("SNAP_TOLERANCE", "TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+    "linescenterline": ("banks_a", ("TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+    "polygonnetwork": ("river", ("SNAP_TOLERANCE", "TOLERANCE", "SPACING")),
 }
 
 

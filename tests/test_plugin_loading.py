@@ -93,6 +93,7 @@ def test_public_parameter_names(provider):
     polygon = registry.algorithmById("incircu:polygoncenterline")
     lines = registry.algorithmById("incircu:linescenterline")
     common = {
+        "TOLERANCE",
         "SPACING",
         "ADD_M",
         "OUTPUT",
@@ -162,8 +163,9 @@ def test_distances_carry_the_unit_of_the_input_layer(provider):
 
     registry = QgsApplication.processingRegistry()
     for algorithm_id, layer, distances in (
-        ("incircu:polygoncenterline", "INPUT", ("SNAP_TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
-        ("incircu:linescenterline", "LINES_A", ("SPACING", "TRANSECT_INTERVAL")),
+        ("incircu:polygoncenterline", "INPUT", ("SNAP_TOLERANCE", "TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+        ("incircu:linescenterline", "LINES_A", ("TOLERANCE", "SPACING", "TRANSECT_INTERVAL")),
+        ("incircu:polygonnetwork", "INPUT", ("SNAP_TOLERANCE", "TOLERANCE", "SPACING")),
     ):
         algorithm = registry.algorithmById(algorithm_id)
         for name in distances:

@@ -484,3 +484,33 @@ def test_curved_polygons_are_linearised(provider):
     # The ends were found on the linearised outline: the line runs along y = 5 over the straight part.
     assert line.length >= straight.boundingBox().width() - 10.0
     assert abs(line.interpolate(0.5, normalized=True).y - 5.0) <= 1e-6
+
+
+def test_tolerance_reaches_the_core(provider):
+    """``TOLERANCE`` is the core's ``tolerance`` (its bound is proven against the oracle in the core tests)."""
+    from incircu_plugin.core import polygon_centerline
+
+    polygon = fixture_polygon("Meander")
+    ends = [as_shapely(f.geometry()) for f in layer("split_points_2180.geojson").getFeatures()]
+    ends = [point for point in ends if point.distance(polygon.exterior) <= SNAP_TOLERANCE]
+    counts = []
+    for tolerance in (0.002 * RIVER_WIDTH, 0.02 * RIVER_WIDTH):
+        parameters = {
+            "INPUT": str(DATA / "river_2180.geojson"),
+            "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+            "SNAP_TOLERANCE": SNAP_TOLERANCE,
+            "TOLERANCE": tolerance,
+        }
+        results, feedback = run("polygoncenterline", parameters)
+        assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+        line = as_shapely(features_by(results["OUTPUT"], "name")["Meander"].geometry())
+        expected = polygon_centerline(polygon, ends, snap_tolerance=SNAP_TOLERANCE, tolerance=tolerance).line
+        assert line.hausdorff_distance(expected) <= 1e-6 * RIVER_WIDTH
+        counts.append(len(line.coords))
+    assert counts[1] < counts[0] <= 1.5 * len(polygon.exterior.coords)
+
+
+def test_tolerance_and_fixed_spacing_together_stop_the_run(provider):
+    parameters = {"INPUT": str(DATA / "river_2180.geojson"), "TOLERANCE": 0.1, "SPACING": 0.5}
+    with pytest.raises(QgsProcessingException, match="not both"):
+        run("polygoncenterline", parameters)
