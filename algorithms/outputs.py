@@ -14,7 +14,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QCoreApplication
 
-from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
+from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages, width_statistics
 from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
@@ -60,47 +60,6 @@ TRANSECT_FIELDS = (
     ("chainage", DOUBLE),
     ("width", DOUBLE),
 )
-
-
-def width_statistics(results):
-    """Summarise one or several centerline results for the attribute table.
-
-    The ends of a centerline lie on the outline, where the width is zero; statistics are taken over the
-    vertices with a positive width. The mean is over the length of the line between the first and the last
-    such vertex (vertices are denser near the ends and at branch points, so a plain vertex mean would be
-    biased).
-
-    Parameters
-    ----------
-    results : sequence of CenterlineResult
-        Results of the parts of one output feature.
-
-    Returns
-    -------
-    dict
-        ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
-        (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
-        ``automatic``, comma-separated; None for lines); lengths in working-frame units.
-    """
-    widths, integral, span = [], 0.0, 0.0
-    for result in results:
-        positive = result.widths > 0
-        width, chainage = result.widths[positive], vertex_chainages(result)[positive]
-        widths.extend(float(w) for w in width)
-        if len(width) > 1:
-            integral += float(np.sum(0.5 * (width[1:] + width[:-1]) * np.diff(chainage)))
-            span += float(chainage[-1] - chainage[0])
-    if widths and span <= 0:
-        integral, span = sum(widths), len(widths)
-    return {
-        "length": float(sum(result.length for result in results)),
-        "width_min": min(widths) if widths else None,
-        "width_mean": integral / span if widths else None,
-        "width_max": max(widths) if widths else None,
-        "n_vertices": int(sum(len(result.line.coords) for result in results)),
-        "ends_found": all(bool(result.ends_found) for result in results),
-        "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
-    }
 
 
 class CenterlineWriter:

@@ -1,7 +1,5 @@
 """Split points of the polygon algorithms: read once per run with their ids, found per polygon by a spatial index."""
 
-import math
-
 from qgis.core import QgsFeatureRequest, QgsGeometry, QgsPointXY, QgsRectangle, QgsSpatialIndex
 
 
@@ -9,8 +7,9 @@ def layer_margin(distance, geometry, geographic):
     """Return ``distance`` (metres when ``geographic``) as a safe bounding-box margin in layer units."""
     if not geographic:
         return distance
-    latitude = geometry.boundingBox().center().y()
-    return 2.0 * distance / (111_000.0 * max(math.cos(math.radians(latitude)), 0.01))
+    from ..incircu_plugin.core.geodesy import degrees_covering  # after require_core: the core needs Shapely
+
+    return float(degrees_covering(distance, geometry.boundingBox().center().y()))
 
 
 class SplitPoints:

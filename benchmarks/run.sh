@@ -89,4 +89,11 @@ fi
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
 "$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
+# Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
+# (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
+if [ -x "$REPO_ROOT/.venv/bin/python" ]; then
+  "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_frames.py" $QUICK
+else
+  echo "== bench_frames.py skipped: no $REPO_ROOT/.venv (run make setup)"
+fi
 echo "== benchmark done in $(( $(date +%s) - started )) s; see docs/benchmark.md"

@@ -15,6 +15,7 @@ import pytest
 import shapely
 
 from incircu_plugin.core import InvalidGeometryError, LocalProjection, polygon_centerline
+from incircu_plugin.core.geodesy import degrees_covering
 from tests.support import geometry_cases
 from tests.support.oracle import check_centerline
 
@@ -91,3 +92,13 @@ def test_projected_crs_is_refused_as_geographic():
 def test_empty_geometry_has_no_centre():
     with pytest.raises(InvalidGeometryError):
         LocalProjection.around(shapely.Polygon(), "EPSG:4326")
+
+
+@pytest.mark.parametrize("latitude", [0.0, 45.0, 70.0, -85.0])
+def test_degrees_covering_spans_the_distance_in_both_directions(latitude):
+    distance = 1500.0
+    margin = float(degrees_covering(distance, latitude))
+    projection = LocalProjection("EPSG:4326", 10.0, latitude)
+    east, north = projection.to_local(np.array([[10.0 + margin, latitude], [10.0, min(latitude + margin, 90.0)]]))
+    assert np.hypot(*east) >= distance
+    assert np.hypot(*north) >= distance

@@ -17,6 +17,8 @@ CORE = REPOSITORY / "incircu_plugin" / "core"
 
 #: Top-level packages the core may import besides the standard library and itself.
 ALLOWED_THIRD_PARTY = {"numpy", "shapely", "pyproj"}
+#: Optional packages of the data-frame API (``incircu[geopandas]``): imported only inside its functions.
+LAZY_OPTIONAL = {"geopandas", "pandas", "dask_geopandas"}
 FORBIDDEN = ("qgis", "PyQt5", "PyQt6", "sip", "processing", "osgeo")
 
 BLOCKED_RUN = textwrap.dedent(
@@ -87,11 +89,19 @@ def test_core_imports_with_qgis_set_to_none_in_sys_modules():
     assert completed.stdout.strip() == "core ok"
 
 
-def imported_top_level_names(path):
-    """Absolute top-level module names imported anywhere in a file (relative imports excluded)."""
+def imported_top_level_names(path, module_level_only=False):
+    """Absolute top-level module names imported in a file (relative imports excluded).
+
+    Anywhere in the file, or with ``module_level_only`` only outside function bodies (what importing it runs).
+    """
     tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+    in_functions = set()
+    if module_level_only:
+        for function in ast.walk(tree):
+            if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                in_functions.update(id(node) for node in ast.walk(function))
     names = set()
-    for node in ast.walk(tree):
+    for node in (node for node in ast.walk(tree) if id(node) not in in_functions):
         if isinstance(node, ast.Import):
             names.update(alias.name.split(".")[0] for alias in node.names)
         elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
@@ -112,8 +122,10 @@ def test_no_core_module_imports_qgis_or_anything_but_numpy_shapely_pyproj():
         names = imported_top_level_names(path)
         relative = path.relative_to(REPOSITORY)
         assert not names & set(FORBIDDEN), f"{relative} imports {sorted(names & set(FORBIDDEN))}"
-        outside = names - standard_library - ALLOWED_THIRD_PARTY
+        outside = names - standard_library - ALLOWED_THIRD_PARTY - LAZY_OPTIONAL
         assert not outside, f"{relative} imports {sorted(outside)}"
+        eager = imported_top_level_names(path, module_level_only=True) & LAZY_OPTIONAL
+        assert not eager, f"{relative} imports {sorted(eager)} on import; import them inside the function"
 
 
 def test_the_package_above_the_core_does_not_import_qgis_either():

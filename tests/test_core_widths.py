@@ -14,7 +14,14 @@ import shapely
 from shapely.geometry import LineString, Point
 
 from incircu_plugin.core import IncirCuError, lines_centerline, polygon_centerline
-from incircu_plugin.core.widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
+from incircu_plugin.core.widths import (
+    Incircle,
+    Transect,
+    incircle_polygons,
+    transects,
+    vertex_chainages,
+    width_statistics,
+)
 from tests.support import geometry_cases
 
 #: Relative accuracy (of the extent) of the engine's vertices and radii.
@@ -176,3 +183,24 @@ def test_open_mode_transects_reach_both_open_ends():
     tolerance = ENGINE_ACCURACY * 100.0
     assert [cut.chainage for cut in cuts] == pytest.approx([0.0, 25.0, 50.0, 75.0, 100.0], abs=tolerance)
     assert [cut.width for cut in cuts] == pytest.approx([gap] * 5, abs=tolerance)
+
+
+def test_width_statistics_of_a_rectangle_and_of_two_parts():
+    # A 100 x 10 rectangle between split points on its short sides: every inner incircle is 10 wide, the two
+    # ends on the outline have no width and are left out.
+    width, length = 10.0, 100.0
+    result = polygon_centerline(shapely.box(0, 0, length, width), [(0, 5), (length, 5)], spacing=1.0)
+    statistics = width_statistics([result])
+    assert statistics["length"] == pytest.approx(length, rel=1e-12)
+    for name in ("width_min", "width_mean", "width_max"):
+        assert statistics[name] == pytest.approx(width, rel=1e-9)
+    assert statistics["n_vertices"] == len(result.line.coords)
+    assert statistics["ends_found"] is False
+    # A second part twice as wide and as long: the lengths add up, the mean is weighted by length.
+    wide = polygon_centerline(shapely.box(0, 20, 2 * length, 20 + 2 * width))
+    both = width_statistics([result, wide])
+    assert both["length"] == pytest.approx(result.length + wide.length, rel=1e-12)
+    assert both["width_min"] == pytest.approx(width, rel=1e-9)
+    assert both["width_max"] == pytest.approx(2 * width, rel=1e-9)
+    assert width < both["width_mean"] < 2 * width
+    assert both["ends_found"] is False and width_statistics([wide])["ends_found"] is True

@@ -23,9 +23,10 @@ from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
+from .frames import centerlines
 from .geodesy import LocalProjection
 from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
-from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
+from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
     "END_RULES",
@@ -46,6 +47,7 @@ __all__ = [
     "SplitPointError",
     "Transect",
     "centerline_from_chains",
+    "centerlines",
     "default_spacing",
     "default_tolerance",
     "find_ends",
@@ -59,4 +61,5 @@ __all__ = [
     "split_polygon",
     "transects",
     "vertex_chainages",
+    "width_statistics",
 ]

@@ -107,3 +107,24 @@ def _transform_array(transformer, xy, direction):
     padded = np.concatenate([flat, flat[:1]]) if len(flat) == 1 else flat
     x, y = transformer.transform(padded[:, 0], padded[:, 1], direction=direction)
     return np.stack([x, y], axis=-1)[: len(flat)].reshape(np.shape(xy))
+
+
+def degrees_covering(distance, latitude):
+    """Return an angle, degrees, that spans at least ``distance`` metres east-west and north-south.
+
+    A safe bounding-box margin in longitude/latitude around a feature at ``latitude`` (poles capped at a
+    hundredth of the equator's scale).
+
+    Parameters
+    ----------
+    distance : float or ndarray
+        Metres.
+    latitude : float or ndarray
+        Degrees.
+
+    Returns
+    -------
+    float or ndarray
+        Degrees, twice the equatorial equivalent divided by the cosine of the latitude.
+    """
+    return 2.0 * distance / (111_000.0 * np.maximum(np.cos(np.radians(latitude)), 0.01))

@@ -1,6 +1,6 @@
-"""Width outputs of a centerline: its incircles as polygons, and cross-section transects at an interval.
+"""Width outputs of a centerline: its width statistics, its incircles as polygons, and cross-section transects.
 
-Both read a :class:`~.engine.CenterlineResult`: the centerline's vertices, the incircle radius of each
+Each reads a :class:`~.engine.CenterlineResult`: the centerline's vertices, the incircle radius of each
 vertex (the local half-width) and where each incircle touches the two sides (``foot_a``, ``foot_b``).
 *Chainage* is the distance along the centerline from its first vertex, CRS units.
 """
@@ -67,6 +67,47 @@ def vertex_chainages(result):
     """
     vertices = shapely.get_coordinates(result.line)
     return cumulative_lengths(vertices)
+
+
+def width_statistics(results):
+    """Summarise one or several centerline results for the attribute table.
+
+    The ends of a centerline lie on the outline, where the width is zero; statistics are taken over the
+    vertices with a positive width. The mean is over the length of the line between the first and the last
+    such vertex (vertices are denser near the ends and at branch points, so a plain vertex mean would be
+    biased).
+
+    Parameters
+    ----------
+    results : sequence of CenterlineResult
+        Results of the parts of one output feature.
+
+    Returns
+    -------
+    dict
+        ``length`` (sum), ``width_min``, ``width_mean``, ``width_max``, ``n_vertices`` (sum), ``ends_found``
+        (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
+        ``automatic``, comma-separated; None for lines); lengths in the results' CRS units.
+    """
+    widths, integral, span = [], 0.0, 0.0
+    for result in results:
+        positive = result.widths > 0
+        width, chainage = result.widths[positive], vertex_chainages(result)[positive]
+        widths.extend(float(w) for w in width)
+        if len(width) > 1:
+            integral += float(np.sum(0.5 * (width[1:] + width[:-1]) * np.diff(chainage)))
+            span += float(chainage[-1] - chainage[0])
+    if widths and span <= 0:
+        integral, span = sum(widths), len(widths)
+    return {
+        "length": float(sum(result.length for result in results)),
+        "width_min": min(widths) if widths else None,
+        "width_mean": integral / span if widths else None,
+        "width_max": max(widths) if widths else None,
+        "n_vertices": int(sum(len(result.line.coords) for result in results)),
+        "ends_found": all(bool(result.ends_found) for result in results),
+        "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
+    }
 
 
 def incircle_polygons(result, quad_segs=16):

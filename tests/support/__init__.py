@@ -2,7 +2,8 @@
 
 - :mod:`.geometry_cases`: analytic shapes with their exact axis (numpy and shapely only);
 - :mod:`.oracle`: the independent segment-Voronoi medial-axis oracle and exact distances;
-- :mod:`.project`: paths and metadata of the repository, for the plugin tests.
+- :mod:`.project`: paths and metadata of the repository, for the plugin tests;
+- :mod:`.frame_cases`: generated layers of many small channels in longitude/latitude (the data-frame API).
 
 Import as ``tests.support`` with the repository root on ``sys.path`` (pytest.ini's ``pythonpath``; the
 benchmarks put the root there themselves).

@@ -1,0 +1,240 @@
+"""Data-frame API: the centerline of every polygon of a GeoPandas or dask-geopandas frame.
+
+GeoPandas (and, for lazy frames, dask-geopandas) is imported only when :func:`centerlines` is called, so the
+core itself still needs nothing but numpy, Shapely and pyproj.
+
+Example
+-------
+>>> import geopandas
+>>> from shapely.geometry import box
+>>> rivers = geopandas.GeoSeries([box(0, 0, 100, 10), box(0, 0, 1, 1).buffer(-1)], crs="EPSG:2180")
+>>> result = centerlines(rivers)
+>>> round(float(result.loc[0, "width_max"]), 6), result.loc[1, "error"], result["error"].isna().tolist()
+(10.0, 'The polygon is empty or null.', [True, False])
+"""
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, MultiLineString, MultiPolygon
+
+from .api import multipolygon_centerlines
+from .errors import IncirCuError
+from .geodesy import LocalProjection, degrees_covering
+from .widths import width_statistics
+
+#: Columns of the result besides the geometry, with their pandas dtypes (widths and lengths in metres for
+#: geographic CRSs, CRS units otherwise). Nullable types, missing as ``<NA>``: GeoParquet keeps them.
+RESULT_COLUMNS = {
+    "length": "float64",
+    "width_min": "float64",
+    "width_mean": "float64",
+    "width_max": "float64",
+    "ends_found": "boolean",
+    "ends_from": "string",
+    "error": "string",
+}
+
+
+def centerlines(
+    data,
+    split_points=None,
+    *,
+    tolerance=None,
+    islands="main_channel",
+    end_rule=None,
+    guide=None,
+    spacing=None,
+    snap_tolerance=1.0,
+):
+    """Centerline of every (multi)polygon of a GeoSeries or GeoDataFrame, eager or dask-geopandas.
+
+    Each row is computed as the ``incircu:polygoncenterline`` algorithm computes a feature: every part of a
+    multipolygon takes the split points within ``snap_tolerance`` of its exterior ring (two: its ends; none:
+    found automatically); in a geographic CRS each feature is computed in a :class:`LocalProjection` centred
+    on it, so ``spacing``, ``tolerance``, ``snap_tolerance``, lengths and widths are in metres. A row that
+    fails gets its reason in ``error`` and never stops the others.
+
+    Parameters
+    ----------
+    data : geopandas.GeoSeries, geopandas.GeoDataFrame or dask_geopandas.GeoDataFrame
+        Polygons and multipolygons (the active geometry column), any CRS.
+    split_points : GeoSeries, GeoDataFrame or sequence of shapely geometries, optional
+        Every vertex is a candidate split point; reprojected to ``data``'s CRS when both have one; a sequence
+        without a CRS is taken in ``data``'s CRS. A dask frame is computed first (it should be small).
+    tolerance : float, optional
+        Largest distance between the line and the exact medial axis, CRS units (metres when geographic);
+        passed to the core only when given.
+    islands : {"main_channel", "ignore"}
+        See :func:`polygon_centerline`.
+    end_rule : str, optional
+        How automatic ends are chosen; passed to the core only when given.
+    guide : GeoSeries, GeoDataFrame or sequence of line geometries, optional
+        Guide lines; each feature gets those whose bounding box meets its own grown by a quarter of its
+        larger side (as the plugin), as one MultiLineString. Passed to the core only when one is near.
+    spacing : float, optional
+        Distance between boundary samples, CRS units (metres when geographic); None: automatic.
+    snap_tolerance : float
+        Largest distance between a split point and a part's exterior ring, CRS units (metres when
+        geographic); 0 or None: a millionth of the feature's size. Default 1, as in the plugin.
+
+    Returns
+    -------
+    geopandas.GeoDataFrame or dask_geopandas.GeoDataFrame
+        Same index and CRS as ``data`` (lazy for a dask frame). ``geometry``: a LineString per polygon, a
+        MultiLineString of the successful parts per multipolygon, None when nothing succeeded; ``length``,
+        ``width_min``, ``width_mean``, ``width_max`` (metres when geographic, NaN without a line);
+        ``ends_found`` (True when every part found its ends itself, <NA> without a line); ``ends_from``
+        (``split_points``, ``guide`` or ``automatic``, comma-separated over the parts); ``error`` (<NA>, or
+        the message of the core's typed error, prefixed with ``part i:`` for a part of a multipolygon).
+
+    Examples
+    --------
+    See the module docstring.
+    """
+    options = {"islands": islands, "spacing": spacing}
+    options.update(
+        {name: value for name, value in (("tolerance", tolerance), ("end_rule", end_rule)) if value is not None}
+    )
+    geometry = _geometry_of(data)
+    points = None if split_points is None else _coordinates_in(split_points, geometry.crs)
+    guides = None if guide is None else _geometries_in(guide, geometry.crs)
+    if hasattr(data, "npartitions"):
+        return data.map_partitions(
+            _frame_centerlines, points, guides, snap_tolerance, options, meta=_empty_result(data._meta)
+        )
+    return _frame_centerlines(data, points, guides, snap_tolerance, options)
+
+
+def _geometry_of(data):
+    """The active geometry column of a frame, or the series itself."""
+    return data if not hasattr(data, "columns") else data.geometry
+
+
+def _geometries_in(geometries, crs):
+    """Return the geometries of a (dask) GeoSeries/GeoDataFrame or a sequence as an array in ``crs``."""
+    if hasattr(geometries, "compute"):
+        geometries = geometries.compute()
+    if hasattr(geometries, "crs"):
+        geometries = _geometry_of(geometries)
+        if geometries.crs is not None and crs is not None and geometries.crs != crs:
+            geometries = geometries.to_crs(crs)
+        return np.asarray(geometries.values, dtype=object)
+    return np.asarray(list(geometries), dtype=object)
+
+
+def _coordinates_in(points, crs):
+    """Return every vertex of the split points as an ``(n, 2)`` array in ``crs``."""
+    return shapely.get_coordinates(_geometries_in(points, crs))
+
+
+def _empty_result(like):
+    """An empty result frame with the columns and dtypes of :data:`RESULT_COLUMNS` (a dask ``meta``)."""
+    import geopandas
+    import pandas
+
+    index = like.index[:0]
+    columns = {name: pandas.Series([], dtype=dtype, index=index) for name, dtype in RESULT_COLUMNS.items()}
+    return geopandas.GeoDataFrame(columns, geometry=geopandas.GeoSeries([], index=index), crs=_geometry_of(like).crs)
+
+
+def _frame_centerlines(data, points, guides, snap_tolerance, options):
+    """Centerlines of one (partition of a) frame; see :func:`centerlines`."""
+    import geopandas
+    import pandas
+
+    geometry = _geometry_of(data)
+    shapes = np.asarray(geometry.values, dtype=object)
+    crs = geometry.crs
+    geographic = crs is not None and crs.is_geographic
+    nearby_points = _nearby(
+        shapes, _margins(shapes, snap_tolerance or 0.0, geographic), None if points is None else shapely.points(points)
+    )
+    nearby_guides = _nearby(shapes, _guide_margins(shapes), guides)
+    crs_name = crs.srs if geographic else None
+    rows = [
+        _row(shape, nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options)
+        for i, shape in enumerate(shapes)
+    ]
+    columns = {
+        name: pandas.Series([row[1][name] for row in rows], dtype=dtype, index=geometry.index)
+        for name, dtype in RESULT_COLUMNS.items()
+    }
+    lines = geopandas.GeoSeries([row[0] for row in rows], index=geometry.index, crs=crs)
+    return geopandas.GeoDataFrame(columns, geometry=lines, crs=crs)
+
+
+def _margins(shapes, distance, geographic):
+    """Bounding-box margin of each shape for a search distance, CRS units (degrees from metres if geographic)."""
+    if not geographic:
+        return np.full(len(shapes), float(distance))
+    bounds = shapely.bounds(shapes)
+    latitudes = np.nan_to_num(0.5 * (bounds[:, 1] + bounds[:, 3]))
+    return np.asarray(degrees_covering(float(distance), latitudes), dtype=float).reshape(len(shapes))
+
+
+def _guide_margins(shapes):
+    """Bounding-box margin for guide lines, as the plugin's: a quarter of the larger side of each box."""
+    bounds = shapely.bounds(shapes)
+    return 0.25 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
+
+
+def _nearby(shapes, margins, candidates):
+    """For each shape, the candidates whose bounding box meets the shape's, widened by its margin."""
+    found = [[] for _ in shapes]
+    if candidates is None or len(candidates) == 0:
+        return found
+    bounds = shapely.bounds(shapes)
+    usable = np.flatnonzero(np.isfinite(bounds).all(axis=1))
+    boxes = shapely.box(*(bounds[usable] + np.outer(margins[usable], [-1.0, -1.0, 1.0, 1.0])).T)
+    shape_index, candidate_index = shapely.STRtree(candidates).query(boxes, predicate="intersects")
+    for i, j in zip(usable[shape_index], candidate_index):
+        found[i].append(candidates[j])
+    return found
+
+
+def _row(shape, points, guides, crs_name, snap_tolerance, options):
+    """The centerline of one row: ``(geometry, attributes)``; any failure goes into ``attributes["error"]``."""
+    try:
+        return _row_centerline(shape, points, guides, crs_name, snap_tolerance, options)
+    except Exception as error:  # noqa: BLE001 - one bad row must not stop a frame of millions
+        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": _message(error)}
+
+
+def _row_centerline(shape, points, guides, crs_name, snap_tolerance, options):
+    """:func:`_row` without the safety net: the parts that failed are named in ``error``, the others kept."""
+    geographic = crs_name is not None and shape is not None and not shape.is_empty
+    projection = LocalProjection.around(shape, crs_name) if geographic else None
+    local = shape if projection is None else projection.to_local(shape)
+    candidates = [np.asarray(point.coords[0]) for point in points]
+    extra = {}
+    guide_lines = [part for guide in guides for part in shapely.get_parts(guide) if part.geom_type == "LineString"]
+    guide_lines = [line for line in guide_lines if not line.is_empty]
+    if guide_lines:
+        extra["guide"] = MultiLineString(guide_lines)
+    if projection is not None:
+        candidates = [projection.to_local(point) for point in candidates]
+        extra = {name: projection.to_local(value) for name, value in extra.items()}
+    outcomes = multipolygon_centerlines(
+        local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
+    )
+    several = isinstance(shape, MultiPolygon)
+    error = "; ".join(
+        (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
+        for outcome in outcomes
+        if outcome.error is not None
+    )
+    results = [outcome.result for outcome in outcomes if outcome.error is None]
+    if not results:
+        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": error}
+    statistics = width_statistics(results)
+    attributes = {name: statistics[name] for name in RESULT_COLUMNS if name in statistics}
+    attributes["error"] = error or None
+    lines = [result.line if projection is None else projection.to_geographic(result.line) for result in results]
+    return (MultiLineString(lines) if several else LineString(lines[0])), attributes
+
+
+def _message(error):
+    """The message of a core error, or the kind and message of an unexpected one."""
+    if isinstance(error, IncirCuError):
+        return str(error)
+    return f"unexpected {type(error).__name__}: {error}"
