@@ -15,6 +15,7 @@ The tolerances are the documented rule (typical width / 200) or a tighter one gi
 copied from a previous run.
 """
 
+import json
 import math
 
 import numpy as np
@@ -129,6 +130,23 @@ def test_a_straight_channel_is_its_ends_and_the_two_ends_of_its_axis():
     result = polygon_centerline(case.polygon, case.split_points)
     assert [tuple(p) for p in result.line.coords] == [(0.0, 5.0), (5.0, 5.0), (95.0, 5.0), (100.0, 5.0)]
     assert result.radii.tolist() == [0.0, 5.0, 5.0, 0.0]
+
+
+NORWAY_FILE = geometry_cases.DATA_FOLDER / "norway_ne10m_aeqd.geojson"
+
+
+def test_an_event_between_two_nearly_collinear_segments_at_a_split_point_is_on_the_axis():
+    # Norway's north-eastern split point is a vertex turning by about 3e-7 rad. Next to it the closed-form
+    # event between the two segments meeting there is ill-conditioned: a probe 0.62 m beside the true junction
+    # touched both to 5e-9 of its radius (within the event tolerance) and became a vertex 4e-7 x extent off
+    # the axis. The vertices must be on the oracle's axis to its own resolution.
+    feature = json.loads(NORWAY_FILE.read_text())["features"][0]
+    polygon = Polygon(feature["geometry"]["coordinates"][0])
+    split_points = [tuple(point) for point in feature["properties"]["split_points"]]
+    result = polygon_centerline(polygon, split_points)
+    oracle = MedialOracle(*split_polygon(polygon, split_points), region=polygon)
+    distance = oracle.distance(np.asarray(result.line.coords)[1:-1, :2])
+    assert distance.max() <= 1e-9 * oracle.extent + 4.0 * oracle.error_bound
 
 
 OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + WAVY[:2]

@@ -36,7 +36,8 @@ STRAIGHT_TURN = 1e-9
 
 #: Relative agreement (of the radius) under which a probe's disk touches both sites of its interval: exactly
 #: (the probe is emitted as the event even when rounding called it skipped), and loosely (its interval is
-#: resolved; near a nearly straight convex corner the junction is known to about 1e-7 only).
+#: resolved; near a nearly straight convex corner the junction is known to about 1e-7 only). The exact one is
+#: scaled by how far apart the two feet are seen from the centre (see :meth:`_Tracer._is_event`).
 EVENT_TOLERANCE = 1e-8
 LOOSE_EVENT_TOLERANCE = 1e-6
 
@@ -570,16 +571,23 @@ class _Tracer:
         return settled
 
     def _is_event(self, intervals, probes, t, found):
-        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first,
-        to ``LOOSE_EVENT_TOLERANCE`` and to ``EVENT_TOLERANCE`` relative to its radius (two masks)."""
+        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
+        loosely, to ``LOOSE_EVENT_TOLERANCE`` relative to its radius, and exactly (two masks).
+
+        Exactly means to ``EVENT_TOLERANCE`` relative to the radius times the parting of the two feet as seen
+        from the centre (the distance between the unit vectors towards them): a gap ``g`` in the radius puts
+        the centre about ``g`` / parting off the axis, which is large where the feet nearly coincide (two
+        nearly collinear segments meeting at a split point).
+        """
         centre = probes.point + t[:, None] * probes.direction
-        with np.errstate(invalid="ignore"):
-            gap0 = np.abs(self.sites.distance(intervals.site0, centre) - t)
-            gap1 = np.abs(self.sites.distance(intervals.site1, centre) - t)
-            return tuple(
-                found & (gap0 <= tolerance * t + self.min_t) & (gap1 <= tolerance * t + self.min_t)
-                for tolerance in (LOOSE_EVENT_TOLERANCE, EVENT_TOLERANCE)
-            )
+        with np.errstate(invalid="ignore", divide="ignore"):
+            foot0, foot1 = self.sites.feet(intervals.site0, centre)[0], self.sites.feet(intervals.site1, centre)[0]
+            distance0 = np.where(intervals.site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
+            distance1 = np.where(intervals.site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
+            parting = np.hypot(*((centre - foot0) / distance0[:, None] - (centre - foot1) / distance1[:, None]).T)
+            gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
+            scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
+            return tuple(found & (gap0 <= s + self.min_t) & (gap1 <= s + self.min_t) for s in scale)
 
     def _at_split_point(self, site):
         """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
