@@ -12,7 +12,6 @@ from qgis.core import (
 )
 
 from .base import IncirCuAlgorithm
-from .running import FeatureRun
 
 
 class LinesCenterlineAlgorithm(IncirCuAlgorithm):
@@ -75,8 +74,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_spacing_parameter()
         self.add_result_parameters()
 
-    def processAlgorithm(self, parameters, context, feedback):
-        run = FeatureRun(self, parameters, context, feedback)
+    def process_features(self, run, parameters, context, feedback):
         line_type = QgsWkbTypes.GeometryType.LineGeometry
         source_a = run.source(self.LINES_A, line_type)
         source_b = run.source(self.LINES_B, line_type)

@@ -155,6 +155,19 @@ class CenterlineWriter:
         )
         self.centerline_count = 0
 
+    def close(self):
+        """Flush and release every sink, which closes (commits) its file; safe to call twice.
+
+        QGIS finalises an output when its sink is destroyed; dropping the writer's references here makes that
+        happen now rather than whenever the writer itself is collected.
+        """
+        for name in ("sink", "vertices", "circles", "transects"):
+            sink = getattr(self, name)
+            setattr(self, name, None)
+            if sink is not None:
+                sink.flushBuffer()
+            del sink
+
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
         return {

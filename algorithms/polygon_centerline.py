@@ -16,7 +16,6 @@ from qgis.core import (
 )
 
 from .base import IncirCuAlgorithm
-from .running import FeatureRun
 
 
 class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
@@ -99,8 +98,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_result_parameters()
 
-    def processAlgorithm(self, parameters, context, feedback):
-        run = FeatureRun(self, parameters, context, feedback)
+    def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, QgsWkbTypes.GeometryType.PolygonGeometry)
         crs = source.sourceCrs()
         split_source = None

@@ -120,3 +120,7 @@ def qgis_process(plugin_folder, tmp_path_factory):
     enabled = run("plugins", "enable", PLUGIN_NAME)
     assert enabled.returncode == 0, enabled.stdout + enabled.stderr
     return run
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: takes more than about 3 s")

@@ -21,6 +21,7 @@ from incircu_plugin.core import (
     SplitPointError,
     centerline_from_chains,
     lines_centerline,
+    multipolygon_centerlines,
     polygon_centerline,
     split_polygon,
 )
@@ -306,3 +307,26 @@ def test_lines_on_one_line_enclose_nothing():
 def test_the_engine_checks_its_chains_too(chain, error):
     with pytest.raises(error):
         centerline_from_chains(np.array(chain), np.array(BANK_B), spacing=1.0)
+
+
+def test_a_failed_part_keeps_no_traceback_and_frees_its_caller():
+    import gc
+    import weakref
+
+    class Caller:
+        def report(self, fraction):
+            return True
+
+    caller = Caller()
+    alive = weakref.ref(caller)
+    bow_tie = Polygon([(0, 20), (100, 30), (100, 20), (0, 30)])
+    gc.disable()
+    try:
+        outcomes = multipolygon_centerlines(MultiPolygon([RECTANGLE, bow_tie]), ENDS, progress=caller.report)
+        del caller
+        assert alive() is None, "a stored error keeps the progress callback's owner alive"
+    finally:
+        gc.enable()
+    assert outcomes[0].error is None
+    assert isinstance(outcomes[1].error, InvalidGeometryError)
+    assert outcomes[1].error.__traceback__ is None

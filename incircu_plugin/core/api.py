@@ -126,7 +126,7 @@ class PartOutcome:
     result : CenterlineResult or None
         The centerline, or None when the part failed.
     error : IncirCuError or None
-        Why the part failed.
+        Why the part failed; without traceback (a stored traceback would keep the run's frames alive).
     """
 
     part_index: int
@@ -205,5 +205,20 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
             )
             outcomes.append(PartOutcome(index, result, None))
         except IncirCuError as error:
-            outcomes.append(PartOutcome(index, None, error))
+            outcomes.append(PartOutcome(index, None, _detached(error)))
     return outcomes
+
+
+def _detached(error):
+    """Return ``error`` without its traceback (nor those of its causes), so a kept error holds no frame.
+
+    A traceback holds the frames it passed through and their locals (here the outcome list, and the caller's
+    ``progress`` callback with everything it refers to); an error stored in a result would tie them into a
+    reference cycle that keeps them alive until the garbage collector runs, possibly never.
+    """
+    seen, current = set(), error
+    while current is not None and id(current) not in seen:
+        seen.add(id(current))
+        current.__traceback__ = None
+        current = current.__cause__ or current.__context__
+    return error
