@@ -11,15 +11,18 @@ import re
 import numpy as np
 import pytest
 import shapely
-from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
+import shapely.affinity
+from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygon, box
 
 from incircu_plugin.core import (
     ChainError,
     CrossingLinesError,
     IncirCuError,
     InvalidGeometryError,
+    OptionError,
     SplitPointError,
     centerline_from_chains,
+    find_ends,
     lines_centerline,
     multipolygon_centerlines,
     polygon_centerline,
@@ -330,3 +333,138 @@ def test_a_failed_part_keeps_no_traceback_and_frees_its_caller():
     assert outcomes[0].error is None
     assert isinstance(outcomes[1].error, InvalidGeometryError)
     assert outcomes[1].error.__traceback__ is None
+
+
+# Hostile input: every public entry point answers with a typed error saying what to change ------------------
+
+BOW_TIE = Polygon([(0, 20), (100, 30), (100, 20), (0, 30)])
+
+
+def scaled(geometry, factor):
+    return shapely.transform(geometry, lambda xy: xy * factor)
+
+
+@pytest.mark.parametrize("factor", [1e154, 1e299], ids=["1e155", "1e300"])
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda p: polygon_centerline(p),
+        lambda p: polygon_centerline(p, [(0, 5), (100, 5)]),
+        lambda p: find_ends(p),
+        lambda p: split_polygon(p, [(0, 5), (100, 5)]),
+        lambda p: multipolygon_centerlines(p),
+    ],
+    ids=["auto", "split", "find_ends", "split_polygon", "multi"],
+)
+def test_huge_coordinates_are_refused_as_overflowing(factor, call):
+    with pytest.raises(InvalidGeometryError, match="overflow float64") as caught:
+        call(scaled(RECTANGLE, factor))
+    assert f"{100 * factor:.3g}" in str(caught.value)
+
+
+@pytest.mark.parametrize("factor", [1e-171, 1e-301], ids=["1e-170", "1e-300"])
+def test_tiny_shapes_are_refused_as_underflowing(factor):
+    for call in (polygon_centerline, find_ends):
+        with pytest.raises(InvalidGeometryError, match="underflow float64.*Scale the data up"):
+            call(scaled(RECTANGLE, factor))
+
+
+def test_bank_lines_of_huge_coordinates_are_refused():
+    with pytest.raises(InvalidGeometryError, match="first line .* overflow"):
+        lines_centerline([(0, 0), (1e300, 0)], [(0, 1e299), (1e300, 1e299)])
+
+
+def test_shape_too_small_for_its_distance_from_the_origin_is_refused():
+    far = shapely.affinity.translate(RECTANGLE, 1e15, 1e15)
+    with pytest.raises(InvalidGeometryError, match="cannot resolve.*Shift the data nearer the origin"):
+        polygon_centerline(far)
+
+
+def test_moderate_scales_and_offsets_still_work():
+    for factor in (1e-40, 1e40):
+        result = polygon_centerline(scaled(RECTANGLE, factor), [(0, 5 * factor), (100 * factor, 5 * factor)])
+        assert abs(result.length - 100 * factor) <= 1e-9 * 100 * factor
+    far = shapely.affinity.translate(RECTANGLE, 1e9, 1e9)
+    assert abs(polygon_centerline(far, [(1e9, 1e9 + 5), (1e9 + 100, 1e9 + 5)]).length - 100) < 1e-4
+
+
+@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "1", None], ids=["nan", "inf", "negative", "text", "none"])
+def test_bad_samples_per_chain(value):
+    if value is None:
+        assert polygon_centerline(RECTANGLE, ENDS, samples_per_chain=None).length == pytest.approx(100)
+        return
+    with pytest.raises(OptionError, match="samples_per_chain must be"):
+        polygon_centerline(RECTANGLE, ENDS, samples_per_chain=value)
+    with pytest.raises(OptionError, match="samples_per_chain must be"):
+        lines_centerline(BANK_A, BANK_B, samples_per_chain=value)
+
+
+def test_fractional_samples_per_chain_is_refused():
+    with pytest.raises(OptionError, match=r"whole number .* got 2\.5"):
+        polygon_centerline(RECTANGLE, ENDS, samples_per_chain=2.5)
+
+
+@pytest.mark.parametrize("value", [math.nan, -math.inf, -1.0, "1"], ids=["nan", "-inf", "negative", "text"])
+def test_bad_spacing_is_an_option_error_naming_the_value(value):
+    with pytest.raises(OptionError, match=f"spacing must be .*{re.escape(repr(value))}"):
+        lines_centerline(BANK_A, BANK_B, spacing=value)
+
+
+@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "0.1"], ids=["nan", "inf", "negative", "text"])
+def test_bad_snap_tolerance(value):
+    far_point = [(300.0, 400.0), (100.0, 5.0)]
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, far_point, snap_tolerance=value),
+        lambda: multipolygon_centerlines(RECTANGLE, far_point, snap_tolerance=value),
+        lambda: split_polygon(RECTANGLE, far_point, value),
+    ):
+        with pytest.raises(OptionError, match="snap_tolerance must be a (non-negative, finite distance|number)"):
+            call()
+
+
+def test_multipoint_split_points_are_used_as_points():
+    result = polygon_centerline(RECTANGLE, MultiPoint(ENDS))
+    assert result.line.coords[0] == ENDS[0] and result.line.coords[-1] == ENDS[1]
+    (outcome,) = multipolygon_centerlines(RECTANGLE, MultiPoint(ENDS))
+    assert outcome.result.line.coords[-1] == ENDS[1]
+
+
+@pytest.mark.parametrize(
+    "points, message",
+    [
+        ([Point(), Point()], "Split point 0 is an empty point"),
+        (Point(0, 5), "sequence of two points .* got a Point"),
+        ((0.0, 5.0), "Split point 0 is the number 0.0"),
+        ([LineString([(0, 0), (0, 10)]), Point(100, 5)], "Split point 0 must be a point, not a LineString"),
+        ([(0, 5, 1, 2), (100, 5)], r"Split point 0 must be an \(x, y\) pair"),
+    ],
+    ids=["empty-points", "one-point", "one-pair", "line", "four-numbers"],
+)
+def test_split_points_of_the_wrong_kind(points, message):
+    for call in (polygon_centerline, multipolygon_centerlines, split_polygon):
+        with pytest.raises(SplitPointError, match=message):
+            call(RECTANGLE, points)
+
+
+def test_text_where_a_geometry_is_expected_is_a_type_error_or_typed():
+    with pytest.raises(TypeError, match="parse WKT"):
+        lines_centerline("LINESTRING (0 0, 100 0)", "LINESTRING (0 8, 100 8)")
+    with pytest.raises(InvalidGeometryError, match="got a str"):
+        polygon_centerline("POLYGON ((0 0, 1 0, 1 1, 0 0))")
+
+
+def test_ragged_coordinates_are_an_invalid_geometry():
+    with pytest.raises(InvalidGeometryError, match=r"\(n, 2\) array of numbers"):
+        lines_centerline([(0, 0), (1, 2, 3)], BANK_B)
+
+
+def test_invalid_part_is_reported_as_invalid_not_as_split_point_count():
+    outcomes = multipolygon_centerlines(BOW_TIE, [(0, 25), (100, 25), (50, 25)])
+    assert isinstance(outcomes[0].error, InvalidGeometryError)
+    assert "Self-intersection" in str(outcomes[0].error)
+
+
+@pytest.mark.parametrize("geometry", [None, Polygon(), MultiPolygon()], ids=["none", "empty", "empty-multi"])
+def test_null_or_empty_multipolygon(geometry):
+    with pytest.raises(InvalidGeometryError, match="null|empty"):
+        multipolygon_centerlines(geometry)

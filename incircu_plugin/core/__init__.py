@@ -15,7 +15,14 @@ from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_cente
 from .chains import orient_bank_lines, split_polygon
 from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
-from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
+from .errors import (
+    ChainError,
+    CrossingLinesError,
+    IncirCuError,
+    InvalidGeometryError,
+    OptionError,
+    SplitPointError,
+)
 from .geodesy import LocalProjection
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
 
@@ -30,6 +37,7 @@ __all__ = [
     "Incircle",
     "InvalidGeometryError",
     "LocalProjection",
+    "OptionError",
     "PartOutcome",
     "SplitPointError",
     "Transect",

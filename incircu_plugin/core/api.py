@@ -6,13 +6,14 @@ from typing import Optional
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiPolygon, Point, Polygon
+from shapely.geometry import MultiPolygon, Polygon
 
 from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
 from .ends import find_ends
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, InvalidGeometryError, SplitPointError
 from .islands import bridge_islands
+from .validation import check_coordinates, positive_length, sample_count, split_point_coordinates, tolerance_length
 
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
@@ -57,7 +58,7 @@ def polygon_centerline(
 
     Raises
     ------
-    InvalidGeometryError, SplitPointError, ChainError, IncirCuError
+    InvalidGeometryError, SplitPointError, OptionError, ChainError, IncirCuError
 
     Examples
     --------
@@ -69,8 +70,11 @@ def polygon_centerline(
     validate_polygon(polygon)
     if islands not in ISLAND_MODES:
         raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+    spacing, samples_per_chain = _sampling(spacing, samples_per_chain)
+    snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
+    split_points = split_point_coordinates(split_points)
     notes = []
-    ends_found = split_points is None or len(split_points) == 0
+    ends_found = len(split_points) == 0
     if ends_found:
         ends = find_ends(polygon)
         split_points = (ends.start, ends.end)
@@ -103,7 +107,7 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
 
     Raises
     ------
-    InvalidGeometryError, ChainError, CrossingLinesError
+    InvalidGeometryError, OptionError, ChainError, CrossingLinesError
 
     Examples
     --------
@@ -111,8 +115,14 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     >>> result.line.coords[0], float(result.radii.max())
     ((0.0, 4.0), 4.0)
     """
+    spacing, samples_per_chain = _sampling(spacing, samples_per_chain)
     c1, c2 = orient_bank_lines(line_a, line_b)
     return centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+
+
+def _sampling(spacing, samples_per_chain):
+    """Return ``spacing`` and ``samples_per_chain`` checked (see :mod:`.validation`)."""
+    return positive_length(spacing, "spacing"), sample_count(samples_per_chain, "samples_per_chain")
 
 
 @dataclass(frozen=True)
@@ -175,22 +185,28 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     >>> [round(o.result.length, 6) for o in outcomes]
     [50.0, 50.0]
     """
-    if geometry is None or geometry.is_empty:
-        raise InvalidGeometryError("The polygon is empty or null.")
+    if geometry is None:
+        raise InvalidGeometryError("The polygon is null (no geometry).")
     if isinstance(geometry, Polygon):
         parts = [geometry]
     elif isinstance(geometry, MultiPolygon):
         parts = list(geometry.geoms)
     else:
-        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
+        kind = getattr(geometry, "geom_type", type(geometry).__name__)
+        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {kind}.")
+    if geometry.is_empty:
+        raise InvalidGeometryError("The polygon is empty.")
+    check_coordinates(shapely.get_coordinates(geometry), "polygon")
+    snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     if snap_tolerance is None:
         snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
-    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
+    points = shapely.points(split_point_coordinates(split_points))
     progress = options.pop("progress", None)
     outcomes = []
     for index, part in enumerate(parts):
         try:
-            mine = [p for p in points if part.exterior.distance(p) <= snap_tolerance]
+            validate_polygon(part)
+            mine = list(points[shapely.distance(part.exterior, points) <= snap_tolerance])
             if len(mine) not in (0, 2):
                 raise SplitPointError(
                     f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "

@@ -15,6 +15,7 @@ from .errors import (
     SplitPointError,
     format_point,
 )
+from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
 COINCIDENCE_TOLERANCE = 1e-12
@@ -86,13 +87,16 @@ def as_coordinates(geometry, name="line"):
             raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
         coordinates = shapely.get_coordinates(geometry)
     else:
-        coordinates = np.asarray(geometry, dtype=float)
+        if isinstance(geometry, (str, bytes)):
+            raise TypeError(f"The {name} must be a LineString or coordinates, not text (parse WKT with shapely first).")
+        try:
+            coordinates = np.asarray(geometry, dtype=float)
+        except (TypeError, ValueError):
+            raise InvalidGeometryError(f"The {name} must be an (n, 2) array of numbers.") from None
         if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
             raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
         coordinates = coordinates[:, :2]
-    if not np.all(np.isfinite(coordinates)):
-        bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
-        raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
+    check_coordinates(coordinates, name, whole=False)
     return np.array(coordinates, dtype=float)
 
 
@@ -193,8 +197,7 @@ def validate_polygon(polygon):
         raise InvalidGeometryError(f"Expected a single polygon, got a {kind}.")
     if polygon.is_empty:
         raise InvalidGeometryError("The polygon is empty.")
-    if not np.all(np.isfinite(shapely.get_coordinates(polygon))):
-        raise InvalidGeometryError("The polygon has a NaN or infinite coordinate.")
+    check_coordinates(shapely.get_coordinates(polygon), "polygon")
     if not polygon.is_valid:
         raise InvalidGeometryError(
             f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
@@ -261,12 +264,10 @@ def split_polygon(polygon, split_points, tolerance=None):
     [[0.0, 1.0], [0.0, 0.0], [10.0, 0.0], [10.0, 1.0]]
     """
     validate_polygon(polygon)
-    points = [] if split_points is None else list(split_points)
+    points = split_point_coordinates(split_points)
     if len(points) != 2:
         raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
-    points = [np.asarray(p.coords[0] if isinstance(p, Point) else p, dtype=float)[:2] for p in points]
-    if not all(np.all(np.isfinite(p)) for p in points):
-        raise SplitPointError("A split point has a NaN or infinite coordinate.")
+    tolerance = tolerance_length(tolerance, "snap_tolerance")
     exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
     ring = shapely.get_coordinates(exterior)
     extent = extent_of(ring)
@@ -322,6 +323,7 @@ def orient_bank_lines(line_a, line_b):
     """
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
+    check_coordinates(np.concatenate([a, b]), "pair of lines")
     merge = COINCIDENCE_TOLERANCE * extent_of(a, b)
     a = clean_chain(a, "first line", merge)
     b = clean_chain(b, "second line", merge)

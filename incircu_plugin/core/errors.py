@@ -25,6 +25,10 @@ class CrossingLinesError(IncirCuError):
     """In open mode the two lines cross or touch each other."""
 
 
+class OptionError(IncirCuError):
+    """A numeric option (spacing, sample count, tolerance) is not a number, not finite, or out of range."""
+
+
 def format_point(xy):
     """Return ``"(x, y)"`` with coordinates rounded for a message.
 
