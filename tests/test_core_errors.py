@@ -15,6 +15,7 @@ import shapely.affinity
 from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygon, box
 
 from incircu_plugin.core import (
+    CenterlineError,
     ChainError,
     CrossingLinesError,
     IncirCuError,
@@ -468,3 +469,42 @@ def test_invalid_part_is_reported_as_invalid_not_as_split_point_count():
 def test_null_or_empty_multipolygon(geometry):
     with pytest.raises(InvalidGeometryError, match="null|empty"):
         multipolygon_centerlines(geometry)
+
+
+# The last guard: no self-crossing line, no identical automatic ends ---------------------------------------
+
+
+def test_a_crossing_line_is_never_returned():
+    from dataclasses import replace
+
+    from incircu_plugin.core.api import _checked
+
+    result = polygon_centerline(RECTANGLE, ENDS)
+    crossing = replace(result, line=LineString([(0, 0), (10, 10), (10, 0), (0, 10)]))
+    with pytest.raises(CenterlineError, match=r"crosses itself at \(5, 5\)"):
+        _checked(crossing)
+    assert _checked(result) is result
+
+
+def test_square_whose_automatic_ends_coincide_is_a_split_point_error():
+    square = shapely.segmentize(
+        box(499.04325887565847, 203.26611626641056, 500.04325887565847, 204.26611626641056), 1 / 14
+    )
+    try:
+        result = polygon_centerline(square)
+    except SplitPointError as error:
+        assert "coincide" in str(error) and "Give two split points" in str(error)
+    else:
+        assert result.line.is_simple and result.line.length > 0
+
+
+@pytest.mark.parametrize("corners", [5, 6, 7, 8, 13])
+def test_regular_polygon_with_automatic_ends_is_simple_or_refused(corners):
+    angles = 2 * np.pi * np.arange(corners) / corners
+    polygon = Polygon(np.stack([np.cos(angles), np.sin(angles)], axis=1))
+    try:
+        result = polygon_centerline(polygon)
+    except CenterlineError as error:
+        assert "crosses itself at" in str(error)
+    else:
+        assert result.line.is_simple

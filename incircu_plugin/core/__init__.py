@@ -16,6 +16,7 @@ from .chains import orient_bank_lines, split_polygon
 from .ends import EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
 from .errors import (
+    CenterlineError,
     ChainError,
     CrossingLinesError,
     IncirCuError,
@@ -29,6 +30,7 @@ from .widths import Incircle, Transect, incircle_polygons, transects, vertex_cha
 __all__ = [
     "ISLAND_MODES",
     "Cancelled",
+    "CenterlineError",
     "CenterlineResult",
     "ChainError",
     "CrossingLinesError",

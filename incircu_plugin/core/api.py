@@ -8,10 +8,17 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
-from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
+from .chains import (
+    COINCIDENCE_TOLERANCE,
+    extent_of,
+    find_self_crossing,
+    orient_bank_lines,
+    split_polygon,
+    validate_polygon,
+)
 from .ends import find_ends
 from .engine import CenterlineResult, centerline_from_chains
-from .errors import IncirCuError, InvalidGeometryError, SplitPointError
+from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
 from .validation import check_coordinates, positive_length, sample_count, split_point_coordinates, tolerance_length
 
@@ -58,7 +65,7 @@ def polygon_centerline(
 
     Raises
     ------
-    InvalidGeometryError, SplitPointError, OptionError, ChainError, IncirCuError
+    InvalidGeometryError, SplitPointError, OptionError, ChainError, CenterlineError, IncirCuError
 
     Examples
     --------
@@ -78,13 +85,18 @@ def polygon_centerline(
     if ends_found:
         ends = find_ends(polygon)
         split_points = (ends.start, ends.end)
+        if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
+            raise SplitPointError(
+                f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
+                "clear ends. Give two split points."
+            )
         if not ends.elongated:
             notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
-    return replace(result, ends_found=ends_found, notes=tuple(notes))
+    return replace(_checked(result), ends_found=ends_found, notes=tuple(notes))
 
 
 def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):
@@ -107,7 +119,7 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
 
     Raises
     ------
-    InvalidGeometryError, OptionError, ChainError, CrossingLinesError
+    InvalidGeometryError, OptionError, ChainError, CrossingLinesError, CenterlineError
 
     Examples
     --------
@@ -117,7 +129,26 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     """
     spacing, samples_per_chain = _sampling(spacing, samples_per_chain)
     c1, c2 = orient_bank_lines(line_a, line_b)
-    return centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+    return _checked(centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress))
+
+
+def _checked(result):
+    """Return ``result`` if its line is finite and simple; otherwise raise :class:`CenterlineError`.
+
+    The last guard of the public functions: a line crossing or touching itself is never returned.
+    """
+    coordinates = shapely.get_coordinates(result.line)
+    if not np.all(np.isfinite(coordinates)):
+        raise CenterlineError("The computed centerline has a NaN or infinite coordinate; none is returned.")
+    if not result.line.is_simple:
+        crossing = find_self_crossing(coordinates)
+        where = "" if crossing is None else f" at {format_point(crossing)}"
+        raise CenterlineError(
+            f"The computed centerline crosses itself{where}, so none is returned. This happens where the shape "
+            "has no single axis near the ends (a compact shape, or a split point in a corner): move the split "
+            "points to the middle of the ends, or change the spacing."
+        )
+    return result
 
 
 def _sampling(spacing, samples_per_chain):
