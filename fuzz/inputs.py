@@ -298,7 +298,8 @@ def bad_options(rng, small):
     bad_number = [math.nan, math.inf, -math.inf, -1.0, "1", 0.0, 1e-300, 1e300, 2.5][int(rng.integers(0, 9))]
     choice = int(rng.integers(0, 8))
     if choice == 0:
-        return Case("bad options", "polygon_centerline", (polygon, ends), {"spacing": bad_number}, polygon, ends)
+        kwargs = {str(rng.choice(["spacing", "tolerance"])): bad_number}
+        return Case("bad options", "polygon_centerline", (polygon, ends), kwargs, polygon, ends)
     if choice == 1:
         kwargs = {"samples_per_chain": bad_number}
         return Case("bad options", "lines_centerline", (left, right), kwargs, polygon)

@@ -17,6 +17,7 @@ from incircu_plugin.core import (
     SplitPointError,
     centerline_from_chains,
     default_spacing,
+    default_tolerance,
     multipolygon_centerlines,
     polygon_centerline,
     split_polygon,
@@ -33,11 +34,17 @@ def test_default_spacing_is_a_twentieth_of_the_typical_width():
 
 
 @pytest.mark.parametrize("spacing", [None, 0, 0.0])
-def test_no_spacing_and_zero_spacing_mean_the_default(spacing):
+def test_no_spacing_and_zero_spacing_mean_the_adaptive_default(spacing):
     case = geometry_cases.wavy_channel(seed=21)
-    expected = polygon_centerline(case.polygon, case.split_points, spacing=default_spacing(case.chain_a, case.chain_b))
+    tolerance = default_tolerance(case.chain_a, case.chain_b)
+    expected = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
     result = polygon_centerline(case.polygon, case.split_points, spacing=spacing)
     assert result.line.equals_exact(expected.line, 0.0)
+
+
+def test_default_tolerance_is_a_two_hundredth_of_the_typical_width():
+    case = geometry_cases.rectangle(length=200.0, width=8.0, n=5)
+    assert default_tolerance(case.bank_a, case.bank_b) == pytest.approx(8.0 / 200.0, rel=1e-12)
 
 
 def test_finer_spacing_gives_more_vertices_on_a_straight_channel():

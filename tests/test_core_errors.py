@@ -389,26 +389,34 @@ def test_moderate_scales_and_offsets_still_work():
     assert abs(polygon_centerline(far, [(1e9, 1e9 + 5), (1e9 + 100, 1e9 + 5)]).length - 100) < 1e-4
 
 
-@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "1", None], ids=["nan", "inf", "negative", "text", "none"])
-def test_bad_samples_per_chain(value):
-    if value is None:
-        assert polygon_centerline(RECTANGLE, ENDS, samples_per_chain=None).length == pytest.approx(100)
-        return
-    with pytest.raises(OptionError, match="samples_per_chain must be"):
-        polygon_centerline(RECTANGLE, ENDS, samples_per_chain=value)
-    with pytest.raises(OptionError, match="samples_per_chain must be"):
-        lines_centerline(BANK_A, BANK_B, samples_per_chain=value)
+@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "1"], ids=["nan", "inf", "negative", "text"])
+def test_bad_samples_per_chain_is_an_option_error_naming_the_value(value):
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, ENDS, samples_per_chain=value),
+        lambda: lines_centerline(BANK_A, BANK_B, samples_per_chain=value),
+    ):
+        with pytest.raises(OptionError, match=f"(samples_per_chain|samples per chain) .*{re.escape(repr(value))}"):
+            call()
 
 
-def test_fractional_samples_per_chain_is_refused():
-    with pytest.raises(OptionError, match=r"whole number .* got 2\.5"):
-        polygon_centerline(RECTANGLE, ENDS, samples_per_chain=2.5)
+def first_part(outcomes):
+    """The result of a multipolygon's first part, or its error raised."""
+    if outcomes[0].error is not None:
+        raise outcomes[0].error
+    return outcomes[0].result
 
 
+@pytest.mark.parametrize("name", ["spacing", "tolerance"])
 @pytest.mark.parametrize("value", [math.nan, -math.inf, -1.0, "1"], ids=["nan", "-inf", "negative", "text"])
-def test_bad_spacing_is_an_option_error_naming_the_value(value):
-    with pytest.raises(OptionError, match=f"spacing must be .*{re.escape(repr(value))}"):
-        lines_centerline(BANK_A, BANK_B, spacing=value)
+def test_bad_spacing_or_tolerance_is_an_option_error_naming_the_value(name, value):
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, ENDS, **{name: value}),
+        lambda: lines_centerline(BANK_A, BANK_B, **{name: value}),
+        lambda: first_part(multipolygon_centerlines(RECTANGLE, ENDS, **{name: value})),
+    ):
+        with pytest.raises(OptionError, match=f"{name} must be .*{re.escape(repr(value))}"):
+            outcome = call()
+            raise AssertionError(f"accepted {name}={value!r}: {outcome}")
 
 
 @pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "0.1"], ids=["nan", "inf", "negative", "text"])

@@ -14,7 +14,7 @@ Example
 from .api import ISLAND_MODES, PartOutcome, lines_centerline, multipolygon_centerlines, polygon_centerline
 from .chains import orient_bank_lines, split_polygon
 from .ends import EndsResult, find_ends
-from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing
+from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import (
     CenterlineError,
     ChainError,
@@ -45,6 +45,7 @@ __all__ = [
     "Transect",
     "centerline_from_chains",
     "default_spacing",
+    "default_tolerance",
     "find_ends",
     "incircle_polygons",
     "lines_centerline",

@@ -20,7 +20,7 @@ from .ends import find_ends
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
-from .validation import check_coordinates, positive_length, sample_count, split_point_coordinates, tolerance_length
+from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
@@ -33,6 +33,7 @@ def polygon_centerline(
     *,
     spacing=None,
     samples_per_chain=None,
+    tolerance=None,
     snap_tolerance=None,
     islands="main_channel",
     progress=None,
@@ -46,9 +47,13 @@ def polygon_centerline(
     split_points : sequence of two Point or (x, y), optional
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`find_ends`.
     spacing : float, optional
-        Distance between samples along the boundary, CRS units; None or 0: :func:`default_spacing`.
+        Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
+        adaptive sampling (the default; what a user wants unless reproducing the paper).
     samples_per_chain : int, optional
-        Instead of ``spacing``, this many equidistant samples on each side.
+        Fixed sampling with this many equidistant samples on each side.
+    tolerance : float, optional
+        Adaptive sampling: largest distance between the line and the exact medial axis, CRS units; None
+        or 0: the typical width / 200 (:func:`default_tolerance`).
     snap_tolerance : float, optional
         Largest distance, CRS units, between a split point and the exterior ring; default ``1e-6`` of
         the polygon's extent.
@@ -77,7 +82,6 @@ def polygon_centerline(
     validate_polygon(polygon)
     if islands not in ISLAND_MODES:
         raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
-    spacing, samples_per_chain = _sampling(spacing, samples_per_chain)
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     split_points = split_point_coordinates(split_points)
     notes = []
@@ -95,11 +99,13 @@ def polygon_centerline(
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
-    result = centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress)
+    result = centerline_from_chains(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    )
     return replace(_checked(result), ends_found=ends_found, notes=tuple(notes))
 
 
-def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, progress=None):
+def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
     """Centerline between two lines, such as the two banks of a river.
 
     The lines are oriented so their starts face each other; the centerline runs from the midpoint of the
@@ -109,7 +115,7 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     ----------
     line_a, line_b : LineString or array_like of shape (n, 2)
         The two lines, CRS units; they must not cross or touch.
-    spacing, samples_per_chain, progress
+    spacing, samples_per_chain, tolerance, progress
         See :func:`polygon_centerline`.
 
     Returns
@@ -127,9 +133,12 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, pr
     >>> result.line.coords[0], float(result.radii.max())
     ((0.0, 4.0), 4.0)
     """
-    spacing, samples_per_chain = _sampling(spacing, samples_per_chain)
     c1, c2 = orient_bank_lines(line_a, line_b)
-    return _checked(centerline_from_chains(c1, c2, spacing, samples_per_chain=samples_per_chain, progress=progress))
+    return _checked(
+        centerline_from_chains(
+            c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+        )
+    )
 
 
 def _checked(result):
@@ -149,11 +158,6 @@ def _checked(result):
             "points to the middle of the ends, or change the spacing."
         )
     return result
-
-
-def _sampling(spacing, samples_per_chain):
-    """Return ``spacing`` and ``samples_per_chain`` checked (see :mod:`.validation`)."""
-    return positive_length(spacing, "spacing"), sample_count(samples_per_chain, "samples_per_chain")
 
 
 @dataclass(frozen=True)
@@ -196,7 +200,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
     **options
-        Passed to :func:`polygon_centerline` (``spacing``, ``islands``, ``progress``, ...).
+        Passed to :func:`polygon_centerline` (``spacing``, ``tolerance``, ``islands``, ``progress``, ...).
 
     Returns
     -------

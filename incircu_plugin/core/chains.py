@@ -15,6 +15,10 @@ from .errors import (
     SplitPointError,
     format_point,
 )
+from .polyline import as_coordinates, cumulative_lengths
+
+# Re-export for engine.py and ends.py until their owners switch to polyline.cumulative_lengths; remove then.
+from .polyline import cumulative_lengths as arc_lengths  # noqa: F401
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
@@ -57,47 +61,6 @@ def signed_area(ring):
     """
     x, y = ring[:, 0], ring[:, 1]
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-
-
-def as_coordinates(geometry, name="line"):
-    """Return the vertices of a line as a float array, rejecting empty or non-finite input.
-
-    Parameters
-    ----------
-    geometry : LineString, LinearRing or array_like of shape (n, 2)
-        The line; extra dimensions (z, m) are dropped.
-    name : str
-        How messages call this line.
-
-    Returns
-    -------
-    ndarray of shape (n, 2)
-
-    Raises
-    ------
-    InvalidGeometryError
-        If the geometry is null, empty, not a line, or has NaN or infinite coordinates.
-    """
-    if geometry is None:
-        raise InvalidGeometryError(f"The {name} is null (no geometry).")
-    if isinstance(geometry, shapely.Geometry):
-        if geometry.is_empty:
-            raise InvalidGeometryError(f"The {name} is empty.")
-        if geometry.geom_type not in ("LineString", "LinearRing"):
-            raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
-        coordinates = shapely.get_coordinates(geometry)
-    else:
-        if isinstance(geometry, (str, bytes)):
-            raise TypeError(f"The {name} must be a LineString or coordinates, not text (parse WKT with shapely first).")
-        try:
-            coordinates = np.asarray(geometry, dtype=float)
-        except (TypeError, ValueError):
-            raise InvalidGeometryError(f"The {name} must be an (n, 2) array of numbers.") from None
-        if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
-            raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
-        coordinates = coordinates[:, :2]
-    check_coordinates(coordinates, name, whole=False)
-    return np.array(coordinates, dtype=float)
 
 
 def clean_chain(coordinates, name="chain", tolerance=None):
@@ -205,22 +168,6 @@ def validate_polygon(polygon):
         )
 
 
-def arc_lengths(path):
-    """Return the distance along a path from its first vertex to each vertex.
-
-    Parameters
-    ----------
-    path : ndarray of shape (n, 2)
-        Vertices, CRS units.
-
-    Returns
-    -------
-    ndarray of shape (n,)
-        CRS units, starting at 0.
-    """
-    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
-
-
 def _insert_at(ring, positions, position, point, tolerance):
     """Insert ``point`` at arc length ``position`` into a closed ring unless a vertex is already there."""
     if np.min(np.abs(positions[:-1] - position)) <= tolerance:
@@ -273,10 +220,10 @@ def split_polygon(polygon, split_points, tolerance=None):
     extent = extent_of(ring)
     if tolerance is None:
         tolerance = 1e-6 * extent
-    merge = COINCIDENCE_TOLERANCE * extent
-    ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", merge), ring[:1]])
+    coincidence = COINCIDENCE_TOLERANCE * extent
+    ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", coincidence), ring[:1]])
     exterior = LineString(ring)
-    positions = arc_lengths(ring)
+    positions = cumulative_lengths(ring)
     along = []
     for point in points:
         distance = exterior.distance(Point(point))
@@ -288,13 +235,13 @@ def split_polygon(polygon, split_points, tolerance=None):
             )
         along.append(exterior.project(Point(point)))
     perimeter = positions[-1]
-    along = [0.0 if position >= perimeter - merge else position for position in along]
+    along = [0.0 if position >= perimeter - coincidence else position for position in along]
     gap = abs(along[0] - along[1])
-    if min(gap, perimeter - gap) <= max(tolerance, merge):
+    if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     for position in along:
         point = np.asarray(exterior.interpolate(position).coords[0])
-        ring, positions = _insert_at(ring, positions, position, point, merge)
+        ring, positions = _insert_at(ring, positions, position, point, coincidence)
     start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
     loop = ring[:-1]
     n = len(loop)
@@ -324,9 +271,9 @@ def orient_bank_lines(line_a, line_b):
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
     check_coordinates(np.concatenate([a, b]), "pair of lines")
-    merge = COINCIDENCE_TOLERANCE * extent_of(a, b)
-    a = clean_chain(a, "first line", merge)
-    b = clean_chain(b, "second line", merge)
+    coincidence = COINCIDENCE_TOLERANCE * extent_of(a, b)
+    a = clean_chain(a, "first line", coincidence)
+    b = clean_chain(b, "second line", coincidence)
     ensure_simple(a, "first line")
     ensure_simple(b, "second line")
     touching = shapely.intersection(LineString(a), LineString(b))

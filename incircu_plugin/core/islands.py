@@ -34,16 +34,19 @@ it. The returned chains have no zero-length segments.
 """
 
 import heapq
+from dataclasses import dataclass, field
+from typing import Optional
 
 import numpy as np
 import shapely
 from shapely.geometry import LinearRing, LineString, Polygon
 
-from .chains import COINCIDENCE_TOLERANCE, arc_lengths, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, extent_of, signed_area
 from .errors import IncirCuError, InvalidGeometryError, format_point
+from .polyline import IndexedPolyline, as_coordinates, cumulative_lengths, local_origin, points_at
 
 #: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
-TIE_TOLERANCE = 1e-9
+BANK_TIE_TOLERANCE = 1e-9
 
 #: Width of a slit, relative to the extent: its two sides are this far apart, so the joined chain never
 #: touches itself and every point of a side belongs to one copy only (the engine then knows from which side
@@ -79,7 +82,8 @@ def bridge_islands(c1, c2, holes):
     Raises
     ------
     InvalidGeometryError
-        If an island has fewer than 3 distinct points or non-finite coordinates.
+        If a chain is empty or not finite, or an island has fewer than 3 distinct points or non-finite
+        coordinates.
     IncirCuError
         If an island cannot be reached from either chain without crossing another island or slit.
 
@@ -95,182 +99,273 @@ def bridge_islands(c1, c2, holes):
     >>> len(bridged_b) == len(c2)
     True
     """
-    chains = [_as_array(c1), _as_array(c2)]
+    chains = [as_coordinates(c1, "first chain"), as_coordinates(c2, "second chain")]
     rings = [_island_ring(hole, index) for index, hole in enumerate(holes)]
     if not rings:
         return chains[0].copy(), chains[1].copy()
-    extent = extent_of(*chains, *rings)
-    everything = np.concatenate([*chains, *rings])
-    largest = float(max(np.abs(everything).max(), 1.0))
-    half_width = max(SLIT_WIDTH * extent, SLIT_ULPS * float(np.spacing(largest))) / 2.0
     # Work near the origin, where the tolerances below are many units in the last place.
-    origin = 0.5 * (everything.min(axis=0) + everything.max(axis=0))
-    chains = [chain - origin for chain in chains]
-    rings = [ring - origin for ring in rings]
-    merge = COINCIDENCE_TOLERANCE * extent
-    tie = TIE_TOLERANCE * extent
-    region_on_left = signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
-    islands = np.array([Polygon(ring) for ring in rings], dtype=object)
-    island_tree = shapely.STRtree(islands)
-    count = len(rings)
-    # Hosts: 0 and 1 are the chains, 2 + j is island j once it has joined.
-    targets = [_Target(chains[0]), _Target(chains[1])] + [None] * count
-    bank_distance = np.stack([target.distance_to(islands) for target in targets[:2]], axis=1)
-    reach = float(bank_distance.min(axis=1).max()) + tie
-    component = np.full(count + 2, -1)
-    component[:2] = (0, 1)
-    pairs = [(float(bank_distance[i, side]), side, side, i) for i in range(count) for side in (0, 1)]
-    heapq.heapify(pairs)
-    walks = [None] * count
-    joins = [[] for _ in range(count + 2)]
-    slits = []
-    for _ in range(count):
-        island_index, host, slit = _next_join(pairs, component, islands, island_tree, targets, slits, rings, tie, merge)
-        island_point, foot, position = slit
-        slits.append(LineString([island_point, foot]))
-        component[2 + island_index] = component[host]
-        clockwise = region_on_left if component[host] == 0 else not region_on_left
-        walks[island_index] = _around(rings[island_index], island_point, clockwise, merge)
-        targets[2 + island_index] = _Target(walks[island_index])
-        joins[host].append((position, island_index, foot))
-        near = island_tree.query(islands[island_index], predicate="dwithin", distance=reach)
-        near = near[component[2 + near] < 0]
-        for other, gap in zip(near.tolist(), shapely.distance(islands[near], islands[island_index]).tolist()):
-            heapq.heappush(pairs, (gap, int(component[host]), 2 + island_index, other))
-    detours = {}
-    for island_index in _reverse_join_order(joins, count):
-        trimmed = _trimmed(walks[island_index], half_width)
-        length = float(arc_lengths(trimmed)[-1])
-        children = [
-            (min(max(position - half_width, 0.0), length), child, foot)
-            for position, child, foot in joins[2 + island_index]
-        ]
-        detours[island_index] = _splice(trimmed, children, detours, half_width, merge)
+    origin = local_origin(*chains, *rings)
+    islands = _Islands.near_origin(chains, rings, origin)
+    local = [chain - origin for chain in chains]
+    joining = _join_all(local, islands)
+    detours = _detours(joining, islands)
     bridged = []
-    for side, original in enumerate((c1, c2)):
-        chain = _splice(chains[side], joins[side], detours, half_width, merge) + origin
-        ends = _as_array(original)[[0, -1]]
-        chain[0], chain[-1] = ends[0], ends[1]
+    for side, original in enumerate(chains):
+        chain = _splice(local[side], joining.joins[side], detours, islands.half_width, islands.coincidence) + origin
+        chain[0], chain[-1] = original[0], original[-1]
         bridged.append(chain)
     return bridged[0], bridged[1]
 
 
-class _Target:
-    """A polyline a slit may end on (a chain, or the walk around a joined island), with a spatial index."""
+@dataclass(frozen=True)
+class _Islands:
+    """The islands of one region, shifted near the origin, and the distances every slit is built with.
+
+    Attributes
+    ----------
+    rings : list of ndarray of shape (m + 1, 2)
+        Closed ring of each island, CRS units.
+    polygons : ndarray of Polygon
+        Each island as a polygon.
+    tree : STRtree
+        Index of ``polygons``.
+    tie : float
+        Distance, CRS units, under which two candidate pairs are equally near.
+    coincidence : float
+        Distance, CRS units, under which two points are the same.
+    half_width : float
+        Half the width of a slit, CRS units.
+    """
+
+    rings: list
+    polygons: np.ndarray
+    tree: shapely.STRtree
+    tie: float
+    coincidence: float
+    half_width: float
+
+    @classmethod
+    def near_origin(cls, chains, rings, origin):
+        """Shift the island rings by ``-origin`` and size the tolerances from the chains and the rings."""
+        extent = extent_of(*chains, *rings)
+        largest = float(max(max(np.abs(part).max() for part in (*chains, *rings)), 1.0))
+        half_width = max(SLIT_WIDTH * extent, SLIT_ULPS * float(np.spacing(largest))) / 2.0
+        rings = [ring - origin for ring in rings]
+        polygons = np.array([Polygon(ring) for ring in rings], dtype=object)
+        return cls(
+            rings=rings,
+            polygons=polygons,
+            tree=shapely.STRtree(polygons),
+            tie=BANK_TIE_TOLERANCE * extent,
+            coincidence=COINCIDENCE_TOLERANCE * extent,
+            half_width=half_width,
+        )
+
+
+class _Target(IndexedPolyline):
+    """A polyline a slit may end on (a chain, or the walk around a joined island): indexed, with its line."""
 
     def __init__(self, coordinates):
-        """Index the segments of ``coordinates`` (an (n, 2) array, CRS units)."""
-        self.coordinates = coordinates
-        self.starts = coordinates[:-1]
-        self.directions = coordinates[1:] - coordinates[:-1]
-        self.positions = np.concatenate([[0.0], np.cumsum(np.hypot(*self.directions.T))])
-        self.segments = shapely.linestrings(np.stack([coordinates[:-1], coordinates[1:]], axis=1))
-        self.tree = shapely.STRtree(self.segments)
-        self.line = LineString(coordinates)
+        """Index the segments of ``coordinates`` (an (n, 2) array, CRS units) and prepare the line."""
+        super().__init__(coordinates)
+        self.line = LineString(self.xy)
         shapely.prepare(self.line)
 
-    def distance_to(self, geometries):
-        """Return the distance, CRS units, from each geometry to the polyline."""
-        return self.tree.query_nearest(geometries, return_distance=True, all_matches=False)[1]
 
-    def nearest(self, points):
-        """Return the nearest point of the polyline to each point and its arc length along the polyline.
+@dataclass(frozen=True)
+class _Slit:
+    """A slit: its point ``Q`` on the island, its foot ``F`` on the host and ``F``'s arc length (CRS units)."""
 
-        Parameters
-        ----------
-        points : ndarray of shape (m, 2)
-            CRS units.
-
-        Returns
-        -------
-        feet : ndarray of shape (m, 2)
-        positions : ndarray of shape (m,)
-            CRS units from the polyline's start.
-        """
-        segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
-        direction = self.directions[segment]
-        squared = np.einsum("ij,ij->i", direction, direction)
-        along = np.einsum("ij,ij->i", points - self.starts[segment], direction) / np.where(squared > 0, squared, 1.0)
-        along = np.clip(along, 0.0, 1.0)
-        feet = self.starts[segment] + along[:, None] * direction
-        return feet, self.positions[segment] + along * np.sqrt(squared)
+    island_point: np.ndarray
+    foot: np.ndarray
+    position: float
 
 
-def _next_join(pairs, component, islands, island_tree, targets, slits, rings, tie, merge):
-    """Pick the next island to join, its host and its slit (the nearest free pair, ties to ``c1``).
+@dataclass
+class _Joining:
+    """The state of joining the islands one by one.
 
-    Parameters
+    Hosts are numbered 0 and 1 for the chains and ``2 + j`` for island ``j`` once it has joined.
+
+    Attributes
     ----------
     pairs : list of (float, int, int, int)
         Heap of candidate pairs: distance (CRS units), chain of the host (0 or 1), host, island. Pairs whose
         every slit is blocked are dropped from it.
     component : ndarray of shape (k + 2,)
         Chain (0 or 1) each host belongs to, -1 for islands not yet joined.
-    islands : ndarray of Polygon
-        All islands.
-    island_tree : STRtree
-        Index of ``islands``.
     targets : list of _Target or None
-        The chains, then the walk around each joined island.
+        Per host, the polyline a slit to it may end on.
     slits : list of LineString
         Slits made so far.
-    rings : list of ndarray
-        Closed rings of the islands, CRS units.
-    tie : float
-        Distance, CRS units, under which two pairs are equally near.
-    merge : float
-        Distance, CRS units, under which two points are the same.
+    walks : list of ndarray or None
+        Per island, its closed walk from ``Q`` around back to ``Q``.
+    joins : list of list of (float, int, ndarray)
+        Per host, the islands joined to it: foot's arc length along the host, island index, foot.
+    """
+
+    pairs: list
+    component: np.ndarray
+    targets: list
+    slits: list = field(default_factory=list)
+    walks: list = field(default_factory=list)
+    joins: list = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class _SlitSearch:
+    """One island to join to one host: where its slit may end and what it must not touch.
+
+    Attributes
+    ----------
+    island : int
+        Index of the island.
+    target : _Target
+        Where the slit may end: the host chain, or the walk around the host island.
+    inside : Polygon or None
+        The host island, whose inside the slit must not enter; None for a chain.
+    excluded : frozenset of int
+        Islands the slit may touch: the island itself and the host island.
+    walls : list of LineString
+        Chains the slit must not touch (the other chain; both for an island host).
+    slit_tree : STRtree or None
+        Earlier slits, which the slit must not touch.
+    """
+
+    island: int
+    target: _Target
+    inside: Optional[Polygon]
+    excluded: frozenset
+    walls: list
+    slit_tree: Optional[shapely.STRtree]
+
+
+def _join_all(chains, islands):
+    """Join every island to a host, nearest free pair first (see the module docstring).
+
+    Parameters
+    ----------
+    chains : list of two ndarray of shape (n, 2)
+        The chains, shifted like the islands, CRS units.
+    islands : _Islands
 
     Returns
     -------
-    island_index : int
+    _Joining
+        With every island's walk and every host's joins filled in.
+    """
+    count = len(islands.rings)
+    region_on_left = signed_area(np.concatenate([chains[0], chains[1][::-1]])) >= 0.0
+    targets = [_Target(chains[0]), _Target(chains[1])] + [None] * count
+    bank_distance = np.stack([target.distance_to(islands.polygons) for target in targets[:2]], axis=1)
+    reach = float(bank_distance.min(axis=1).max()) + islands.tie
+    pairs = [(float(bank_distance[i, side]), side, side, i) for i in range(count) for side in (0, 1)]
+    heapq.heapify(pairs)
+    component = np.full(count + 2, -1)
+    component[:2] = (0, 1)
+    joining = _Joining(pairs, component, targets, walks=[None] * count, joins=[[] for _ in range(count + 2)])
+    for _ in range(count):
+        island, host, slit = _next_join(joining, islands)
+        joining.slits.append(LineString([slit.island_point, slit.foot]))
+        component[2 + island] = component[host]
+        clockwise = region_on_left if component[host] == 0 else not region_on_left
+        joining.walks[island] = _around(islands.rings[island], slit.island_point, clockwise, islands.coincidence)
+        targets[2 + island] = _Target(joining.walks[island])
+        joining.joins[host].append((slit.position, island, slit.foot))
+        polygon = islands.polygons[island]
+        near = islands.tree.query(polygon, predicate="dwithin", distance=reach)
+        near = near[component[2 + near] < 0]
+        for other, gap in zip(near.tolist(), shapely.distance(islands.polygons[near], polygon).tolist()):
+            heapq.heappush(joining.pairs, (gap, int(component[host]), 2 + island, other))
+    return joining
+
+
+def _detours(joining, islands):
+    """Return each island's walk, trimmed by the slit's half width, with its own islands spliced in.
+
+    Parameters
+    ----------
+    joining : _Joining
+        After :func:`_join_all`.
+    islands : _Islands
+
+    Returns
+    -------
+    dict of int to ndarray
+        Per island, its detour from beside ``Q`` around back to beside ``Q``, CRS units.
+    """
+    detours = {}
+    half_width = islands.half_width
+    for island in _reverse_join_order(joining.joins, len(islands.rings)):
+        trimmed = _trimmed(joining.walks[island], half_width)
+        length = float(cumulative_lengths(trimmed)[-1])
+        children = [
+            (min(max(position - half_width, 0.0), length), child, foot)
+            for position, child, foot in joining.joins[2 + island]
+        ]
+        detours[island] = _splice(trimmed, children, detours, half_width, islands.coincidence)
+    return detours
+
+
+def _next_join(joining, islands):
+    """Pick the next island to join, its host and its slit (the nearest free pair, ties to ``c1``).
+
+    Parameters
+    ----------
+    joining : _Joining
+        The state so far; blocked pairs are dropped from ``joining.pairs``.
+    islands : _Islands
+
+    Returns
+    -------
+    island : int
     host : int
         0 or 1 for a chain, ``2 + j`` for island ``j``.
-    slit : (ndarray of shape (2,), ndarray of shape (2,), float)
-        The slit's point on the island, its foot on the host and the foot's arc length along the host.
+    slit : _Slit
 
     Raises
     ------
     IncirCuError
         If no island left can be joined without crossing something.
     """
-    slit_tree = shapely.STRtree(slits) if slits else None
+    pairs, component = joining.pairs, joining.component
+    slit_tree = shapely.STRtree(joining.slits) if joining.slits else None
     while True:
         while pairs and component[2 + pairs[0][3]] >= 0:
             heapq.heappop(pairs)
         if not pairs:
             left = np.flatnonzero(component[2:] < 0)
-            where = islands[left[0]].representative_point().coords[0]
+            where = islands.polygons[left[0]].representative_point().coords[0]
             raise IncirCuError(
                 f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
                 " use the option to ignore islands."
             )
-        nearest = pairs[0][0]
-        tied = []
-        while pairs and pairs[0][0] <= nearest + tie:
-            tied.append(heapq.heappop(pairs))
-        tied.sort(key=lambda pair: (pair[1], pair[2], pair[3]))
-        chosen = next(pair for pair in tied if component[2 + pair[3]] < 0)
-        for pair in tied:
-            if pair is not chosen:
-                heapq.heappush(pairs, pair)
-        _, _, host, island_index = chosen
-        excluded = {island_index, host - 2}
-        walls = [targets[side].line for side in (0, 1) if side != host]
-        inside = islands[host - 2] if host >= 2 else None
-        slit = _free_slit(
-            rings[island_index],
-            islands[island_index],
-            targets[host],
-            inside,
-            island_tree,
-            excluded,
-            walls,
-            slit_tree,
-            merge,
+        _, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
+        search = _SlitSearch(
+            island=island,
+            target=joining.targets[host],
+            inside=islands.polygons[host - 2] if host >= 2 else None,
+            excluded=frozenset({island, host - 2}),
+            walls=[joining.targets[side].line for side in (0, 1) if side != host],
+            slit_tree=slit_tree,
         )
+        slit = _free_slit(search, islands)
         if slit is not None:
-            return island_index, host, slit
+            return island, host, slit
+
+
+def _pop_nearest_pair(pairs, component, tie):
+    """Pop the nearest pair of an island not joined yet; among pairs within ``tie`` of it, ``c1``'s first."""
+    nearest = pairs[0][0]
+    tied = []
+    while pairs and pairs[0][0] <= nearest + tie:
+        tied.append(heapq.heappop(pairs))
+    tied.sort(key=lambda pair: (pair[1], pair[2], pair[3]))
+    chosen = next(pair for pair in tied if component[2 + pair[3]] < 0)
+    for pair in tied:
+        if pair is not chosen:
+            heapq.heappush(pairs, pair)
+    return chosen
 
 
 def _reverse_join_order(joins, count):
@@ -282,13 +377,6 @@ def _reverse_join_order(joins, count):
         order.append(island_index)
         stack.extend(entry[1] for entry in joins[2 + island_index])
     return order[::-1]
-
-
-def _as_array(chain):
-    """Return a chain's vertices as a float array of shape (n, 2)."""
-    if isinstance(chain, shapely.Geometry):
-        return shapely.get_coordinates(chain).astype(float)
-    return np.asarray(chain, dtype=float)[:, :2].copy()
 
 
 def _island_ring(hole, index):
@@ -323,86 +411,75 @@ def _island_ring(hole, index):
     return np.concatenate([coordinates, coordinates[:1]])
 
 
-def _free_slit(ring, island, target, inside, island_tree, excluded, walls, slit_tree, merge):
+def _free_slit(search, islands):
     """Return the shortest free slit from an island to its host, or None.
+
+    Candidates start at the vertices of the island's ring densified to ``1 / SLIT_CANDIDATES`` of its
+    perimeter and end at their nearest points on the host; they are tried shortest first.
 
     Parameters
     ----------
-    ring : ndarray of shape (m + 1, 2)
-        The island's closed ring, CRS units.
-    island : Polygon
-        The island.
-    target : _Target
-        Where the slit may end: the host chain, or the walk around the host island.
-    inside : Polygon or None
-        The host island, whose inside the slit must not enter; None for a chain.
-    island_tree : STRtree
-        Index of all islands; the slit must touch none but those in ``excluded``.
-    excluded : set of int
-        The island itself and the host island.
-    walls : list of LineString
-        Chains the slit must not touch (the other chain; both for an island host).
-    slit_tree : STRtree or None
-        Earlier slits, which the slit must not touch.
-    merge : float
-        Distance, CRS units, under which two points are the same.
+    search : _SlitSearch
+        The island, its host and what the slit must not touch.
+    islands : _Islands
 
     Returns
     -------
-    (ndarray of shape (2,), ndarray of shape (2,), float) or None
-        The slit's point ``Q`` on the island, its foot ``F`` on the host and ``F``'s arc length along the
-        host.
+    _Slit or None
     """
-    outline = LinearRing(ring)
+    outline = LinearRing(islands.rings[search.island])
     starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
-    feet, positions = target.nearest(starts)
-    lengths = np.hypot(*(feet - starts).T)
+    lengths, positions, feet = search.target.nearest(starts)
     order = np.argsort(lengths, kind="stable")
     starts, feet, positions, lengths = starts[order], feet[order], positions[order], lengths[order]
     # The shortest slit is usually free: test it alone first, then all the others at once.
     for batch in (slice(0, 1), slice(1, None)):
-        free = _free_candidates(
-            starts[batch],
-            feet[batch],
-            lengths[batch],
-            island,
-            target,
-            inside,
-            island_tree,
-            excluded,
-            walls,
-            slit_tree,
-            merge,
-        )
+        free = _free_candidates(search, islands, starts[batch], feet[batch], lengths[batch])
         if len(free):
             chosen = batch.start + int(free[0])
-            return starts[chosen], feet[chosen], float(positions[chosen])
+            return _Slit(island_point=starts[chosen], foot=feet[chosen], position=float(positions[chosen]))
     return None
 
 
-def _free_candidates(starts, feet, lengths, island, target, inside, island_tree, excluded, walls, slit_tree, merge):
-    """Return the indices of the candidate slits that touch nothing they must not (see :func:`_free_slit`)."""
-    long_enough = lengths > 2.0 * merge
+def _free_candidates(search, islands, starts, feet, lengths):
+    """Return the indices of the candidate slits that touch nothing they must not.
+
+    Parameters
+    ----------
+    search : _SlitSearch
+    islands : _Islands
+    starts, feet : ndarray of shape (m, 2)
+        Each candidate's point on the island and its foot on the host, CRS units.
+    lengths : ndarray of shape (m,)
+        Each candidate's length, CRS units.
+
+    Returns
+    -------
+    ndarray of int
+        Increasing indices into the candidates.
+    """
+    coincidence = islands.coincidence
+    long_enough = lengths > 2.0 * coincidence
     direction = np.zeros_like(starts)
     direction[long_enough] = (feet - starts)[long_enough] / lengths[long_enough, None]
-    inner = shapely.linestrings(np.stack([starts + merge * direction, feet - merge * direction], axis=1))
-    blocked = shapely.intersects(inner, island) | shapely.intersects(inner, target.line)
-    if inside is not None:
-        blocked |= shapely.intersects(inner, inside)
+    inner = shapely.linestrings(np.stack([starts + coincidence * direction, feet - coincidence * direction], axis=1))
+    blocked = shapely.intersects(inner, islands.polygons[search.island]) | shapely.intersects(inner, search.target.line)
+    if search.inside is not None:
+        blocked |= shapely.intersects(inner, search.inside)
     blocked &= long_enough
     whole = shapely.linestrings(np.stack([starts, feet], axis=1))
     whole[~long_enough] = shapely.points(feet[~long_enough])
-    candidate, hit = island_tree.query(whole, predicate="intersects")
-    other = ~np.isin(hit, list(excluded))
+    candidate, hit = islands.tree.query(whole, predicate="intersects")
+    other = ~np.isin(hit, list(search.excluded))
     blocked[candidate[other]] = True
-    for wall in walls:
+    for wall in search.walls:
         blocked |= shapely.intersects(whole, wall)
-    if slit_tree is not None:
-        blocked[slit_tree.query(whole, predicate="intersects")[0]] = True
+    if search.slit_tree is not None:
+        blocked[search.slit_tree.query(whole, predicate="intersects")[0]] = True
     return np.flatnonzero(~blocked)
 
 
-def _splice(path, joins, detours, half_width, merge):
+def _splice(path, joins, detours, half_width, coincidence):
     """Insert island detours into a path (a chain or the walk around an island) at their slit feet.
 
     Each slit is a corridor ``2 * half_width`` wide: the path leaves itself ``half_width`` before the foot
@@ -420,7 +497,7 @@ def _splice(path, joins, detours, half_width, merge):
         by ``half_width`` at both ends.
     half_width : float
         Half the width of a slit, CRS units.
-    merge : float
+    coincidence : float
         Distance, CRS units, under which two points are the same.
 
     Returns
@@ -430,7 +507,7 @@ def _splice(path, joins, detours, half_width, merge):
     """
     if not joins:
         return path.copy()
-    positions = arc_lengths(path)
+    positions = cumulative_lengths(path)
     pieces = []
     done = 0
     for position, island_index, _ in sorted(joins, key=lambda join: (join[0], join[1])):
@@ -438,43 +515,27 @@ def _splice(path, joins, detours, half_width, merge):
         back = min(max(position + half_width, leave), positions[-1])
         before = max(int(np.searchsorted(positions, leave, side="left")), done)
         pieces.append(path[done:before])
-        pieces.append(
-            np.concatenate(
-                [_point_at(path, positions, leave)[None], detours[island_index], _point_at(path, positions, back)[None]]
-            )
-        )
+        leave_point, back_point = points_at(path, positions, np.array([leave, back]))
+        pieces.append(np.concatenate([leave_point[None], detours[island_index], back_point[None]]))
         done = max(int(np.searchsorted(positions, back, side="right")), done)
     pieces.append(path[done:])
     joined = np.concatenate(pieces)
     step = np.hypot(*np.diff(joined, axis=0).T)
-    return joined[np.concatenate([[True], step > merge])]
+    return joined[np.concatenate([[True], step > coincidence])]
 
 
 def _trimmed(walk, half_width):
     """Return a closed walk without its first and last ``half_width`` of arc length (the slit's two sides)."""
-    positions = arc_lengths(walk)
+    positions = cumulative_lengths(walk)
     total = positions[-1]
     if total <= 2.0 * half_width:
         return walk.copy()
     keep = (positions > half_width) & (positions < total - half_width)
-    return np.concatenate(
-        [
-            _point_at(walk, positions, half_width)[None],
-            walk[keep],
-            _point_at(walk, positions, total - half_width)[None],
-        ]
-    )
+    start, end = points_at(walk, positions, np.array([half_width, total - half_width]))
+    return np.concatenate([start[None], walk[keep], end[None]])
 
 
-def _point_at(path, positions, at):
-    """Return the point at arc length ``at`` of a polyline whose vertices are at ``positions``."""
-    index = int(np.clip(np.searchsorted(positions, at, side="right") - 1, 0, len(path) - 2))
-    span = positions[index + 1] - positions[index]
-    fraction = 0.0 if span <= 0.0 else min(max((at - positions[index]) / span, 0.0), 1.0)
-    return path[index] + fraction * (path[index + 1] - path[index])
-
-
-def _around(ring, start, clockwise, merge):
+def _around(ring, start, clockwise, coincidence):
     """Return an island's ring as a closed walk from ``start`` back to ``start`` in the asked direction.
 
     Parameters
@@ -485,7 +546,7 @@ def _around(ring, start, clockwise, merge):
         A point on the ring (the slit's end ``Q``).
     clockwise : bool
         Direction of the walk.
-    merge : float
+    coincidence : float
         Distance, CRS units, under which ``start`` is an existing vertex.
 
     Returns
@@ -496,14 +557,12 @@ def _around(ring, start, clockwise, merge):
     if (signed_area(ring) < 0.0) != clockwise:
         ring = ring[::-1]
     loop = ring[:-1]
-    line = LinearRing(ring)
-    position = line.project(shapely.points(start))
-    edges = np.hypot(*np.diff(ring, axis=0).T)
-    cumulative = np.concatenate([[0.0], np.cumsum(edges)])
     nearest = int(np.argmin(np.hypot(*(loop - start).T)))
-    if np.hypot(*(loop[nearest] - start)) <= merge:
+    if np.hypot(*(loop[nearest] - start)) <= coincidence:
         rolled = np.roll(loop, -nearest, axis=0)
         return np.concatenate([rolled, rolled[:1]])
+    position = LinearRing(ring).project(shapely.points(start))
+    cumulative = cumulative_lengths(ring)
     edge = int(np.clip(np.searchsorted(cumulative, position, side="right") - 1, 0, len(loop) - 1))
     rolled = np.roll(loop, -(edge + 1), axis=0)
     return np.concatenate([start[None], rolled, start[None]])

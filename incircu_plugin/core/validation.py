@@ -1,4 +1,6 @@
-"""Checks of the public API's input: coordinates float64 can compute with, numeric options, split points.
+"""Checks of the public API's input: coordinates float64 can compute with, split points, the snap tolerance.
+
+The engine checks its own options (``spacing``, ``samples_per_chain``, ``tolerance``).
 
 Every check raises a typed :class:`IncirCuError` whose message says what to change; plain Python type misuse
 (a string where a geometry is expected) raises ``TypeError``.
@@ -74,32 +76,6 @@ def check_coordinates(coordinates, name, whole=True):
         )
 
 
-def positive_length(value, name, default=None):
-    """Return an optional positive length as a float.
-
-    Parameters
-    ----------
-    value : float or None
-        CRS units; None or 0 give ``default``.
-    name : str
-        Option name for messages.
-    default : float, optional
-
-    Raises
-    ------
-    OptionError
-        If the value is not a number, not finite, or negative.
-    """
-    if value is None:
-        return default
-    number = _number(value, name)
-    if number == 0:
-        return default
-    if not math.isfinite(number) or number < 0:
-        raise OptionError(f"{name} must be a positive, finite distance in CRS units (or None), got {value!r}.")
-    return number
-
-
 def tolerance_length(value, name):
     """Return an optional non-negative tolerance as a float (None stays None: the caller's default).
 
@@ -114,22 +90,6 @@ def tolerance_length(value, name):
     if not math.isfinite(number) or number < 0:
         raise OptionError(f"{name} must be a non-negative, finite distance in CRS units (or None), got {value!r}.")
     return number
-
-
-def sample_count(value, name="samples_per_chain"):
-    """Return an optional count of samples (a whole number of at least 1) as an int.
-
-    Raises
-    ------
-    OptionError
-        If the value is not a whole, finite number of at least 1.
-    """
-    if value is None:
-        return None
-    number = _number(value, name)
-    if not math.isfinite(number) or number < 1 or number != math.floor(number):
-        raise OptionError(f"{name} must be a whole number of at least 1 (or None), got {value!r}.")
-    return int(number)
 
 
 def _number(value, name):

@@ -11,8 +11,8 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .chains import arc_lengths
 from .errors import IncirCuError
+from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, points_at
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,7 @@ def vertex_chainages(result):
         Chainage of every vertex, CRS units; 0 at the first, the line's length at the last.
     """
     vertices = shapely.get_coordinates(result.line)
-    return arc_lengths(vertices)
+    return cumulative_lengths(vertices)
 
 
 def incircle_polygons(result, quad_segs=16):
@@ -173,19 +173,13 @@ def transects(result, interval, chains=None):
     stations = stations[(stations >= low) & (stations <= high)]
     if len(stations) == 0:
         return []
-    segment = np.clip(np.searchsorted(chainages, stations, side="right") - 1, 0, len(vertices) - 2)
-    span = chainages[segment + 1] - chainages[segment]
-    fraction = np.where(span > 0.0, (stations - chainages[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
-    fraction = np.clip(fraction, 0.0, 1.0)[:, None]
-    centres = vertices[segment] + fraction * (vertices[segment + 1] - vertices[segment])
-    radius = radii[segment] + fraction[:, 0] * (radii[segment + 1] - radii[segment])
+    along = points_at(np.column_stack([vertices, radii, foot_a, foot_b]), chainages, stations)
+    centres, radius = along[:, :2], along[:, 2]
     if chains is not None:
-        feet = [_nearest_points(chain, centres) for chain in chains]
+        names = ("first chain", "second chain")
+        feet = [nearest_on_polyline(as_coordinates(chain, name), centres)[2] for chain, name in zip(chains, names)]
     else:
-        feet = [
-            _foot_towards(centres, radius, foot[segment] + fraction * (foot[segment + 1] - foot[segment]))
-            for foot in (foot_a, foot_b)
-        ]
+        feet = [_foot_towards(centres, radius, along[:, 3:5]), _foot_towards(centres, radius, along[:, 5:7])]
     lines = np.stack([feet[0], centres, feet[1]], axis=1)
     widths = np.hypot(*(feet[0] - centres).T) + np.hypot(*(feet[1] - centres).T)
     scale = max(length, float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
@@ -264,22 +258,3 @@ def _foot_towards(centres, radius, towards):
         unit = offset / norm[:, None]
     unit[norm <= 0.0] = np.nan
     return centres + radius[:, None] * unit
-
-
-def _nearest_points(chain, points):
-    """Return the nearest point of a chain to each of ``points``.
-
-    Parameters
-    ----------
-    chain : LineString or ndarray of shape (n, 2)
-        CRS units.
-    points : ndarray of shape (m, 2)
-        CRS units.
-
-    Returns
-    -------
-    ndarray of shape (m, 2)
-    """
-    line = chain if isinstance(chain, shapely.Geometry) else LineString(np.asarray(chain, dtype=float)[:, :2])
-    shortest = shapely.shortest_line(shapely.points(points), line)
-    return shapely.get_coordinates(shortest)[1::2]

@@ -1,0 +1,677 @@
+"""Error-bounded adaptive tracing of the medial axis between two chains (the engine's default).
+
+Along each chain the point where a maximal disk touches it moves over *spans*: the edges (the disk slides
+along the edge, centre on the edge's normal) and the reflex vertices (the disk pivots about the vertex, its
+centre on a fan of directions between the two edges' normals). On a span the disk's first contact with
+the rest of the boundary is one *site* (a segment's interior or a vertex) between *events*, and between two
+events the medial axis is a straight line (two lines, or two points) or a parabola (a point and a line).
+
+Samples start at the ends of every span. Between two neighbouring samples of a span whose first contacts
+are different sites, the event where the two contacts are equally far is computed in closed form (a
+quadratic along an edge, ``R cos(u - psi) = c`` on a fan) and probed with the exact contact solver; if a
+third site is nearer, the interval is split there and the next round looks again. Every round handles all
+open intervals at once (numpy). When neighbours share their site the axis between them is known: a straight
+piece needs no vertex; a parabola gets stations placed analytically so that each chord stays within the
+tolerance of it. Every vertex is therefore exactly on the medial axis: a solved sample, an event or a
+point of a parabola computed in closed form.
+
+A convex vertex needs no sample: the edges next to it meet the corner's own edge line at ``t = 0``, and the
+event where that line and the other chain are equally far is the junction of the corner's branch with the
+axis. Both chains are traced, so every vertex of the boundary starts samples and no site of either chain is
+missed between samples of the other.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .contacts import CLEAR, SKIPPED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
+
+#: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
+EDGE, FAN = 0, 1
+
+#: Turn, radians, under which a vertex counts as straight (its two edges lie on one line; a split point
+#: inserted into an edge is straight to about the coordinates' rounding over the edge's length).
+STRAIGHT_TURN = 1e-9
+
+#: Relative agreement (of the radius) under which a probe's first contact is the event of its interval.
+EVENT_TOLERANCE = 1e-8
+
+#: Relative slack under which a slightly negative discriminant is a double root (a contact sliding off a
+#: segment's end onto its vertex).
+DOUBLE_ROOT = 1e-8
+
+#: Most rounds of event location (each round at least halves the open intervals' count of unknown sites).
+MAX_ROUNDS = 64
+
+#: Intervals narrower than this fraction of their span (or of a radian) are closed.
+SMALLEST_INTERVAL = 1e-10
+
+
+@dataclass(frozen=True)
+class _Spans:
+    """The spans of both chains.
+
+    A sample at parameter ``u`` of span ``i`` lies at ``point + u * unit`` with direction ``normal`` on an
+    edge, and at ``point`` with direction ``cos(u) * unit + sin(u) * normal`` on a fan; ``segment`` is the
+    edge's global segment (a fan's incoming segment), ``length`` the parameter range (an angle on a fan),
+    ``position`` the arc length of ``point`` along its chain.
+    """
+
+    kind: np.ndarray
+    chain: np.ndarray
+    segment: np.ndarray
+    length: np.ndarray
+    point: np.ndarray
+    unit: np.ndarray
+    normal: np.ndarray
+    position: np.ndarray
+
+    def samples(self, span, u, boundary):
+        """The samples at parameters ``u`` of spans ``span``."""
+        edge = self.kind[span] == EDGE
+        along = np.where(edge, u, 0.0)
+        angle = np.where(edge, 0.0, u)
+        direction = np.where(
+            edge[:, None],
+            self.normal[span],
+            np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
+        )
+        segment = self.segment[span]
+        # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
+        at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
+        at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
+        return Samples(
+            chain=self.chain[span].astype(np.int8),
+            point=self.point[span] + along[:, None] * self.unit[span],
+            direction=direction,
+            scale=np.ones(len(span)),
+            position=self.position[span] + along,
+            slide=np.zeros(len(span)),
+            first_own=segment - at_start,
+            last_own=segment + (~edge | at_end),
+        )
+
+
+@dataclass
+class _Intervals:
+    """Intervals ``[u0, u1]`` of spans between two samples (indices ``left``, ``right``), with the sites first
+    touched at each end; ``verified`` once the stations of a parabola have been solved inside it."""
+
+    span: np.ndarray
+    u0: np.ndarray
+    u1: np.ndarray
+    left: np.ndarray
+    right: np.ndarray
+    site0: np.ndarray
+    site1: np.ndarray
+    verified: np.ndarray
+
+    def subset(self, index):
+        """The intervals ``index`` (an index array or mask)."""
+        return _Intervals(*(value[index] for value in vars(self).values()))
+
+    @staticmethod
+    def concatenate(parts):
+        """All intervals of ``parts``, one after the other."""
+        return _Intervals(*(np.concatenate(values) for values in zip(*(vars(part).values() for part in parts))))
+
+
+def _chain_geometry(chain, side):
+    """Unit edge directions, inward normals, and the kind of each interior vertex (+1 convex, -1 reflex, 0)."""
+    step = np.diff(chain, axis=0)
+    unit = step / np.hypot(*step.T)[:, None]
+    normal = side * left_normal(unit)
+    turn = np.arctan2(
+        unit[:-1, 0] * unit[1:, 1] - unit[:-1, 1] * unit[1:, 0], np.einsum("ij,ij->i", unit[:-1], unit[1:])
+    )
+    kind = np.where(side * turn > STRAIGHT_TURN, 1, np.where(side * turn < -STRAIGHT_TURN, -1, 0))
+    return unit, normal, turn, kind
+
+
+def _build_spans(chains, sides, boundary):
+    """The edge spans of both chains, then the fan spans of their reflex vertices."""
+    edges, fans = [], []
+    for chain_id, (chain, side) in enumerate(zip(chains, sides)):
+        unit, normal, turn, kind = _chain_geometry(chain, side)
+        offset = boundary.offset[chain_id]
+        count = len(chain) - 1
+        positions = boundary.position[chain_id]
+        edges.append(
+            (
+                np.full(count, EDGE),
+                np.full(count, chain_id),
+                offset + np.arange(count),
+                np.diff(positions),
+                chain[:-1],
+                unit,
+                normal,
+                positions[:-1],
+            )
+        )
+        reflex = np.flatnonzero(kind < 0) + 1
+        first_normal = normal[reflex - 1]
+        fans.append(
+            (
+                np.full(len(reflex), FAN),
+                np.full(len(reflex), chain_id),
+                offset + reflex - 1,
+                np.abs(turn[reflex - 1]),
+                chain[reflex],
+                first_normal,
+                np.sign(turn[reflex - 1])[:, None] * left_normal(first_normal),
+                positions[reflex],
+            )
+        )
+    return _Spans(*(np.concatenate(values) for values in zip(*(edges + fans))))
+
+
+def _vertex_kinds(chains, sides):
+    """Kind of every vertex of both chains (+1 convex, -1 reflex, 0 straight or chain end), chain after chain."""
+    kinds = []
+    for chain, side in zip(chains, sides):
+        kind = _chain_geometry(chain, side)[3]
+        kinds.append(np.concatenate([[0], kind, [0]]))
+    return np.concatenate(kinds)
+
+
+def _straight_runs(kinds, boundary):
+    """For each segment, the first segment of its run of segments on one line (the site it stands for), and
+    the arc length at the run's end."""
+    # The vertex kinds, chain after chain; a segment's start vertex is ``g + chain``.
+    segment = np.arange(boundary.segment_count)
+    starts_run = boundary.first_of_chain | (kinds[segment + boundary.chain_id] != 0)
+    first = np.maximum.accumulate(np.where(starts_run, segment, 0))
+    ends_run = np.append(starts_run[1:], True)
+    last = np.minimum.accumulate(np.where(ends_run, segment, boundary.segment_count)[::-1])[::-1]
+    return first, boundary.segment_end_position[last]
+
+
+class _Sites:
+    """Site arithmetic: which chain a site is on, the site a segment stands for, feet and radii on spans."""
+
+    def __init__(self, boundary, kinds):
+        self.boundary = boundary
+        self.kinds = kinds
+        self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
+
+    def canonical(self, site):
+        """Segment sites replaced by the first segment of their straight run (one line, one site)."""
+        count = self.boundary.segment_count
+        return np.where((site >= 0) & (site < count), self.line_of[np.clip(site, 0, count - 1)], site)
+
+    def chain(self, site):
+        """Chain of each site (-1 for no site)."""
+        b = self.boundary
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        return np.where(site < 0, -1, np.where(site < b.segment_count, b.chain_id[segment], b.vertex_chain[vertex]))
+
+    def feet(self, site, centre):
+        """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
+        b = self.boundary
+        is_segment = site < b.segment_count
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        run_length = self.run_end_position[segment] - b.segment_position[segment]
+        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
+        foot = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
+        position = np.where(is_segment, b.segment_position[segment] + along, b.vertex_position[vertex])
+        return foot, position
+
+    def distance(self, site, centre):
+        """Distance from ``centre`` to each site (a segment site: its whole straight run), CRS units."""
+        b = self.boundary
+        is_segment = site < b.segment_count
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        run_length = self.run_end_position[segment] - b.segment_position[segment]
+        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
+        nearest = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
+        return np.where(site >= 0, np.hypot(*(centre - nearest).T), np.inf)
+
+    def radius_terms(self, spans, span, site, u_ref):
+        """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
+
+        On an edge ``r(u) = a2 u**2 + a1 u + a0`` (a vertex: the parabola's height over the edge; a segment's
+        line: linear). On a fan ``1 / r(u) = a0 + a1 cos(u) + a2 sin(u)``. Returns ``(a0, a1, a2)``. A segment's
+        line is touched from the side of it where the sample at ``u_ref`` lies.
+        """
+        b = self.boundary
+        is_segment = site < b.segment_count
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        point, unit, normal = spans.point[span], spans.unit[span], spans.normal[span]
+        across = left_normal(b.unit[segment])
+        height = np.einsum("ij,ij->i", point - b.start[segment], across)
+        slope = np.einsum("ij,ij->i", unit, across)
+        edge = spans.kind[span] == EDGE
+        side = np.where(height + np.where(edge, u_ref * slope, 0.0) < 0, -1.0, 1.0)
+        offset = b.vertex[vertex] - point
+        with np.errstate(divide="ignore", invalid="ignore"):
+            # Edge, vertex site: offset a along and h across the edge.
+            a = np.einsum("ij,ij->i", offset, unit)
+            h = np.einsum("ij,ij->i", offset, normal)
+            # Edge, segment site: the signed height over the site's line changes by `slope` per unit of u.
+            closing = 0.5 * np.einsum("ij,ij->i", normal - side[:, None] * across, normal - side[:, None] * across)
+            edge_terms = (
+                np.where(is_segment, side * height / closing, (a * a + h * h) / (2.0 * h)),
+                np.where(is_segment, side * slope / closing, -a / h),
+                np.where(is_segment, 0.0, 1.0 / (2.0 * h)),
+            )
+            # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
+            squared = np.einsum("ij,ij->i", offset, offset)
+            distance = side * height
+            k = np.where(is_segment[:, None], -(side / distance)[:, None] * across, 2.0 * offset / squared[:, None])
+            fan_terms = (
+                np.where(is_segment, 1.0 / distance, 0.0),
+                np.einsum("ij,ij->i", k, unit),
+                np.einsum("ij,ij->i", k, normal),
+            )
+        return tuple(np.where(edge, e, f) for e, f in zip(edge_terms, fan_terms))
+
+
+def _radius_at(spans, span, terms, u):
+    """Evaluate :meth:`_Sites.radius_terms` at ``u``; inf where the site is never touched."""
+    a0, a1, a2 = terms
+    edge = spans.kind[span] == EDGE
+    with np.errstate(divide="ignore", invalid="ignore"):
+        on_edge = a0 + u * (a1 + u * a2)
+        inverse = a0 + a1 * np.cos(u) + a2 * np.sin(u)
+        radius = np.where(edge, on_edge, 1.0 / inverse)
+    return np.where(np.isfinite(radius) & (radius >= 0.0), radius, np.inf)
+
+
+def _crossing(spans, intervals, terms0, terms1):
+    """Parameter in ``[u0, u1]`` where both sites' radii are equal, and whether there is one."""
+    u0, u1 = intervals.u0, intervals.u1
+    d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # Edge: d2 u^2 + d1 u + d0 = 0, the stable pair of roots.
+        # A vertex at the end of a segment's line touches it: their radii meet in a double root, which
+        # rounding may push to a slightly negative discriminant (or a cosine slightly beyond 1 on a fan).
+        discriminant = d1 * d1 - 4.0 * d2 * d0
+        root = np.sqrt(np.where(discriminant > -DOUBLE_ROOT * d1 * d1, np.maximum(discriminant, 0.0), discriminant))
+        q = -0.5 * (d1 + np.where(d1 < 0, -root, root))
+        edge_roots = (q / d2, d0 / q)
+        # Fan: d0 + d1 cos(u) + d2 sin(u) = 0, i.e. R cos(u - psi) = -d0.
+        psi = np.arctan2(d2, d1)
+        cosine = -d0 / np.hypot(d1, d2)
+        swing = np.arccos(np.where(np.abs(cosine) < 1.0 + DOUBLE_ROOT, np.clip(cosine, -1.0, 1.0), cosine))
+        middle = 0.5 * (u0 + u1)
+        fan_roots = tuple(
+            middle + np.remainder(psi + sign * swing - middle + np.pi, 2.0 * np.pi) - np.pi for sign in (1, -1)
+        )
+    edge = spans.kind[intervals.span] == EDGE
+    slack = 1e-9 * (u1 - u0)
+    chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
+    for candidate in (np.where(edge, e, f) for e, f in zip(edge_roots, fan_roots)):
+        inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
+        chosen[inside], found[inside] = candidate[inside], True
+    # A crossing at an end was probed there already (the probe of the previous round): bisect instead.
+    found &= (chosen > u0 + slack) & (chosen < u1 - slack)
+    return np.where(found, chosen, middle), found
+
+
+def _parabola_stations(focus, anchor, unit, ends, tolerance):
+    """Points of parabolas (focus, directrix) between two of their points, chords within ``tolerance``.
+
+    In the directrix's frame the parabola is ``r(s) = (s**2 + h**2) / (2 h)`` (``s`` along the directrix
+    from the focus's foot, ``h`` the focus's height): the chord over ``[s, s + ds]`` deviates from it by
+    ``ds**2 / (8 sqrt(h**2 + m**2))``, ``m`` the chord's middle. Stations uniform in ``z = sqrt(|s| + h)``
+    on each side of the apex, ``dz = (sqrt(2) tolerance) ** 0.5`` apart, keep that below ``dz**2 /
+    sqrt(2) = tolerance`` (``ds = dz (z0 + z1)`` and ``sqrt(h**2 + m**2) >= (h + |m|) / sqrt(2)``); the
+    apex is a station when it lies between the ends.
+
+    Parameters
+    ----------
+    focus, anchor, unit : ndarray of shape (n, 2)
+        Each parabola's focus, a point of its directrix and the directrix's unit direction.
+    ends : ndarray of shape (n, 2, 2)
+        Two points of each parabola.
+    tolerance : float
+        Largest distance between a chord and its arc, CRS units.
+
+    Returns
+    -------
+    owner : ndarray of shape (m,)
+        The parabola of each station.
+    centre, radius : ndarray of shape (m, 2), (m,)
+        The stations and their distance to the focus (and the directrix), CRS units.
+    """
+    relative = focus - anchor
+    apex_along = np.einsum("ij,ij->i", relative, unit)
+    across = left_normal(unit)
+    height = np.einsum("ij,ij->i", relative, across)
+    towards_focus = np.where(height < 0, -1.0, 1.0)[:, None] * across
+    height = np.abs(height)
+    s = np.einsum("ijk,ik->ij", ends - anchor[:, None, :], unit) - apex_along[:, None]
+    low, high = s.min(axis=1), s.max(axis=1)
+    step_z = np.sqrt(np.sqrt(2.0) * tolerance)
+    owners, offsets = [], []
+    for sign, near, far in (
+        (1.0, np.maximum(low, 0.0), np.maximum(high, 0.0)),
+        (-1.0, -np.minimum(high, 0.0), -np.minimum(low, 0.0)),
+    ):
+        z_near, z_far = np.sqrt(near + height), np.sqrt(far + height)
+        count = np.where(far > near, np.ceil((z_far - z_near) / step_z), 0).astype(int)
+        owner, rank = ranges(np.maximum(count - 1, 0))
+        z = z_near[owner] + (rank + 1) * ((z_far - z_near) / np.maximum(count, 1))[owner]
+        owners.append(owner)
+        offsets.append(sign * (z * z - height[owner]))
+    apex = np.flatnonzero((low < 0.0) & (high > 0.0))
+    owner = np.concatenate(owners + [apex])
+    s = np.concatenate(offsets + [np.zeros(len(apex))])
+    radius = (s * s + height[owner] ** 2) / (2.0 * height[owner])
+    centre = anchor[owner] + (apex_along[owner] + s)[:, None] * unit[owner] + radius[:, None] * towards_focus[owner]
+    return owner, centre, radius
+
+
+class _Tracer:
+    """The samples of one adaptive tracing, grown round by round, and the rules that grow them."""
+
+    def __init__(self, chains, sides, boundary, closed, tolerance, width, max_t, min_t):
+        self.spans = _build_spans(chains, sides, boundary)
+        self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
+        self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
+        self.width, self.max_t, self.min_t = width, max_t, min_t
+        self.samples = None
+        self.t = self.status = self.site = self.other_site = self.emit = np.empty(0)
+
+    def add(self, samples, t, status, site, emit, other_site):
+        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain."""
+        start = len(self.t)
+        self.samples = samples if self.samples is None else Samples.concatenate([self.samples, samples])
+        self.t = np.concatenate([self.t, t])
+        self.status = np.concatenate([self.status, status]).astype(np.int8)
+        self.site = np.concatenate([self.site, site]).astype(int)
+        self.emit = np.concatenate([self.emit, emit]).astype(bool)
+        self.other_site = np.concatenate([self.other_site, other_site]).astype(int)
+        return np.arange(start, len(self.t))
+
+    def centres(self, index):
+        """Centres of the disks of samples ``index``."""
+        return self.samples.point[index] + self.t[index, None] * self.samples.direction[index]
+
+    def trace(self, report):
+        """Run the rounds; returns the emitted samples as :class:`AxisPoints`."""
+        intervals = self._initial(report)
+        for round_index in range(MAX_ROUNDS):
+            open_ = self._is_open(intervals)
+            curved = ~open_ & self._is_curved(intervals)
+            events, curves = intervals.subset(open_), intervals.subset(curved)
+            if len(events.span) + len(curves.span) == 0:
+                break
+            report(0.8 + 0.2 * round_index / MAX_ROUNDS)
+            event_u, event_trial, found = self._event_candidates(events)
+            owner, station_u, station_trial = self._stations(curves)
+            span = np.concatenate([events.span, curves.span[owner]])
+            u = np.concatenate([event_u, station_u])
+            probes = self.spans.samples(span, u, self.boundary)
+            t, status, _, _, site = solve(
+                probes,
+                np.arange(len(u)),
+                self.boundary,
+                np.concatenate([event_trial, station_trial]),
+                self.max_t,
+                self.min_t,
+            )
+            site = self.sites.canonical(site)
+            count = len(event_u)
+            event = self._is_event(events, probes.subset(slice(0, count)), t[:count], found)
+            emit, other_site = self._event_emission(events, status[:count], site[:count], event)
+            event_index = self.add(
+                probes.subset(slice(0, count)), t[:count], status[:count], site[:count], emit, other_site
+            )
+            # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
+            # known to the square root of the tie's tolerance only).
+            accepted = (status[count:] == CLEAR) | ((status[count:] != SKIPPED) & (site[count:] == curves.site0[owner]))
+            station_index = self.add(
+                probes.subset(slice(count, None)), t[count:], status[count:], site[count:], accepted, site[count:]
+            )
+            intervals = _Intervals.concatenate(
+                [
+                    _split_at(events, event_u, event_index, site[:count], event),
+                    _split_at_stations(curves, owner, station_u, station_index, site[count:]),
+                ]
+            )
+        return self._points()
+
+    def _initial(self, report):
+        """Solve the samples at both ends of every edge; returns the intervals of every span between them."""
+        spans, sites, b = self.spans, self.sites, self.boundary
+        samples, synthetic_site, synthetic_status = _initial_samples(spans, sites, self.closed, b)
+        solved = np.flatnonzero(synthetic_site < 0)
+        t = np.zeros(len(synthetic_site))
+        status, site = synthetic_status.copy(), synthetic_site.copy()
+        t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
+            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.8 * done)
+        )
+        site = sites.canonical(site)
+        emit = np.isfinite(t) & (status != SKIPPED)
+        self.add(samples, t, status, site, emit, site)
+        edge = np.arange(b.segment_count)
+        reflex = np.flatnonzero(spans.kind == FAN)
+        incoming = spans.segment[reflex]
+        left = np.concatenate([2 * edge, 2 * incoming + 1])
+        right = np.concatenate([2 * edge + 1, 2 * (incoming + 1)])
+        span = np.concatenate([edge, reflex])
+        return _Intervals(
+            span,
+            np.zeros(len(span)),
+            spans.length[span],
+            left,
+            right,
+            site[left],
+            site[right],
+            np.zeros(len(span), bool),
+        )
+
+    def _is_open(self, intervals):
+        """Intervals whose two ends touch different sites and that are still wide enough to split."""
+        scale = np.where(self.spans.kind[intervals.span] == EDGE, self.spans.length[intervals.span], 1.0)
+        finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
+        wide = intervals.u1 - intervals.u0 > SMALLEST_INTERVAL * scale
+        known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
+        return (intervals.site0 != intervals.site1) & finite & wide & known
+
+    def _is_curved(self, intervals):
+        """Intervals between samples touching one site of the other chain where the axis is a parabola.
+
+        A fan touching a segment traces the parabola of its vertex and that segment's line; an edge touching
+        a vertex with no fan (a chain's end) traces the parabola of that vertex and the edge's line. (An edge
+        touching a reflex vertex of the other chain traces the same curve as that vertex's fan, which places
+        the stations of both.)
+        """
+        spans, sites, b = self.spans, self.sites, self.boundary
+        span, site = intervals.span, intervals.site0
+        curved = (site == intervals.site1) & (site >= 0) & ~intervals.verified
+        curved &= np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
+        curved &= sites.chain(site) == 1 - spans.chain[span]
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        fan = (spans.kind[span] == FAN) & (site < b.segment_count)
+        edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & (sites.kinds[vertex] == 0)
+        return curved & (fan | edge)
+
+    def _event_candidates(self, intervals):
+        """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
+        span = intervals.span
+        middle = 0.5 * (intervals.u0 + intervals.u1)
+        terms0 = self.sites.radius_terms(self.spans, span, intervals.site0, middle)
+        terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
+        u, found = _crossing(self.spans, intervals, terms0, terms1)
+        radius = _radius_at(self.spans, span, terms0, u)
+        known = np.maximum(self.t[intervals.left], self.t[intervals.right])
+        trial = np.where(
+            found & np.isfinite(radius), 1.001 * radius, np.where(np.isfinite(known), 1.25 * known, self.width)
+        )
+        return u, np.maximum(trial, 0.0) + self.min_t, found
+
+    def _is_event(self, intervals, probes, t, found):
+        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first."""
+        centre = probes.point + t[:, None] * probes.direction
+        slack = EVENT_TOLERANCE * t + self.min_t
+        with np.errstate(invalid="ignore"):
+            event = found & (np.abs(self.sites.distance(intervals.site0, centre) - t) <= slack)
+            return event & (np.abs(self.sites.distance(intervals.site1, centre) - t) <= slack)
+
+    def _event_emission(self, intervals, status, site, event):
+        """Which probes are axis points, and the site of their foot on the other chain.
+
+        A clear probe is; a tie only at an event (near a tie the contact is known to the square root of the
+        tie's tolerance only); a skipped probe at an event between a site of each chain is (its disk touches
+        both chains, the rounding chose the own one).
+        """
+        chain = self.spans.chain[intervals.span]
+        other0 = self.sites.chain(intervals.site0) == 1 - chain
+        other1 = self.sites.chain(intervals.site1) == 1 - chain
+        forced = event & (status == SKIPPED) & (other0 | other1)
+        emit = (status == CLEAR) | ((status != SKIPPED) & event) | forced
+        other_site = np.where(forced, np.where(other0, intervals.site0, intervals.site1), site)
+        return emit, other_site
+
+    def _stations(self, intervals):
+        """Stations of the parabola of each curved interval: owner, span parameter, trial radius."""
+        spans, b = self.spans, self.boundary
+        span, site = intervals.span, intervals.site0
+        on_fan = spans.kind[span] == FAN
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        focus = np.where(on_fan[:, None], spans.point[span], b.vertex[vertex])
+        anchor = np.where(on_fan[:, None], b.start[segment], spans.point[span])
+        unit = np.where(on_fan[:, None], b.unit[segment], spans.unit[span])
+        ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
+        owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.tolerance)
+        offset = centre - spans.point[span[owner]]
+        angle = np.arctan2(
+            np.einsum("ij,ij->i", offset, spans.normal[span[owner]]),
+            np.einsum("ij,ij->i", offset, spans.unit[span[owner]]),
+        )
+        along = np.einsum("ij,ij->i", offset, spans.unit[span[owner]])
+        u = np.clip(np.where(on_fan[owner], angle, along), intervals.u0[owner], intervals.u1[owner])
+        return owner, u, 1.001 * radius + self.min_t
+
+    def _points(self):
+        """The emitted samples as :class:`AxisPoints`."""
+        index = np.flatnonzero(self.emit & np.isfinite(self.t))
+        centre = self.centres(index)
+        other_foot, other_position = self.sites.feet(self.other_site[index], centre)
+        return AxisPoints.from_chain_feet(
+            self.samples.chain[index],
+            centre,
+            self.t[index],
+            self.samples.point[index],
+            self.samples.position[index],
+            other_foot,
+            other_position,
+        )
+
+
+def _initial_samples(spans, sites, closed, boundary):
+    """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
+
+    A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
+    ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
+    point). Returns the samples and, per sample, the given site (-1: to be solved) and status.
+    """
+    edge_count = boundary.segment_count
+    edge = np.arange(edge_count)
+    u = np.stack([np.zeros(edge_count), spans.length[:edge_count]], axis=1).ravel()
+    samples = spans.samples(np.repeat(edge, 2), u, boundary)
+    site = np.full(2 * edge_count, -1)
+    status = np.full(2 * edge_count, SKIPPED, dtype=np.int8)
+    start_vertex = edge + boundary.chain_id
+    corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain
+    corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain
+    site[2 * edge[corner_at_start]] = edge[corner_at_start] - 1
+    site[2 * edge[corner_at_end] + 1] = edge[corner_at_end] + 1
+    if closed:
+        first_edges = np.array([boundary.offset[0], boundary.offset[1]])
+        last_edges = np.array([boundary.offset[1] - 1, edge_count - 1])
+        for edges, which, outward in ((first_edges, 0, 1.0), (last_edges, 1, -1.0)):
+            for chain_id in (0, 1):
+                own, other = edges[chain_id], edges[1 - chain_id]
+                # Convex at the split point: the other chain's end edge leaves it into the region.
+                if np.dot(outward * boundary.unit[other], spans.normal[own]) > STRAIGHT_TURN:
+                    site[2 * own + which] = other
+                    status[2 * own + which] = CLEAR
+    return samples, site, status
+
+
+def _split_at(intervals, u, probe_index, probe_site, event):
+    """The two halves of every interval at its probe: resolved at an event, else with the probe's site."""
+    unverified = np.zeros(len(u), dtype=bool)
+    left = _Intervals(
+        intervals.span,
+        intervals.u0,
+        u,
+        intervals.left,
+        probe_index,
+        intervals.site0,
+        np.where(event, intervals.site0, probe_site),
+        unverified,
+    )
+    right = _Intervals(
+        intervals.span,
+        u,
+        intervals.u1,
+        probe_index,
+        intervals.right,
+        np.where(event, intervals.site1, probe_site),
+        intervals.site1,
+        unverified,
+    )
+    return _Intervals.concatenate([left, right])
+
+
+def _split_at_stations(intervals, owner, u, probe_index, probe_site):
+    """Every curved interval cut at its stations (sorted by ``u``), the pieces marked verified."""
+    order = np.lexsort((u, owner))
+    owner, u, probe_index, probe_site = owner[order], u[order], probe_index[order], probe_site[order]
+    nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
+    node_owner, rank = ranges(nodes)
+    first, last = rank == 0, rank == nodes[node_owner] - 1
+    inner = ~first & ~last
+    node_u, node_index, node_site = np.empty(len(rank)), np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
+    node_u[first], node_index[first], node_site[first] = intervals.u0, intervals.left, intervals.site0
+    node_u[last], node_index[last], node_site[last] = intervals.u1, intervals.right, intervals.site1
+    node_u[inner], node_index[inner], node_site[inner] = u, probe_index, probe_site
+    a = np.flatnonzero(~last)
+    return _Intervals(
+        intervals.span[node_owner[a]],
+        node_u[a],
+        node_u[a + 1],
+        node_index[a],
+        node_index[a + 1],
+        node_site[a],
+        node_site[a + 1],
+        np.ones(len(a), dtype=bool),
+    )
+
+
+def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
+    """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
+
+    Parameters
+    ----------
+    chains : sequence of two ndarray of shape (n, 2)
+        The chains in the engine's local frame, CRS units.
+    sides : sequence of two float
+        +1 when the region lies left of the chain, -1 when right.
+    boundary : Boundary
+    closed : bool
+        The chains share both end points (a polygon split at two points).
+    tolerance : float
+        Largest distance between a parabola of the axis and its chords, CRS units.
+    width : float
+        Typical width, CRS units (the first trial radius).
+    max_t, min_t : float
+        Largest disk parameter searched, and the smallest one that counts as a contact, CRS units.
+    report : callable
+        ``report(done_fraction)``; raises to cancel.
+
+    Returns
+    -------
+    AxisPoints
+    """
+    return _Tracer(chains, sides, boundary, closed, tolerance, width, max_t, min_t).trace(report)

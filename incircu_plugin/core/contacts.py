@@ -1,0 +1,447 @@
+"""Contact kernels: the first boundary contact of a family of growing disks, in closed form and in bulk.
+
+For every sample ``P`` of a chain with inward direction ``b`` the disk family has centre ``P + t*b`` and
+radius ``k*t`` (``k = 1`` on an edge or at a reflex vertex, ``k = sin(alpha/2)`` on the bisector of a convex
+vertex of interior angle ``alpha``); it touches the chain at ``P`` only. :func:`solve` finds the first ``t``
+at which the disk touches any other part of the boundary, in closed form per segment, and which *site*
+(a segment's interior or a vertex) it touches there. When that first contact lies on the *other* chain the
+disk is a maximal empty disk touching both chains, so its centre lies on the medial axis between them.
+
+Candidate segments come from a shapely ``STRtree`` queried in bulk with the bounding box of a trial disk;
+a sample is settled once its first contact lies inside the trial disk, otherwise the trial parameter at most
+doubles, up to the best contact found so far.
+"""
+
+from dataclasses import dataclass, fields
+from functools import partial
+
+import numpy as np
+import shapely
+
+from .polyline import cumulative_lengths
+
+#: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
+ALONG_TOLERANCE = 1e-9
+
+#: Relative distance (of the vertex from the sample) within which a vertex counts as on a corner's edge line.
+GRAZING_TOLERANCE = 1e-10
+
+#: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
+#: ``TIE_TOLERANCE``, or on the other chain only.
+SKIPPED, TIED, CLEAR = 0, 1, 2
+
+#: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
+TIE_TOLERANCE = 1e-10
+
+#: Samples solved together (bounds the memory of the candidate pairs).
+CHUNK = 16_384
+
+#: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
+#: above the finest one for a chunk large enough.
+COARSE_STRIDE = 8
+COARSE_LEVELS = 2
+
+#: Consecutive samples whose candidate boxes share one spatial-index query.
+QUERY_GROUP = 2
+
+#: Consecutive segments that share one entry of the spatial index.
+INDEX_RUN = 4
+
+
+@dataclass(frozen=True)
+class Samples:
+    """Samples of the chains, sorted by chain, then by arc-length ``position`` along it.
+
+    The disk family of sample ``i`` has centre ``point + t*direction`` and radius ``scale*t``; segments
+    ``first_own..last_own`` (global indices) touch it by construction. At a convex vertex the disk touches
+    the incident edges ``slide*t`` away from the vertex (``slide`` is 0 elsewhere). ``chain`` is the
+    sample's own chain (0 or 1).
+    """
+
+    chain: np.ndarray
+    point: np.ndarray
+    direction: np.ndarray
+    scale: np.ndarray
+    position: np.ndarray
+    slide: np.ndarray
+    first_own: np.ndarray
+    last_own: np.ndarray
+
+    def subset(self, index):
+        """The samples ``index`` (an index array or mask)."""
+        return Samples(*(getattr(self, field.name)[index] for field in fields(self)))
+
+    @staticmethod
+    def concatenate(parts):
+        """All samples of ``parts``, one after the other."""
+        return Samples(*(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(Samples)))
+
+
+class Boundary:
+    """The segments of both chains, with a spatial index.
+
+    A *site* is what a disk can touch: the interior of segment ``g`` (site ``g``) or a vertex (site
+    ``segment_count + v``, with ``v`` the vertex's index in ``vertex``, the chains' vertices one chain after
+    the other).
+    """
+
+    def __init__(self, chains):
+        starts, ends, chain_ids, offsets, positions = [], [], [], [], []
+        count = 0
+        for chain_id, chain in enumerate(chains):
+            starts.append(chain[:-1])
+            ends.append(chain[1:])
+            chain_ids.append(np.full(len(chain) - 1, chain_id))
+            offsets.append(count)
+            count += len(chain) - 1
+            positions.append(cumulative_lengths(chain))
+        self.start = np.concatenate(starts)
+        self.end = np.concatenate(ends)
+        self.chain_id = np.concatenate(chain_ids)
+        self.offset = offsets
+        self.position = positions
+        self.segment_position = np.concatenate([p[:-1] for p in positions])
+        self.segment_end_position = np.concatenate([p[1:] for p in positions])
+        self.last_of_chain = np.zeros(count, dtype=bool)
+        self.last_of_chain[np.cumsum([len(c) - 1 for c in chains]) - 1] = True
+        self.first_of_chain = np.zeros(count, dtype=bool)
+        self.first_of_chain[offsets] = True
+        self.segment_count = count
+        self.vertex = np.concatenate(chains)
+        self.vertex_position = np.concatenate(positions)
+        self.vertex_chain = np.concatenate([np.full(len(chain), chain_id) for chain_id, chain in enumerate(chains)])
+        self.start_site = count + np.arange(count) + self.chain_id
+        delta = self.end - self.start
+        self.length = np.hypot(*delta.T)
+        self.unit = delta / self.length[:, None]
+        self.start_x, self.start_y = self.start[:, 0].copy(), self.start[:, 1].copy()
+        self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
+        low, high = np.minimum(self.start, self.end), np.maximum(self.start, self.end)
+        self.low_x, self.low_y = low[:, 0].copy(), low[:, 1].copy()
+        self.high_x, self.high_y = high[:, 0].copy(), high[:, 1].copy()
+        # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer GEOS geometries to
+        # build, store and search; a run's hits are filtered segment by segment.
+        run_start = np.arange(0, len(self.start), INDEX_RUN)
+        self.run_low = np.minimum.reduceat(low, run_start)
+        self.run_high = np.maximum.reduceat(high, run_start)
+        self.run_size = np.diff(np.append(run_start, len(self.start)))
+        self.tree = shapely.STRtree(
+            shapely.box(self.run_low[:, 0], self.run_low[:, 1], self.run_high[:, 0], self.run_high[:, 1])
+        )
+
+    def candidates(self, low, high):
+        """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
+
+        The index is queried once per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper
+        than one query per box when consecutive boxes overlap, as they do along a chain; the hits are then
+        filtered segment by segment and box by box.
+        """
+        count = len(low)
+        starts = np.arange(0, count, QUERY_GROUP)
+        group_low = np.minimum.reduceat(low, starts)
+        group_high = np.maximum.reduceat(high, starts)
+        group, run = self.tree.query(shapely.box(group_low[:, 0], group_low[:, 1], group_high[:, 0], group_high[:, 1]))
+        pair, offset = ranges(self.run_size[run])
+        group, segment = group[pair], run[pair] * INDEX_RUN + offset
+        keep = self._overlaps(segment, group_low[group], group_high[group])
+        group, segment = group[keep], segment[keep]
+
+        hits_per_group = np.bincount(group, minlength=len(starts))
+        first_hit = np.cumsum(hits_per_group) - hits_per_group
+        box_group = np.arange(count) // QUERY_GROUP
+        box, offset = ranges(hits_per_group[box_group])
+        segment = segment[first_hit[box_group[box]] + offset]
+        keep = self._overlaps(segment, low[box], high[box])
+        return box[keep], segment[keep]
+
+    def _overlaps(self, segment, low, high):
+        """Whether each segment's bounding box meets the matching box ``low..high``."""
+        keep = self.low_x[segment] <= high[:, 0]
+        keep &= self.high_x[segment] >= low[:, 0]
+        keep &= self.low_y[segment] <= high[:, 1]
+        keep &= self.high_y[segment] >= low[:, 1]
+        return keep
+
+
+def ranges(counts):
+    """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
+    owner = np.repeat(np.arange(len(counts)), counts)
+    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    return owner, rank
+
+
+def left_normal(vectors):
+    """The vectors turned a quarter turn counter-clockwise."""
+    return np.stack([-vectors[:, 1], vectors[:, 0]], axis=1)
+
+
+def rotate(vectors, angles):
+    """The vectors turned counter-clockwise by ``angles`` (radians)."""
+    cos, sin = np.cos(angles), np.sin(angles)
+    return np.stack([cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1)
+
+
+def vertex_contact(offset, height, b_along, b_across, scale, slide):
+    """First contact ``t`` with a segment's vertex, inf when none.
+
+    In the segment's frame the vertex lies ``offset`` along the segment from the sample point and ``-height``
+    across it; ``(b_along, b_across)`` is the sample's direction in that frame. With vertex - point =
+    x*b + y*b_perp, the contact solves slide^2 t^2 - 2 x t + |d|^2 = 0, whose discriminant factors as
+    (x*scale - |y|*slide) (x*scale + |y|*slide); the first factor is, up to a constant, the vertex's distance
+    from an incident line of a convex corner. A vertex on that line is touched as the disks slide along it (a
+    double root), so a factor that rounding pushed just below zero is taken as zero: the contact stays where it
+    is under tiny perturbations of the input.
+    """
+    x = b_along * offset - b_across * height
+    y = np.abs(b_along * height + b_across * offset)
+    squared = offset * offset + height * height
+    near = x * scale - y * slide
+    far = x * scale + y * slide
+    near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
+    return np.where((x > 0) & (near >= 0), t, np.inf)
+
+
+def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
+    """First contact ``t`` of each (sample, segment) pair, inf when the disk family never touches it.
+
+    ``(px, py)`` is the sample point, ``(bx, by)`` its unit direction, ``scale`` the radius per unit of
+    ``t`` (``sin`` of the half angle at a convex vertex, else 1) and ``slide`` the matching ``cos`` (else 0).
+    Returns ``t``, where on the segment the contact is (a length from its start) and the site touched
+    (see :class:`Boundary`).
+
+    A segment answers for its start vertex only (its end is the next segment's start, which is a candidate
+    whenever that vertex can be touched); the last segment of a chain answers for its end too.
+    """
+    ax, ay = boundary.start_x[segment], boundary.start_y[segment]
+    ux, uy = boundary.unit_x[segment], boundary.unit_y[segment]
+    length = boundary.length[segment]
+    dx, dy = px - ax, py - ay
+    along_p = dx * ux + dy * uy
+    height = dx * -uy + dy * ux
+    b_along = bx * ux + by * uy
+    b_across = by * ux - bx * uy
+
+    t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
+    t_end = np.full(len(segment), np.inf)
+    last = np.flatnonzero(boundary.last_of_chain[segment])
+    t_end[last] = vertex_contact(
+        length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
+    )
+
+    side = np.where(height < 0, -1.0, 1.0)
+    distance = side * height
+    # 1 - side * b_across is |b - side * across|**2 / 2 for unit vectors: no cancellation when the disk's
+    # direction nearly faces the segment's line (a nearly straight corner).
+    denominator = np.where(scale == 1.0, 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2), scale - side * b_across)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_tangent = distance / denominator
+        along = along_p + t_tangent * b_along
+    slack = ALONG_TOLERANCE * length
+    tangent = (distance > 0) & (denominator > 1e-12) & (along >= -slack) & (along <= length + slack)
+    # A tangency inside the segment is its first contact, and it is well conditioned; a contact through an
+    # end point only counts when there is no such tangency (near it, the vertex root is a double root that
+    # keeps only half the digits).
+    t_vertex = np.minimum(t_start, t_end)
+    t = np.where(tangent, t_tangent, t_vertex)
+    at_start = t_vertex == t_start
+    along = np.where(tangent, np.clip(along, 0.0, length), np.where(at_start, 0.0, length))
+    site = np.where(tangent, segment, boundary.start_site[segment] + np.where(at_start, 0, 1))
+    return t, along, site
+
+
+def group_minimum(group, values, size):
+    """Minimum of ``values`` per group id (``group`` sorted ascending); inf for empty groups."""
+    result = np.full(size, np.inf)
+    if len(group):
+        starts = np.flatnonzero(np.concatenate([[True], group[1:] != group[:-1]]))
+        result[group[starts]] = np.minimum.reduceat(values, starts)
+    return result
+
+
+def solve(samples, index, boundary, trial, max_t, min_t):
+    """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
+
+    Returns arrays aligned with ``index``: ``contact_t`` (parameter of the first contact with anything, inf
+    when none within ``max_t``), ``status`` (``SKIPPED``; ``TIED``: the first contact lies on the other
+    chain and, within ``TIE_TOLERANCE``, on the sample's own chain too; ``CLEAR``: on the other chain only),
+    for accepted samples the ``contact`` point and its arc-length ``position`` along the other chain, and
+    the ``site`` of the contact (for skipped samples the nearest site of their own chain; -1 when none).
+    """
+    count = len(index)
+    point, direction = samples.point[index], samples.direction[index]
+    scale, slide = samples.scale[index], samples.slide[index]
+    radius = np.array(trial, dtype=float)
+    contact_t = np.full(count, np.inf)
+    status = np.full(count, SKIPPED, dtype=np.int8)
+    contact = np.zeros((count, 2))
+    position = np.zeros(count)
+    site = np.full(count, -1)
+    active = np.arange(count)
+    while len(active):
+        centre = point[active] + radius[active, None] * direction[active]
+        # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
+        # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
+        reach = radius[active, None] * (1.0 + 1e-9)
+        query, segment = boundary.candidates(centre - reach, centre + reach)
+        pair = active[query]
+        sample = index[pair]
+        t, along, touched = first_contacts(
+            point[pair, 0],
+            point[pair, 1],
+            direction[pair, 0],
+            direction[pair, 1],
+            scale[pair],
+            slide[pair],
+            boundary,
+            segment,
+        )
+        own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
+        t[own_segment | (t <= min_t)] = np.inf
+        on_own = boundary.chain_id[segment] == samples.chain[sample]
+        t_own = np.where(on_own, t, np.inf)
+        t_other = np.where(on_own, np.inf, t)
+
+        best_own = group_minimum(pair, t_own, count)
+        best_other = group_minimum(pair, t_other, count)
+        best = np.minimum(best_own[active], best_other[active])
+        settled = best <= radius[active]
+        contact_t[active[settled]] = best[settled]
+        own_winner = np.flatnonzero(np.isfinite(t_own) & (t_own == best_own[pair]))
+        own_winner = own_winner[np.diff(pair[own_winner], prepend=-1) != 0]
+        site[pair[own_winner]] = touched[own_winner]
+
+        winner = np.isfinite(t_other) & (t_other == best_other[pair])
+        winner &= t_other <= best_own[pair] * (1.0 + TIE_TOLERANCE)
+        winner &= settled[np.searchsorted(active, pair)]
+        winner_pair = np.flatnonzero(winner)
+        # Pairs are sorted by sample: keep each sample's first winning pair.
+        chosen = winner_pair[np.diff(pair[winner_pair], prepend=-1) != 0]
+        chosen_sample, chosen_segment = pair[chosen], segment[chosen]
+        status[chosen_sample] = np.where(t[chosen] * (1.0 + TIE_TOLERANCE) < best_own[chosen_sample], CLEAR, TIED)
+        contact_t[chosen_sample] = t[chosen]
+        site[chosen_sample] = touched[chosen]
+        contact[chosen_sample] = boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
+        position[chosen_sample] = np.where(
+            along[chosen] >= boundary.length[chosen_segment],
+            boundary.segment_end_position[chosen_segment],
+            boundary.segment_position[chosen_segment] + along[chosen],
+        )
+
+        pending = active[~settled]
+        best = best[~settled]
+        radius[pending] = np.minimum(best, 2.0 * radius[pending])
+        active = pending[radius[pending] <= max_t]
+    return contact_t, status, contact, position, site
+
+
+def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
+    """Settle ``index`` (sorted by position) from coarse to fine.
+
+    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk) is
+    solved first from a global trial radius, then each finer level from trial radii interpolated between
+    the coarser levels' first contacts: a trial close to the answer keeps the candidate boxes tight where
+    the width varies. ``report(done)`` is called after each level with the number of samples settled.
+    """
+    count = len(index)
+    contact_t = np.full(count, np.nan)
+    status = np.zeros(count, dtype=np.int8)
+    contact = np.empty((count, 2))
+    position = np.empty(count)
+    site = np.empty(count, dtype=int)
+    # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
+    along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
+    stride = COARSE_STRIDE**COARSE_LEVELS if count > COARSE_STRIDE ** (COARSE_LEVELS + 1) else COARSE_STRIDE
+    while stride >= 1:
+        level = np.zeros(count, dtype=bool)
+        level[::stride] = True
+        level &= np.isnan(contact_t)
+        known = np.isfinite(contact_t)
+        if np.any(known):
+            estimate = np.interp(along[level], along[known], samples.scale[index[known]] * contact_t[known])
+            trial = 1.05 * estimate / samples.scale[index[level]]
+        else:
+            trial = np.full(level.sum(), trial_radius)
+        contact_t[level], status[level], contact[level], position[level], site[level] = solve(
+            samples, index[level], boundary, trial, max_t, min_t
+        )
+        report(count - np.isnan(contact_t).sum())
+        stride //= COARSE_STRIDE
+    return contact_t, status, contact, position, site
+
+
+@dataclass(frozen=True)
+class AxisPoints:
+    """Points of the medial axis between the chains, with their incircles, in no particular order.
+
+    Attributes
+    ----------
+    centre : ndarray of shape (n, 2)
+        CRS units (the engine's local frame).
+    radius : ndarray of shape (n,)
+        Incircle radius, CRS units.
+    foot_a, foot_b : ndarray of shape (n, 2)
+        Where the incircle touches the first and the second chain.
+    position_a, position_b : ndarray of shape (n,)
+        Arc length of ``foot_a`` along the first chain and of ``foot_b`` along the second, CRS units.
+    """
+
+    centre: np.ndarray
+    radius: np.ndarray
+    foot_a: np.ndarray
+    foot_b: np.ndarray
+    position_a: np.ndarray
+    position_b: np.ndarray
+
+    def subset(self, index):
+        """The points ``index`` (an index array or mask)."""
+        return AxisPoints(*(getattr(self, field.name)[index] for field in fields(self)))
+
+    @staticmethod
+    def concatenate(parts):
+        """All points of ``parts``, one after the other."""
+        return AxisPoints(
+            *(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(AxisPoints))
+        )
+
+    @staticmethod
+    def from_chain_feet(chain, centre, radius, own_foot, own_position, other_foot, other_position):
+        """Points whose feet are given as on the sampled chain (``chain``, 0 or 1) and on the other one."""
+        on_a = (chain == 0)[:, None]
+        return AxisPoints(
+            centre,
+            radius,
+            np.where(on_a, own_foot, other_foot),
+            np.where(on_a, other_foot, own_foot),
+            np.where(on_a[:, 0], own_position, other_position),
+            np.where(on_a[:, 0], other_position, own_position),
+        )
+
+
+def _report_from(report, begin, total, done):
+    """Report ``done`` samples settled in the chunk starting at ``begin`` as a fraction of ``total``."""
+    report((begin + done) / total)
+
+
+def solve_in_chunks(samples, index, boundary, trial_radius, max_t, min_t, report):
+    """:func:`solve_coarse_to_fine` on ``index`` (sorted by chain and position), ``CHUNK`` samples at a time.
+
+    ``report(done_fraction)`` is called as samples settle. Returns the arrays of :func:`solve`.
+    """
+    total = len(index)
+    solution = [
+        np.empty(total),
+        np.zeros(total, dtype=np.int8),
+        np.zeros((total, 2)),
+        np.zeros(total),
+        np.zeros(total, dtype=int),
+    ]
+    for begin in range(0, total, CHUNK):
+        chunk = slice(begin, min(begin + CHUNK, total))
+        parts = solve_coarse_to_fine(
+            samples, index[chunk], boundary, trial_radius, max_t, min_t, partial(_report_from, report, begin, total)
+        )
+        for whole, part in zip(solution, parts):
+            whole[chunk] = part
+    return solution

@@ -1,0 +1,316 @@
+"""Polyline helpers shared by the core: the one home of each small piece of polyline geometry.
+
+A *polyline* here is an ``(n, 2)`` float array of vertices in CRS units (a chain, a centerline, an island's
+ring). Its *arc length* at a point is the distance from its first vertex along it, CRS units; the
+*cumulative lengths* are the arc lengths of its vertices. Every helper is vectorised over its points.
+"""
+
+import numpy as np
+import shapely
+
+from .errors import InvalidGeometryError
+from .validation import check_coordinates
+
+
+def as_coordinates(geometry, name="line"):
+    """Return the vertices of a line as a new float array, rejecting empty or non-finite input.
+
+    Parameters
+    ----------
+    geometry : LineString, LinearRing or array_like of shape (n, 2)
+        The line, CRS units; extra dimensions (z, m) are dropped.
+    name : str
+        How messages call this line.
+
+    Returns
+    -------
+    ndarray of shape (n, 2)
+        CRS units; never a view of the input.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the geometry is null, empty, not a line, or has NaN, infinite or unusably large coordinates
+        (see :func:`.validation.check_coordinates`).
+    TypeError
+        If the geometry is text (WKT) rather than a geometry or coordinates.
+
+    Examples
+    --------
+    >>> from shapely.geometry import LineString
+    >>> as_coordinates(LineString([(0, 0, 5), (3, 4, 5)])).tolist()
+    [[0.0, 0.0], [3.0, 4.0]]
+    >>> try:
+    ...     as_coordinates([(0, 0), (float("nan"), 1)], "first line")
+    ... except InvalidGeometryError as error:
+    ...     print(error)
+    The first line has a NaN or infinite coordinate: (nan, 1.0).
+    """
+    if geometry is None:
+        raise InvalidGeometryError(f"The {name} is null (no geometry).")
+    if isinstance(geometry, shapely.Geometry):
+        if geometry.is_empty:
+            raise InvalidGeometryError(f"The {name} is empty.")
+        if geometry.geom_type not in ("LineString", "LinearRing"):
+            raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
+        coordinates = shapely.get_coordinates(geometry)
+    else:
+        if isinstance(geometry, (str, bytes)):
+            raise TypeError(f"The {name} must be a LineString or coordinates, not text (parse WKT with shapely first).")
+        try:
+            coordinates = np.asarray(geometry, dtype=float)
+        except (TypeError, ValueError):
+            raise InvalidGeometryError(f"The {name} must be an (n, 2) array of numbers.") from None
+        if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
+            raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
+        coordinates = coordinates[:, :2]
+    check_coordinates(coordinates, name, whole=False)
+    return np.array(coordinates, dtype=float)
+
+
+def cumulative_lengths(xy):
+    """Return the arc length of each vertex of a polyline: the distance along it from its first vertex.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2)
+        Vertices, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (n,)
+        CRS units, starting at 0 and non-decreasing; the last value is the polyline's length.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> cumulative_lengths(np.array([[0.0, 0.0], [3.0, 4.0], [3.0, 4.0], [3.0, 6.0]])).tolist()
+    [0.0, 5.0, 5.0, 7.0]
+    """
+    xy = np.asarray(xy, dtype=float)
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy[:, :2], axis=0).T))])
+
+
+def points_at(xy, cumulative, s):
+    """Return the points of a polyline at arc lengths ``s`` (linear interpolation between vertices).
+
+    ``xy`` may carry more columns than two (for instance a radius or the feet of each vertex): every
+    column is interpolated the same way.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, d)
+        Vertices (and any values attached to them), CRS units; ``n >= 1``.
+    cumulative : ndarray of shape (n,)
+        Arc length of each vertex, CRS units (:func:`cumulative_lengths`).
+    s : float or ndarray of shape (m,)
+        Arc lengths, CRS units; clipped to ``[0, cumulative[-1]]``.
+
+    Returns
+    -------
+    ndarray of shape (d,) for a scalar ``s``, else (m, d)
+        CRS units. Inside a zero-length segment the point is its start.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> path = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 5.0]])
+    >>> points_at(path, cumulative_lengths(path), [2.5, 12.0, 99.0]).tolist()
+    [[2.5, 0.0], [10.0, 2.0], [10.0, 5.0]]
+    >>> points_at(path, cumulative_lengths(path), 10.0).tolist()
+    [10.0, 0.0]
+    """
+    xy = np.asarray(xy, dtype=float)
+    cumulative = np.asarray(cumulative, dtype=float)
+    scalar = np.ndim(s) == 0
+    s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), cumulative[0], cumulative[-1])
+    if len(xy) == 1:
+        points = np.repeat(xy, len(s), axis=0)
+        return points[0] if scalar else points
+    segment = np.clip(np.searchsorted(cumulative, s, side="right") - 1, 0, len(xy) - 2)
+    span = cumulative[segment + 1] - cumulative[segment]
+    fraction = np.where(span > 0.0, (s - cumulative[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
+    fraction = np.clip(fraction, 0.0, 1.0)[:, None]
+    points = xy[segment] + fraction * (xy[segment + 1] - xy[segment])
+    return points[0] if scalar else points
+
+
+class IndexedPolyline:
+    """A polyline with a spatial index of its segments, for repeated nearest-point queries.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2)
+        Vertices, CRS units; ``n >= 1``.
+
+    Attributes
+    ----------
+    xy : ndarray of shape (n, 2)
+        The vertices, CRS units.
+    cumulative : ndarray of shape (n,)
+        Arc length of each vertex, CRS units.
+    segments : ndarray of LineString
+        One two-point line per segment.
+    tree : STRtree
+        Index of ``segments``.
+    """
+
+    def __init__(self, xy):
+        self.xy = np.asarray(xy, dtype=float)[:, :2]
+        self.cumulative = cumulative_lengths(self.xy)
+        path = self.xy if len(self.xy) > 1 else np.repeat(self.xy, 2, axis=0)
+        self.segments = shapely.linestrings(np.stack([path[:-1], path[1:]], axis=1))
+        self.tree = shapely.STRtree(self.segments)
+
+    def distance_to(self, geometries):
+        """Return the distance, CRS units, from each shapely geometry to the polyline."""
+        return self.tree.query_nearest(geometries, return_distance=True, all_matches=False)[1]
+
+    def nearest(self, points):
+        """Return the nearest point of the polyline to each point; see :func:`nearest_on_polyline`."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
+        if len(self.xy) == 1:
+            foot = np.repeat(self.xy, len(points), axis=0)
+            return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
+        start = self.xy[segment]
+        direction = self.xy[segment + 1] - start
+        squared = np.einsum("ij,ij->i", direction, direction)
+        along = np.einsum("ij,ij->i", points - start, direction) / np.where(squared > 0.0, squared, 1.0)
+        along = np.clip(along, 0.0, 1.0)
+        foot = start + along[:, None] * direction
+        return np.hypot(*(points - foot).T), self.cumulative[segment] + along * np.sqrt(squared), foot
+
+
+def nearest_on_polyline(xy, points):
+    """Return, for each point, its distance to a polyline, the arc length of its foot and the foot.
+
+    The *foot* is the nearest point of the polyline. The nearest segment comes from a spatial index, the
+    foot from an exact orthogonal projection on it (clamped to the segment).
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2) or IndexedPolyline
+        Vertices, CRS units; pass an :class:`IndexedPolyline` to query the same polyline many times.
+    points : ndarray of shape (m, 2)
+        CRS units.
+
+    Returns
+    -------
+    distance : ndarray of shape (m,)
+        CRS units.
+    arc_length : ndarray of shape (m,)
+        Arc length of each foot from the polyline's start, CRS units.
+    foot : ndarray of shape (m, 2)
+        CRS units.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> path = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]])
+    >>> distance, arc_length, foot = nearest_on_polyline(path, np.array([[4.0, 3.0], [13.0, 6.0]]))
+    >>> distance.tolist(), arc_length.tolist(), foot.tolist()
+    ([3.0, 3.0], [4.0, 16.0], [[4.0, 0.0], [10.0, 6.0]])
+    """
+    polyline = xy if isinstance(xy, IndexedPolyline) else IndexedPolyline(xy)
+    return polyline.nearest(points)
+
+
+def turn_angles(xy, closed=False):
+    """Return the signed turn of a polyline at each vertex, radians (positive to the left).
+
+    The turn is the angle from the incoming to the outgoing segment, in ``(-pi, pi]``; 0 on a straight
+    continuation, ``pi / 2`` at a left right-angle corner.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2)
+        Vertices without zero-length segments, CRS units.
+    closed : bool
+        False: the turns at the ``n - 2`` interior vertices. True: ``xy`` is a ring (a repeated closing
+        vertex is ignored) and every vertex has a turn.
+
+    Returns
+    -------
+    ndarray of shape (n - 2,), or one value per distinct vertex of a ring
+        Radians.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    >>> np.degrees(turn_angles(square)).tolist()
+    [90.0, 90.0]
+    >>> np.degrees(turn_angles(square[::-1], closed=True)).tolist()
+    [-90.0, -90.0, -90.0, -90.0]
+    """
+    xy = np.asarray(xy, dtype=float)
+    if closed:
+        if len(xy) > 1 and np.array_equal(xy[0], xy[-1]):
+            xy = xy[:-1]
+        incoming = xy - np.roll(xy, 1, axis=0)
+        outgoing = np.roll(xy, -1, axis=0) - xy
+    else:
+        step = np.diff(xy, axis=0)
+        incoming, outgoing = step[:-1], step[1:]
+    cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
+    return np.arctan2(cross, np.einsum("ij,ij->i", incoming, outgoing))
+
+
+def local_origin(*arrays):
+    """Return the centre of the bounding box of all given coordinates: the shift for numerical conditioning.
+
+    Working on ``xy - origin`` keeps coordinates near zero, where a tolerance relative to the extent is many
+    units in the last place even for projected coordinates in the millions; add the origin back to results.
+
+    Parameters
+    ----------
+    *arrays : array_like of shape (n, 2)
+        Coordinates, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (2,)
+        CRS units.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> local_origin(np.array([[500000.0, 10.0], [500010.0, 20.0]]), np.array([[500004.0, 30.0]])).tolist()
+    [500005.0, 20.0]
+    """
+    points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
+    return 0.5 * (points.min(axis=0) + points.max(axis=0))
+
+
+def typical_width(area, length):
+    """Return the typical width of an elongated region: its area divided by its length along the channel.
+
+    One formula for every caller. For two chains ``length`` is their mean length; for a polygon it is half
+    its perimeter (its boundary is the two chains, so this is the same number, and ``2 * area / perimeter``
+    is the same formula). A rectangle ``L`` by ``w`` split at the middles of its short sides gives
+    ``L * w / (L + w)``: ``w`` within ``w / L``. Two straight banks ``L`` long and ``w`` apart give exactly
+    ``w``.
+
+    Parameters
+    ----------
+    area : float
+        Area of the region, square CRS units.
+    length : float
+        Its length along the channel, CRS units.
+
+    Returns
+    -------
+    float
+        CRS units; 0 when ``length`` is not positive.
+
+    Examples
+    --------
+    >>> typical_width(1000.0, 100.0)
+    10.0
+    >>> from shapely.geometry import box
+    >>> rectangle = box(0, 0, 90, 10)
+    >>> typical_width(rectangle.area, rectangle.length / 2.0)
+    9.0
+    """
+    return float(area) / float(length) if length > 0 else 0.0

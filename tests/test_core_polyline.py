@@ -1,0 +1,99 @@
+"""Direct tests of the shared polyline helpers (incircu_plugin/core/polyline.py), hand-computed values."""
+
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import LineString
+
+from incircu_plugin.core.errors import InvalidGeometryError
+from incircu_plugin.core.polyline import (
+    as_coordinates,
+    cumulative_lengths,
+    local_origin,
+    nearest_on_polyline,
+    points_at,
+    turn_angles,
+    typical_width,
+)
+
+# An L: 3-4-5 segment, then 12 units straight up.
+L_PATH = np.array([[0.0, 0.0], [3.0, 4.0], [3.0, 16.0]])
+
+
+def test_cumulative_lengths_of_an_l():
+    assert cumulative_lengths(L_PATH).tolist() == [0.0, 5.0, 17.0]
+
+
+def test_points_at_interpolates_inside_segments_and_clips_outside():
+    cumulative = cumulative_lengths(L_PATH)
+    points = points_at(L_PATH, cumulative, np.array([-1.0, 2.5, 5.0, 11.0, 40.0]))
+    np.testing.assert_allclose(points, [[0, 0], [1.5, 2.0], [3, 4], [3, 10], [3, 16]], atol=1e-15)
+
+
+def test_points_at_interpolates_extra_columns_the_same_way():
+    values = np.column_stack([L_PATH, [0.0, 10.0, 22.0]])
+    point = points_at(values, cumulative_lengths(L_PATH), 11.0)
+    np.testing.assert_allclose(point, [3.0, 10.0, 16.0])
+
+
+def test_points_at_skips_zero_length_segments():
+    path = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 0.0], [2.0, 2.0]])
+    np.testing.assert_allclose(points_at(path, cumulative_lengths(path), [2.0, 3.0]), [[2, 0], [2, 1]])
+
+
+def test_nearest_on_polyline_hand_computed():
+    distance, arc_length, foot = nearest_on_polyline(L_PATH, np.array([[3.0, 0.0], [5.0, 12.0], [0.0, 20.0]]))
+    # (3, 0) projects onto the 3-4-5 segment at 9/25 of it: foot (1.08, 1.44), distance 12/5.
+    np.testing.assert_allclose(foot, [[1.08, 1.44], [3.0, 12.0], [3.0, 16.0]], atol=1e-12)
+    np.testing.assert_allclose(distance, [2.4, 2.0, 5.0], atol=1e-12)
+    np.testing.assert_allclose(arc_length, [1.8, 13.0, 17.0], atol=1e-12)
+
+
+def test_nearest_on_polyline_agrees_with_geos_on_a_random_zigzag():
+    rng = np.random.default_rng(7)
+    path = np.cumsum(rng.normal(size=(200, 2)), axis=0)
+    points = rng.uniform(path.min(axis=0), path.max(axis=0), size=(500, 2))
+    distance, arc_length, foot = nearest_on_polyline(path, points)
+    line = LineString(path)
+    np.testing.assert_allclose(distance, shapely.distance(shapely.points(points), line), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(np.hypot(*(foot - points).T), distance, rtol=1e-12)
+    np.testing.assert_allclose(
+        shapely.get_coordinates(shapely.line_interpolate_point(line, arc_length)), foot, atol=1e-9
+    )
+
+
+def test_nearest_on_a_single_point():
+    distance, arc_length, foot = nearest_on_polyline(np.array([[1.0, 1.0]]), np.array([[4.0, 5.0]]))
+    assert distance.tolist() == [5.0] and arc_length.tolist() == [0.0] and foot.tolist() == [[1.0, 1.0]]
+
+
+def test_turn_angles_signs_and_ring():
+    zigzag = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 1.0]])
+    np.testing.assert_allclose(np.degrees(turn_angles(zigzag)), [90.0, -90.0])
+    triangle = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    np.testing.assert_allclose(np.degrees(turn_angles(triangle, closed=True)), [90.0, 135.0, 135.0])
+    assert turn_angles(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]])).tolist() == [0.0]
+
+
+def test_local_origin_is_the_bounding_box_centre():
+    assert local_origin(np.array([[10.0, -4.0]]), np.array([[20.0, 6.0], [12.0, 0.0]])).tolist() == [15.0, 1.0]
+
+
+def test_typical_width_of_banks_and_of_a_polygon():
+    assert typical_width(8.0 * 100.0, 100.0) == 8.0
+    assert typical_width(1.0, 0.0) == 0.0
+    # Rectangle 90 x 10: area 900, half perimeter 100.
+    assert typical_width(900.0, 100.0) == 9.0
+
+
+def test_as_coordinates_messages():
+    with pytest.raises(InvalidGeometryError, match=r"^The bank is empty\.$"):
+        as_coordinates(LineString(), "bank")
+    with pytest.raises(InvalidGeometryError, match=r"^The bank must be a single line, not a Point\.$"):
+        as_coordinates(shapely.Point(0, 0), "bank")
+    with pytest.raises(InvalidGeometryError, match=r"^The bank must be an \(n, 2\) coordinate array\.$"):
+        as_coordinates([1.0, 2.0], "bank")
+    source = np.array([[0.0, 0.0, 1.0], [1.0, 1.0, 1.0]])
+    coordinates = as_coordinates(source)
+    coordinates[0, 0] = 9.0
+    assert source[0, 0] == 0.0 and coordinates.shape == (2, 2)
