@@ -24,12 +24,13 @@ export QT_QPA_PLATFORM := offscreen
 export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
 export PYTHONDONTWRITEBYTECODE := 1
 
-.PHONY: help setup system-packages demo test lint package deploy transup transcompile bench fuzz clean
+.PHONY: help setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
 
 help:
 	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"
 	@echo "make demo         run IncirCu with qgis_process on the sample data; writes out/demo.gpkg and out/demo.png"
-	@echo "make test         run every test on a real, offscreen QGIS"
+	@echo "make test         run every test and doctest on a real, offscreen QGIS"
+	@echo "make test-core    the geometry core's tests and doctests, no QGIS needed, slow tests left out (< 1 min)"
 	@echo "make lint         ruff"
 	@echo "make package      release zip in $(DIST)/ (git archive of HEAD)"
 	@echo "make deploy       copy the plugin into the QGIS profile $(PROFILE)"
@@ -62,8 +63,14 @@ demo: setup
 	$(PYTHON) scripts/demo.py
 
 # pytest-qgis starts QGIS with its GUI classes (the dialog tests need them) on the offscreen platform exported above.
+CORE_DOCTESTS := --doctest-modules incircu_plugin/core
 test: setup
-	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests
+	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests $(CORE_DOCTESTS)
+
+# The fast path: numpy, shapely, pyproj and the test tools only; pytest-qgis is switched off, so no QGIS starts
+# (nor needs to be installed). Tests marked slow (pytest.ini) run in `make test` only.
+test-core: $(VENV)/.installed
+	$(PYTHON) -m pytest -p no:cacheprovider -p no:pytest_qgis -m "not slow" tests/test_core_*.py tests/test_docs.py $(CORE_DOCTESTS)
 
 lint: setup
 	$(PYTHON) -m ruff check .

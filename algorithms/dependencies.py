@@ -1,6 +1,7 @@
 """Import of the geometry core, with an actionable message when Shapely 2 is missing or too old."""
 
 import importlib
+import re
 
 from qgis.core import QgsProcessingException
 from qgis.PyQt.QtCore import QCoreApplication
@@ -17,14 +18,19 @@ INSTALL_HINT = (
 
 
 def version_tuple(version):
-    """Return the leading numeric parts of a version string, e.g. ``"2.0.1"`` -> ``(2, 0, 1)``."""
+    """Return the release numbers at the start of a version string, e.g. ``"2.0.1"`` -> ``(2, 0, 1)``.
+
+    Reading stops at a part that does not start with a digit, and after the leading digits of a part with a
+    suffix, so a pre-release keeps the numbers of its release: ``"2.0rc1"`` -> ``(2, 0)``, ``"2.1b2"`` ->
+    ``(2, 1)``, ``"2.0.post1"`` -> ``(2, 0)``.
+    """
     parts = []
     for piece in str(version).split("."):
-        digits = "".join(character for character in piece if character.isdigit())
-        if not digits:
+        digits = re.match(r"[0-9]+", piece)
+        if digits is None:
             break
-        parts.append(int(digits))
-        if digits != piece:
+        parts.append(int(digits.group()))
+        if digits.end() != len(piece):
             break
     return tuple(parts)
 

@@ -3,7 +3,7 @@
 Usage: ``python benchmarks/bench_core.py [--max-exponent 6] [--repeats 5]``
 
 Rows:
-- synthetic rivers (``tests/geometry_cases.synthetic_river``) with 10^3 .. 10^6 boundary vertices, sampled at
+- synthetic rivers (``tests/support/geometry_cases.synthetic_river``) with 10^3 .. 10^6 boundary vertices, sampled at
   their vertices only (the spacing exceeds the vertex spacing, so samples = vertices): wall time, time per
   sample, peak resident memory of a fresh process (input generation included), and growth against the
   previous row;
@@ -32,10 +32,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def _measure_river(n_samples):
     """Run in a child process: time one river, report JSON on stdout."""
-    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
-    import geometry_cases
-
+    sys.path.insert(0, str(ROOT))
     from incircu_plugin.core import centerline_from_chains
+    from tests.support import geometry_cases
 
     case = geometry_cases.synthetic_river(n_samples)
     start = time.perf_counter()
@@ -46,10 +45,9 @@ def _measure_river(n_samples):
 
 
 def _measure_meander(repeats):
-    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
-    import geometry_cases
-
+    sys.path.insert(0, str(ROOT))
     from incircu_plugin.core import centerline_from_chains
+    from tests.support import geometry_cases
 
     case = geometry_cases.meander_with_vertex_count(2333)
     times = []
@@ -62,12 +60,12 @@ def _measure_meander(repeats):
 
 def _measure_hydro(repeats):
     """Median times (s) of the meander without split points and of the meander with 40 islands."""
-    sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
-    import geometry_cases
+    sys.path.insert(0, str(ROOT))
     import numpy as np
     from shapely.geometry import Point, Polygon
 
     from incircu_plugin.core import polygon_centerline
+    from tests.support import geometry_cases
 
     case = geometry_cases.meander_with_vertex_count(2333)
     axis = np.asarray(case.axis_line.coords)

@@ -5,7 +5,7 @@ shape like the paper's case d (an irregular channel of varying width with reflex
 sides). Table 1: mean distance from IncirCu to the medial axis and to the straight skeleton on five
 shapes, dimensionless (divided by the shape's width), next to the paper's values.
 
-Medial axis: the exact target set of the segment-Voronoi oracle ``tests/oracle.py`` (the medial axis
+Medial axis: the exact target set of the segment-Voronoi oracle ``tests/support/oracle.py`` (the medial axis
 between the two chains). Straight skeleton: SFCGAL's (CGAL), all branches. The distance between two axes
 is the mean, along the IncirCu line sampled every 1/200 of the width, of the distance to the reference
 (one-sided, as a subset of a skeleton is compared with the whole skeleton).

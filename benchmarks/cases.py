@@ -1,24 +1,17 @@
-"""Benchmark inputs: analytic shapes with a known axis (from ``tests/geometry_cases.py``) and real outlines.
+"""Benchmark inputs: analytic shapes with a known axis (from ``tests/support/geometry_cases.py``) and real outlines.
 
 The analytic shapes are the core tests' own builders (imported, never copied). The reference axis of
-every input is the medial-axis target set of the segment-Voronoi oracle ``tests/oracle.py``
+every input is the medial-axis target set of the segment-Voronoi oracle ``tests/support/oracle.py``
 (Boost.Polygon through pyvoronoi, no code shared with the engine) between the two chains; for analytic
 shapes the distance to the smooth analytic axis is measured as well. Real outlines come from
 :mod:`outlines`, cut into two chains at the automatically found ends.
 """
 
-import sys
-
 import shapely
 from outlines import COUNTRIES, country_polygon
-from peers import REPO_ROOT, Case, mean_width
+from peers import Case, mean_width  # peers puts the repository root on sys.path
 
-TESTS_DIR = REPO_ROOT / "tests"
-if str(TESTS_DIR) not in sys.path:
-    sys.path.insert(0, str(TESTS_DIR))
-
-import geometry_cases
-import oracle
+from tests.support import geometry_cases, oracle
 
 #: The constant-width meander of issue 2's speed target: 2 km long, 20 wide, 2,333 boundary vertices.
 MEANDER_VERTICES = 2333
@@ -64,8 +57,7 @@ def analytic_cases():
 
 def meander_case():
     """The issue's meander (2 km long, width 20, 2,333 boundary vertices)."""
-    return from_geometry_case(geometry_cases.meander_with_vertex_count(MEANDER_VERTICES),
-                              "meander 2 km×20, 2,333 v")
+    return from_geometry_case(geometry_cases.meander_with_vertex_count(MEANDER_VERTICES), "meander 2 km×20, 2,333 v")
 
 
 def river_case(boundary_vertices):

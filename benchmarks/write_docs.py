@@ -257,7 +257,7 @@ the npm package `world-atlas` (Natural Earth 1:10m countries, fetched with `npm 
 
 ## What is measured
 
-- **Inputs.** Analytic shapes from `tests/geometry_cases.py` (the core tests' own builders): rectangle
+- **Inputs.** Analytic shapes from `tests/support/geometry_cases.py` (the core tests' own builders): rectangle
   (24 and 1,002 boundary vertices), tapered channel, annulus sector (124 and 1,002 vertices), and the
   issue's constant-width meander (2 km × 20, 2,333 vertices); larger inputs in the scaling run. Real outlines: {outline_info}, projected to a local azimuthal
   equidistant CRS (metres), largest part, split at the ends `find_ends` places.
@@ -268,7 +268,7 @@ the npm package `world-atlas` (Natural Earth 1:10m countries, fetched with `npm 
 - **parts** = connected pieces of the output, **branches** = edges between nodes of degree ≠ 2 after
   noding (one clean centerline: 1 and 1).
 - **Deviation** (× the width): distance from the output, sampled every width/50, to the polygon's exact
-  medial axis between its two chains (the target set of the segment-Voronoi oracle `tests/oracle.py`,
+  medial axis between its two chains (the target set of the segment-Voronoi oracle `tests/support/oracle.py`,
   Boost.Polygon, exact to about 1e-7 of the extent). Mean and max along the line, and max over the
   output's vertices. Branches count as deviation: a user gets them. For analytic shapes the mean distance
   to the smooth shape's analytic axis is shown too (it differs from the polygon's medial axis by the

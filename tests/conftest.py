@@ -3,38 +3,18 @@
 pytest-qgis starts a ``QgsApplication`` before this file is imported (offscreen when ``QT_QPA_PLATFORM`` is
 ``offscreen``, which ``make test`` sets). The repository root is the plugin folder; QGIS imports it as the
 package ``incircu``, so the fixtures put a folder holding an ``incircu`` symlink to the repository on the
-plugin path and ``sys.path``.
+plugin path and ``sys.path``. The core tests use none of these fixtures and run without QGIS (``make
+test-core`` turns pytest-qgis off); shared helpers live in :mod:`tests.support`.
 """
 
-import configparser
 import os
 import shutil
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
-REPOSITORY = Path(__file__).resolve().parent.parent
-DATA = REPOSITORY / "tests" / "data"
-ARTIFACTS = REPOSITORY / "tests" / "artifacts"
-PLUGIN_NAME = "incircu"
-#: Shapely built against the system GEOS for QGIS's own Python (``make setup``); numpy and pyproj come from Debian.
-QGIS_SITE = Path(os.environ.get("INCIRCU_QGIS_SITE", REPOSITORY / ".venv" / "qgis-site"))
-
-
-def metadata():
-    """Return the ``[general]`` section of the repository's ``metadata.txt``."""
-    parser = configparser.ConfigParser(interpolation=None)
-    parser.read(REPOSITORY / "metadata.txt", encoding="utf-8")
-    return parser["general"]
-
-
-def version_number(text):
-    """Turn ``"3.22"`` or ``"3.22.16-Białowieża"`` into QGIS's integer form (32200, 32216)."""
-    numbers = [int("".join(c for c in piece if c.isdigit()) or 0) for piece in text.split("-")[0].split(".")]
-    numbers += [0] * (3 - len(numbers))
-    return numbers[0] * 10000 + numbers[1] * 100 + numbers[2]
+from tests.support.project import ARTIFACTS, PLUGIN_NAME, QGIS_SITE, REPOSITORY
 
 
 @pytest.fixture(scope="session")
@@ -120,7 +100,3 @@ def qgis_process(plugin_folder, tmp_path_factory):
     enabled = run("plugins", "enable", PLUGIN_NAME)
     assert enabled.returncode == 0, enabled.stdout + enabled.stderr
     return run
-
-
-def pytest_configure(config):
-    config.addinivalue_line("markers", "slow: takes more than about 3 s")

@@ -4,11 +4,9 @@ Expected values come from the shapes' construction (a rectangle's width, the num
 was given bad split points), never from a previous run.
 """
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
-from oracle import check_centerline
 from shapely.geometry import MultiPolygon, box
 
 from incircu_plugin.core import (
@@ -22,6 +20,8 @@ from incircu_plugin.core import (
     polygon_centerline,
     split_polygon,
 )
+from tests.support import geometry_cases
+from tests.support.oracle import check_centerline
 
 
 def test_default_spacing_is_a_twentieth_of_the_typical_width():

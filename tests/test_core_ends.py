@@ -8,7 +8,6 @@ the only length that sets how far a reasonable "end" can be from the true one.
 import math
 import warnings
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
@@ -18,6 +17,7 @@ from shapely.ops import unary_union
 
 from incircu_plugin.core import find_ends, polygon_centerline
 from incircu_plugin.core.errors import InvalidGeometryError
+from tests.support import geometry_cases
 
 #: Fraction of the channel width within which a found end must match a flat cap's midpoint. A flat cap is
 #: centred exactly by construction (midpoint between its two corners); what remains is the simplification

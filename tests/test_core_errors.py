@@ -50,12 +50,17 @@ def test_every_error_class_is_an_incircu_error_and_a_value_error():
 
 
 @pytest.mark.parametrize(
-    "polygon", [None, Polygon(), shapely.from_wkt("POLYGON EMPTY")], ids=["null", "empty", "wkt-empty"]
+    ("polygon", "message"),
+    [
+        (None, "The polygon is null (no geometry)."),
+        (Polygon(), "The polygon is empty."),
+        (shapely.from_wkt("POLYGON EMPTY"), "The polygon is empty."),
+    ],
+    ids=["null", "empty", "wkt-empty"],
 )
-def test_null_or_empty_polygon(polygon):
-    with pytest.raises(InvalidGeometryError) as caught:
+def test_null_or_empty_polygon(polygon, message):
+    with pytest.raises(InvalidGeometryError, match=f"^{re.escape(message)}$"):
         polygon_centerline(polygon, ENDS)
-    assert str(caught.value)
 
 
 @pytest.mark.parametrize(
@@ -85,9 +90,8 @@ def test_null_or_empty_line(line):
     ids=["one", "two-same", "three-same"],
 )
 def test_line_with_fewer_than_two_distinct_points(line):
-    with pytest.raises((ChainError, InvalidGeometryError)) as caught:
+    with pytest.raises(ChainError, match=r"^The first line has fewer than 2 distinct points\.$"):
         lines_centerline(line, BANK_B)
-    assert "2" in str(caught.value) or "point" in str(caught.value).lower()
 
 
 def test_line_of_two_points_closer_than_the_coincidence_tolerance():

@@ -9,14 +9,14 @@ azimuthal equidistant projection keeps distances from its centre true and stretc
 
 import math
 
-import geometry_cases
 import numpy as np
 import pyproj
 import pytest
 import shapely
-from oracle import check_centerline
 
 from incircu_plugin.core import InvalidGeometryError, LocalProjection, polygon_centerline
+from tests.support import geometry_cases
+from tests.support.oracle import check_centerline
 
 EARTH_RADIUS = 6_371_000.0
 GEOD = pyproj.Geod(ellps="WGS84")

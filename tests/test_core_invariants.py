@@ -10,12 +10,12 @@ The only tolerance beyond the relative ``1e-9`` is the double rounding at the co
 units in the last place), which dominates only when the coordinates are huge compared with the extent.
 """
 
-import geometry_cases
 import numpy as np
 import pytest
-from oracle import MedialOracle, check_centerline
 
 from incircu_plugin.core import lines_centerline, polygon_centerline
+from tests.support import geometry_cases
+from tests.support.oracle import MedialOracle, check_centerline
 
 ANALYTIC = geometry_cases.analytic_cases()
 
@@ -111,6 +111,7 @@ def test_open_mode_staggered_banks_stay_between_the_ends():
     check_centerline(result, bank_a, bank_b, region, ends)
 
 
+@pytest.mark.slow
 def test_long_river_beyond_one_chunk_of_samples():
     # About 20,000 samples per chain, more than the engine's internal block of samples, so the invariants
     # are checked across block boundaries too. Every vertex is also checked against the oracle.

@@ -9,13 +9,13 @@
 - More samples per chain bring the line closer to the medial axis (the paper's Fig. 4).
 """
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
-from oracle import MedialOracle
 
 from incircu_plugin.core import polygon_centerline
+from tests.support import geometry_cases
+from tests.support.oracle import MedialOracle
 
 ANALYTIC = geometry_cases.analytic_cases()
 WAVY = [
@@ -115,6 +115,7 @@ HAUSDORFF_FRACTIONS = [0.4, 0.2, 0.1, 0.05, 0.025]
 HAUSDORFF_CASES = [ANALYTIC[3], ANALYTIC[4], ANALYTIC[6]] + WAVY[:2] + [GAMBIA]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", HAUSDORFF_CASES, ids=[c.name for c in HAUSDORFF_CASES])
 def test_hausdorff_distance_to_the_medial_axis_shrinks_with_the_spacing(case):
     oracle = oracle_for(case)

@@ -9,12 +9,13 @@ by the bisector of two rounded segments (at most a factor sqrt(2) per coordinate
 
 import math
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
-from oracle import MedialOracle, segment_distances
 from shapely.geometry import LineString
+
+from tests.support import geometry_cases
+from tests.support.oracle import MedialOracle, segment_distances
 
 ANALYTIC = geometry_cases.analytic_cases()
 

@@ -10,13 +10,14 @@ Example counts keep the file under a minute on one core.
 
 import math
 
-import geometry_cases
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from oracle import MedialOracle, check_centerline
 
 from incircu_plugin.core import lines_centerline, polygon_centerline
+from tests.support import geometry_cases
+from tests.support.oracle import MedialOracle, check_centerline
 
 WIDTH = 10.0
 
@@ -79,6 +80,7 @@ def assert_on_medial_axis(result, chain_a, chain_b, region):
     )
 
 
+@pytest.mark.slow
 @PROPERTY_SETTINGS
 @given(channels())
 def test_random_polygons_closed_mode(drawn):
@@ -89,6 +91,7 @@ def test_random_polygons_closed_mode(drawn):
     assert_on_medial_axis(result, case.chain_a, case.chain_b, case.polygon)
 
 
+@pytest.mark.slow
 @PROPERTY_SETTINGS
 @given(channels(), st.booleans(), st.booleans())
 def test_random_bank_pairs_open_mode(drawn, reverse_a, reverse_b):

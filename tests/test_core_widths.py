@@ -8,7 +8,6 @@ a chord of the true axis, off by at most its sagitta, which ``axis_tolerance`` o
 
 import math
 
-import geometry_cases
 import numpy as np
 import pytest
 import shapely
@@ -16,6 +15,7 @@ from shapely.geometry import LineString, Point
 
 from incircu_plugin.core import IncirCuError, lines_centerline, polygon_centerline
 from incircu_plugin.core.widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages
+from tests.support import geometry_cases
 
 #: Relative accuracy (of the extent) of the engine's vertices and radii.
 ENGINE_ACCURACY = 1e-9

@@ -9,7 +9,8 @@ import subprocess
 import sys
 
 import pytest
-from conftest import REPOSITORY
+
+from tests.support.project import REPOSITORY
 
 SAMPLE_SIZE = 2000
 SAMPLE_SEED = 20261201

@@ -3,8 +3,9 @@
 import re
 from pathlib import Path
 
-from conftest import metadata, version_number
 from qgis.core import Qgis, QgsApplication
+
+from tests.support.project import metadata, version_number
 
 #: Fields plugins.qgis.org refuses a plugin without, and the ones this project promises.
 REQUIRED_FIELDS = (

@@ -1,6 +1,5 @@
 """The committed graphical model "Fix geometries -> IncirCu -> Smooth", run headless two ways."""
 
-from conftest import DATA
 from qgis.core import (
     QgsApplication,
     QgsProcessingContext,
@@ -9,6 +8,8 @@ from qgis.core import (
     QgsVectorLayer,
 )
 from test_plugin_processing import RIVER_WIDTH, RecordingFeedback, as_shapely, features_by, fixture_polygon
+
+from tests.support.project import DATA
 
 MODEL = DATA / "fix_centerline_smooth.model3"
 OUTPUT = "smooth:smoothed"

@@ -2,8 +2,8 @@
 
 A skipped feature once kept the output sinks alive in a reference cycle (stored error -> traceback -> frames ->
 progress callback -> writer -> sinks): ``qgis_process`` then exited with a GeoPackage holding no layer, and an
-in-process output stayed unreadable until the garbage collector ran. Inputs: two 100 x 10 boxes with split
-points at their short sides, and a bow-tie (invalid, always skipped) first, in the middle or last.
+in-process output stayed unreadable until the garbage collector ran. Inputs: a 100 x 10 box and a chevron with
+split points at their short sides, and a bow-tie (invalid, always skipped) first, in the middle or last.
 """
 
 import gc
@@ -13,9 +13,10 @@ import sqlite3
 import pytest
 from qgis.core import QgsProcessingFeedback, QgsVectorLayer
 
+# The issue's 100 x 10 box, and a chevron whose bend gives the optional outputs vertices with a positive width.
 GOOD_BOXES = (
     [[0, 0], [100, 0], [100, 10], [0, 10], [0, 0]],
-    [[0, 40], [100, 40], [100, 50], [0, 50], [0, 40]],
+    [[0, 40], [50, 50], [100, 40], [100, 50], [50, 60], [0, 50], [0, 40]],
 )
 BOW_TIE = [[0, 20], [100, 30], [100, 20], [0, 30], [0, 20]]
 SPLIT_POINTS = ([0, 5], [100, 5], [0, 45], [100, 45])

@@ -11,7 +11,6 @@ import numpy as np
 import processing
 import pytest
 import shapely
-from conftest import DATA, REPOSITORY
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
@@ -23,6 +22,8 @@ from qgis.core import (
     QgsVectorLayer,
     QgsWkbTypes,
 )
+
+from tests.support.project import DATA, REPOSITORY
 
 SPEC = importlib.util.spec_from_file_location("sample_data", REPOSITORY / "scripts" / "make_sample_data.py")
 sample_data = importlib.util.module_from_spec(SPEC)

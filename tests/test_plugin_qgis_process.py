@@ -1,8 +1,9 @@
 """The plugin driven by ``qgis_process`` as a subprocess: exit codes, GeoPackage outputs read back."""
 
-from conftest import DATA
 from qgis.core import QgsVectorLayer, QgsWkbTypes
 from test_plugin_processing import RIVER_WIDTH, as_shapely, bank_axes, features_by
+
+from tests.support.project import DATA
 
 
 def read_layer(path, layer_name=None):

@@ -5,8 +5,9 @@ import subprocess
 import sys
 import zipfile
 
-from conftest import PLUGIN_NAME, REPOSITORY, metadata
 from qgis.core import QgsApplication, QgsSettings
+
+from tests.support.project import PLUGIN_NAME, REPOSITORY, metadata
 
 
 def test_release_zip_layout(tmp_path):

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -34,8 +34,14 @@ EDGE, FAN = 0, 1
 #: inserted into an edge is straight to about the coordinates' rounding over the edge's length).
 STRAIGHT_TURN = 1e-9
 
-#: Relative agreement (of the radius) under which a probe's first contact is the event of its interval.
+#: Relative agreement (of the radius) under which a probe's disk touches both sites of its interval: exactly
+#: (the probe is emitted as the event even when rounding called it skipped), and loosely (its interval is
+#: resolved; near a nearly straight convex corner the junction is known to about 1e-7 only).
 EVENT_TOLERANCE = 1e-8
+LOOSE_EVENT_TOLERANCE = 1e-6
+
+#: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
+SETTLED_CHORD = 1.0 / 16.0
 
 #: Relative slack under which a slightly negative discriminant is a double root (a contact sliding off a
 #: segment's end onto its vertex).
@@ -44,8 +50,9 @@ DOUBLE_ROOT = 1e-8
 #: Most rounds of event location (each round at least halves the open intervals' count of unknown sites).
 MAX_ROUNDS = 64
 
-#: Intervals narrower than this fraction of their span (or of a radian) are closed.
-SMALLEST_INTERVAL = 1e-10
+#: Intervals over which the sample point (or on a fan, the disk's centre) moves less than this fraction of the
+#: tolerance are closed.
+SMALLEST_MOVE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -220,15 +227,8 @@ class _Sites:
         return foot, position
 
     def distance(self, site, centre):
-        """Distance from ``centre`` to each site (a segment site: its whole straight run), CRS units."""
-        b = self.boundary
-        is_segment = site < b.segment_count
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
-        nearest = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
-        return np.where(site >= 0, np.hypot(*(centre - nearest).T), np.inf)
+        """Distance from ``centre`` to each site (inf for no site), CRS units."""
+        return np.where(site >= 0, np.hypot(*(centre - self.feet(site, centre)[0]).T), np.inf)
 
     def radius_terms(self, spans, span, site, u_ref):
         """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
@@ -283,7 +283,8 @@ def _radius_at(spans, span, terms, u):
 
 
 def _crossing(spans, intervals, terms0, terms1):
-    """Parameter in ``[u0, u1]`` where both sites' radii are equal, and whether there is one."""
+    """Parameter inside ``(u0, u1)`` where both sites' radii are equal (else the middle), whether there is
+    one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -308,9 +309,9 @@ def _crossing(spans, intervals, terms0, terms1):
     for candidate in (np.where(edge, e, f) for e, f in zip(edge_roots, fan_roots)):
         inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
         chosen[inside], found[inside] = candidate[inside], True
-    # A crossing at an end was probed there already (the probe of the previous round): bisect instead.
-    found &= (chosen > u0 + slack) & (chosen < u1 - slack)
-    return np.where(found, chosen, middle), found
+    at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
+    found &= at_end < 0
+    return np.where(found, chosen, middle), found, at_end
 
 
 def _parabola_stations(focus, anchor, unit, ends, tolerance):
@@ -375,23 +376,42 @@ class _Tracer:
         self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
-        self.samples = None
-        self.t = self.status = self.site = self.other_site = self.emit = np.empty(0)
+        self.count = 0
+        self.store = {}
 
-    def add(self, samples, t, status, site, emit, other_site):
-        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain."""
-        start = len(self.t)
-        self.samples = samples if self.samples is None else Samples.concatenate([self.samples, samples])
-        self.t = np.concatenate([self.t, t])
-        self.status = np.concatenate([self.status, status]).astype(np.int8)
-        self.site = np.concatenate([self.site, site]).astype(int)
-        self.emit = np.concatenate([self.emit, emit]).astype(bool)
-        self.other_site = np.concatenate([self.other_site, other_site]).astype(int)
-        return np.arange(start, len(self.t))
+    def add(self, samples, t, emit, other_site):
+        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain.
+
+        The arrays grow by doubling, so a round costs its own samples only.
+        """
+        columns = {
+            "point": samples.point,
+            "direction": samples.direction,
+            "chain": samples.chain,
+            "position": samples.position,
+            "t": t,
+            "emit": emit,
+            "other_site": other_site,
+        }
+        start, self.count = self.count, self.count + len(t)
+        for name, values in columns.items():
+            stored = self.store.get(name)
+            if stored is None or len(stored) < self.count:
+                grown = np.empty((max(2 * self.count, 64),) + values.shape[1:], dtype=values.dtype)
+                if stored is not None:
+                    grown[:start] = stored[:start]
+                self.store[name] = stored = grown
+            stored[start : self.count] = values
+        return np.arange(start, self.count)
+
+    @property
+    def t(self):
+        """First-contact parameter of every sample so far (a view)."""
+        return self.store["t"][: self.count]
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.samples.point[index] + self.t[index, None] * self.samples.direction[index]
+        return self.store["point"][index] + self.store["t"][index, None] * self.store["direction"][index]
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints`."""
@@ -403,77 +423,104 @@ class _Tracer:
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
-            event_u, event_trial, found = self._event_candidates(events)
+            event_u, event_trial, found, at_end = self._event_candidates(events)
+            settled = self._settle_at_ends(events, at_end)
+            carried = events.subset(settled)
+            events = events.subset(~settled)
+            event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
             owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
             probes = self.spans.samples(span, u, self.boundary)
-            t, status, _, _, site = solve(
-                probes,
-                np.arange(len(u)),
-                self.boundary,
-                np.concatenate([event_trial, station_trial]),
-                self.max_t,
-                self.min_t,
-            )
-            site = self.sites.canonical(site)
+            t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
-            event = self._is_event(events, probes.subset(slice(0, count)), t[:count], found)
-            emit, other_site = self._event_emission(events, status[:count], site[:count], event)
-            event_index = self.add(
-                probes.subset(slice(0, count)), t[:count], status[:count], site[:count], emit, other_site
-            )
+            event_probes = probes.subset(slice(0, count))
+            event = self._is_event(events, event_probes, t[:count], found, LOOSE_EVENT_TOLERANCE)
+            exact = self._is_event(events, event_probes, t[:count], found, EVENT_TOLERANCE)
+            emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
+            event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
-            accepted = (status[count:] == CLEAR) | ((status[count:] != SKIPPED) & (site[count:] == curves.site0[owner]))
-            station_index = self.add(
-                probes.subset(slice(count, None)), t[count:], status[count:], site[count:], accepted, site[count:]
-            )
+            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
+            station_index = self.add(probes.subset(slice(count, None)), t[count:], accepted, site[count:])
             intervals = _Intervals.concatenate(
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
                     _split_at_stations(curves, owner, station_u, station_index, site[count:]),
+                    carried,
                 ]
             )
         return self._points()
 
+    def _solve_probes(self, probes, trial):
+        """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
+        spatial-index queries); returns ``t``, status and canonical site in the probes' order."""
+        order = np.lexsort((probes.position, probes.chain))
+        t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
+        t[order], status[order], _, _, site[order] = solve(
+            probes, order, self.boundary, trial[order], self.max_t, self.min_t
+        )
+        return t, status, self.sites.canonical(site)
+
     def _initial(self, report):
-        """Solve the samples at both ends of every edge; returns the intervals of every span between them."""
+        """Solve the samples at both ends of every edge, and in the middle of an edge between two convex
+        corners (both its ends are given the corners' own edges: its axis point would take a round to find);
+        returns the intervals of every span between them."""
         spans, sites, b = self.spans, self.sites, self.boundary
         samples, synthetic_site, synthetic_status = _initial_samples(spans, sites, self.closed, b)
         solved = np.flatnonzero(synthetic_site < 0)
         t = np.zeros(len(synthetic_site))
         status, site = synthetic_status.copy(), synthetic_site.copy()
         t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
-            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.8 * done)
+            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
         )
-        site = sites.canonical(site)
-        emit = np.isfinite(t) & (status != SKIPPED)
-        self.add(samples, t, status, site, emit, site)
         edge = np.arange(b.segment_count)
+        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0)
+        middle_edge = edge[between_corners]
+        middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
+        middle_t, middle_status, _, _, middle_site = _solve_all(
+            middles,
+            np.arange(len(middle_edge)),
+            b,
+            0.625 * self.width,
+            self.max_t,
+            self.min_t,
+            lambda done: report(0.6 + 0.2 * done),
+        )
+        samples = Samples.concatenate([samples, middles])
+        t = np.concatenate([t, middle_t])
+        status = np.concatenate([status, middle_status])
+        site = sites.canonical(np.concatenate([site, middle_site]))
+        emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
+        self.add(samples, t, emit, site)
+        middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
         reflex = np.flatnonzero(spans.kind == FAN)
         incoming = spans.segment[reflex]
-        left = np.concatenate([2 * edge, 2 * incoming + 1])
-        right = np.concatenate([2 * edge + 1, 2 * (incoming + 1)])
-        span = np.concatenate([edge, reflex])
-        return _Intervals(
-            span,
-            np.zeros(len(span)),
-            spans.length[span],
-            left,
-            right,
-            site[left],
-            site[right],
-            np.zeros(len(span), bool),
+        whole = edge[~between_corners]
+        span = np.concatenate([whole, middle_edge, middle_edge, reflex])
+        u0 = np.concatenate(
+            [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
         )
+        u1 = np.concatenate(
+            [spans.length[whole], 0.5 * spans.length[middle_edge], spans.length[middle_edge], spans.length[reflex]]
+        )
+        left = np.concatenate([2 * whole, 2 * middle_edge, middle_index, 2 * incoming + 1])
+        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
+        return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
-        scale = np.where(self.spans.kind[intervals.span] == EDGE, self.spans.length[intervals.span], 1.0)
         finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        wide = intervals.u1 - intervals.u0 > SMALLEST_INTERVAL * scale
+        radius = np.fmax(self.t[intervals.left], self.t[intervals.right])
+        move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
+        wide = move > SMALLEST_MOVE * self.tolerance
         known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
-        return (intervals.site0 != intervals.site1) & finite & wide & known
+        # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
+        # event there may be ill-conditioned (a nearly straight convex corner's junction).
+        with np.errstate(invalid="ignore"):
+            chord = np.hypot(*(self.centres(intervals.left) - self.centres(intervals.right)).T)
+            apart = chord > SETTLED_CHORD * self.tolerance
+        return (intervals.site0 != intervals.site1) & finite & wide & known & apart
 
     def _is_curved(self, intervals):
         """Intervals between samples touching one site of the other chain where the axis is a parabola.
@@ -499,21 +546,47 @@ class _Tracer:
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms0 = self.sites.radius_terms(self.spans, span, intervals.site0, middle)
         terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
-        u, found = _crossing(self.spans, intervals, terms0, terms1)
+        u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
-        trial = np.where(
-            found & np.isfinite(radius), 1.001 * radius, np.where(np.isfinite(known), 1.25 * known, self.width)
-        )
-        return u, np.maximum(trial, 0.0) + self.min_t, found
+        known = np.where(np.isfinite(known), 1.25 * known, self.width)
+        # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
+        trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
+        return u, np.maximum(trial, self.width / 16.0), found, at_end
 
-    def _is_event(self, intervals, probes, t, found):
-        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first."""
+    def _settle_at_ends(self, intervals, at_end):
+        """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
+
+        Returns the mask of those intervals, whose sites are made equal in place.
+        """
+        end = np.where(at_end == 0, intervals.left, intervals.right)
+        centre = self.centres(end)
+        slack = EVENT_TOLERANCE * self.t[end] + self.min_t
+        with np.errstate(invalid="ignore"):
+            touching = np.abs(self.sites.distance(intervals.site0, centre) - self.t[end]) <= slack
+            touching &= np.abs(self.sites.distance(intervals.site1, centre) - self.t[end]) <= slack
+        settled = (at_end >= 0) & touching
+        intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
+        intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
+        return settled
+
+    def _is_event(self, intervals, probes, t, found, tolerance):
+        """Probes whose disk touches both sites of their interval (their segments, not only their lines) first,
+        to ``tolerance`` relative to its radius."""
         centre = probes.point + t[:, None] * probes.direction
-        slack = EVENT_TOLERANCE * t + self.min_t
+        slack = tolerance * t + self.min_t
         with np.errstate(invalid="ignore"):
             event = found & (np.abs(self.sites.distance(intervals.site0, centre) - t) <= slack)
             return event & (np.abs(self.sites.distance(intervals.site1, centre) - t) <= slack)
+
+    def _at_split_point(self, site):
+        """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
+        evidence of a contact with the other chain (it also lies on the own one)."""
+        b = self.boundary
+        ends = b.segment_count + np.array(
+            [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
+        )
+        return self.closed & np.any(site[:, None] == ends, axis=1)
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -526,7 +599,7 @@ class _Tracer:
         other0 = self.sites.chain(intervals.site0) == 1 - chain
         other1 = self.sites.chain(intervals.site1) == 1 - chain
         forced = event & (status == SKIPPED) & (other0 | other1)
-        emit = (status == CLEAR) | ((status != SKIPPED) & event) | forced
+        emit = (status == CLEAR) | ((status == TIED) & event & ~self._at_split_point(site)) | forced
         other_site = np.where(forced, np.where(other0, intervals.site0, intervals.site1), site)
         return emit, other_site
 
@@ -553,18 +626,26 @@ class _Tracer:
 
     def _points(self):
         """The emitted samples as :class:`AxisPoints`."""
-        index = np.flatnonzero(self.emit & np.isfinite(self.t))
+        store = {name: values[: self.count] for name, values in self.store.items()}
+        index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
         centre = self.centres(index)
-        other_foot, other_position = self.sites.feet(self.other_site[index], centre)
+        other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
         return AxisPoints.from_chain_feet(
-            self.samples.chain[index],
+            store["chain"][index],
             centre,
-            self.t[index],
-            self.samples.point[index],
-            self.samples.position[index],
+            store["t"][index],
+            store["point"][index],
+            store["position"][index],
             other_foot,
             other_position,
         )
+
+
+def _solve_all(samples, index, *arguments):
+    """:func:`.contacts.solve_in_chunks`, without its set-up when there is nothing to solve."""
+    if len(index) == 0:
+        return np.empty(0), np.empty(0, dtype=np.int8), np.empty((0, 2)), np.empty(0), np.empty(0, dtype=int)
+    return solve_in_chunks(samples, index, *arguments)
 
 
 def _initial_samples(spans, sites, closed, boundary):
@@ -652,26 +733,9 @@ def _split_at_stations(intervals, owner, u, probe_index, probe_site):
 def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
     """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
 
-    Parameters
-    ----------
-    chains : sequence of two ndarray of shape (n, 2)
-        The chains in the engine's local frame, CRS units.
-    sides : sequence of two float
-        +1 when the region lies left of the chain, -1 when right.
-    boundary : Boundary
-    closed : bool
-        The chains share both end points (a polygon split at two points).
-    tolerance : float
-        Largest distance between a parabola of the axis and its chords, CRS units.
-    width : float
-        Typical width, CRS units (the first trial radius).
-    max_t, min_t : float
-        Largest disk parameter searched, and the smallest one that counts as a contact, CRS units.
-    report : callable
-        ``report(done_fraction)``; raises to cancel.
-
-    Returns
-    -------
-    AxisPoints
+    ``sides`` gives, per chain, +1 when the region lies left of it and -1 when right; ``closed`` is true
+    when the chains share both end points; ``tolerance`` (CRS units) bounds the distance between a parabola
+    of the axis and its chords. ``chains``, ``boundary``, ``width``, ``max_t``, ``min_t`` and ``report`` are
+    as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     return _Tracer(chains, sides, boundary, closed, tolerance, width, max_t, min_t).trace(report)

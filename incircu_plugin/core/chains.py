@@ -127,15 +127,7 @@ def find_self_crossing(chain):
 
 
 def ensure_simple(chain, name):
-    """Raise :class:`ChainError` if a chain touches or crosses itself.
-
-    Parameters
-    ----------
-    chain : ndarray of shape (n, 2)
-        Vertices, CRS units.
-    name : str
-        How messages call this chain.
-    """
+    """Raise :class:`ChainError`, calling the chain ``name``, if ``chain`` (vertices, CRS units) touches itself."""
     crossing = find_self_crossing(chain)
     if crossing is not None:
         raise ChainError(f"The {name} crosses itself at {format_point(crossing)}.")

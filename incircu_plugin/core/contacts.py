@@ -26,6 +26,9 @@ ALONG_TOLERANCE = 1e-9
 #: Relative distance (of the vertex from the sample) within which a vertex counts as on a corner's edge line.
 GRAZING_TOLERANCE = 1e-10
 
+#: Relative distance (of the contact parameter) from the sample point within which a vertex is not touched.
+NEAR_VERTEX = 1e-7
+
 #: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
 #: ``TIE_TOLERANCE``, or on the other chain only.
 SKIPPED, TIED, CLEAR = 0, 1, 2
@@ -40,6 +43,9 @@ CHUNK = 16_384
 #: above the finest one for a chunk large enough.
 COARSE_STRIDE = 8
 COARSE_LEVELS = 2
+
+#: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
+SMALLEST_TRIAL = 1.0 / 16.0
 
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 2
@@ -190,7 +196,8 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     (x*scale - |y|*slide) (x*scale + |y|*slide); the first factor is, up to a constant, the vertex's distance
     from an incident line of a convex corner. A vertex on that line is touched as the disks slide along it (a
     double root), so a factor that rounding pushed just below zero is taken as zero: the contact stays where it
-    is under tiny perturbations of the input.
+    is under tiny perturbations of the input. A vertex closer to the sample point than ``NEAR_VERTEX`` times
+    its contact ``t`` is not touched (it lies on the tangent line up to rounding).
     """
     x = b_along * offset - b_across * height
     y = np.abs(b_along * height + b_across * offset)
@@ -200,7 +207,9 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
     with np.errstate(divide="ignore", invalid="ignore"):
         t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
-    return np.where((x > 0) & (near >= 0), t, np.inf)
+    # A vertex a hair from the sample point, next to its tangent line, is touched only through rounding.
+    touched = (x > 0) & (near >= 0) & (squared > (NEAR_VERTEX * t) ** 2)
+    return np.where(touched, t, np.inf)
 
 
 def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
@@ -298,7 +307,11 @@ def solve(samples, index, boundary, trial, max_t, min_t):
             segment,
         )
         own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
-        t[own_segment | (t <= min_t)] = np.inf
+        # The own segments' end vertices too (the next segment answers for the last one's end).
+        own_vertex = (touched >= boundary.start_site[samples.first_own[sample]]) & (
+            touched <= boundary.start_site[samples.last_own[sample]] + 1
+        )
+        t[own_segment | own_vertex | (t <= min_t)] = np.inf
         on_own = boundary.chain_id[segment] == samples.chain[sample]
         t_own = np.where(on_own, t, np.inf)
         t_other = np.where(on_own, np.inf, t)
@@ -360,7 +373,8 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
         known = np.isfinite(contact_t)
         if np.any(known):
             estimate = np.interp(along[level], along[known], samples.scale[index[known]] * contact_t[known])
-            trial = 1.05 * estimate / samples.scale[index[level]]
+            # Not much below the global trial: doubling up from a tiny trial (near a split point) takes long.
+            trial = np.maximum(1.05 * estimate / samples.scale[index[level]], SMALLEST_TRIAL * trial_radius)
         else:
             trial = np.full(level.sum(), trial_radius)
         contact_t[level], status[level], contact[level], position[level], site[level] = solve(

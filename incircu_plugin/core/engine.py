@@ -42,8 +42,9 @@ DISTINCT_TOLERANCE = 1e-9
 #: keys closer than this are ties, ordered by the direction of travel.
 ORDER_RESOLUTION = 1e-11
 
-#: Fraction of the tolerance under which a vertex between two others on a straight stretch is dropped.
-STRAIGHT_FRACTION = 1e-3
+#: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
+PARABOLA_SHARE = 0.5
+SIMPLIFY_SHARE = 0.5
 
 
 class Cancelled(Exception):
@@ -139,15 +140,7 @@ def default_tolerance(c1, c2):
     below a tenth of a millimetre wherever the channel is drawn less than 2 cm wide, which is below what a
     pen or a screen resolves, and half a percent of the width in every width statistic.
 
-    Parameters
-    ----------
-    c1, c2 : ndarray of shape (n, 2)
-        The chains, CRS units.
-
-    Returns
-    -------
-    float
-        CRS units.
+    ``c1``, ``c2``: the chains (``(n, 2)`` arrays, CRS units). Returns the tolerance, CRS units.
 
     Examples
     --------
@@ -218,12 +211,31 @@ def _distinct(points, tolerance):
     return keep
 
 
-def _off_straight(points, tolerance):
-    """Mask keeping the ends and every vertex whose removal (Douglas-Peucker) would move the line by more
-    than ``tolerance``."""
-    kept = shapely.get_coordinates(shapely.simplify(LineString(points), tolerance, preserve_topology=False))
+def _first_of_each_centre(centres, resolution):
+    """Sorted indices of the first of the points sharing one centre (to ``resolution``, CRS units).
+
+    A junction of the axis is found from several sides, with different feet and so different places in the
+    order; keeping its first place only, the line passes it once.
+    """
+    cells = np.round(centres / resolution)
+    _, first = np.unique(cells, axis=0, return_index=True)
+    return np.sort(first)
+
+
+def _fewest_vertices(points, tolerance):
+    """Mask of the vertices a Douglas-Peucker simplification to ``tolerance`` keeps (the ends among them).
+
+    The kept vertices are a subset of the given ones, so they stay on the medial axis; every dropped vertex
+    lies within ``tolerance`` of the chord that replaces it, so the line moves by at most ``tolerance``.
+    When the plain simplification crosses itself, GEOS's (slower) topology-preserving one keeps the line
+    simple.
+    """
+    line = shapely.simplify(LineString(points), tolerance, preserve_topology=False)
+    if not line.is_simple:
+        line = shapely.simplify(LineString(points), tolerance, preserve_topology=True)
+    kept = np.ascontiguousarray(shapely.get_coordinates(line))
     keys = np.ascontiguousarray(points).view(np.complex128).ravel()
-    return np.isin(keys, np.ascontiguousarray(kept).view(np.complex128).ravel())
+    return np.isin(keys, kept.view(np.complex128).ravel())
 
 
 def _ordered(points, side, lengths, coincidence):
@@ -333,40 +345,62 @@ def centerline_from_chains(
     fixed = spacing is not None or samples_per_chain is not None
     if fixed and tolerance is not None:
         raise OptionError("Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).")
-    chains, coincidence = _clean_chains(c1, c2)
-    extent = extent_of(*chains)
-    lengths = [float(np.hypot(*np.diff(c, axis=0).T).sum()) for c in chains]
-    origin = local_origin(*chains)
-    local = [c - origin for c in chains]
-    closed = bool(
-        np.hypot(*(local[0][0] - local[1][0])) <= coincidence
-        and np.hypot(*(local[0][-1] - local[1][-1])) <= coincidence
-    )
-    side = 1.0 if signed_area(np.concatenate([local[0], local[1][::-1]])) >= 0 else -1.0
-    boundary = Boundary(local)
-    width = max(chains_width(*local), coincidence)
-    max_t, min_t = 4.0 * extent, 1e-12 * extent
+    frame = _Frame(*_clean_chains(c1, c2))
     report = _reporter(progress)
     if fixed:
-        spacings = _fixed_spacings(spacing, samples_per_chain, local, lengths)
-        points = fixed_axis_points(local, boundary, side, spacings, width, max_t, min_t, report)
+        spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths)
+        points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
     else:
-        tolerance = tolerance or default_tolerance(*local)
-        points = adaptive_axis_points(local, (side, -side), boundary, closed, tolerance, width, max_t, min_t, report)
-    if not closed:
-        region = Polygon(np.concatenate([local[0], local[1][::-1]]))
+        tolerance = tolerance or default_tolerance(*frame.chains)
+        sides = (frame.side, -frame.side)
+        points = adaptive_axis_points(
+            frame.chains, sides, frame.boundary, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
+        )
+    centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance)
+    return CenterlineResult(
+        line=LineString(centre + frame.origin),
+        radii=radius,
+        foot_a=foot_a + frame.origin,
+        foot_b=foot_b + frame.origin,
+    )
+
+
+class _Frame:
+    """The chains in a local frame (shifted to their bounding box's centre) and what the samplers need."""
+
+    def __init__(self, chains, coincidence):
+        self.coincidence = coincidence
+        self.extent = extent_of(*chains)
+        self.lengths = [float(np.hypot(*np.diff(c, axis=0).T).sum()) for c in chains]
+        self.origin = local_origin(*chains)
+        self.chains = [c - self.origin for c in chains]
+        start_gap = np.hypot(*(self.chains[0][0] - self.chains[1][0]))
+        end_gap = np.hypot(*(self.chains[0][-1] - self.chains[1][-1]))
+        self.closed = bool(start_gap <= coincidence and end_gap <= coincidence)
+        self.side = 1.0 if signed_area(np.concatenate([self.chains[0], self.chains[1][::-1]])) >= 0 else -1.0
+        self.boundary = Boundary(self.chains)
+        #: Typical width (the first trial radius), the largest disk parameter searched and the smallest one
+        #: that counts as a contact, CRS units.
+        self.limits = (max(chains_width(*self.chains), coincidence), 4.0 * self.extent, 1e-12 * self.extent)
+
+
+def _line_through(points, frame, simplification):
+    """The line's vertices, radii and feet (local frame) from the axis points, end to end.
+
+    In open mode points outside the region between the chains are dropped; each junction is kept once;
+    ``simplification`` (CRS units, None: none) is the Douglas-Peucker tolerance.
+    """
+    if not frame.closed:
+        region = Polygon(np.concatenate([frame.chains[0], frame.chains[1][::-1]]))
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
-    centre, radius, foot_a, foot_b = _with_ends(_ordered(points, side, lengths, coincidence), local, closed)
-    keep = _distinct(centre, DISTINCT_TOLERANCE * extent)
-    if not fixed and keep.sum() > 2:
-        keep[keep] = _off_straight(centre[keep], STRAIGHT_FRACTION * tolerance)
-    centre, radius, foot_a, foot_b = centre[keep], radius[keep], foot_a[keep], foot_b[keep]
-    if len(centre) < 2:
+    resolution = DISTINCT_TOLERANCE * frame.extent
+    ordered = _ordered(points, frame.side, frame.lengths, frame.coincidence)
+    ordered = ordered.subset(_first_of_each_centre(ordered.centre, resolution))
+    centre, radius, foot_a, foot_b = _with_ends(ordered, frame.chains, frame.closed)
+    keep = _distinct(centre, resolution)
+    if simplification is not None and keep.sum() > 2:
+        keep[keep] = _fewest_vertices(centre[keep], simplification)
+    if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
-    return CenterlineResult(
-        line=LineString(centre + origin),
-        radii=radius,
-        foot_a=foot_a + origin,
-        foot_b=foot_b + origin,
-    )
+    return centre[keep], radius[keep], foot_a[keep], foot_b[keep]

@@ -36,7 +36,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 from shapely.geometry import shape as geojson_shape
 
-DATA_FOLDER = Path(__file__).resolve().parent / "data"
+DATA_FOLDER = Path(__file__).resolve().parents[1] / "data"
 
 #: The Natural Earth 1:10m outline of the Gambia, projected to UTM zone 28N (EPSG:32628), metres.
 GAMBIA_UTM_FILE = DATA_FOLDER / "gambia_ne10m_utm28n.geojson"

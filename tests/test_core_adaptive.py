@@ -1,0 +1,259 @@
+"""The adaptive sampling (the default): within ``tolerance`` of the exact medial axis, few vertices, all exact.
+
+Against the segment-Voronoi oracle (``tests/oracle.py``, no code shared with the engine), on every shape of
+the suite and on random compact shapes and near-end configurations:
+
+- every interior vertex lies on the medial axis between the chains (``1e-7`` of the extent plus the
+  oracle's own error bound), the invariants of :func:`oracle.check_centerline` hold (ends exact, one simple
+  line, equidistant empty incircles);
+- the Hausdorff distance between the line and the oracle's target set is at most the tolerance (plus the
+  measurement's resolution): from the target to the line by the oracle's refinement, from the line to the
+  target on the line densified to a tenth of the tolerance;
+- the line has at most 1.5 times as many vertices as the two chains together.
+
+The tolerances are the documented rule (typical width / 200) or a tighter one given explicitly; nothing is
+copied from a previous run.
+"""
+
+import math
+
+import numpy as np
+import pytest
+import shapely
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from shapely.geometry import Polygon, box
+
+from incircu_plugin.core import (
+    IncirCuError,
+    centerline_from_chains,
+    default_tolerance,
+    lines_centerline,
+    polygon_centerline,
+    split_polygon,
+)
+from incircu_plugin.core.errors import OptionError
+from tests.support import geometry_cases
+from tests.support.oracle import MedialOracle, check_centerline
+
+ANALYTIC = geometry_cases.analytic_cases()
+WAVY = [
+    geometry_cases.wavy_channel(seed=31),
+    geometry_cases.wavy_channel(seed=32, n=(25, 80), split_fractions=(0.15, 0.9), teeth=0.05),
+    geometry_cases.wavy_channel(
+        seed=33,
+        length=250.0,
+        mean_width=15.0,
+        n=(120, 160),
+        harmonics=((15.0, 120.0, 0.5), (3.0, 41.0, 1.0)),
+        placement=geometry_cases.PLACEMENTS["projected"],
+    ),
+]
+GAMBIA = geometry_cases.gambia()
+CASES = ANALYTIC + WAVY + [GAMBIA]
+
+
+def marked(cases):
+    """The cases as pytest parameters, those with many boundary vertices (seconds of oracle work) slow."""
+    return [pytest.param(c, id=c.name, marks=[pytest.mark.slow] if c.vertex_count > 300 else []) for c in cases]
+
+
+#: Largest ratio of output vertices to the vertices of both chains at the default tolerance.
+VERTEX_RATIO = 1.5
+
+
+def assert_within_tolerance(result, chain_a, chain_b, region, tolerance, oracle=None, near_ends=None):
+    """Vertices on the oracle's axis and the Hausdorff distance between line and axis within ``tolerance``.
+
+    ``near_ends``: target points within this distance of these points are not compared (open mode: the
+    line starts at the end gap's midpoint by definition, where the axis crosses the gap elsewhere).
+    """
+    oracle = oracle or MedialOracle(chain_a, chain_b, region=region)
+    coords = np.asarray(result.line.coords)[:, :2]
+    if len(coords) > 2:
+        distance = oracle.distance(coords[1:-1])
+        limit = 1e-7 * oracle.extent + 4.0 * oracle.error_bound
+        worst = int(np.argmax(distance))
+        assert distance[worst] <= limit, f"vertex {coords[worst + 1].tolist()} is {distance[worst]:.3g} off the axis"
+    step = tolerance / 10.0
+    dense = shapely.get_coordinates(shapely.segmentize(result.line, step))
+    if near_ends is not None:
+        dense = dense[away_from(dense, *near_ends)]
+    away = oracle.distance(dense).max()
+    assert away <= tolerance + step, f"the line is {away:.3g} from the axis, tolerance {tolerance:.3g}"
+    if near_ends is None:
+        missed = oracle.hausdorff_from_target(result.line, step)
+    else:
+        targets = shapely.get_coordinates(shapely.segmentize(shapely.multilinestrings(list(oracle.segments)), step))
+        targets = targets[away_from(targets, *near_ends)]
+        missed = float(shapely.distance(result.line, shapely.points(targets)).max())
+    assert missed <= tolerance + step, f"the axis is {missed:.3g} from the line, tolerance {tolerance:.3g}"
+
+
+def away_from(points, ends, distance):
+    """Mask of the points farther than ``distance`` from every point of ``ends``."""
+    return np.min([np.hypot(*(points - end).T) for end in ends], axis=0) > distance
+
+
+@pytest.mark.parametrize("case", marked(CASES))
+def test_default_tolerance_bounds_the_distance_to_the_medial_axis(case):
+    result = polygon_centerline(case.polygon, case.split_points)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    tolerance = default_tolerance(case.chain_a, case.chain_b)
+    assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
+    assert len(result.line.coords) <= VERTEX_RATIO * (len(case.chain_a) + len(case.chain_b))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+def test_a_tight_tolerance_bounds_the_distance_to_the_medial_axis(case):
+    tolerance = case.width / 2000.0
+    result = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
+
+
+def test_a_tighter_tolerance_gives_more_vertices_on_a_curved_axis():
+    case = geometry_cases.annulus_sector(n=61)
+    counts = [
+        len(polygon_centerline(case.polygon, case.split_points, tolerance=t).line.coords) for t in (1.0, 0.1, 0.01)
+    ]
+    assert counts[0] < counts[1] < counts[2]
+
+
+def test_a_straight_channel_is_two_vertices():
+    # The axis of a rectangle split at the middles of its short sides is the whole mid-line (the stubs from
+    # the split points included): one straight piece, whatever the number of boundary vertices.
+    case = geometry_cases.rectangle(length=100.0, width=10.0, n=50)
+    result = polygon_centerline(case.polygon, case.split_points)
+    assert [tuple(p) for p in result.line.coords] == [(0.0, 5.0), (100.0, 5.0)]
+
+
+OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + WAVY[:2]
+
+
+@pytest.mark.parametrize("case", marked(OPEN))
+def test_open_mode_is_within_the_tolerance_away_from_the_end_gaps(case):
+    line_a, line_b = geometry_cases.bank_pair(case, False, True)
+    region = geometry_cases.channel_case("region", case.bank_a, case.bank_b, case.width).polygon
+    ends = [0.5 * (case.bank_a[i] + case.bank_b[i]) for i in (0, -1)]
+    result = lines_centerline(line_a, line_b)
+    check_centerline(result, case.bank_a, case.bank_b, region, [tuple(end) for end in ends])
+    gap = max(np.hypot(*(case.bank_a[i] - case.bank_b[i])) for i in (0, -1))
+    tolerance = default_tolerance(case.bank_a, case.bank_b)
+    assert_within_tolerance(result, case.bank_a, case.bank_b, region, tolerance, near_ends=(ends, gap))
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -1.0, "0.5", True, [1.0]])
+def test_a_tolerance_that_is_not_a_positive_length_is_an_option_error(bad):
+    case = geometry_cases.rectangle()
+    with pytest.raises(OptionError, match="tolerance"):
+        polygon_centerline(case.polygon, case.split_points, tolerance=bad)
+    assert issubclass(OptionError, IncirCuError)
+
+
+def test_a_tolerance_with_a_spacing_is_an_option_error():
+    case = geometry_cases.rectangle()
+    with pytest.raises(OptionError, match="either a tolerance"):
+        centerline_from_chains(case.chain_a, case.chain_b, 1.0, tolerance=0.1)
+
+
+@pytest.mark.parametrize("tolerance", [None, 0, 0.0])
+def test_no_tolerance_and_zero_mean_the_documented_default(tolerance):
+    case = geometry_cases.wavy_channel(seed=5)
+    expected = polygon_centerline(
+        case.polygon, case.split_points, tolerance=default_tolerance(case.chain_a, case.chain_b)
+    )
+    result = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
+    assert result.line.equals_exact(expected.line, 0.0)
+
+
+# Property tests: compact shapes (regular polygons, stars, squares) and split points near corners and ends.
+
+PROPERTY_SETTINGS = settings(
+    max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True, database=None
+)
+
+
+def regular_polygon(corners, phase, radius=1.0):
+    angles = phase + 2.0 * np.pi * np.arange(corners) / corners
+    return Polygon(np.stack([radius * np.cos(angles), radius * np.sin(angles)], axis=1))
+
+
+def star(tips, inner, phase):
+    angles = phase + np.pi * np.arange(2 * tips) / tips
+    radius = np.where(np.arange(2 * tips) % 2 == 0, 1.0, inner)
+    return Polygon(np.stack([radius * np.cos(angles), radius * np.sin(angles)], axis=1))
+
+
+def on_edge(ring, edge, fraction):
+    """The point ``fraction`` of the way along edge ``edge`` of a closed ring's vertex array."""
+    start, end = ring[edge % len(ring)], ring[(edge + 1) % len(ring)]
+    return tuple(start + fraction * (end - start))
+
+
+def assert_adaptive_properties(polygon, split_points):
+    result = polygon_centerline(polygon, split_points)
+    chain_a, chain_b = split_polygon(polygon, split_points)
+    check_centerline(result, chain_a, chain_b, polygon, [tuple(chain_a[0]), tuple(chain_a[-1])])
+    assert_within_tolerance(result, chain_a, chain_b, polygon, default_tolerance(chain_a, chain_b))
+    assert len(result.line.coords) <= VERTEX_RATIO * (len(chain_a) + len(chain_b))
+
+
+@st.composite
+def compact_shapes(draw):
+    """A regular polygon or a star (split at two tips or inside two edges), or a square split on two sides."""
+    kind = draw(st.sampled_from(["regular", "star", "square"]))
+    phase = draw(st.floats(0.0, 2.0 * math.pi))
+    if kind == "regular":
+        corners = draw(st.integers(3, 12))
+        polygon = regular_polygon(corners, phase)
+        ring = np.asarray(polygon.exterior.coords)[:-1]
+        second = draw(st.integers(1, corners - 1))
+        fractions = draw(st.tuples(st.floats(0.0, 0.99), st.floats(0.0, 0.99)))
+        return polygon, [on_edge(ring, 0, fractions[0]), on_edge(ring, second, fractions[1])]
+    if kind == "star":
+        tips = draw(st.integers(3, 9))
+        polygon = star(tips, draw(st.floats(0.3, 0.8)), phase)
+        ring = np.asarray(polygon.exterior.coords)[:-1]
+        second = 2 * draw(st.integers(1, tips - 1))
+        if draw(st.booleans()):
+            return polygon, [tuple(ring[0]), tuple(ring[second])]
+        return polygon, [on_edge(ring, 0, 0.5), on_edge(ring, second, 0.5)]
+    side = draw(st.floats(0.1, 10.0))
+    polygon = shapely.segmentize(box(0.0, 0.0, side, side), side / draw(st.integers(1, 20)))
+    fractions = draw(st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)))
+    return polygon, [(0.0, fractions[0] * side), (side, fractions[1] * side)]
+
+
+@pytest.mark.slow
+@PROPERTY_SETTINGS
+@given(compact_shapes())
+def test_compact_shapes_give_one_simple_line_within_the_tolerance(drawn):
+    polygon, split_points = drawn
+    assert_adaptive_properties(polygon, split_points)
+
+
+@st.composite
+def near_end_channels(draw):
+    """A rectangle or a wavy channel with its split points anywhere on its caps, corners included."""
+    if draw(st.booleans()):
+        length = draw(st.floats(1.0, 30.0))
+        polygon = shapely.segmentize(box(0.0, 0.0, length, 1.0), length / draw(st.integers(1, 30)))
+        heights = draw(st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)))
+        return polygon, [(0.0, heights[0]), (length, heights[1])]
+    case = geometry_cases.wavy_channel(
+        seed=draw(st.integers(0, 2**31)),
+        jitter=draw(st.floats(0.0, 0.45)),
+        split_fractions=(draw(st.floats(0.0, 1.0)), draw(st.floats(0.0, 1.0))),
+        teeth=draw(st.sampled_from([0.0, 0.05, 0.2])),
+    )
+    return case.polygon, case.split_points
+
+
+@pytest.mark.slow
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True, database=None)
+@given(near_end_channels())
+def test_split_points_near_corners_give_one_simple_line_within_the_tolerance(drawn):
+    polygon, split_points = drawn
+    assert_adaptive_properties(polygon, split_points)

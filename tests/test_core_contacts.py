@@ -1,0 +1,144 @@
+"""The engine's kernels with hand-computed values: first contacts, event crossings, parabola stations, order.
+
+Each expected value comes from elementary geometry written next to it (a disk on a normal touching a line
+or a point, two radii equal, a parabola's chord), so a slip in a kernel fails here, not somewhere else as a
+tolerance.
+"""
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
+from incircu_plugin.core.contacts import Boundary, first_contacts
+from incircu_plugin.core.engine import _distinct, _first_of_each_centre
+
+
+def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
+    """``first_contacts`` of one sample against every segment of two chains built from ``segments``."""
+    chains = [np.array(segments[0], dtype=float), np.array(segments[1], dtype=float)]
+    boundary = Boundary(chains)
+    count = boundary.segment_count
+    segment = np.arange(count)
+    ones = np.ones(count)
+    t, along, site = first_contacts(
+        sample[0] * ones,
+        sample[1] * ones,
+        direction[0] * ones,
+        direction[1] * ones,
+        scale * ones,
+        slide * ones,
+        boundary,
+        segment,
+    )
+    return t, along, site, boundary
+
+
+def test_a_disk_on_a_normal_touches_a_parallel_line_halfway():
+    # Disks centred (0, t) with radius t touch y = 10 when 10 - t = t: t = 5, at x = 0, 5 from (-5, 10).
+    t, along, site, _boundary = contacts_of((0.0, 0.0), (0.0, 1.0), [[(-5, 10), (5, 10)], [(-5, -10), (5, -10)]])
+    assert t[0] == pytest.approx(5.0, rel=1e-15)
+    assert along[0] == pytest.approx(5.0, rel=1e-15)
+    assert site[0] == 0  # the segment's interior
+    assert t[1] == np.inf  # the line behind the sample is never touched
+
+
+def test_a_disk_touches_a_segment_end_when_the_tangent_point_is_off_the_segment():
+    # y = 4 would be touched at (0, 4) with t = 2, outside [3, 10]; the vertex (3, 4) is touched when
+    # 3**2 + (4 - t)**2 = t**2: t = 25 / 8.
+    t, along, site, boundary = contacts_of((0.0, 0.0), (0.0, 1.0), [[(3, 4), (10, 4)], [(-5, -10), (5, -10)]])
+    assert t[0] == pytest.approx(25.0 / 8.0, rel=1e-15)
+    assert along[0] == 0.0
+    assert site[0] == boundary.segment_count + 0  # vertex 0: the start of the first chain
+
+
+def test_a_convex_corner_disk_slides_on_the_bisector():
+    # A right-angle corner at the origin, bisector (1, 1)/sqrt 2: radius t sin 45, centre t (1, 1)/sqrt 2.
+    # The side x = 10 is touched when 10 - t/sqrt 2 = t/sqrt 2: t = 5 sqrt 2, centre (5, 5), radius 5.
+    half = math.pi / 4.0
+    t, along, _site, _ = contacts_of(
+        (0.0, 0.0),
+        (math.sqrt(0.5), math.sqrt(0.5)),
+        [[(10, -5), (10, 20)], [(-5, -10), (5, -10)]],
+        scale=math.sin(half),
+        slide=math.cos(half),
+    )
+    assert t[0] == pytest.approx(5.0 * math.sqrt(2.0), rel=1e-14)
+    assert along[0] == pytest.approx(10.0, rel=1e-14)  # (10, 5) is 10 from (10, -5)
+
+
+def test_a_vertex_a_hair_from_the_sample_point_is_not_touched():
+    # The vertex (1e-9, 1e-18) lies on the sample's tangent line up to 1e-18: the formula would touch it at
+    # t = |d|**2 / (2 d.b) = 0.5, a contact made of rounding. The segment's own line (y = 1e-18) is touched
+    # at x = 0, outside the segment.
+    t, _, _, _ = contacts_of((0.0, 0.0), (0.0, 1.0), [[(1e-9, 1e-18), (1.0, 1e-18)], [(-5, -10), (5, -10)]])
+    assert t[0] == np.inf
+
+
+def crossing(kind, u0, u1, terms0, terms1):
+    spans = SimpleNamespace(kind=np.array([kind]))
+    intervals = SimpleNamespace(span=np.array([0]), u0=np.array([u0]), u1=np.array([u1]))
+    as_arrays = [tuple(np.array([value], dtype=float) for value in terms) for terms in (terms0, terms1)]
+    u, found, at_end = _crossing(spans, intervals, *as_arrays)
+    return u[0], found[0], at_end[0]
+
+
+def test_two_lines_cross_where_their_radii_are_equal_on_an_edge():
+    # Along the x axis with normal (0, 1): the line x = 0 is touched at r = u, the line y = 10 at r = 5.
+    u, found, _ = crossing(EDGE, 0.0, 20.0, (0.0, 1.0, 0.0), (5.0, 0.0, 0.0))
+    assert found and u == pytest.approx(5.0, rel=1e-15)
+
+
+def test_a_vertex_on_a_line_meets_it_in_a_double_root():
+    # The line y = 2 is touched at r = 1; the vertex (3, 2) at r = ((u - 3)**2 + 4) / 4, equal only at u = 3
+    # (the contact slides off the segment's end onto its vertex).
+    u, found, _ = crossing(EDGE, 0.0, 10.0, (1.0, 0.0, 0.0), (13.0 / 4.0, -6.0 / 4.0, 1.0 / 4.0))
+    assert found and u == pytest.approx(3.0, abs=1e-7)
+
+
+def test_two_lines_cross_on_a_fan_at_the_bisecting_direction():
+    # Lines at distance 2 in directions 0 and pi/2 from the fan's vertex: 1/r = (1 - cos u) / 2 and
+    # (1 - sin u) / 2, equal at u = pi / 4.
+    u, found, _ = crossing(FAN, 0.0, math.pi / 2.0, (0.5, -0.5, 0.0), (0.5, 0.0, -0.5))
+    assert found and u == pytest.approx(math.pi / 4.0, rel=1e-14)
+
+
+def test_a_crossing_at_an_end_is_reported_as_that_end():
+    u, found, at_end = crossing(EDGE, 5.0, 20.0, (0.0, 1.0, 0.0), (5.0, 0.0, 0.0))
+    assert not found and at_end == 0 and u == pytest.approx(12.5)
+
+
+def test_parabola_stations_lie_on_the_parabola_with_chords_within_the_tolerance():
+    # Focus (0, 1), directrix the x axis: y = (x**2 + 1) / 2. From x = -3 to x = 4, apex x = 0 included.
+    tolerance = 1e-3
+    ends = np.array([[[-3.0, 5.0], [4.0, 8.5]]])
+    owner, centre, radius = _parabola_stations(
+        np.array([[0.0, 1.0]]), np.array([[0.0, 0.0]]), np.array([[1.0, 0.0]]), ends, tolerance
+    )
+    assert np.all(owner == 0)
+    x, y = centre.T
+    assert np.abs(y - (x * x + 1.0) / 2.0).max() <= 1e-13
+    assert np.abs(radius - y).max() <= 1e-13
+    assert np.min(np.abs(x)) == 0.0
+    stations = np.sort(np.concatenate([[-3.0, 4.0], x]))
+    dense = np.linspace(-3.0, 4.0, 200_001)
+    chord = np.interp(dense, stations, (stations**2 + 1.0) / 2.0)
+    # The distance from the arc to a chord is the vertical gap times the cosine of the chord's slope.
+    slope = np.interp(dense, stations[:-1], np.diff((stations**2 + 1.0) / 2.0) / np.diff(stations))
+    assert np.max((chord - (dense**2 + 1.0) / 2.0) / np.sqrt(1.0 + slope**2)) <= tolerance * (1.0 + 1e-9)
+    # Not wastefully many: uniform chords of the largest admissible length at the apex, 2 sqrt(2 tolerance),
+    # would need 7 / (2 sqrt(2e-3)) ~ 78; the stations adapt to the flatter flanks.
+    assert len(x) < 7.0 / (2.0 * math.sqrt(2.0 * tolerance))
+
+
+def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_predecessor():
+    points = np.array([[0.0, 0.0], [0.0, 5e-10], [1.0, 0.0], [1.0, 5e-10]])
+    # p1 is within 1e-9 of p0: dropped; p3 is the last point: kept, so p2 (within 1e-9 of it) is dropped.
+    assert _distinct(points, 1e-9).tolist() == [True, False, False, True]
+
+
+def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
+    centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
+    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]

@@ -1,0 +1,132 @@
+"""Direct tests of the algorithm layer's pure helpers, with hand-computed values.
+
+The helpers live in modules that import ``qgis``, so the plugin is loaded first (as QGIS imports it, as the
+package ``incircu``) and the modules are taken from there.
+"""
+
+import importlib
+import math
+
+import numpy as np
+import pytest
+from qgis.core import QgsGeometry, QgsRectangle
+from shapely.geometry import LineString
+
+
+@pytest.fixture(scope="module")
+def plugin_module(loaded_plugin):
+    """Import a module of the loaded plugin by its name inside the plugin (``"algorithms.outputs"``)."""
+    return lambda name: importlib.import_module(f"incircu.{name}")
+
+
+def result(plugin_module, xs, radii, ends_found=False):
+    """A centerline along the x axis through ``xs`` with the given incircle radii."""
+    engine = plugin_module("incircu_plugin.core.engine")
+    vertices = np.column_stack([xs, np.zeros(len(xs))]).astype(float)
+    return engine.CenterlineResult(
+        line=LineString(vertices),
+        radii=np.asarray(radii, dtype=float),
+        foot_a=vertices.copy(),
+        foot_b=vertices.copy(),
+        ends_found=ends_found,
+    )
+
+
+# width_statistics (algorithms/outputs.py) ---------------------------------------------------------------
+
+
+def test_width_statistics_weights_the_mean_by_length(plugin_module):
+    width_statistics = plugin_module("algorithms.outputs").width_statistics
+    # Widths 0, 4, 8, 0 at chainages 0, 10, 20, 30: the ends (width 0) are left out, the mean is the
+    # trapezoid integral over [10, 20], (4 + 8) / 2 * 10 = 60, over its length 10.
+    statistics = width_statistics([result(plugin_module, [0, 10, 20, 30], [0, 2, 4, 0], ends_found=True)])
+    assert statistics == {
+        "length": 30.0,
+        "width_min": 4.0,
+        "width_mean": 6.0,
+        "width_max": 8.0,
+        "n_vertices": 4,
+        "ends_found": True,
+    }
+
+
+def test_width_statistics_of_several_parts(plugin_module):
+    width_statistics = plugin_module("algorithms.outputs").width_statistics
+    first = result(plugin_module, [0, 10, 20, 30], [0, 2, 4, 0], ends_found=True)
+    # Width 2 all along 15 units: integral 30.
+    second = result(plugin_module, [0, 5, 10, 15], [1, 1, 1, 1], ends_found=False)
+    statistics = width_statistics([first, second])
+    assert statistics["length"] == 45.0
+    assert statistics["n_vertices"] == 8
+    assert (statistics["width_min"], statistics["width_max"]) == (2.0, 8.0)
+    assert statistics["width_mean"] == pytest.approx((60.0 + 30.0) / (10.0 + 15.0), rel=1e-12)
+    assert statistics["ends_found"] is False
+
+
+def test_width_statistics_with_one_or_no_positive_width(plugin_module):
+    width_statistics = plugin_module("algorithms.outputs").width_statistics
+    single = width_statistics([result(plugin_module, [0, 10, 20], [0, 3, 0])])
+    assert (single["width_min"], single["width_mean"], single["width_max"]) == (6.0, 6.0, 6.0)
+    none = width_statistics([result(plugin_module, [0, 10], [0, 0])])
+    assert (none["width_min"], none["width_mean"], none["width_max"]) == (None, None, None)
+    assert none["length"] == 10.0 and none["n_vertices"] == 2
+
+
+# version_tuple (algorithms/dependencies.py) --------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("2.0.1", (2, 0, 1)),
+        ("1.8.5", (1, 8, 5)),
+        ("10.2", (10, 2)),
+        ("2.0rc1", (2, 0)),
+        ("2.1b2", (2, 1)),
+        ("2.0.post1", (2, 0)),
+        ("2", (2,)),
+        ("dev", ()),
+    ],
+)
+def test_version_tuple(plugin_module, text, expected):
+    assert plugin_module("algorithms.dependencies").version_tuple(text) == expected
+
+
+def test_a_release_candidate_of_shapely_2_is_not_older_than_2_0(plugin_module):
+    dependencies = plugin_module("algorithms.dependencies")
+    assert dependencies.version_tuple("2.0rc1") >= dependencies.MINIMUM_SHAPELY
+    assert dependencies.version_tuple("1.8.5") < dependencies.MINIMUM_SHAPELY
+
+
+# _layer_margin (algorithms/polygon_centerline.py) --------------------------------------------------------
+
+
+def box_around_latitude(latitude):
+    """A small square in degrees centred on longitude 20 and the given latitude."""
+    return QgsGeometry.fromRect(QgsRectangle(19.9, latitude - 0.1, 20.1, latitude + 0.1))
+
+
+def test_layer_margin_in_a_projected_layer_is_the_distance(plugin_module):
+    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    assert layer_margin(25.0, box_around_latitude(52.0), False) == 25.0
+
+
+@pytest.mark.parametrize(
+    ("latitude", "expected_degrees"),
+    [
+        # 111 m is 0.001 degree of latitude (111 km per degree); the margin doubles it, and a degree of
+        # longitude shrinks with cos(latitude): 0.002 at the equator, 0.004 at 60 degrees.
+        (0.0, 0.002),
+        (60.0, 0.004),
+        # Near the pole cos(latitude) is clamped to 0.01: 0.002 / 0.01.
+        (89.95, 0.2),
+    ],
+)
+def test_layer_margin_in_a_geographic_layer_is_in_degrees(plugin_module, latitude, expected_degrees):
+    layer_margin = plugin_module("algorithms.polygon_centerline")._layer_margin
+    geometry = box_around_latitude(latitude)
+    assert geometry.boundingBox().center().y() == pytest.approx(latitude, abs=1e-12)
+    assert layer_margin(111.0, geometry, True) == pytest.approx(expected_degrees, rel=1e-9)
+    # Safe: the margin covers the distance along the parallel (the shorter degree) with room to spare.
+    metres_per_degree = 111_000.0 * max(math.cos(math.radians(latitude)), 0.01)
+    assert layer_margin(111.0, geometry, True) * metres_per_degree >= 111.0
