@@ -498,6 +498,18 @@ def test_a_crossing_line_is_never_returned():
     assert _checked(result) is result
 
 
+def test_a_line_leaving_its_polygon_is_never_returned():
+    from dataclasses import replace
+
+    from incircu_plugin.core.api import _checked
+
+    result = polygon_centerline(RECTANGLE, ENDS)
+    outside = replace(result, line=LineString([(0, 5), (50, 12), (100, 5)]))
+    with pytest.raises(CenterlineError, match=r"leaves the polygon at \(50, 12\) \(2 outside\)"):
+        _checked(outside, RECTANGLE)
+    assert _checked(result, RECTANGLE) is result
+
+
 def test_square_whose_automatic_ends_coincide_is_a_split_point_error():
     square = shapely.segmentize(
         box(499.04325887565847, 203.26611626641056, 500.04325887565847, 204.26611626641056), 1 / 14

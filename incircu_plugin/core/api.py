@@ -22,6 +22,9 @@ from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPo
 from .islands import bridge_islands
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
+#: Largest distance of a returned line's vertex outside its polygon, relative to the polygon's extent.
+OUTSIDE_TOLERANCE = 1e-7
+
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
 ISLAND_MODES = ("main_channel", "ignore")
@@ -102,7 +105,8 @@ def polygon_centerline(
     result = centerline_from_chains(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
-    return replace(_checked(result), ends_found=ends_found, notes=tuple(notes))
+    region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+    return replace(_checked(result, region), ends_found=ends_found, notes=tuple(notes))
 
 
 def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
@@ -141,10 +145,11 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
     )
 
 
-def _checked(result):
-    """Return ``result`` if its line is finite and simple; otherwise raise :class:`CenterlineError`.
+def _checked(result, region=None):
+    """Return ``result`` if its line is finite, simple and inside ``region``; else raise :class:`CenterlineError`.
 
-    The last guard of the public functions: a line crossing or touching itself is never returned.
+    The last guard of the public functions: a line crossing or touching itself, or leaving its polygon by more
+    than ``OUTSIDE_TOLERANCE`` of the polygon's extent, is never returned.
     """
     coordinates = shapely.get_coordinates(result.line)
     if not np.all(np.isfinite(coordinates)):
@@ -157,6 +162,14 @@ def _checked(result):
             "has no single axis near the ends (a compact shape, or a split point in a corner): move the split "
             "points to the middle of the ends, or change the spacing."
         )
+    if region is not None:
+        outside = shapely.distance(region, shapely.points(coordinates))
+        worst = int(np.argmax(outside))
+        if outside[worst] > OUTSIDE_TOLERANCE * extent_of(np.reshape(region.bounds, (2, 2))):
+            raise CenterlineError(
+                f"The computed centerline leaves the polygon at {format_point(coordinates[worst])} "
+                f"({outside[worst]:.6g} outside), so none is returned. Give split points, or change the tolerance."
+            )
     return result
 
 
