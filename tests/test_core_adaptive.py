@@ -121,12 +121,14 @@ def test_a_tighter_tolerance_gives_more_vertices_on_a_curved_axis():
     assert counts[0] < counts[1] < counts[2]
 
 
-def test_a_straight_channel_is_two_vertices():
-    # The axis of a rectangle split at the middles of its short sides is the whole mid-line (the stubs from
-    # the split points included): one straight piece, whatever the number of boundary vertices.
+def test_a_straight_channel_is_its_ends_and_the_two_ends_of_its_axis():
+    # The axis of a rectangle split at the middles of its short sides is the whole mid-line: the stubs from
+    # the split points (radius 0) meet the two long sides' bisector at (5, 5) and (95, 5) (radius 5, the
+    # half width, which the width statistics need); nothing else, whatever the number of boundary vertices.
     case = geometry_cases.rectangle(length=100.0, width=10.0, n=50)
     result = polygon_centerline(case.polygon, case.split_points)
-    assert [tuple(p) for p in result.line.coords] == [(0.0, 5.0), (100.0, 5.0)]
+    assert [tuple(p) for p in result.line.coords] == [(0.0, 5.0), (5.0, 5.0), (95.0, 5.0), (100.0, 5.0)]
+    assert result.radii.tolist() == [0.0, 5.0, 5.0, 0.0]
 
 
 OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + WAVY[:2]

@@ -399,8 +399,12 @@ def _line_through(points, frame, simplification):
     ordered = ordered.subset(_first_of_each_centre(ordered.centre, resolution))
     centre, radius, foot_a, foot_b = _with_ends(ordered, frame.chains, frame.closed)
     keep = _distinct(centre, resolution)
-    if simplification is not None and keep.sum() > 2:
-        keep[keep] = _fewest_vertices(centre[keep], simplification)
+    if simplification is not None and keep.sum() > 4:
+        # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
+        # meet the axis, so a straight channel keeps vertices that carry its width.
+        kept = np.flatnonzero(keep)
+        inner = _fewest_vertices(centre[kept[1:-1]], simplification)
+        keep[kept[2:-2]] = inner[1:-1]
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
     return centre[keep], radius[keep], foot_a[keep], foot_b[keep]

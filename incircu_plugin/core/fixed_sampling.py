@@ -56,7 +56,7 @@ def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
     unit = np.diff(chain, axis=0) / np.diff(positions)[:, None]
     normal = side * left_normal(unit)
     total = positions[-1]
-    merge = COINCIDENCE_TOLERANCE * max(total, 1.0)
+    coincidence = COINCIDENCE_TOLERANCE * max(total, 1.0)
 
     # Near each end the part of the axis whose disks touch both chains can be much shorter than the spacing
     # (a split point on a straight cap); stations halving the spacing towards the ends trace it too.
@@ -64,9 +64,9 @@ def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
     stations = np.unique(
         np.concatenate([np.arange(1, int(np.ceil(total / spacing))) * spacing, towards_ends, total - towards_ends])
     )
-    stations = stations[(stations > merge) & (stations < total - merge)]
+    stations = stations[(stations > coincidence) & (stations < total - coincidence)]
     segment = np.clip(np.searchsorted(positions, stations, side="right") - 1, 0, n_segments - 1)
-    off_vertex = (stations - positions[segment] > merge) & (positions[segment + 1] - stations > merge)
+    off_vertex = (stations - positions[segment] > coincidence) & (positions[segment + 1] - stations > coincidence)
     stations, segment = stations[off_vertex], segment[off_vertex]
     edge_point = chain[segment] + (stations - positions[segment])[:, None] * unit[segment]
 
