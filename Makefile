@@ -30,7 +30,7 @@ export QT_QPA_PLATFORM := offscreen
 export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
 export PYTHONDONTWRITEBYTECODE := 1
 
-.PHONY: help setup system-packages demo test test-core lint package deploy transup transcompile bench clean
+.PHONY: help setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
 
 help:
 	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"
@@ -42,6 +42,7 @@ help:
 	@echo "make deploy       copy the plugin into the QGIS profile $(PROFILE)"
 	@echo "make transup      update i18n/*.ts from the sources; make transcompile builds the .qm files"
 	@echo "make bench        benchmarks (bash benchmarks/run.sh)"
+	@echo "make fuzz N=100000  fuzz campaign of the core (fuzz/), prints the outcome table"
 
 setup: system-packages $(VENV)/.installed $(QGIS_SITE)/.installed
 
@@ -107,6 +108,11 @@ transcompile:
 
 bench: setup
 	bash benchmarks/run.sh
+
+N ?= 100000
+SEED ?= 20261201
+fuzz: $(VENV)/.installed
+	$(PYTHON) -m fuzz --count $(N) --seed $(SEED) --failures out/fuzz/failures-$(SEED).jsonl
 
 clean:
 	rm -rf $(DIST) out tests/artifacts

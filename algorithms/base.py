@@ -17,6 +17,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 from .compat import DistanceUnit, ProcessingParameterFlag, ProcessingSourceType
+from .running import FeatureRun
 
 PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
 ICON_PATH = PLUGIN_FOLDER / "icons"
@@ -85,6 +86,18 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def __init__(self):
         super().__init__()
         self.parameter_help = {}
+
+    def processAlgorithm(self, parameters, context, feedback):
+        """Run :meth:`process_features` and close every output whatever happens (end, cancel, error)."""
+        run = FeatureRun(self, parameters, context, feedback)
+        try:
+            return self.process_features(run, parameters, context, feedback)
+        finally:
+            run.close()
+
+    def process_features(self, run, parameters, context, feedback):
+        """Compute and write the outputs through ``run`` (a ``FeatureRun``); return the result map."""
+        raise NotImplementedError
 
     def tr(self, text):
         """Translate ``text`` with the class name as context.

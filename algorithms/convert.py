@@ -123,8 +123,8 @@ class WorkingFrame:
             Geometry in the layer's CRS (degrees for geographic layers).
         """
         if self.is_geographic:
-            centre = geometry.boundingBox().center()
-            self.projection = LocalProjection(self.geographic_crs, centre.x(), centre.y())
+            # Not the bounding box's centre: a shape across the antimeridian may be stored wrapped (-180..180).
+            self.projection = LocalProjection.around(to_shapely(geometry), self.geographic_crs)
 
     def to_core(self, geometry):
         """Return a QGIS geometry of the layer as a Shapely geometry in the working frame."""

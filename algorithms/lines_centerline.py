@@ -10,7 +10,6 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingFeatureSourceFlag, ProcessingSourceType
-from .running import FeatureRun
 
 
 class LinesCenterlineAlgorithm(IncirCuAlgorithm):
@@ -84,8 +83,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_sampling_parameters()
         self.add_result_parameters()
 
-    def processAlgorithm(self, parameters, context, feedback):
-        run = FeatureRun(self, parameters, context, feedback)
+    def process_features(self, run, parameters, context, feedback):
         line_type = GeometryType.Line
         source_a = run.source(self.LINES_A, line_type)
         source_b = run.source(self.LINES_B, line_type)

@@ -6,7 +6,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import WkbType
 from .convert import line_with_m
-from .outputs import DOUBLE, INTEGER, STRING, make_fields, width_statistics
+from .outputs import DOUBLE, INTEGER, STRING, make_fields, release_sinks, width_statistics
 from .styles import CENTERLINE, style_outputs_on_load
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
@@ -56,6 +56,10 @@ class NetworkWriter:
         self.output_name = algorithm.OUTPUT
         style_outputs_on_load(context, {CENTERLINE: self.sink_id})
 
+    def close(self):
+        """Flush and release the branch layer's sink, which closes (commits) its file; safe to call twice."""
+        release_sinks(self, ("sink",))
+
     def destinations(self):
         """Return the output id keyed by parameter name."""
         return {self.output_name: self.sink_id}
@@ -98,7 +102,7 @@ class NetworkWriter:
                 if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
                     raise QgsProcessingException(
                         QCoreApplication.translate("IncirCuAlgorithm", "Could not write a branch: {}").format(
-                            self.sink.lastError() if hasattr(self.sink, "lastError") else ""
+                            self.sink.lastError()
                         )
                     )
                 self.centerline_count += 1

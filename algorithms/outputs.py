@@ -62,6 +62,20 @@ TRANSECT_FIELDS = (
 )
 
 
+def release_sinks(writer, names):
+    """Flush and drop the sinks held in the attributes ``names`` of ``writer``; safe to call twice.
+
+    QGIS finalises an output when its sink is destroyed; dropping the writer's references here makes that
+    happen now rather than whenever the writer itself is collected.
+    """
+    for name in names:
+        sink = getattr(writer, name)
+        setattr(writer, name, None)
+        if sink is not None:
+            sink.flushBuffer()
+        del sink
+
+
 class CenterlineWriter:
     """Creates the output sinks of an algorithm and writes centerline results into them.
 
@@ -122,6 +136,10 @@ class CenterlineWriter:
                 INCIRCLES: self.circles_id,
             },
         )
+
+    def close(self):
+        """Flush and release every sink, which closes (commits) its file; safe to call twice."""
+        release_sinks(self, ("sink", "vertices", "circles", "transects"))
 
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""

@@ -11,7 +11,6 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
-from .running import FeatureRun
 from .split_points import SplitPoints
 
 
@@ -121,8 +120,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_result_parameters()
 
-    def processAlgorithm(self, parameters, context, feedback):
-        run = FeatureRun(self, parameters, context, feedback)
+    def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
         split_source = None

@@ -8,7 +8,6 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
-from .running import FeatureRun
 from .split_points import SplitPoints
 
 
@@ -107,8 +106,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         )
         self.add_count_outputs(self.tr("Number of branches"), self.tr("Number of branch features written."))
 
-    def processAlgorithm(self, parameters, context, feedback):
-        run = FeatureRun(self, parameters, context, feedback)
+    def process_features(self, run, parameters, context, feedback):
         from .network_outputs import NetworkWriter  # after FeatureRun: it needs Shapely, checked there
 
         source = run.source(self.INPUT, GeometryType.Polygon)

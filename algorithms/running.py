@@ -170,6 +170,11 @@ class FeatureRun:
         """Write the results of one input feature."""
         self.writer.write(feature.attributes(), feature.id(), parts, self.frame)
 
+    def close(self):
+        """Close every output now, whatever happened in the run (see ``CenterlineWriter.close``)."""
+        if self.writer is not None:
+            self.writer.close()
+
     def finish(self):
         """Return the algorithm's result map and report the totals."""
         self.feedback.setProgress(100.0)

@@ -11,16 +11,21 @@ import re
 import numpy as np
 import pytest
 import shapely
-from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
+import shapely.affinity
+from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygon, box
 
 from incircu_plugin.core import (
+    CenterlineError,
     ChainError,
     CrossingLinesError,
     IncirCuError,
     InvalidGeometryError,
+    OptionError,
     SplitPointError,
     centerline_from_chains,
+    find_ends,
     lines_centerline,
+    multipolygon_centerlines,
     polygon_centerline,
     split_polygon,
 )
@@ -310,3 +315,220 @@ def test_lines_on_one_line_enclose_nothing():
 def test_the_engine_checks_its_chains_too(chain, error):
     with pytest.raises(error):
         centerline_from_chains(np.array(chain), np.array(BANK_B), spacing=1.0)
+
+
+def test_a_failed_part_keeps_no_traceback_and_frees_its_caller():
+    import gc
+    import weakref
+
+    class Caller:
+        def report(self, fraction):
+            return True
+
+    caller = Caller()
+    alive = weakref.ref(caller)
+    bow_tie = Polygon([(0, 20), (100, 30), (100, 20), (0, 30)])
+    gc.disable()
+    try:
+        outcomes = multipolygon_centerlines(MultiPolygon([RECTANGLE, bow_tie]), ENDS, progress=caller.report)
+        del caller
+        assert alive() is None, "a stored error keeps the progress callback's owner alive"
+    finally:
+        gc.enable()
+    assert outcomes[0].error is None
+    assert isinstance(outcomes[1].error, InvalidGeometryError)
+    assert outcomes[1].error.__traceback__ is None
+
+
+# Hostile input: every public entry point answers with a typed error saying what to change ------------------
+
+BOW_TIE = Polygon([(0, 20), (100, 30), (100, 20), (0, 30)])
+
+
+def scaled(geometry, factor):
+    return shapely.transform(geometry, lambda xy: xy * factor)
+
+
+@pytest.mark.parametrize("factor", [1e154, 1e299], ids=["1e155", "1e300"])
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda p: polygon_centerline(p),
+        lambda p: polygon_centerline(p, [(0, 5), (100, 5)]),
+        lambda p: find_ends(p),
+        lambda p: split_polygon(p, [(0, 5), (100, 5)]),
+        lambda p: multipolygon_centerlines(p),
+    ],
+    ids=["auto", "split", "find_ends", "split_polygon", "multi"],
+)
+def test_huge_coordinates_are_refused_as_overflowing(factor, call):
+    with pytest.raises(InvalidGeometryError, match="overflow float64") as caught:
+        call(scaled(RECTANGLE, factor))
+    assert f"{100 * factor:.3g}" in str(caught.value)
+
+
+@pytest.mark.parametrize("factor", [1e-171, 1e-301], ids=["1e-170", "1e-300"])
+def test_tiny_shapes_are_refused_as_underflowing(factor):
+    for call in (polygon_centerline, find_ends):
+        with pytest.raises(InvalidGeometryError, match="underflow float64.*Scale the data up"):
+            call(scaled(RECTANGLE, factor))
+
+
+def test_bank_lines_of_huge_coordinates_are_refused():
+    with pytest.raises(InvalidGeometryError, match="first line .* overflow"):
+        lines_centerline([(0, 0), (1e300, 0)], [(0, 1e299), (1e300, 1e299)])
+
+
+def test_shape_too_small_for_its_distance_from_the_origin_is_refused():
+    far = shapely.affinity.translate(RECTANGLE, 1e15, 1e15)
+    with pytest.raises(InvalidGeometryError, match="cannot resolve.*Shift the data nearer the origin"):
+        polygon_centerline(far)
+
+
+def test_moderate_scales_and_offsets_still_work():
+    for factor in (1e-40, 1e40):
+        result = polygon_centerline(scaled(RECTANGLE, factor), [(0, 5 * factor), (100 * factor, 5 * factor)])
+        assert abs(result.length - 100 * factor) <= 1e-9 * 100 * factor
+    far = shapely.affinity.translate(RECTANGLE, 1e9, 1e9)
+    assert abs(polygon_centerline(far, [(1e9, 1e9 + 5), (1e9 + 100, 1e9 + 5)]).length - 100) < 1e-4
+
+
+@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "1"], ids=["nan", "inf", "negative", "text"])
+def test_bad_samples_per_chain_is_an_option_error_naming_the_value(value):
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, ENDS, samples_per_chain=value),
+        lambda: lines_centerline(BANK_A, BANK_B, samples_per_chain=value),
+    ):
+        with pytest.raises(OptionError, match=f"(samples_per_chain|samples per chain) .*{re.escape(repr(value))}"):
+            call()
+
+
+def first_part(outcomes):
+    """The result of a multipolygon's first part, or its error raised."""
+    if outcomes[0].error is not None:
+        raise outcomes[0].error
+    return outcomes[0].result
+
+
+@pytest.mark.parametrize("name", ["spacing", "tolerance"])
+@pytest.mark.parametrize("value", [math.nan, -math.inf, -1.0, "1"], ids=["nan", "-inf", "negative", "text"])
+def test_bad_spacing_or_tolerance_is_an_option_error_naming_the_value(name, value):
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, ENDS, **{name: value}),
+        lambda: lines_centerline(BANK_A, BANK_B, **{name: value}),
+        lambda: first_part(multipolygon_centerlines(RECTANGLE, ENDS, **{name: value})),
+    ):
+        with pytest.raises(OptionError, match=f"{name} must be .*{re.escape(repr(value))}"):
+            outcome = call()
+            raise AssertionError(f"accepted {name}={value!r}: {outcome}")
+
+
+@pytest.mark.parametrize("value", [math.nan, math.inf, -1.0, "0.1"], ids=["nan", "inf", "negative", "text"])
+def test_bad_snap_tolerance(value):
+    far_point = [(300.0, 400.0), (100.0, 5.0)]
+    for call in (
+        lambda: polygon_centerline(RECTANGLE, far_point, snap_tolerance=value),
+        lambda: multipolygon_centerlines(RECTANGLE, far_point, snap_tolerance=value),
+        lambda: split_polygon(RECTANGLE, far_point, value),
+    ):
+        with pytest.raises(OptionError, match="snap_tolerance must be a (non-negative, finite distance|number)"):
+            call()
+
+
+def test_multipoint_split_points_are_used_as_points():
+    result = polygon_centerline(RECTANGLE, MultiPoint(ENDS))
+    assert result.line.coords[0] == ENDS[0] and result.line.coords[-1] == ENDS[1]
+    (outcome,) = multipolygon_centerlines(RECTANGLE, MultiPoint(ENDS))
+    assert outcome.result.line.coords[-1] == ENDS[1]
+
+
+@pytest.mark.parametrize(
+    "points, message",
+    [
+        ([Point(), Point()], "Split point 0 is an empty point"),
+        (Point(0, 5), "sequence of two points .* got a Point"),
+        ((0.0, 5.0), "Split point 0 is the number 0.0"),
+        ([LineString([(0, 0), (0, 10)]), Point(100, 5)], "Split point 0 must be a point, not a LineString"),
+        ([(0, 5, 1, 2), (100, 5)], r"Split point 0 must be an \(x, y\) pair"),
+    ],
+    ids=["empty-points", "one-point", "one-pair", "line", "four-numbers"],
+)
+def test_split_points_of_the_wrong_kind(points, message):
+    for call in (polygon_centerline, multipolygon_centerlines, split_polygon):
+        with pytest.raises(SplitPointError, match=message):
+            call(RECTANGLE, points)
+
+
+def test_text_where_a_geometry_is_expected_is_a_type_error_or_typed():
+    with pytest.raises(TypeError, match="parse WKT"):
+        lines_centerline("LINESTRING (0 0, 100 0)", "LINESTRING (0 8, 100 8)")
+    with pytest.raises(InvalidGeometryError, match="got a str"):
+        polygon_centerline("POLYGON ((0 0, 1 0, 1 1, 0 0))")
+
+
+def test_ragged_coordinates_are_an_invalid_geometry():
+    with pytest.raises(InvalidGeometryError, match=r"\(n, 2\) array of numbers"):
+        lines_centerline([(0, 0), (1, 2, 3)], BANK_B)
+
+
+def test_invalid_part_is_reported_as_invalid_not_as_split_point_count():
+    outcomes = multipolygon_centerlines(BOW_TIE, [(0, 25), (100, 25), (50, 25)])
+    assert isinstance(outcomes[0].error, InvalidGeometryError)
+    assert "Self-intersection" in str(outcomes[0].error)
+
+
+@pytest.mark.parametrize("geometry", [None, Polygon(), MultiPolygon()], ids=["none", "empty", "empty-multi"])
+def test_null_or_empty_multipolygon(geometry):
+    with pytest.raises(InvalidGeometryError, match="null|empty"):
+        multipolygon_centerlines(geometry)
+
+
+# The last guard: no self-crossing line, no identical automatic ends ---------------------------------------
+
+
+def test_a_crossing_line_is_never_returned():
+    from dataclasses import replace
+
+    from incircu_plugin.core.api import _checked
+
+    result = polygon_centerline(RECTANGLE, ENDS)
+    crossing = replace(result, line=LineString([(0, 0), (10, 10), (10, 0), (0, 10)]))
+    with pytest.raises(CenterlineError, match=r"crosses itself at \(5, 5\)"):
+        _checked(crossing)
+    assert _checked(result) is result
+
+
+def test_a_line_leaving_its_polygon_is_never_returned():
+    from dataclasses import replace
+
+    from incircu_plugin.core.api import _checked
+
+    result = polygon_centerline(RECTANGLE, ENDS)
+    outside = replace(result, line=LineString([(0, 5), (50, 12), (100, 5)]))
+    with pytest.raises(CenterlineError, match=r"leaves the polygon at \(50, 12\) \(2 outside\)"):
+        _checked(outside, RECTANGLE)
+    assert _checked(result, RECTANGLE) is result
+
+
+def test_square_whose_automatic_ends_coincide_is_a_split_point_error():
+    square = shapely.segmentize(
+        box(499.04325887565847, 203.26611626641056, 500.04325887565847, 204.26611626641056), 1 / 14
+    )
+    try:
+        result = polygon_centerline(square)
+    except SplitPointError as error:
+        assert "coincide" in str(error) and "Give two split points" in str(error)
+    else:
+        assert result.line.is_simple and result.line.length > 0
+
+
+@pytest.mark.parametrize("corners", [5, 6, 7, 8, 13])
+def test_regular_polygon_with_automatic_ends_is_simple_or_refused(corners):
+    angles = 2 * np.pi * np.arange(corners) / corners
+    polygon = Polygon(np.stack([np.cos(angles), np.sin(angles)], axis=1))
+    try:
+        result = polygon_centerline(polygon)
+    except CenterlineError as error:
+        assert "crosses itself at" in str(error)
+    else:
+        assert result.line.is_simple

@@ -107,7 +107,7 @@ def test_bad_rows_report_the_core_error_and_never_stop_the_frame():
     good_rows = [i for i, name in enumerate(bad["name"]) if name == "good"] + [len(frame) - 1]
     assert np.flatnonzero(result["error"].isna().to_numpy()).tolist() == good_rows
     assert result.geometry.iloc[good_rows].notna().all()
-    assert result["error"].iloc[len(bad)] == "The polygon is empty or null."
+    assert result["error"].iloc[len(bad)] == "The polygon is null (no geometry)."
 
 
 def test_geographic_frames_are_computed_in_metres():

@@ -22,7 +22,15 @@ from .api import (
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends
 from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
-from .errors import ChainError, CrossingLinesError, IncirCuError, InvalidGeometryError, SplitPointError
+from .errors import (
+    CenterlineError,
+    ChainError,
+    CrossingLinesError,
+    IncirCuError,
+    InvalidGeometryError,
+    OptionError,
+    SplitPointError,
+)
 from .frames import centerlines
 from .geodesy import LocalProjection
 from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
@@ -32,6 +40,7 @@ __all__ = [
     "END_RULES",
     "ISLAND_MODES",
     "Cancelled",
+    "CenterlineError",
     "CenterlineResult",
     "ChainError",
     "CrossingLinesError",
@@ -42,6 +51,7 @@ __all__ = [
     "LocalProjection",
     "NetworkBranch",
     "NetworkResult",
+    "OptionError",
     "PartOutcome",
     "PolygonCenterlineResult",
     "SplitPointError",

@@ -6,13 +6,24 @@ from typing import Optional
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiPolygon, Point, Polygon
+from shapely.geometry import MultiPolygon, Polygon
 
-from .chains import extent_of, orient_bank_lines, split_polygon, validate_polygon
+from .chains import (
+    COINCIDENCE_TOLERANCE,
+    extent_of,
+    find_self_crossing,
+    orient_bank_lines,
+    split_polygon,
+    validate_polygon,
+)
 from .ends import END_RULES, find_ends
 from .engine import CenterlineResult, centerline_from_chains
-from .errors import IncirCuError, InvalidGeometryError, SplitPointError
+from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
+from .validation import check_coordinates, split_point_coordinates, tolerance_length
+
+#: Largest distance of a returned line's vertex outside its polygon, relative to the polygon's extent.
+OUTSIDE_TOLERANCE = 1e-7
 
 #: How islands (holes) are treated: the line goes around each island on the side of the wider channel,
 #: or islands are ignored (the line may cross them).
@@ -81,7 +92,7 @@ def polygon_centerline(
 
     Raises
     ------
-    InvalidGeometryError, SplitPointError, ChainError, IncirCuError
+    InvalidGeometryError, SplitPointError, OptionError, ChainError, CenterlineError, IncirCuError
 
     Examples
     --------
@@ -94,8 +105,10 @@ def polygon_centerline(
     check_island_mode(islands)
     if end_rule not in END_RULES:
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
+    snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
+    split_points = split_point_coordinates(split_points)
     notes = []
-    ends_found = split_points is None or len(split_points) == 0
+    ends_found = len(split_points) == 0
     ends_from = "split_points"
     if ends_found:
         ends = find_ends(
@@ -103,6 +116,11 @@ def polygon_centerline(
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
+        if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
+            raise SplitPointError(
+                f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
+                "clear ends. Give two split points."
+            )
         ends_from = "guide" if ends.guided else "automatic"
         if guide is not None and not ends.guided:
             notes.append("The guide line does not come near the polygon; its ends were found automatically.")
@@ -114,6 +132,8 @@ def polygon_centerline(
     result = centerline_from_chains(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
+    region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+    result = _checked(result, region)
     values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
     return PolygonCenterlineResult(**values)
@@ -152,7 +172,7 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
 
     Raises
     ------
-    InvalidGeometryError, ChainError, CrossingLinesError
+    InvalidGeometryError, OptionError, ChainError, CrossingLinesError, CenterlineError
 
     Examples
     --------
@@ -161,9 +181,39 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
     ((0.0, 4.0), 4.0)
     """
     c1, c2 = orient_bank_lines(line_a, line_b)
-    return centerline_from_chains(
-        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    return _checked(
+        centerline_from_chains(
+            c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+        )
     )
+
+
+def _checked(result, region=None):
+    """Return ``result`` if its line is finite, simple and inside ``region``; else raise :class:`CenterlineError`.
+
+    The last guard of the public functions: a line crossing or touching itself, or leaving its polygon by more
+    than ``OUTSIDE_TOLERANCE`` of the polygon's extent, is never returned.
+    """
+    coordinates = shapely.get_coordinates(result.line)
+    if not np.all(np.isfinite(coordinates)):
+        raise CenterlineError("The computed centerline has a NaN or infinite coordinate; none is returned.")
+    if not result.line.is_simple:
+        crossing = find_self_crossing(coordinates)
+        where = "" if crossing is None else f" at {format_point(crossing)}"
+        raise CenterlineError(
+            f"The computed centerline crosses itself{where}, so none is returned. This happens where the shape "
+            "has no single axis near the ends (a compact shape, or a split point in a corner): move the split "
+            "points to the middle of the ends, or change the spacing."
+        )
+    if region is not None:
+        outside = shapely.distance(region, shapely.points(coordinates))
+        worst = int(np.argmax(outside))
+        if outside[worst] > OUTSIDE_TOLERANCE * extent_of(np.reshape(region.bounds, (2, 2))):
+            raise CenterlineError(
+                f"The computed centerline leaves the polygon at {format_point(coordinates[worst])} "
+                f"({outside[worst]:.6g} outside), so none is returned. Give split points, or change the tolerance."
+            )
+    return result
 
 
 @dataclass(frozen=True)
@@ -177,7 +227,7 @@ class PartOutcome:
     result : CenterlineResult or None
         The centerline, or None when the part failed.
     error : IncirCuError or None
-        Why the part failed.
+        Why the part failed; without traceback (a stored traceback would keep the run's frames alive).
     """
 
     part_index: int
@@ -223,18 +273,23 @@ def polygon_parts(geometry, split_points=None, snap_tolerance=None):
     InvalidGeometryError
         If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
     """
-    if geometry is None or geometry.is_empty:
-        raise InvalidGeometryError("The polygon is empty or null.")
+    if geometry is None:
+        raise InvalidGeometryError("The polygon is null (no geometry).")
     if isinstance(geometry, Polygon):
         parts = [geometry]
     elif isinstance(geometry, MultiPolygon):
         parts = list(geometry.geoms)
     else:
-        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {geometry.geom_type}.")
+        kind = getattr(geometry, "geom_type", type(geometry).__name__)
+        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {kind}.")
+    if geometry.is_empty:
+        raise InvalidGeometryError("The polygon is empty.")
+    check_coordinates(shapely.get_coordinates(geometry), "polygon")
+    snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     if snap_tolerance is None:
         snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
-    points = [] if split_points is None else [p if isinstance(p, Point) else Point(p) for p in split_points]
-    near = [[i for i, p in enumerate(points) if part.exterior.distance(p) <= snap_tolerance] for part in parts]
+    points = list(shapely.points(split_point_coordinates(split_points)))
+    near = [list(np.flatnonzero(shapely.distance(part.exterior, points) <= snap_tolerance)) for part in parts]
     return list(zip(parts, near)), points, snap_tolerance
 
 
@@ -284,6 +339,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     outcomes = []
     for index, (part, near) in enumerate(parts):
         try:
+            validate_polygon(part)
             mine = [points[i] for i in near]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
@@ -299,5 +355,20 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
             )
             outcomes.append(PartOutcome(index, result, None))
         except IncirCuError as error:
-            outcomes.append(PartOutcome(index, None, error))
+            outcomes.append(PartOutcome(index, None, _detached(error)))
     return outcomes
+
+
+def _detached(error):
+    """Return ``error`` without its traceback (nor those of its causes), so a kept error holds no frame.
+
+    A traceback holds the frames it passed through and their locals (here the outcome list, and the caller's
+    ``progress`` callback with everything it refers to); an error stored in a result would tie them into a
+    reference cycle that keeps them alive until the garbage collector runs, possibly never.
+    """
+    seen, current = set(), error
+    while current is not None and id(current) not in seen:
+        seen.add(id(current))
+        current.__traceback__ = None
+        current = current.__cause__ or current.__context__
+    return error

@@ -19,6 +19,7 @@ from .polyline import as_coordinates, cumulative_lengths
 
 # Re-export for engine.py and ends.py until their owners switch to polyline.cumulative_lengths; remove then.
 from .polyline import cumulative_lengths as arc_lengths  # noqa: F401
+from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
 COINCIDENCE_TOLERANCE = 1e-12
@@ -151,8 +152,7 @@ def validate_polygon(polygon):
         raise InvalidGeometryError(f"Expected a single polygon, got a {kind}.")
     if polygon.is_empty:
         raise InvalidGeometryError("The polygon is empty.")
-    if not np.all(np.isfinite(shapely.get_coordinates(polygon))):
-        raise InvalidGeometryError("The polygon has a NaN or infinite coordinate.")
+    check_coordinates(shapely.get_coordinates(polygon), "polygon")
     if not polygon.is_valid:
         raise InvalidGeometryError(
             f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
@@ -238,12 +238,10 @@ def split_polygon(polygon, split_points, tolerance=None):
     [[0.0, 1.0], [0.0, 0.0], [10.0, 0.0], [10.0, 1.0]]
     """
     validate_polygon(polygon)
-    points = [] if split_points is None else list(split_points)
+    points = split_point_coordinates(split_points)
     if len(points) != 2:
         raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
-    points = [np.asarray(p.coords[0] if isinstance(p, Point) else p, dtype=float)[:2] for p in points]
-    if not all(np.all(np.isfinite(p)) for p in points):
-        raise SplitPointError("A split point has a NaN or infinite coordinate.")
+    tolerance = tolerance_length(tolerance, "snap_tolerance")
     exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
     ring = shapely.get_coordinates(exterior)
     extent = extent_of(ring)
@@ -290,6 +288,7 @@ def orient_bank_lines(line_a, line_b):
     """
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
+    check_coordinates(np.concatenate([a, b]), "pair of lines")
     coincidence = COINCIDENCE_TOLERANCE * extent_of(a, b)
     a = clean_chain(a, "first line", coincidence)
     b = clean_chain(b, "second line", coincidence)

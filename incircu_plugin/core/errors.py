@@ -25,6 +25,10 @@ class CrossingLinesError(IncirCuError):
     """In open mode the two lines cross or touch each other."""
 
 
+class CenterlineError(IncirCuError):
+    """The computed centerline would be unusable (it crosses itself), so none is returned."""
+
+
 class OptionError(IncirCuError):
     """A numeric option (spacing, sample count, tolerance) is not a number, not finite, or out of range."""
 

@@ -10,7 +10,7 @@ Example
 >>> rivers = geopandas.GeoSeries([box(0, 0, 100, 10), box(0, 0, 1, 1).buffer(-1)], crs="EPSG:2180")
 >>> result = centerlines(rivers)
 >>> round(float(result.loc[0, "width_max"]), 6), result.loc[1, "error"], result["error"].isna().tolist()
-(10.0, 'The polygon is empty or null.', [True, False])
+(10.0, 'The polygon is empty.', [True, False])
 """
 
 import numpy as np

@@ -15,6 +15,7 @@ True
 """
 
 import functools
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -40,6 +41,11 @@ class LocalProjection:
     """
 
     def __init__(self, geographic_crs, longitude, latitude):
+        if not (math.isfinite(longitude) and math.isfinite(latitude) and abs(latitude) <= 90.0):
+            raise InvalidGeometryError(
+                f"The projection centre ({longitude!r}, {latitude!r}) is not a longitude and a latitude in degrees."
+            )
+        self.longitude = float(longitude)
         # A bare PROJ pipeline on the CRS's ellipsoid: building CRS objects and transformers between them would
         # cost some 40 ms per feature.
         self._transformer = pyproj.Transformer.from_pipeline(
@@ -61,22 +67,50 @@ class LocalProjection:
         -------
         LocalProjection
         """
-        if geometry is None or geometry.is_empty:
+        if geometry is None:
+            raise InvalidGeometryError("Cannot centre a projection on a null geometry.")
+        if not isinstance(geometry, shapely.Geometry):
+            raise TypeError(f"Expected a shapely geometry in degrees, got {type(geometry).__name__}.")
+        if geometry.is_empty:
             raise InvalidGeometryError("Cannot centre a projection on an empty geometry.")
-        west, south, east, north = geometry.bounds
-        return cls(geographic_crs, (west + east) / 2.0, (south + north) / 2.0)
+        coordinates = shapely.get_coordinates(geometry)
+        if not np.all(np.isfinite(coordinates)):
+            raise InvalidGeometryError("Cannot centre a projection on a geometry with a NaN or infinite coordinate.")
+        _, south, _, north = geometry.bounds
+        return cls(geographic_crs, central_longitude(coordinates[:, 0]), (south + north) / 2.0)
 
     def _apply(self, direction, geometry):
         if isinstance(geometry, shapely.Geometry):
-            return shapely.transform(geometry, lambda xy: _transform_array(self._transformer, xy, direction))
-        return _transform_array(self._transformer, np.asarray(geometry, dtype=float), direction)
+            return shapely.transform(geometry, lambda xy: self._transform(xy, direction))
+        return self._transform(np.asarray(geometry, dtype=float), direction)
+
+    def _transform(self, xy, direction):
+        transformed = _transform_array(self._transformer, xy, direction)
+        if direction == TransformDirection.INVERSE:
+            # PROJ returns longitudes in [-180, 180]; keep them within 180 degrees of the centre instead, so a
+            # shape across the antimeridian stays continuous (longitudes beyond 180 or below -180).
+            longitude = transformed[..., 0]
+            transformed[..., 0] = self.longitude + (longitude - self.longitude + 180.0) % 360.0 - 180.0
+        elif not np.all(np.isfinite(transformed)):
+            raise InvalidGeometryError(
+                "A point could not be projected (a NaN or infinite coordinate, or a latitude beyond 90 degrees)."
+            )
+        return transformed
 
     def to_local(self, geometry):
-        """Project a geometry or an ``(n, 2)`` array from degrees to local metres."""
+        """Project a geometry or an ``(n, 2)`` array from degrees to local metres.
+
+        Longitudes are taken modulo 360 degrees, so a shape across the antimeridian may be stored either way
+        (179.9 to 180.1, or wrapped as 179.9 and -179.9).
+        """
         return self._apply(TransformDirection.FORWARD, geometry)
 
     def to_geographic(self, geometry):
-        """Bring a geometry or an ``(n, 2)`` array from local metres back to degrees."""
+        """Bring a geometry or an ``(n, 2)`` array from local metres back to degrees.
+
+        Longitudes lie within 180 degrees of the projection centre: a line across the antimeridian comes back
+        continuous (for example from 179.9 to 180.1), never wrapped round the globe.
+        """
         return self._apply(TransformDirection.INVERSE, geometry)
 
     def result_to_geographic(self, result):
@@ -89,10 +123,42 @@ class LocalProjection:
         )
 
 
+def central_longitude(longitudes):
+    """Return the middle of the shortest longitude interval holding every given longitude, degrees.
+
+    A shape across the antimeridian stored wrapped (longitudes near 180 and near -180, spanning less than 180
+    degrees the short way) gets a centre near 180, not near 0 as its bounding box would give; any other shape
+    gets its bounding box's middle.
+
+    Parameters
+    ----------
+    longitudes : array_like of float
+        Degrees.
+
+    Returns
+    -------
+    float
+        Degrees: the bounding box's middle, or for a wrapped shape a value in (-180, 180].
+    """
+    values = np.asarray(longitudes, dtype=float).ravel()
+    west, east = float(values.min()), float(values.max())
+    around = np.sort(values % 360.0)
+    gaps = np.diff(np.concatenate([around, around[:1] + 360.0]))
+    widest = int(np.argmax(gaps))
+    if 360.0 - gaps[widest] >= min(east - west, 180.0):
+        return (west + east) / 2.0
+    start = around[(widest + 1) % len(around)]
+    middle = start + (360.0 - gaps[widest]) / 2.0
+    return float(180.0 - (180.0 - middle) % 360.0)
+
+
 @functools.lru_cache(maxsize=16)
 def _ellipsoid(geographic_crs):
     """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
-    geographic = pyproj.CRS(geographic_crs)
+    try:
+        geographic = pyproj.CRS(geographic_crs)
+    except pyproj.exceptions.CRSError as error:
+        raise InvalidGeometryError(f"Unknown CRS {geographic_crs!r}: {error}") from None
     if not geographic.is_geographic:
         raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
     ellipsoid = geographic.ellipsoid

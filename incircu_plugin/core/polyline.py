@@ -9,6 +9,7 @@ import numpy as np
 import shapely
 
 from .errors import InvalidGeometryError
+from .validation import check_coordinates
 
 
 def as_coordinates(geometry, name="line"):
@@ -29,7 +30,10 @@ def as_coordinates(geometry, name="line"):
     Raises
     ------
     InvalidGeometryError
-        If the geometry is null, empty, not a line, or has NaN or infinite coordinates.
+        If the geometry is null, empty, not a line, or has NaN, infinite or unusably large coordinates
+        (see :func:`.validation.check_coordinates`).
+    TypeError
+        If the geometry is text (WKT) rather than a geometry or coordinates.
 
     Examples
     --------
@@ -51,13 +55,16 @@ def as_coordinates(geometry, name="line"):
             raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
         coordinates = shapely.get_coordinates(geometry)
     else:
-        coordinates = np.asarray(geometry, dtype=float)
+        if isinstance(geometry, (str, bytes)):
+            raise TypeError(f"The {name} must be a LineString or coordinates, not text (parse WKT with shapely first).")
+        try:
+            coordinates = np.asarray(geometry, dtype=float)
+        except (TypeError, ValueError):
+            raise InvalidGeometryError(f"The {name} must be an (n, 2) array of numbers.") from None
         if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
             raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
         coordinates = coordinates[:, :2]
-    if not np.all(np.isfinite(coordinates)):
-        bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
-        raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
+    check_coordinates(coordinates, name, whole=False)
     return np.array(coordinates, dtype=float)
 
 

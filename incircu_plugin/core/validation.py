@@ -1,0 +1,149 @@
+"""Checks of the public API's input: coordinates float64 can compute with, split points, the snap tolerance.
+
+The engine checks its own options (``spacing``, ``samples_per_chain``, ``tolerance``).
+
+Every check raises a typed :class:`IncirCuError` whose message says what to change; plain Python type misuse
+(a string where a geometry is expected) raises ``TypeError``.
+"""
+
+import math
+import numbers
+
+import numpy as np
+import shapely
+from shapely.geometry import MultiPoint, Point
+
+from .errors import InvalidGeometryError, OptionError, SplitPointError
+
+#: Largest coordinate magnitude, CRS units. The core multiplies up to three coordinates together (areas,
+#: circumcentres); below this their products stay far inside float64's range (about 1e308).
+MAX_COORDINATE = 1e50
+
+#: Smallest extent (bounding-box diagonal), CRS units: products of up to three lengths must stay far above
+#: float64's underflow (about 1e-308).
+MIN_EXTENT = 1e-50
+
+#: Smallest extent relative to the largest coordinate magnitude. Float64 resolves about 2e-16 of a
+#: coordinate; below this ratio the shape spans too few representable steps to be computed reliably.
+MIN_RELATIVE_EXTENT = 1e-9
+
+
+def check_coordinates(coordinates, name, whole=True):
+    """Check that coordinates are finite and at a scale float64 geometry can compute with.
+
+    Parameters
+    ----------
+    coordinates : ndarray of shape (n, 2)
+        CRS units.
+    name : str
+        How messages call the geometry ("polygon", "first line", ...).
+    whole : bool
+        The coordinates are the whole input, so their extent is checked too (not for one of two lines).
+
+    Raises
+    ------
+    InvalidGeometryError
+        On a NaN or infinite coordinate, a coordinate beyond ``MAX_COORDINATE``, or (``whole``) a positive
+        extent under ``MIN_EXTENT`` or under ``MIN_RELATIVE_EXTENT`` of the coordinates' magnitude. A zero
+        extent is left to the callers, whose messages name the degenerate geometry.
+    """
+    coordinates = np.asarray(coordinates, dtype=float).reshape(-1, 2)
+    finite = np.all(np.isfinite(coordinates), axis=1)
+    if not np.all(finite):
+        bad = coordinates[~finite][0]
+        raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
+    if len(coordinates) == 0:
+        return
+    magnitude = float(np.max(np.abs(coordinates)))
+    if magnitude > MAX_COORDINATE:
+        raise InvalidGeometryError(
+            f"The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {MAX_COORDINATE:.0e}: products of "
+            "such coordinates overflow float64. Use a projected CRS in metres, or scale the data down."
+        )
+    extent = float(np.hypot(*(coordinates.max(axis=0) - coordinates.min(axis=0))))
+    if not whole or extent == 0:
+        return
+    if extent < MIN_EXTENT:
+        raise InvalidGeometryError(
+            f"The {name} is {extent:.3g} across, under {MIN_EXTENT:.0e}: products of its lengths underflow "
+            "float64. Scale the data up (use smaller units)."
+        )
+    if extent < MIN_RELATIVE_EXTENT * magnitude:
+        raise InvalidGeometryError(
+            f"The {name} is {extent:.3g} across at coordinates of magnitude {magnitude:.3g}: float64 cannot "
+            f"resolve a shape smaller than {MIN_RELATIVE_EXTENT:.0e} of its distance from the origin. "
+            "Shift the data nearer the origin (subtract an offset) or use a local projected CRS."
+        )
+
+
+def tolerance_length(value, name):
+    """Return an optional non-negative tolerance as a float (None stays None: the caller's default).
+
+    Raises
+    ------
+    OptionError
+        If the value is not a number, NaN, infinite or negative (a NaN tolerance would accept any distance).
+    """
+    if value is None:
+        return None
+    number = _number(value, name)
+    if not math.isfinite(number) or number < 0:
+        raise OptionError(f"{name} must be a non-negative, finite distance in CRS units (or None), got {value!r}.")
+    return number
+
+
+def _number(value, name):
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.number)):
+        raise OptionError(f"{name} must be a number, got {type(value).__name__} {value!r}.")
+    return float(value)
+
+
+def split_point_coordinates(split_points):
+    """Return split points as an ``(n, 2)`` array (``n`` may be 0), checking each point.
+
+    Parameters
+    ----------
+    split_points : None, MultiPoint, or sequence of Point or (x, y)
+        CRS units. A MultiPoint gives its points.
+
+    Raises
+    ------
+    SplitPointError
+        If a point is empty, not a point, has not two coordinates, or is not finite or at a usable scale.
+    """
+    if split_points is None:
+        return np.empty((0, 2))
+    if isinstance(split_points, MultiPoint):
+        split_points = list(split_points.geoms)
+    elif isinstance(split_points, shapely.Geometry):
+        raise SplitPointError(
+            f"Split points must be a sequence of two points (or a MultiPoint), got a {split_points.geom_type}."
+        )
+    if isinstance(split_points, (str, bytes)):
+        raise TypeError(f"Split points must be a sequence of points, got {type(split_points).__name__}.")
+    coordinates = [_split_point(index, point) for index, point in enumerate(split_points)]
+    coordinates = np.array(coordinates, dtype=float).reshape(-1, 2)
+    try:
+        check_coordinates(coordinates, "split points", whole=False)
+    except InvalidGeometryError as error:
+        raise SplitPointError(str(error)) from None
+    return coordinates
+
+
+def _split_point(index, point):
+    if isinstance(point, Point):
+        if point.is_empty:
+            raise SplitPointError(f"Split point {index} is an empty point.")
+        return point.coords[0][:2]
+    if isinstance(point, shapely.Geometry):
+        raise SplitPointError(f"Split point {index} must be a point, not a {point.geom_type}.")
+    if isinstance(point, (numbers.Real, np.number)):
+        raise SplitPointError(
+            f"Split point {index} is the number {point!r}: give a sequence of points, such as [(x1, y1), (x2, y2)]."
+        )
+    if isinstance(point, (str, bytes)) or not np.iterable(point):
+        raise TypeError(f"Split point {index} must be a Point or an (x, y) pair, got {type(point).__name__}.")
+    values = list(point)
+    if len(values) not in (2, 3) or not all(isinstance(v, (numbers.Real, np.number)) for v in values):
+        raise SplitPointError(f"Split point {index} must be an (x, y) pair of numbers, got {point!r}.")
+    return values[:2]
