@@ -247,10 +247,16 @@ def test_thin_boxes_get_the_middles_of_their_short_sides(height):
     assert pair_error(found, [(0.0, height / 2.0), (1.0, height / 2.0)]) <= FLAT_CAP_TOLERANCE * height
 
 
-@pytest.mark.parametrize("scale", [1e-170, 1e-30, 1e30, 1e155])
+@pytest.mark.parametrize("scale", [1e-45, 1e-30, 1e30, 1e45])
 def test_the_answer_scales_with_the_coordinates(scale):
     found, _ = found_pair(box(0.0, 0.0, 10.0 * scale, scale))
     assert pair_error(found, [(0.0, scale / 2.0), (10.0 * scale, scale / 2.0)]) <= FLAT_CAP_TOLERANCE * scale
+
+
+@pytest.mark.parametrize(("scale", "words"), [(1e-170, "Scale the data up"), (1e155, "scale the data down")])
+def test_coordinates_beyond_the_supported_range_get_a_typed_error(scale, words):
+    with pytest.raises(InvalidGeometryError, match=words):
+        find_ends(box(0.0, 0.0, 10.0 * scale, scale))
 
 
 def test_absurd_extent_gets_a_typed_error():
@@ -291,13 +297,22 @@ def test_progress_reports_fractions_and_cancel_stops():
     assert len(calls) == 1
 
 
-def test_a_tiny_polygon_far_from_the_origin_gets_ends_on_its_ring():
-    # 1.4e-5 across at 1e6 from the origin: coordinates are rounded to about 1e-10, a millionth of its size.
+def tiny_heptagon(size, centre=(727280.18049115, 962390.08013269)):
     angles = np.linspace(0.0, 2.0 * math.pi, 7, endpoint=False)
-    size = 1.4030173759013428e-05
-    centre = (727280.18049115, 962390.08013269)
-    polygon = Polygon(np.c_[centre[0] + size * np.cos(angles), centre[1] + size * np.sin(angles)])
+    return Polygon(np.c_[centre[0] + size * np.cos(angles), centre[1] + size * np.sin(angles)])
+
+
+def test_a_tiny_polygon_far_from_the_origin_gets_ends_on_its_ring():
+    # 2e-3 across at 1e6 from the origin: coordinates are rounded to about 1e-10, 1e-7 of its size.
+    size = 1.0e-3
+    polygon = tiny_heptagon(size)
     ends = find_ends(polygon)
     for end in (ends.start, ends.end):
         assert polygon.exterior.distance(end) <= 1e-7 * 2.0 * size
     assert polygon_centerline(polygon).line.length > 0.0
+
+
+def test_a_polygon_too_small_for_its_distance_from_the_origin_gets_a_typed_error():
+    # 2.8e-5 across at 1e6: under the 1e-9 of the coordinates' magnitude float64 resolves reliably.
+    with pytest.raises(InvalidGeometryError, match="Shift the data nearer the origin"):
+        find_ends(tiny_heptagon(1.4030173759013428e-05))

@@ -111,21 +111,10 @@ def polygon_centerline(
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     if ends_found:
-        ends = find_ends(
-            polygon, rule=end_rule, guide=guide, progress=_progress_share(progress, 0.0, ENDS_PROGRESS_SHARE)
-        )
+        ends = _automatic_ends(polygon, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes)
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
-        if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
-            raise SplitPointError(
-                f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
-                "clear ends. Give two split points."
-            )
         ends_from = "guide" if ends.guided else "automatic"
-        if guide is not None and not ends.guided:
-            notes.append("The guide line does not come near the polygon; its ends were found automatically.")
-        if not ends.elongated:
-            notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
@@ -137,6 +126,27 @@ def polygon_centerline(
     values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
     return PolygonCenterlineResult(**values)
+
+
+def _automatic_ends(polygon, end_rule, guide, progress, notes):
+    """Find a polygon's ends with :func:`find_ends`; append what the user should know to ``notes``.
+
+    Raises
+    ------
+    SplitPointError
+        When the two ends coincide (the shape has no clear ends).
+    """
+    ends = find_ends(polygon, rule=end_rule, guide=guide, progress=progress)
+    if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
+        raise SplitPointError(
+            f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
+            "clear ends. Give two split points."
+        )
+    if guide is not None and not ends.guided:
+        notes.append("The guide line does not come near the polygon; its ends were found automatically.")
+    if not ends.elongated:
+        notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
+    return ends
 
 
 @dataclass(frozen=True)

@@ -16,9 +16,6 @@ from .errors import (
     format_point,
 )
 from .polyline import as_coordinates, cumulative_lengths
-
-# Re-export for engine.py and ends.py until their owners switch to polyline.cumulative_lengths; remove then.
-from .polyline import cumulative_lengths as arc_lengths  # noqa: F401
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.

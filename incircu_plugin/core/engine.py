@@ -26,11 +26,11 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .adaptive import adaptive_axis_points
-from .chains import COINCIDENCE_TOLERANCE, as_coordinates, clean_chain, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
-from .polyline import local_origin, typical_width
+from .polyline import as_coordinates, local_origin, typical_width
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
 DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
