@@ -65,18 +65,12 @@ class NetworkWriter:
         return {self.output_name: self.sink_id}
 
     def write(self, attributes, source_fid, parts, frame):
-        """Write the branches of the networks of one input feature.
+        """Write one feature per branch of the networks of one input feature.
 
-        Parameters
-        ----------
-        attributes : list
-            Attribute values of the input feature.
-        source_fid : int
-            Id of the input feature (unused: the branches carry its attributes).
-        parts : sequence of (int, NetworkResult, list)
-            Part index, network and the ids of the split points its indices refer to.
-        frame : WorkingFrame
-            Frame the networks are expressed in.
+        Every branch carries ``attributes`` (the input feature's values) and its own statistics;
+        ``source_fid`` is unused. ``parts`` holds, per successful part, its index, its ``NetworkResult`` and
+        the ids of the split points the network's indices refer to; ``frame`` is the working frame the
+        networks are expressed in.
         """
         first = True
         for _, network, ids in parts:

@@ -202,13 +202,16 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
     Raises
     ------
     InvalidGeometryError
-        If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
+        As :func:`.api.polygon_parts` (a null, empty or non-polygonal geometry); a part's own errors are
+        reported in its outcome.
 
     Examples
     --------
+    Two parallel channels, their four split points given in no particular order:
+
     >>> from shapely.geometry import MultiPolygon, box
-    >>> parts = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
-    >>> outcomes = multipolygon_networks(parts, [(0, 12), (50, 2), (50, 12), (0, 2)], spacing=1.0)
+    >>> channels = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
+    >>> outcomes = multipolygon_networks(channels, [(0, 12), (50, 2), (50, 12), (0, 2)], spacing=1.0)
     >>> [[(b.start_point, b.end_point) for b in o.result.branches] for o in outcomes]
     [[(1, 3)], [(0, 2)]]
     """
