@@ -299,7 +299,7 @@ def polygon_parts(geometry, split_points=None, snap_tolerance=None):
     if snap_tolerance is None:
         snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
     points = list(shapely.points(split_point_coordinates(split_points)))
-    near = [list(np.flatnonzero(shapely.distance(part.exterior, points) <= snap_tolerance)) for part in parts]
+    near = [np.flatnonzero(shapely.distance(part.exterior, points) <= snap_tolerance).tolist() for part in parts]
     return list(zip(parts, near)), points, snap_tolerance
 
 
