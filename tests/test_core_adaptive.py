@@ -172,6 +172,14 @@ def test_a_tolerance_that_is_not_a_positive_length_is_an_option_error(bad):
     assert issubclass(OptionError, IncirCuError)
 
 
+def test_a_tolerance_below_what_float64_resolves_is_an_option_error():
+    case = geometry_cases.rectangle()
+    extent = float(np.ptp(np.asarray(case.polygon.exterior.coords), axis=0).max())
+    with pytest.raises(OptionError, match="below 1e-09 of the shape's extent"):
+        polygon_centerline(case.polygon, case.split_points, tolerance=1e-300)
+    assert polygon_centerline(case.polygon, case.split_points, tolerance=2e-9 * extent).line.is_simple
+
+
 def test_a_tolerance_with_a_spacing_is_an_option_error():
     case = geometry_cases.rectangle()
     with pytest.raises(OptionError, match="either a tolerance"):

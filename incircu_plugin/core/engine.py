@@ -38,6 +38,10 @@ DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
 #: Relative distance (of the extent) under which two consecutive centres are one point.
 DISTINCT_TOLERANCE = 1e-9
 
+#: Smallest tolerance, relative to the chains' extent: below it the parabola stations would outnumber what
+#: float64 can place distinctly (and what memory holds).
+MIN_TOLERANCE = 1e-9
+
 #: Resolution of the ordering key (a sum of two arc lengths relative to their chains' lengths, 0 to 2):
 #: keys closer than this are ties, ordered by the direction of travel.
 ORDER_RESOLUTION = 1e-11
@@ -352,6 +356,12 @@ def centerline_from_chains(
         points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
     else:
         tolerance = tolerance or default_tolerance(*frame.chains)
+        if tolerance < MIN_TOLERANCE * frame.extent:
+            raise OptionError(
+                f"The tolerance {tolerance:.6g} is below {MIN_TOLERANCE:g} of the shape's extent "
+                f"({frame.extent:.6g}): float64 cannot place vertices that finely. Use at least "
+                f"{MIN_TOLERANCE * frame.extent:.6g} (CRS units), or 0 for the automatic tolerance."
+            )
         sides = (frame.side, -frame.side)
         points = adaptive_axis_points(
             frame.chains, sides, frame.boundary, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
