@@ -21,9 +21,15 @@ def problems(case, result):
     return []
 
 
+#: Float64 steps (of the coordinates' magnitude) always allowed: a tiny shape far from the origin cannot place
+#: a point closer than a step or two (the validation admits shapes down to 1e-9 of their magnitude).
+ROUNDING_STEPS = 4
+
+
 def _tolerance(geometry):
     bounds = np.asarray(geometry.bounds, dtype=float)
-    return RELATIVE_TOLERANCE * float(np.hypot(*(bounds[2:] - bounds[:2])))
+    relative = RELATIVE_TOLERANCE * float(np.hypot(*(bounds[2:] - bounds[:2])))
+    return max(relative, ROUNDING_STEPS * float(np.spacing(np.abs(bounds).max())))
 
 
 def _line_problems(line, region, split_points, snap):
