@@ -30,7 +30,7 @@ from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
-from .polyline import as_coordinates, local_origin, typical_width
+from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
 DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
@@ -134,7 +134,7 @@ def default_spacing(c1, c2):
     >>> default_spacing(np.array([[0.0, 0], [100, 0]]), np.array([[0.0, 10], [100, 10]]))
     0.5
     """
-    return DEFAULT_SPACING_PER_WIDTH * _width_or_fallback(c1, c2)
+    return DEFAULT_SPACING_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent_of(c1, c2))
 
 
 def default_tolerance(c1, c2):
@@ -152,13 +152,12 @@ def default_tolerance(c1, c2):
     >>> default_tolerance(np.array([[0.0, 0], [100, 0]]), np.array([[0.0, 10], [100, 10]]))
     0.05
     """
-    return DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(c1, c2)
+    return DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent_of(c1, c2))
 
 
-def _width_or_fallback(c1, c2):
-    """The chains' typical width, or a thousandth of their extent when they enclose no area."""
-    width = chains_width(c1, c2)
-    return width if width > 0 else 1e-3 * extent_of(c1, c2)
+def _width_or_fallback(width, extent):
+    """The chains' typical ``width``, or a thousandth of their ``extent`` when they enclose no area (CRS units)."""
+    return width if width > 0 else 1e-3 * extent
 
 
 def _length_option(value, name):
@@ -172,8 +171,8 @@ def _length_option(value, name):
     return float(value) if value > 0 else None
 
 
-def _fixed_spacings(spacing, samples_per_chain, chains, lengths):
-    """The fixed sampling's spacing on each chain, CRS units."""
+def _fixed_spacings(spacing, samples_per_chain, chains, lengths, width):
+    """The fixed sampling's spacing on each chain, CRS units (``width``: the defaults' width, see ``_Frame``)."""
     if samples_per_chain is not None:
         if isinstance(samples_per_chain, bool) or not isinstance(samples_per_chain, Real):
             raise OptionError(f"samples_per_chain must be a whole number, got {samples_per_chain!r}.")
@@ -181,7 +180,7 @@ def _fixed_spacings(spacing, samples_per_chain, chains, lengths):
             raise OptionError(f"The number of samples per chain must be at least 1, got {samples_per_chain!r}.")
         spacings = [length / (int(samples_per_chain) + 1) for length in lengths]
     else:
-        spacings = [spacing or default_spacing(*chains)] * 2
+        spacings = [spacing or DEFAULT_SPACING_PER_WIDTH * width] * 2
     planned = sum(length / s for length, s in zip(lengths, spacings)) + sum(len(c) for c in chains)
     if planned > MAX_SAMPLES:
         raise OptionError(
@@ -352,10 +351,10 @@ def centerline_from_chains(
     frame = _Frame(*_clean_chains(c1, c2))
     report = _reporter(progress)
     if fixed:
-        spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths)
+        spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths, frame.default_width)
         points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
     else:
-        tolerance = tolerance or default_tolerance(*frame.chains)
+        tolerance = tolerance or DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
         if tolerance < MIN_TOLERANCE * frame.extent:
             raise OptionError(
                 f"The tolerance {tolerance:.6g} is below {MIN_TOLERANCE:g} of the shape's extent "
@@ -381,17 +380,21 @@ class _Frame:
     def __init__(self, chains, coincidence):
         self.coincidence = coincidence
         self.extent = extent_of(*chains)
-        self.lengths = [float(np.hypot(*np.diff(c, axis=0).T).sum()) for c in chains]
+        self.lengths = [float(cumulative_lengths(c)[-1]) for c in chains]
         self.origin = local_origin(*chains)
         self.chains = [c - self.origin for c in chains]
+        area = signed_area(np.concatenate([self.chains[0], self.chains[1][::-1]]))
+        width = typical_width(abs(area), 0.5 * sum(self.lengths))
+        #: The width the defaults (spacing, tolerance) are fractions of, CRS units.
+        self.default_width = _width_or_fallback(width, self.extent)
         start_gap = np.hypot(*(self.chains[0][0] - self.chains[1][0]))
         end_gap = np.hypot(*(self.chains[0][-1] - self.chains[1][-1]))
         self.closed = bool(start_gap <= coincidence and end_gap <= coincidence)
-        self.side = 1.0 if signed_area(np.concatenate([self.chains[0], self.chains[1][::-1]])) >= 0 else -1.0
+        self.side = 1.0 if area >= 0 else -1.0
         self.boundary = Boundary(self.chains)
         #: Typical width (the first trial radius), the largest disk parameter searched and the smallest one
         #: that counts as a contact, CRS units.
-        self.limits = (max(chains_width(*self.chains), coincidence), 4.0 * self.extent, 1e-12 * self.extent)
+        self.limits = (max(width, coincidence), 4.0 * self.extent, 1e-12 * self.extent)
 
 
 def _line_through(points, frame, simplification):
