@@ -180,15 +180,17 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
 
 
 def _guide_near(frame, geometry, guides, index):
-    """Return the guide lines whose box meets the polygon's (grown by a quarter) as one core MultiLineString.
+    """Return the guide lines whose box meets the polygon's grown box, as one core MultiLineString.
 
-    Returns None without guide lines there; the core keeps only the guide lying near the polygon.
+    The box grows by the core's ``GUIDE_SEARCH_SHARE`` of its larger side. Returns None without guide lines there; the core keeps only the guide lying near the polygon.
     """
     # Imported here, like the core (see ``running.FeatureRun``), so a missing Shapely gets its install message.
     import shapely
 
+    from ..incircu_plugin.core.ends import GUIDE_SEARCH_SHARE
+
     box = geometry.boundingBox()
-    nearby = [guides[i] for i in index.intersects(box.buffered(0.25 * max(box.width(), box.height())))]
+    nearby = [guides[i] for i in index.intersects(box.buffered(GUIDE_SEARCH_SHARE * max(box.width(), box.height())))]
     parts = [
         part
         for guide in nearby

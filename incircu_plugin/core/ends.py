@@ -101,6 +101,11 @@ LARGEST_EXTENT = 1e300
 SMALLEST_EXTENT = 1e-300
 
 
+#: Guide lines are looked for within this share of a polygon's larger bounding-box side around the box (the
+#: plugin's and the data-frame API's candidate search; the core then keeps the guide lying near the polygon).
+GUIDE_SEARCH_SHARE = 0.25
+
+
 @dataclass(frozen=True)
 class EndsResult:
     """The two ends found on a polygon's boundary.

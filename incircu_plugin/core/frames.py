@@ -18,6 +18,7 @@ import shapely
 from shapely.geometry import LineString, MultiLineString, MultiPolygon
 
 from .api import multipolygon_centerlines
+from .ends import GUIDE_SEARCH_SHARE
 from .errors import IncirCuError
 from .geodesy import LocalProjection, degrees_covering
 from .widths import width_statistics
@@ -173,9 +174,9 @@ def _margins(shapes, distance, geographic):
 
 
 def _guide_margins(shapes):
-    """Bounding-box margin for guide lines, as the plugin's: a quarter of the larger side of each box."""
+    """Bounding-box margin for guide lines, as the plugin's: ``GUIDE_SEARCH_SHARE`` of each box's larger side."""
     bounds = shapely.bounds(shapes)
-    return 0.25 * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
+    return GUIDE_SEARCH_SHARE * np.maximum(bounds[:, 2] - bounds[:, 0], bounds[:, 3] - bounds[:, 1])
 
 
 def _nearby(shapes, margins, candidates):
