@@ -21,7 +21,7 @@ from .api import (
 )
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends
-from .engine import Cancelled, CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
+from .engine import CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import (
     CenterlineError,
     ChainError,
@@ -34,6 +34,7 @@ from .errors import (
 from .frames import centerlines
 from .geodesy import LocalProjection
 from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
+from .steps import Cancelled
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [

@@ -749,3 +749,26 @@ def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_
     as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     return _Tracer(chains, sides, boundary, closed, tolerance, width, max_t, min_t).trace(report)
+
+
+def trace_together(requests, report):
+    """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects; a list in their order.
+
+    ``report(fraction)`` is called with the fraction of the requests done.
+    """
+    results = []
+    for index, request in enumerate(requests):
+        results.append(
+            adaptive_axis_points(
+                request.chains,
+                request.sides,
+                request.boundary,
+                request.closed,
+                request.tolerance,
+                request.width,
+                request.max_t,
+                request.min_t,
+                lambda fraction, done=index: report((done + fraction) / len(requests)),
+            )
+        )
+    return results

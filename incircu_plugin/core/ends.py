@@ -58,11 +58,11 @@ import shapely
 from shapely.geometry import LineString, Point
 
 from .chains import extent_of, validate_polygon
-from .engine import Cancelled
 from .errors import IncirCuError, InvalidGeometryError
 from .paths import heaviest_path
 from .polyline import cumulative_lengths, typical_width
 from .skeleton import skeleton_graph
+from .steps import Cancelled
 
 #: Rules for the automatic ends (see the module docstring).
 END_RULES = ("main_stem", "longest_path")

@@ -25,12 +25,12 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .adaptive import adaptive_axis_points
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
+from .steps import TraceRequest, reporter, run_alone
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
 DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
@@ -49,10 +49,6 @@ ORDER_RESOLUTION = 1e-11
 #: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
 PARABOLA_SHARE = 0.5
 SIMPLIFY_SHARE = 0.5
-
-
-class Cancelled(Exception):
-    """Raised when the progress callback asks the engine to stop."""
 
 
 @dataclass(frozen=True)
@@ -188,16 +184,6 @@ def _fixed_spacings(spacing, samples_per_chain, chains, lengths, width):
             f"{MAX_SAMPLES:.3g}); use a larger spacing."
         )
     return spacings
-
-
-def _reporter(progress):
-    """``report(fraction)`` calling ``progress`` and raising :class:`Cancelled` when it returns False."""
-
-    def report(fraction):
-        if progress is not None and progress(min(max(fraction, 0.0), 1.0)) is False:
-            raise Cancelled()
-
-    return report
 
 
 def _distinct(points, tolerance):
@@ -343,13 +329,23 @@ def centerline_from_chains(
     >>> result.line.coords[:]
     [(0.0, 1.0), (10.0, 1.0)]
     """
+    return run_alone(
+        centerline_steps(c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress)
+    )
+
+
+def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None):
+    """:func:`centerline_from_chains` as steps (see :mod:`.steps`): a generator that yields one
+    :class:`.steps.TraceRequest` (adaptive sampling; none with fixed sampling), receives its axis points and
+    returns the :class:`CenterlineResult`. Raises as :func:`centerline_from_chains` does.
+    """
     spacing = _length_option(spacing, "spacing")
     tolerance = _length_option(tolerance, "tolerance")
     fixed = spacing is not None or samples_per_chain is not None
     if fixed and tolerance is not None:
         raise OptionError("Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).")
     frame = _Frame(*_clean_chains(c1, c2))
-    report = _reporter(progress)
+    report = reporter(progress)
     if fixed:
         spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths, frame.default_width)
         points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
@@ -362,7 +358,7 @@ def centerline_from_chains(
                 f"{MIN_TOLERANCE * frame.extent:.6g} (CRS units), or 0 for the automatic tolerance."
             )
         sides = (frame.side, -frame.side)
-        points = adaptive_axis_points(
+        points = yield TraceRequest(
             frame.chains, sides, frame.boundary, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
         )
     centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance)

@@ -39,10 +39,11 @@ from shapely.geometry import LineString, Point
 
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .chains import COINCIDENCE_TOLERANCE, extent_of, positions_on_ring, split_polygon, validate_polygon
-from .engine import Cancelled, CenterlineResult, centerline_from_chains
+from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
+from .steps import Cancelled
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9

@@ -1,0 +1,173 @@
+"""Centerlines computed as steps, so that many features can share one adaptive tracing.
+
+Tracing one small feature costs a few dozen rounds of numpy calls on arrays of a few hundred items: the
+calls' overhead, not the arithmetic, sets the time. The public functions are therefore written as
+generators (``*_steps``) that do all their per-feature work in Python and *yield* a :class:`TraceRequest`
+where they need the axis points of a pair of chains; the driver sends the :class:`.contacts.AxisPoints`
+back. :func:`run_alone` answers each request at once (what ``polygon_centerline`` and the other plain
+functions do); :func:`run_together` advances many generators side by side and answers all their pending
+requests with one tracing (:func:`.adaptive.trace_together`), so a layer of small features pays the
+rounds' overhead once per batch instead of once per feature.
+"""
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from .adaptive import adaptive_axis_points, trace_together
+
+
+class Cancelled(Exception):
+    """Raised when the progress callback asks the engine to stop."""
+
+
+@dataclass(frozen=True)
+class TraceRequest:
+    """What one pair of chains asks of the adaptive tracer (see :func:`.adaptive.adaptive_axis_points`).
+
+    Attributes
+    ----------
+    chains : list of two ndarray of shape (n, 2)
+        The chains in their local frame, CRS units.
+    sides : tuple of two float
+        +1 when the region lies left of the chain, -1 when right.
+    boundary : Boundary
+        The chains' segments (:class:`.contacts.Boundary`).
+    closed : bool
+        Whether the chains share both end points.
+    tolerance : float
+        Largest chord error of the axis's parabolas, CRS units.
+    width, max_t, min_t : float
+        First trial radius, largest disk parameter searched, smallest contact, CRS units.
+    report : callable
+        ``report(fraction)`` for this request alone; raises :class:`Cancelled` to stop.
+    """
+
+    chains: list
+    sides: tuple
+    boundary: object
+    closed: bool
+    tolerance: float
+    width: float
+    max_t: float
+    min_t: float
+    report: Callable[[float], None]
+
+    @property
+    def extent(self):
+        """Larger side of the chains' bounding box, CRS units."""
+        points = np.concatenate(self.chains)
+        return float(np.max(points.max(axis=0) - points.min(axis=0)))
+
+
+def trace_alone(request):
+    """The axis points of one request (:class:`.contacts.AxisPoints`)."""
+    return adaptive_axis_points(
+        request.chains,
+        request.sides,
+        request.boundary,
+        request.closed,
+        request.tolerance,
+        request.width,
+        request.max_t,
+        request.min_t,
+        request.report,
+    )
+
+
+def run_alone(steps):
+    """Drive one step generator to its end, tracing each of its requests alone; returns its value."""
+    try:
+        request = next(steps)
+        while True:
+            request = steps.send(trace_alone(request))
+    except StopIteration as stop:
+        return stop.value
+
+
+def run_together(step_generators, progress=None):
+    """Drive many step generators side by side, tracing their pending requests together.
+
+    Parameters
+    ----------
+    step_generators : iterable of generator
+        Each yields :class:`TraceRequest` objects, receives their axis points and returns its result.
+    progress : callable, optional
+        Called with the fraction done (0 to 1); when it returns False, :class:`Cancelled` is raised.
+
+    Returns
+    -------
+    list
+        Per generator, in order: its return value, or the exception (an ``Exception`` instance, without
+        traceback) it raised.
+
+    Raises
+    ------
+    Cancelled
+        If ``progress`` returned False.
+    """
+    generators = list(step_generators)
+    outcomes = [None] * len(generators)
+    pending = {}
+    for index, steps in enumerate(generators):
+        _advance(steps, index, lambda s: next(s), pending, outcomes)
+    report = reporter(progress)
+    done = 0.0
+    while pending:
+        indices = list(pending)
+        requests = [pending.pop(index) for index in indices]
+        # Each round of requests (a multipart feature asks once per part) takes half of what is left.
+        share = 0.5 * (1.0 - done) if done else 0.9
+        traced = _traced(requests, lambda fraction, begin=done, width=share: report(begin + width * fraction))
+        done += share
+        for index, points in zip(indices, traced):
+            steps = generators[index]
+            if isinstance(points, Exception):
+                _advance(steps, index, lambda s, e=points: s.throw(e), pending, outcomes)
+            else:
+                _advance(steps, index, lambda s, p=points: s.send(p), pending, outcomes)
+    report(1.0)
+    return outcomes
+
+
+def _advance(steps, index, step, pending, outcomes):
+    """Run ``step(steps)``; file its next request in ``pending`` or its end in ``outcomes``."""
+    try:
+        pending[index] = step(steps)
+    except StopIteration as stop:
+        outcomes[index] = stop.value
+    except Cancelled:
+        raise
+    except Exception as error:  # noqa: BLE001 - one feature's failure is its outcome, not the batch's
+        error.__traceback__ = None
+        outcomes[index] = error
+
+
+def _traced(requests, report):
+    """Axis points of every request, traced together; per request alone when the joint tracing fails
+    (then a request whose own tracing fails gets its exception instead)."""
+    try:
+        return trace_together(requests, report)
+    except Cancelled:
+        raise
+    except Exception:  # noqa: BLE001 - find which request fails, and let the others through
+        results = []
+        for request in requests:
+            try:
+                results.append(trace_alone(request))
+            except Cancelled:
+                raise
+            except Exception as error:  # noqa: BLE001
+                results.append(error)
+        return results
+
+
+def reporter(progress):
+    """``report(fraction)`` calling ``progress`` and raising :class:`Cancelled` when it returns False."""
+
+    def report(fraction):
+        if progress is not None and progress(min(max(float(fraction), 0.0), 1.0)) is False:
+            raise Cancelled()
+
+    return report
