@@ -125,62 +125,52 @@ class _Intervals:
         return _Intervals(*(np.concatenate(values) for values in zip(*(vars(part).values() for part in parts))))
 
 
-def _chain_geometry(chain, side):
-    """Unit edge directions, inward normals, and the kind of each interior vertex (+1 convex, -1 reflex, 0)."""
-    step = np.diff(chain, axis=0)
-    unit = step / np.hypot(*step.T)[:, None]
-    normal = side * left_normal(unit)
-    turn = np.arctan2(
-        unit[:-1, 0] * unit[1:, 1] - unit[:-1, 1] * unit[1:, 0], np.einsum("ij,ij->i", unit[:-1], unit[1:])
+@dataclass(frozen=True)
+class _Geometry:
+    """Inward normals of every segment, and the turn and kind of every junction of two segments of a chain.
+
+    Junction ``j`` joins segments ``joint[j]`` and ``joint[j] + 1``; its kind is +1 (convex), -1 (reflex) or 0
+    (straight). ``vertex_kind`` is the kind of every vertex, chain after chain (0 at the chains' ends).
+    """
+
+    normal: np.ndarray
+    joint: np.ndarray
+    turn: np.ndarray
+    kind: np.ndarray
+    vertex_kind: np.ndarray
+
+
+def _geometry(boundary, sides):
+    """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
+    side = np.asarray(sides, dtype=float)[boundary.chain_id]
+    unit = boundary.unit
+    normal = side[:, None] * left_normal(unit)
+    joint = np.flatnonzero(~boundary.last_of_chain)
+    before, after = unit[joint], unit[joint + 1]
+    turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
+    signed = side[joint] * turn
+    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0))
+    vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
+    vertex_kind[joint + boundary.chain_id[joint] + 1] = kind
+    return _Geometry(normal, joint, turn, kind, vertex_kind)
+
+
+def _build_spans(boundary, geometry):
+    """The edge spans of all chains, then the fan spans of their reflex vertices."""
+    count = boundary.segment_count
+    reflex = geometry.joint[geometry.kind < 0]
+    turn = geometry.turn[geometry.kind < 0]
+    first_normal = geometry.normal[reflex]
+    return _Spans(
+        kind=np.concatenate([np.full(count, EDGE), np.full(len(reflex), FAN)]),
+        chain=np.concatenate([boundary.chain_id, boundary.chain_id[reflex]]),
+        segment=np.concatenate([np.arange(count), reflex]),
+        length=np.concatenate([boundary.segment_end_position - boundary.segment_position, np.abs(turn)]),
+        point=np.concatenate([boundary.start, boundary.end[reflex]]),
+        unit=np.concatenate([boundary.unit, first_normal]),
+        normal=np.concatenate([geometry.normal, np.sign(turn)[:, None] * left_normal(first_normal)]),
+        position=np.concatenate([boundary.segment_position, boundary.segment_end_position[reflex]]),
     )
-    kind = np.where(side * turn > STRAIGHT_TURN, 1, np.where(side * turn < -STRAIGHT_TURN, -1, 0))
-    return unit, normal, turn, kind
-
-
-def _build_spans(chains, sides, boundary):
-    """The edge spans of both chains, then the fan spans of their reflex vertices."""
-    edges, fans = [], []
-    for chain_id, (chain, side) in enumerate(zip(chains, sides)):
-        unit, normal, turn, kind = _chain_geometry(chain, side)
-        offset = boundary.offset[chain_id]
-        count = len(chain) - 1
-        positions = boundary.position[chain_id]
-        edges.append(
-            (
-                np.full(count, EDGE),
-                np.full(count, chain_id),
-                offset + np.arange(count),
-                np.diff(positions),
-                chain[:-1],
-                unit,
-                normal,
-                positions[:-1],
-            )
-        )
-        reflex = np.flatnonzero(kind < 0) + 1
-        first_normal = normal[reflex - 1]
-        fans.append(
-            (
-                np.full(len(reflex), FAN),
-                np.full(len(reflex), chain_id),
-                offset + reflex - 1,
-                np.abs(turn[reflex - 1]),
-                chain[reflex],
-                first_normal,
-                np.sign(turn[reflex - 1])[:, None] * left_normal(first_normal),
-                positions[reflex],
-            )
-        )
-    return _Spans(*(np.concatenate(values) for values in zip(*(edges + fans))))
-
-
-def _vertex_kinds(chains, sides):
-    """Kind of every vertex of both chains (+1 convex, -1 reflex, 0 straight or chain end), chain after chain."""
-    kinds = []
-    for chain, side in zip(chains, sides):
-        kind = _chain_geometry(chain, side)[3]
-        kinds.append(np.concatenate([[0], kind, [0]]))
-    return np.concatenate(kinds)
 
 
 def _straight_runs(kinds, boundary):
@@ -376,9 +366,10 @@ class _Tracer:
     ``tolerance``, ``width``, ``max_t`` and ``min_t`` are arrays with one value per chain.
     """
 
-    def __init__(self, chains, sides, boundary, closed, tolerance, width, max_t, min_t):
-        self.spans = _build_spans(chains, sides, boundary)
-        self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
+    def __init__(self, sides, boundary, closed, tolerance, width, max_t, min_t):
+        geometry = _geometry(boundary, sides)
+        self.spans = _build_spans(boundary, geometry)
+        self.sites = _Sites(boundary, geometry.vertex_kind)
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
@@ -760,22 +751,21 @@ def _split_vertices(boundary, closed):
     return mask
 
 
-def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
+def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t, report):
     """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
 
     ``sides`` gives, per chain, +1 when the region lies left of it and -1 when right; ``closed`` is true
     when the chains share both end points; ``tolerance`` (CRS units) bounds the distance between a parabola
-    of the axis and its chords. ``chains``, ``boundary``, ``width``, ``max_t``, ``min_t`` and ``report`` are
-    as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
+    of the axis and its chords. ``boundary`` (the chains' :class:`.contacts.Boundary`), ``width``, ``max_t``,
+    ``min_t`` and ``report`` are as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     per_chain = [np.full(2, value) for value in (closed, tolerance, width, max_t, min_t)]
-    return _Tracer(chains, sides, boundary, *per_chain).trace(report)[0]
+    return _Tracer(sides, boundary, *per_chain).trace(report)[0]
 
 
 def trace_one(request, report):
     """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``."""
     return adaptive_axis_points(
-        request.chains,
         request.sides,
         request.boundary,
         request.closed,
@@ -820,7 +810,7 @@ def trace_together(requests, report):
 def _joint_groups(requests):
     """Indices of the requests in groups traced together: similar extents, at most ``JOINT_SEGMENTS``."""
     extents = np.array([request.extent for request in requests])
-    sizes = np.array([request.boundary.segment_count for request in requests])
+    sizes = np.array([request.segment_count for request in requests])
     groups, current, smallest, segments = [], [], 0.0, 0
     for index in np.argsort(extents, kind="stable"):
         if current and (extents[index] > JOINT_EXTENT_RATIO * smallest or segments + sizes[index] > JOINT_SEGMENTS):
@@ -845,7 +835,7 @@ def _trace_group(requests, report):
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
-    tracer = _Tracer(chains, sides, Boundary(chains), *per_chain)
+    tracer = _Tracer(sides, Boundary(chains), *per_chain)
     points, chain = tracer.trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
