@@ -1,6 +1,6 @@
 """Error-bounded adaptive tracing of the medial axis between two chains (the engine's default).
 
-Along each chain the point where a maximal disk touches it moves over *spans*: the edges (the disk slides
+Along a chain the point where a maximal disk touches it moves over *spans*: the edges (the disk slides
 along the edge, centre on the edge's normal) and the reflex vertices (the disk pivots about the vertex, its
 centre on a fan of directions between the two edges' normals). On a span the disk's first contact with
 the rest of the boundary is one *site* (a segment's interior or a vertex) between *events*, and between two
@@ -17,8 +17,18 @@ point of a parabola computed in closed form.
 
 A convex vertex needs no sample: the edges next to it meet the corner's own edge line at ``t = 0``, and the
 event where that line and the other chain are equally far is the junction of the corner's branch with the
-axis. Both chains are traced, so every vertex of the boundary starts samples and no site of either chain is
-missed between samples of the other.
+axis.
+
+Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
+a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
+that touch the same site: the disks between them lie in the region enclosed by the span, that site and the
+two (empty) end disks, which the boundary cannot enter without crossing one of them. A probe whose first
+contact is the vertex where its interval's two segments meet touches that vertex, not the segments: it is
+no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
+there touches the other chain too, whatever it touches first: it is a point of the axis.
+
+Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
+:class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
 
 from dataclasses import dataclass
@@ -373,6 +383,9 @@ class _Tracer:
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
+        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
+        #: chains has a foot on each, so one chain's spans meet all of it).
+        self.traced = np.arange(len(closed)) % 2 == 0
         self.count = 0
         self.store = {}
 
@@ -436,7 +449,7 @@ class _Tracer:
             t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
             event_probes = probes.subset(slice(0, count))
-            event, exact = self._is_event(events, event_probes, t[:count], found)
+            event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
             event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
@@ -467,15 +480,16 @@ class _Tracer:
         corners (both its ends are given the corners' own edges: its axis point would take a round to find);
         returns the intervals of every span between them."""
         spans, sites, b = self.spans, self.sites, self.boundary
-        samples, synthetic_site, synthetic_status = _initial_samples(spans, sites, self.closed, b)
-        solved = np.flatnonzero(synthetic_site < 0)
-        t = np.zeros(len(synthetic_site))
+        samples, synthetic_site, synthetic_status, split_vertex = _initial_samples(spans, sites, self.closed, b)
+        traced_edge = self.traced[b.chain_id]
+        solved = np.flatnonzero((synthetic_site < 0) & np.repeat(traced_edge, 2))
+        t = np.where(np.repeat(traced_edge, 2), 0.0, np.inf)
         status, site = synthetic_status.copy(), synthetic_site.copy()
         t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
             samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
         )
         edge = np.arange(b.segment_count)
-        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0)
+        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0) & traced_edge
         middle_edge = edge[between_corners]
         middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
         middle_t, middle_status, _, _, middle_site = _solve_all(
@@ -492,11 +506,15 @@ class _Tracer:
         status = np.concatenate([status, middle_status])
         site = sites.canonical(np.concatenate([site, middle_site]))
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
-        self.add(samples, t, emit, site)
+        # A disk tangent at a straight split point touches the other chain there: whatever it touches first
+        # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
+        split_vertex = np.concatenate([split_vertex, np.full(len(middle_edge), -1)])
+        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[samples.chain]) & ~emit
+        self.add(samples, t, emit | at_split, np.where(at_split, split_vertex, site))
         middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
-        reflex = np.flatnonzero(spans.kind == FAN)
+        reflex = np.flatnonzero((spans.kind == FAN) & self.traced[spans.chain])
         incoming = spans.segment[reflex]
-        whole = edge[~between_corners]
+        whole = edge[~between_corners & traced_edge]
         span = np.concatenate([whole, middle_edge, middle_edge, reflex])
         u0 = np.concatenate(
             [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
@@ -538,7 +556,8 @@ class _Tracer:
         curved &= sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
-        edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & (sites.kinds[vertex] == 0)
+        untraced_fan = ~self.traced[b.vertex_chain[vertex]]
+        edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & ((sites.kinds[vertex] == 0) | untraced_fan)
         return curved & (fan | edge)
 
     def _event_candidates(self, intervals):
@@ -572,9 +591,12 @@ class _Tracer:
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
 
-    def _is_event(self, intervals, probes, t, found):
+    def _is_event(self, intervals, probes, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
         loosely, to ``LOOSE_EVENT_TOLERANCE`` relative to its radius, and exactly (two masks).
+
+        A probe first touching another site (``site``) at the one point where both sites' feet coincide (the
+        vertex joining two segments) touches that vertex, not the two segments: it is no event between them.
 
         Exactly means to ``EVENT_TOLERANCE`` relative to the radius times the parting of the two feet as seen
         from the centre (the distance between the unit vectors towards them): a gap ``g`` in the radius puts
@@ -590,6 +612,8 @@ class _Tracer:
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
             min_t = self.of(self.min_t, intervals)
+            own_site = (site == intervals.site0) | (site == intervals.site1)
+            found = found & (own_site | (np.hypot(*(foot0 - foot1).T) > EVENT_TOLERANCE * t + min_t))
             return tuple(found & (gap0 <= s + min_t) & (gap1 <= s + min_t) for s in scale)
 
     def _at_split_point(self, site):
@@ -662,7 +686,8 @@ def _solve_all(samples, index, *arguments):
 def _initial_samples(spans, sites, closed, boundary):
     """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
 
-    ``closed``: per chain, whether its pair of chains shares both end points.
+    ``closed``: per chain, whether its pair of chains shares both end points. Also returns, per sample, the
+    site of the other chain's vertex when the sample lies at a straight split point (else -1).
 
     A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
     ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
@@ -682,13 +707,19 @@ def _initial_samples(spans, sites, closed, boundary):
     # Convex at a split point: the other chain's end edge leaves it into the region.
     first_edge = np.asarray(boundary.offset)
     last_edge = np.append(first_edge[1:], edge_count) - 1
+    split_vertex = np.full(2 * edge_count, -1)
     chain = np.flatnonzero(closed)
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
-        convex = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own]) > STRAIGHT_TURN
+        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own])
+        convex = turn > STRAIGHT_TURN
         site[2 * own[convex] + which] = other[convex]
         status[2 * own[convex] + which] = CLEAR
-    return samples, site, status
+        # The other chain's vertex at a straight split point (the other chain's end vertex of that side).
+        straight = np.abs(turn) <= STRAIGHT_TURN
+        vertex = other + (chain ^ 1) + which
+        split_vertex[2 * own[straight] + which] = edge_count + vertex[straight]
+    return samples, site, status, split_vertex
 
 
 def _split_at(intervals, u, probe_index, probe_site, event):
