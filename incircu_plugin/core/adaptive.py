@@ -35,7 +35,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Boundary, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import (
+    CHUNK,
+    CLEAR,
+    SKIPPED,
+    TIED,
+    AxisPoints,
+    Boundary,
+    Samples,
+    left_normal,
+    ranges,
+    solve,
+    solve_in_chunks,
+)
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -467,12 +479,15 @@ class _Tracer:
 
     def _solve_probes(self, probes, trial):
         """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
-        spatial-index queries); returns ``t``, status and canonical site in the probes' order."""
+        spatial-index queries), ``CHUNK`` at a time (bounds the candidate pairs held at once); returns ``t``,
+        status and canonical site in the probes' order."""
         order = np.lexsort((probes.position, probes.chain))
         t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
-        t[order], status[order], _, _, site[order] = solve(
-            probes, order, self.boundary, trial[order], self.max_t, self.min_t
-        )
+        for begin in range(0, len(order), CHUNK):
+            chunk = order[begin : begin + CHUNK]
+            t[chunk], status[chunk], _, _, site[chunk] = solve(
+                probes, chunk, self.boundary, trial[chunk], self.max_t, self.min_t
+            )
         return t, status, self.sites.canonical(site)
 
     def _initial(self, report):
