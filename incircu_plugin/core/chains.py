@@ -4,9 +4,11 @@ A *chain* is an ``(n, 2)`` float array of vertices with no zero-length segment. 
 ``c1`` and ``c2`` running in the same direction, from one end of the centerline to the other.
 """
 
+import weakref
+
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import LineString, Polygon
 
 from .errors import (
     ChainError,
@@ -85,16 +87,19 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     """
     if tolerance is None:
         tolerance = COINCIDENCE_TOLERANCE * extent_of(coordinates)
-    step = np.hypot(*np.diff(coordinates, axis=0).T)
-    keep = np.concatenate([[True], step > tolerance])
-    chain = coordinates[keep]
+    direction = np.diff(coordinates, axis=0)
+    step = np.hypot(direction[:, 0], direction[:, 1])
+    long_enough = step > tolerance
+    chain = coordinates[np.concatenate([[True], long_enough])]
     if len(chain) < 2:
         raise ChainError(f"The {name} has fewer than 2 distinct points.")
-    direction = np.diff(chain, axis=0)
+    if not long_enough.all():
+        direction = np.diff(chain, axis=0)
+        step = np.hypot(direction[:, 0], direction[:, 1])
     incoming, outgoing = direction[:-1], direction[1:]
     cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
     dot = np.einsum("ij,ij->i", incoming, outgoing)
-    norms = np.hypot(*incoming.T) * np.hypot(*outgoing.T)
+    norms = step[:-1] * step[1:]
     folds = np.flatnonzero((dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
     if len(folds):
         raise ChainError(f"The {name} folds back over itself at {format_point(chain[folds[0] + 1])}.")
@@ -130,6 +135,27 @@ def ensure_simple(chain, name):
         raise ChainError(f"The {name} crosses itself at {format_point(crossing)}.")
 
 
+class _LastValid:
+    """A weak reference to the last polygon :func:`validate_polygon` passed (shapely geometries are immutable).
+
+    The public functions check what they are given and call one another (a multipolygon's part is checked by
+    ``multipolygon_centerlines``, ``polygon_centerline`` and ``split_polygon``); GEOS's validity test of a
+    river of a few hundred vertices costs about 0.1 ms, so the same polygon is tested once.
+    """
+
+    reference = None
+
+    @classmethod
+    def holds(cls, polygon):
+        """Whether ``polygon`` is the last polygon found valid."""
+        return polygon is not None and cls.reference is not None and cls.reference() is polygon
+
+    @classmethod
+    def remember(cls, polygon):
+        """Remember ``polygon`` as found valid (without keeping it alive)."""
+        cls.reference = weakref.ref(polygon)
+
+
 def validate_polygon(polygon):
     """Check that a polygon is a non-empty, finite, valid single polygon.
 
@@ -142,6 +168,8 @@ def validate_polygon(polygon):
     InvalidGeometryError
         With the reason and location GEOS reports for an invalid polygon.
     """
+    if _LastValid.holds(polygon):
+        return
     if polygon is None:
         raise InvalidGeometryError("The polygon is null (no geometry).")
     if not isinstance(polygon, Polygon):
@@ -155,14 +183,24 @@ def validate_polygon(polygon):
             f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
             "Repair it first (e.g. QGIS 'Fix geometries')."
         )
+    _LastValid.remember(polygon)
 
 
-def _insert_at(ring, positions, position, point, tolerance):
-    """Insert ``point`` at arc length ``position`` into a closed ring unless a vertex is already there."""
-    if np.min(np.abs(positions[:-1] - position)) <= tolerance:
+def _insert_at(line, positions, along, tolerance):
+    """Insert the points at arc lengths ``along`` into a closed ring, each unless a vertex is already there.
+
+    ``line`` is the ring as a LineString, ``positions`` the arc lengths of its vertices; ``along`` are arc
+    lengths farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point
+    is tested, and they are inserted in one pass. Returns the ring's vertices and their arc lengths.
+    """
+    ring = shapely.get_coordinates(line)
+    along = np.sort(np.asarray(along, dtype=float))
+    new = np.min(np.abs(positions[:-1, None] - along[None, :]), axis=0) > tolerance
+    if not new.any():
         return ring, positions
-    index = int(np.searchsorted(positions, position, side="right"))
-    return np.insert(ring, index, point, axis=0), np.insert(positions, index, position)
+    index = np.searchsorted(positions, along[new], side="right")
+    points = shapely.get_coordinates(shapely.line_interpolate_point(line, along[new]))
+    return np.insert(ring, index, points, axis=0), np.insert(positions, index, along[new])
 
 
 def positions_on_ring(exterior, points, tolerance):
@@ -187,17 +225,15 @@ def positions_on_ring(exterior, points, tolerance):
     SplitPointError
         If a point is farther than ``tolerance`` from the ring.
     """
-    along = []
-    for point in points:
-        distance = exterior.distance(Point(point))
+    geometries = shapely.points(np.asarray(points, dtype=float).reshape(-1, 2))
+    for point, distance in zip(points, shapely.distance(exterior, geometries).tolist()):
         if distance > tolerance:
             raise SplitPointError(
                 f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
                 f"the snap tolerance is {tolerance:.6g}."
                 " Move the point onto the boundary or raise the tolerance."
             )
-        along.append(exterior.project(Point(point)))
-    return along
+    return shapely.line_locate_point(exterior, geometries).tolist()
 
 
 def split_polygon(polygon, split_points, tolerance=None):
@@ -254,15 +290,13 @@ def split_polygon(polygon, split_points, tolerance=None):
     gap = abs(along[0] - along[1])
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
-    for position in along:
-        point = np.asarray(exterior.interpolate(position).coords[0])
-        ring, positions = _insert_at(ring, positions, position, point, coincidence)
-    start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
+    ring, positions = _insert_at(exterior, positions, along, coincidence)
+    start, end = np.argmin(np.abs(positions[:-1, None] - np.array(along)[None, :]), axis=0).tolist()
     loop = ring[:-1]
     n = len(loop)
-    forward = [(start + i) % n for i in range((end - start) % n + 1)]
-    backward = [(start - i) % n for i in range((start - end) % n + 1)]
-    return loop[forward].copy(), loop[backward].copy()
+    forward = (start + np.arange((end - start) % n + 1)) % n
+    backward = (start - np.arange((start - end) % n + 1)) % n
+    return loop[forward], loop[backward]
 
 
 def orient_bank_lines(line_a, line_b):
