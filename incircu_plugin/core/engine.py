@@ -223,16 +223,21 @@ def _fewest_vertices(points, tolerance):
     When the plain simplification crosses itself, GEOS's (slower) topology-preserving one keeps the line
     simple.
     """
-    line = shapely.simplify(LineString(points), tolerance, preserve_topology=False)
-    if not line.is_simple:
-        line = shapely.simplify(LineString(points), tolerance, preserve_topology=True)
-    kept = np.ascontiguousarray(shapely.get_coordinates(line))
+    whole = shapely.linestrings(points)
+    line = shapely.simplify(whole, tolerance, preserve_topology=False)
+    if not shapely.is_simple(line):
+        line = shapely.simplify(whole, tolerance, preserve_topology=True)
+    kept = np.sort(np.ascontiguousarray(shapely.get_coordinates(line)).view(np.complex128).ravel())
     keys = np.ascontiguousarray(points).view(np.complex128).ravel()
-    return np.isin(keys, kept.view(np.complex128).ravel())
+    if len(kept) == 0:
+        return np.zeros(len(keys), dtype=bool)
+    # np.isin(keys, kept), by a binary search in the few kept vertices instead of sorting all of them.
+    found = np.minimum(np.searchsorted(kept, keys), len(kept) - 1)
+    return kept[found] == keys
 
 
 def _ordered(points, side, lengths, coincidence):
-    """The axis points in order along the axis: by where their disks touch the two chains.
+    """Indices putting the axis points in order along the axis: by where their disks touch the two chains.
 
     Those arc lengths grow monotonically along the axis between the chains. Points whose feet are the same
     two vertices (two facing reflex corners) tie on them; they lie on the bisector of those vertices,
@@ -243,12 +248,14 @@ def _ordered(points, side, lengths, coincidence):
     along = points.position_a / max(lengths[0], coincidence) + points.position_b / max(lengths[1], coincidence)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
     along = np.round(along / ORDER_RESOLUTION)
-    order = np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
-    return points.subset(order)
+    return np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
 
 
-def _with_ends(points, chains, closed):
-    """The ordered points between the line's two ends: the split points, or the midpoints of the end gaps."""
+def _with_ends(points, order, chains, closed):
+    """The points ``order`` between the line's two ends: the split points, or the midpoints of the end gaps.
+
+    Returns their centres, radii and both feet, each with the two ends added.
+    """
     if closed:
         ends = [(chains[0][i], 0.0, chains[0][i], chains[0][i]) for i in (0, -1)]
     else:
@@ -261,10 +268,10 @@ def _with_ends(points, chains, closed):
             )
             for i in (0, -1)
         ]
-    centre = np.concatenate([ends[0][0][None], points.centre, ends[1][0][None]])
-    radius = np.concatenate([[ends[0][1]], points.radius, [ends[1][1]]])
-    foot_a = np.concatenate([ends[0][2][None], points.foot_a, ends[1][2][None]])
-    foot_b = np.concatenate([ends[0][3][None], points.foot_b, ends[1][3][None]])
+    centre = np.concatenate([ends[0][0][None], points.centre[order], ends[1][0][None]])
+    radius = np.concatenate([[ends[0][1]], points.radius[order], [ends[1][1]]])
+    foot_a = np.concatenate([ends[0][2][None], points.foot_a[order], ends[1][2][None]])
+    foot_b = np.concatenate([ends[0][3][None], points.foot_b[order], ends[1][3][None]])
     return centre, radius, foot_a, foot_b
 
 
@@ -408,9 +415,9 @@ def _line_through(points, frame, simplification):
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
-    ordered = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    ordered = ordered.subset(_first_of_each_centre(ordered.centre, resolution))
-    centre, radius, foot_a, foot_b = _with_ends(ordered, frame.chains, frame.closed)
+    order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
+    order = order[_first_of_each_centre(points.centre[order], resolution)]
+    centre, radius, foot_a, foot_b = _with_ends(points, order, frame.chains, frame.closed)
     keep = _distinct(centre, resolution)
     if simplification is not None and keep.sum() > 4:
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
