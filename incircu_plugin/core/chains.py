@@ -23,6 +23,9 @@ from .validation import check_coordinates, split_point_coordinates, tolerance_le
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
 COINCIDENCE_TOLERANCE = 1e-12
 
+#: The smallest positive float64: the least extent, so an extent can divide.
+_TINY = float(np.finfo(float).tiny)
+
 #: ``|sin|`` of the turn under which two consecutive segments pointing in opposite directions fold back.
 FOLD_SINE_TOLERANCE = 1e-9
 
@@ -40,9 +43,12 @@ def extent_of(*arrays):
     float
         Bounding-box diagonal, CRS units; at least the smallest positive float, so it can divide.
     """
-    points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
+    if len(arrays) == 1:
+        points = np.asarray(arrays[0], dtype=float).reshape(-1, 2)
+    else:
+        points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
     diagonal = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
-    return max(diagonal, np.finfo(float).tiny)
+    return max(diagonal, _TINY)
 
 
 def signed_area(ring):
@@ -59,7 +65,8 @@ def signed_area(ring):
         Square CRS units.
     """
     x, y = ring[:, 0], ring[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    # np.roll(v, -1) by one concatenation: the same products summed in the same order.
+    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]])) - np.dot(y, np.concatenate([x[1:], x[:1]])))
 
 
 def clean_chain(coordinates, name="chain", tolerance=None):
@@ -97,10 +104,12 @@ def clean_chain(coordinates, name="chain", tolerance=None):
         direction = np.diff(chain, axis=0)
         step = np.hypot(direction[:, 0], direction[:, 1])
     incoming, outgoing = direction[:-1], direction[1:]
+    backward = np.einsum("ij,ij->i", incoming, outgoing) < 0
+    if not backward.any():
+        return chain
     cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
-    dot = np.einsum("ij,ij->i", incoming, outgoing)
     norms = step[:-1] * step[1:]
-    folds = np.flatnonzero((dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
+    folds = np.flatnonzero(backward & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
     if len(folds):
         raise ChainError(f"The {name} folds back over itself at {format_point(chain[folds[0] + 1])}.")
     return chain
