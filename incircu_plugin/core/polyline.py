@@ -289,7 +289,8 @@ def local_origin(*arrays):
         points = np.asarray(arrays[0], dtype=float).reshape(-1, 2)
     else:
         points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
-    return 0.5 * (points.min(axis=0) + points.max(axis=0))
+    x, y = points[:, 0], points[:, 1]
+    return 0.5 * (np.array([x.min(), y.min()]) + np.array([x.max(), y.max()]))
 
 
 def typical_width(area, length):

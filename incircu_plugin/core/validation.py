@@ -53,7 +53,8 @@ def check_coordinates(coordinates, name, whole=True):
         raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     if len(coordinates) == 0:
         return
-    (low_x, low_y), (high_x, high_y) = coordinates.min(axis=0).tolist(), coordinates.max(axis=0).tolist()
+    x, y = coordinates[:, 0], coordinates[:, 1]
+    low_x, low_y, high_x, high_y = float(x.min()), float(y.min()), float(x.max()), float(y.max())
     magnitude = max(abs(low_x), abs(low_y), abs(high_x), abs(high_y))
     if magnitude > MAX_COORDINATE:
         raise InvalidGeometryError(
