@@ -252,28 +252,22 @@ def _ordered(points, side, lengths, coincidence):
     return np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
 
 
-def _with_ends(points, order, chains, closed):
-    """The points ``order`` between the line's two ends: the split points, or the midpoints of the end gaps.
+def _line_ends(chains, closed):
+    """The line's two ends: the split points, or the midpoints of the end gaps.
 
-    Returns their centres, radii and both feet, each with the two ends added.
+    Returns their centres, radii and both feet, each an array of two rows (start, end).
     """
+    foot_a = chains[0][[0, -1]]
     if closed:
-        ends = [(chains[0][i], 0.0, chains[0][i], chains[0][i]) for i in (0, -1)]
-    else:
-        ends = [
-            (
-                0.5 * (chains[0][i] + chains[1][i]),
-                0.5 * np.hypot(*(chains[0][i] - chains[1][i])),
-                chains[0][i],
-                chains[1][i],
-            )
-            for i in (0, -1)
-        ]
-    centre = np.concatenate([ends[0][0][None], points.centre[order], ends[1][0][None]])
-    radius = np.concatenate([[ends[0][1]], points.radius[order], [ends[1][1]]])
-    foot_a = np.concatenate([ends[0][2][None], points.foot_a[order], ends[1][2][None]])
-    foot_b = np.concatenate([ends[0][3][None], points.foot_b[order], ends[1][3][None]])
-    return centre, radius, foot_a, foot_b
+        return foot_a, np.zeros(2), foot_a, foot_a
+    foot_b = chains[1][[0, -1]]
+    radius = np.array([0.5 * np.hypot(*(foot_a[i] - foot_b[i])) for i in (0, 1)])
+    return 0.5 * (foot_a + foot_b), radius, foot_a, foot_b
+
+
+def _with_ends(values, order, ends):
+    """``values[order]`` (an array of the axis points) between its two ``ends`` (an array of two rows)."""
+    return np.concatenate([ends[:1], values[order], ends[1:]])
 
 
 def _clean_chains(c1, c2):
@@ -418,7 +412,8 @@ def _line_through(points, frame, simplification):
     resolution = DISTINCT_TOLERANCE * frame.extent
     order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
     order = order[_first_of_each_centre(points.centre[order], resolution)]
-    centre, radius, foot_a, foot_b = _with_ends(points, order, frame.chains, frame.closed)
+    ends = _line_ends(frame.chains, frame.closed)
+    centre = _with_ends(points.centre, order, ends[0])
     keep = _distinct(centre, resolution)
     if simplification is not None and keep.sum() > 4:
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
@@ -428,4 +423,9 @@ def _line_through(points, frame, simplification):
         keep[kept[2:-2]] = inner[1:-1]
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
-    return centre[keep], radius[keep], foot_a[keep], foot_b[keep]
+    # Both ends are always kept (see _distinct): the other values only for the kept points.
+    order = order[keep[1:-1]]
+    radius, foot_a, foot_b = (
+        _with_ends(values, order, end) for values, end in zip((points.radius, points.foot_a, points.foot_b), ends[1:])
+    )
+    return centre[keep], radius, foot_a, foot_b
