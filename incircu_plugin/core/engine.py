@@ -18,6 +18,7 @@ disk family is computed in closed form by :mod:`.contacts`.
 """
 
 from dataclasses import dataclass
+from functools import cached_property
 from numbers import Real
 from typing import Callable, Optional
 
@@ -393,10 +394,15 @@ class _Frame:
         end_gap = np.hypot(*(self.chains[0][-1] - self.chains[1][-1]))
         self.closed = bool(start_gap <= coincidence and end_gap <= coincidence)
         self.side = 1.0 if area >= 0 else -1.0
-        self.boundary = Boundary(self.chains)
         #: Typical width (the first trial radius), the largest disk parameter searched and the smallest one
         #: that counts as a contact, CRS units.
         self.limits = (max(width, coincidence), 4.0 * self.extent, 1e-12 * self.extent)
+
+    @cached_property
+    def boundary(self):
+        """The chains' segments (:class:`.contacts.Boundary`), built on first use: a feature traced together
+        with others never needs its own."""
+        return Boundary(self.chains)
 
 
 def _line_through(points, frame, simplification):
