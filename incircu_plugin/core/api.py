@@ -216,12 +216,11 @@ def _checked(result, region=None):
             "points to the middle of the ends, or change the spacing."
         )
     if region is not None:
-        # Only the vertices outside the region need a distance (usually none); the region is prepared for
-        # the test and left unprepared again, as it was given.
-        prepared = shapely.is_prepared(region)
-        out = ~shapely.intersects_xy(region, coordinates[:, 0], coordinates[:, 1])
-        if not prepared:
-            shapely.destroy_prepared(region)
+        # Only the vertices outside the region need a distance (usually none). The test runs on a prepared
+        # private copy: the caller's polygon is left as given, even while another thread uses it.
+        inside = shapely.force_2d(region)
+        shapely.prepare(inside)
+        out = ~shapely.intersects_xy(inside, coordinates[:, 0], coordinates[:, 1])
         outside = np.zeros(len(coordinates))
         if out.any():
             outside[out] = shapely.distance(region, shapely.points(coordinates[out]))
