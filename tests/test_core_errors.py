@@ -532,3 +532,36 @@ def test_regular_polygon_with_automatic_ends_is_simple_or_refused(corners):
         assert "crosses itself at" in str(error)
     else:
         assert result.line.is_simple
+
+
+def test_validation_remembers_only_the_same_valid_polygon():
+    import gc
+
+    from incircu_plugin.core.chains import validate_polygon
+
+    valid = box(0.0, 0.0, 10.0, 2.0)
+    validate_polygon(valid)
+    validate_polygon(valid)
+    with pytest.raises(InvalidGeometryError, match="null"):
+        validate_polygon(None)
+    bowtie = Polygon([(0, 0), (2, 2), (2, 0), (0, 2)])
+    for _ in range(2):
+        with pytest.raises(InvalidGeometryError, match="not valid"):
+            validate_polygon(bowtie)
+    validate_polygon(valid)
+    del valid
+    gc.collect()
+    with pytest.raises(InvalidGeometryError, match="null"):
+        validate_polygon(None)
+
+
+@pytest.mark.parametrize("prepared", [False, True])
+def test_final_check_leaves_the_region_as_given(prepared):
+    from incircu_plugin.core.api import _checked
+
+    region = box(0.0, 0.0, 100.0, 10.0)
+    if prepared:
+        shapely.prepare(region)
+    result = polygon_centerline(region, ENDS)
+    assert _checked(result, region) is result
+    assert shapely.is_prepared(region) == prepared

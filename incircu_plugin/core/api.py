@@ -205,7 +205,7 @@ def _checked(result, region=None):
     than ``OUTSIDE_TOLERANCE`` of the polygon's extent, is never returned.
     """
     coordinates = shapely.get_coordinates(result.line)
-    if not np.all(np.isfinite(coordinates)):
+    if not np.isfinite(coordinates).all():
         raise CenterlineError("The computed centerline has a NaN or infinite coordinate; none is returned.")
     if not result.line.is_simple:
         crossing = find_self_crossing(coordinates)
@@ -216,7 +216,14 @@ def _checked(result, region=None):
             "points to the middle of the ends, or change the spacing."
         )
     if region is not None:
-        outside = shapely.distance(region, shapely.points(coordinates))
+        # Only the vertices outside the region need a distance (usually none). The test runs on a prepared
+        # private copy: the caller's polygon is left as given, even while another thread uses it.
+        inside = shapely.force_2d(region)
+        shapely.prepare(inside)
+        out = ~shapely.intersects_xy(inside, coordinates[:, 0], coordinates[:, 1])
+        outside = np.zeros(len(coordinates))
+        if out.any():
+            outside[out] = shapely.distance(region, shapely.points(coordinates[out]))
         worst = int(np.argmax(outside))
         if outside[worst] > OUTSIDE_TOLERANCE * extent_of(np.reshape(region.bounds, (2, 2))):
             raise CenterlineError(

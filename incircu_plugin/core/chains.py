@@ -4,9 +4,11 @@ A *chain* is an ``(n, 2)`` float array of vertices with no zero-length segment. 
 ``c1`` and ``c2`` running in the same direction, from one end of the centerline to the other.
 """
 
+import weakref
+
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import LineString, Polygon
 
 from .errors import (
     ChainError,
@@ -20,6 +22,9 @@ from .validation import check_coordinates, split_point_coordinates, tolerance_le
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
 COINCIDENCE_TOLERANCE = 1e-12
+
+#: The smallest positive float64: the least extent, so an extent can divide.
+_TINY = float(np.finfo(float).tiny)
 
 #: ``|sin|`` of the turn under which two consecutive segments pointing in opposite directions fold back.
 FOLD_SINE_TOLERANCE = 1e-9
@@ -38,9 +43,14 @@ def extent_of(*arrays):
     float
         Bounding-box diagonal, CRS units; at least the smallest positive float, so it can divide.
     """
-    points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
-    diagonal = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
-    return max(diagonal, np.finfo(float).tiny)
+    if len(arrays) == 1:
+        points = np.asarray(arrays[0], dtype=float).reshape(-1, 2)
+    else:
+        points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
+    # Column by column: numpy reduces a column many times faster than an (n, 2) array along its axis 0.
+    x, y = points[:, 0], points[:, 1]
+    diagonal = float(np.hypot(x.max() - x.min(), y.max() - y.min()))
+    return max(diagonal, _TINY)
 
 
 def signed_area(ring):
@@ -57,7 +67,8 @@ def signed_area(ring):
         Square CRS units.
     """
     x, y = ring[:, 0], ring[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    # np.roll(v, -1) by one concatenation: the same products summed in the same order.
+    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]])) - np.dot(y, np.concatenate([x[1:], x[:1]])))
 
 
 def clean_chain(coordinates, name="chain", tolerance=None):
@@ -85,17 +96,22 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     """
     if tolerance is None:
         tolerance = COINCIDENCE_TOLERANCE * extent_of(coordinates)
-    step = np.hypot(*np.diff(coordinates, axis=0).T)
-    keep = np.concatenate([[True], step > tolerance])
-    chain = coordinates[keep]
+    direction = np.diff(coordinates, axis=0)
+    step = np.hypot(direction[:, 0], direction[:, 1])
+    long_enough = step > tolerance
+    chain = coordinates[np.concatenate([[True], long_enough])]
     if len(chain) < 2:
         raise ChainError(f"The {name} has fewer than 2 distinct points.")
-    direction = np.diff(chain, axis=0)
+    if not long_enough.all():
+        direction = np.diff(chain, axis=0)
+        step = np.hypot(direction[:, 0], direction[:, 1])
     incoming, outgoing = direction[:-1], direction[1:]
+    backward = np.einsum("ij,ij->i", incoming, outgoing) < 0
+    if not backward.any():
+        return chain
     cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
-    dot = np.einsum("ij,ij->i", incoming, outgoing)
-    norms = np.hypot(*incoming.T) * np.hypot(*outgoing.T)
-    folds = np.flatnonzero((dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
+    norms = step[:-1] * step[1:]
+    folds = np.flatnonzero(backward & (np.abs(cross) <= FOLD_SINE_TOLERANCE * norms))
     if len(folds):
         raise ChainError(f"The {name} folds back over itself at {format_point(chain[folds[0] + 1])}.")
     return chain
@@ -130,6 +146,27 @@ def ensure_simple(chain, name):
         raise ChainError(f"The {name} crosses itself at {format_point(crossing)}.")
 
 
+class _LastValid:
+    """A weak reference to the last polygon :func:`validate_polygon` passed (shapely geometries are immutable).
+
+    The public functions check what they are given and call one another (a multipolygon's part is checked by
+    ``multipolygon_centerlines``, ``polygon_centerline`` and ``split_polygon``); GEOS's validity test of a
+    river of a few hundred vertices costs about 0.1 ms, so the same polygon is tested once.
+    """
+
+    reference = None
+
+    @classmethod
+    def holds(cls, polygon):
+        """Whether ``polygon`` is the last polygon found valid."""
+        return polygon is not None and cls.reference is not None and cls.reference() is polygon
+
+    @classmethod
+    def remember(cls, polygon):
+        """Remember ``polygon`` as found valid (without keeping it alive)."""
+        cls.reference = weakref.ref(polygon)
+
+
 def validate_polygon(polygon):
     """Check that a polygon is a non-empty, finite, valid single polygon.
 
@@ -142,6 +179,8 @@ def validate_polygon(polygon):
     InvalidGeometryError
         With the reason and location GEOS reports for an invalid polygon.
     """
+    if _LastValid.holds(polygon):
+        return
     if polygon is None:
         raise InvalidGeometryError("The polygon is null (no geometry).")
     if not isinstance(polygon, Polygon):
@@ -155,14 +194,24 @@ def validate_polygon(polygon):
             f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
             "Repair it first (e.g. QGIS 'Fix geometries')."
         )
+    _LastValid.remember(polygon)
 
 
-def _insert_at(ring, positions, position, point, tolerance):
-    """Insert ``point`` at arc length ``position`` into a closed ring unless a vertex is already there."""
-    if np.min(np.abs(positions[:-1] - position)) <= tolerance:
+def _insert_at(line, positions, along, tolerance):
+    """Insert the points at arc lengths ``along`` into a closed ring, each unless a vertex is already there.
+
+    ``line`` is the ring as a LineString, ``positions`` the arc lengths of its vertices; ``along`` are arc
+    lengths farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point
+    is tested, and they are inserted in one pass. Returns the ring's vertices and their arc lengths.
+    """
+    ring = shapely.get_coordinates(line)
+    along = np.sort(np.asarray(along, dtype=float))
+    new = np.array([np.abs(positions[:-1] - position).min() > tolerance for position in along], dtype=bool)
+    if not new.any():
         return ring, positions
-    index = int(np.searchsorted(positions, position, side="right"))
-    return np.insert(ring, index, point, axis=0), np.insert(positions, index, position)
+    index = np.searchsorted(positions, along[new], side="right")
+    points = shapely.get_coordinates(shapely.line_interpolate_point(line, along[new]))
+    return np.insert(ring, index, points, axis=0), np.insert(positions, index, along[new])
 
 
 def positions_on_ring(exterior, points, tolerance):
@@ -187,17 +236,15 @@ def positions_on_ring(exterior, points, tolerance):
     SplitPointError
         If a point is farther than ``tolerance`` from the ring.
     """
-    along = []
-    for point in points:
-        distance = exterior.distance(Point(point))
+    geometries = shapely.points(np.asarray(points, dtype=float).reshape(-1, 2))
+    for point, distance in zip(points, shapely.distance(exterior, geometries).tolist()):
         if distance > tolerance:
             raise SplitPointError(
                 f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
                 f"the snap tolerance is {tolerance:.6g}."
                 " Move the point onto the boundary or raise the tolerance."
             )
-        along.append(exterior.project(Point(point)))
-    return along
+    return shapely.line_locate_point(exterior, geometries).tolist()
 
 
 def split_polygon(polygon, split_points, tolerance=None):
@@ -254,15 +301,13 @@ def split_polygon(polygon, split_points, tolerance=None):
     gap = abs(along[0] - along[1])
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
-    for position in along:
-        point = np.asarray(exterior.interpolate(position).coords[0])
-        ring, positions = _insert_at(ring, positions, position, point, coincidence)
+    ring, positions = _insert_at(exterior, positions, along, coincidence)
     start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
     loop = ring[:-1]
     n = len(loop)
-    forward = [(start + i) % n for i in range((end - start) % n + 1)]
-    backward = [(start - i) % n for i in range((start - end) % n + 1)]
-    return loop[forward].copy(), loop[backward].copy()
+    forward = (start + np.arange((end - start) % n + 1)) % n
+    backward = (start - np.arange((start - end) % n + 1)) % n
+    return loop[forward], loop[backward]
 
 
 def orient_bank_lines(line_a, line_b):

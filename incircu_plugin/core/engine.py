@@ -18,6 +18,7 @@ disk family is computed in closed form by :mod:`.contacts`.
 """
 
 from dataclasses import dataclass
+from functools import cached_property
 from numbers import Real
 from typing import Callable, Optional
 
@@ -206,9 +207,14 @@ def _first_of_each_centre(centres, resolution):
     A junction of the axis is found from several sides, with different feet and so different places in the
     order; keeping its first place only, the line passes it once.
     """
-    cells = np.round(centres / resolution)
-    _, first = np.unique(cells, axis=0, return_index=True)
-    return np.sort(first)
+    # The cells as complex numbers sort by x, then y in one stable sort: the indices
+    # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path.
+    cells = np.ascontiguousarray(np.round(centres / resolution)).view(np.complex128).ravel()
+    order = np.argsort(cells, kind="stable")
+    cells = cells[order]
+    first = np.ones(len(order), dtype=bool)
+    first[1:] = cells[1:] != cells[:-1]
+    return np.sort(order[first])
 
 
 def _fewest_vertices(points, tolerance):
@@ -219,16 +225,21 @@ def _fewest_vertices(points, tolerance):
     When the plain simplification crosses itself, GEOS's (slower) topology-preserving one keeps the line
     simple.
     """
-    line = shapely.simplify(LineString(points), tolerance, preserve_topology=False)
-    if not line.is_simple:
-        line = shapely.simplify(LineString(points), tolerance, preserve_topology=True)
-    kept = np.ascontiguousarray(shapely.get_coordinates(line))
+    whole = shapely.linestrings(points)
+    line = shapely.simplify(whole, tolerance, preserve_topology=False)
+    if not shapely.is_simple(line):
+        line = shapely.simplify(whole, tolerance, preserve_topology=True)
+    kept = np.sort(np.ascontiguousarray(shapely.get_coordinates(line)).view(np.complex128).ravel())
     keys = np.ascontiguousarray(points).view(np.complex128).ravel()
-    return np.isin(keys, kept.view(np.complex128).ravel())
+    if len(kept) == 0:
+        return np.zeros(len(keys), dtype=bool)
+    # np.isin(keys, kept), by a binary search in the few kept vertices instead of sorting all of them.
+    found = np.minimum(np.searchsorted(kept, keys), len(kept) - 1)
+    return kept[found] == keys
 
 
 def _ordered(points, side, lengths, coincidence):
-    """The axis points in order along the axis: by where their disks touch the two chains.
+    """Indices putting the axis points in order along the axis: by where their disks touch the two chains.
 
     Those arc lengths grow monotonically along the axis between the chains. Points whose feet are the same
     two vertices (two facing reflex corners) tie on them; they lie on the bisector of those vertices,
@@ -239,29 +250,25 @@ def _ordered(points, side, lengths, coincidence):
     along = points.position_a / max(lengths[0], coincidence) + points.position_b / max(lengths[1], coincidence)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
     along = np.round(along / ORDER_RESOLUTION)
-    order = np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
-    return points.subset(order)
+    return np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
 
 
-def _with_ends(points, chains, closed):
-    """The ordered points between the line's two ends: the split points, or the midpoints of the end gaps."""
+def _line_ends(chains, closed):
+    """The line's two ends: the split points, or the midpoints of the end gaps.
+
+    Returns their centres, radii and both feet, each an array of two rows (start, end).
+    """
+    foot_a = chains[0][[0, -1]]
     if closed:
-        ends = [(chains[0][i], 0.0, chains[0][i], chains[0][i]) for i in (0, -1)]
-    else:
-        ends = [
-            (
-                0.5 * (chains[0][i] + chains[1][i]),
-                0.5 * np.hypot(*(chains[0][i] - chains[1][i])),
-                chains[0][i],
-                chains[1][i],
-            )
-            for i in (0, -1)
-        ]
-    centre = np.concatenate([ends[0][0][None], points.centre, ends[1][0][None]])
-    radius = np.concatenate([[ends[0][1]], points.radius, [ends[1][1]]])
-    foot_a = np.concatenate([ends[0][2][None], points.foot_a, ends[1][2][None]])
-    foot_b = np.concatenate([ends[0][3][None], points.foot_b, ends[1][3][None]])
-    return centre, radius, foot_a, foot_b
+        return foot_a, np.zeros(2), foot_a, foot_a
+    foot_b = chains[1][[0, -1]]
+    radius = np.array([0.5 * np.hypot(*(foot_a[i] - foot_b[i])) for i in (0, 1)])
+    return 0.5 * (foot_a + foot_b), radius, foot_a, foot_b
+
+
+def _with_ends(values, order, ends):
+    """``values[order]`` (an array of the axis points) between its two ``ends`` (an array of two rows)."""
+    return np.concatenate([ends[:1], values[order], ends[1:]])
 
 
 def _clean_chains(c1, c2):
@@ -387,10 +394,15 @@ class _Frame:
         end_gap = np.hypot(*(self.chains[0][-1] - self.chains[1][-1]))
         self.closed = bool(start_gap <= coincidence and end_gap <= coincidence)
         self.side = 1.0 if area >= 0 else -1.0
-        self.boundary = Boundary(self.chains)
         #: Typical width (the first trial radius), the largest disk parameter searched and the smallest one
         #: that counts as a contact, CRS units.
         self.limits = (max(width, coincidence), 4.0 * self.extent, 1e-12 * self.extent)
+
+    @cached_property
+    def boundary(self):
+        """The chains' segments (:class:`.contacts.Boundary`), built on first use: a feature traced together
+        with others never needs its own."""
+        return Boundary(self.chains)
 
 
 def _line_through(points, frame, simplification):
@@ -404,9 +416,10 @@ def _line_through(points, frame, simplification):
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
-    ordered = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    ordered = ordered.subset(_first_of_each_centre(ordered.centre, resolution))
-    centre, radius, foot_a, foot_b = _with_ends(ordered, frame.chains, frame.closed)
+    order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
+    order = order[_first_of_each_centre(points.centre[order], resolution)]
+    ends = _line_ends(frame.chains, frame.closed)
+    centre = _with_ends(points.centre, order, ends[0])
     keep = _distinct(centre, resolution)
     if simplification is not None and keep.sum() > 4:
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
@@ -416,4 +429,9 @@ def _line_through(points, frame, simplification):
         keep[kept[2:-2]] = inner[1:-1]
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
-    return centre[keep], radius[keep], foot_a[keep], foot_b[keep]
+    # Both ends are always kept (see _distinct): the other values only for the kept points.
+    order = order[keep[1:-1]]
+    radius, foot_a, foot_b = (
+        _with_ends(values, order, end) for values, end in zip((points.radius, points.foot_a, points.foot_b), ends[1:])
+    )
+    return centre[keep], radius, foot_a, foot_b

@@ -88,7 +88,13 @@ def cumulative_lengths(xy):
     [0.0, 5.0, 5.0, 7.0]
     """
     xy = np.asarray(xy, dtype=float)
-    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy[:, :2], axis=0).T))])
+    if len(xy) == 0:
+        return np.zeros(1)
+    step = xy[1:, :2] - xy[:-1, :2]
+    cumulative = np.empty(len(xy))
+    cumulative[0] = 0.0
+    np.cumsum(np.hypot(step[:, 0], step[:, 1]), out=cumulative[1:])
+    return cumulative
 
 
 def points_at(xy, cumulative, s):
@@ -279,8 +285,12 @@ def local_origin(*arrays):
     >>> local_origin(np.array([[500000.0, 10.0], [500010.0, 20.0]]), np.array([[500004.0, 30.0]])).tolist()
     [500005.0, 20.0]
     """
-    points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
-    return 0.5 * (points.min(axis=0) + points.max(axis=0))
+    if len(arrays) == 1:
+        points = np.asarray(arrays[0], dtype=float).reshape(-1, 2)
+    else:
+        points = np.concatenate([np.asarray(a, dtype=float).reshape(-1, 2) for a in arrays])
+    x, y = points[:, 0], points[:, 1]
+    return 0.5 * (np.array([x.min(), y.min()]) + np.array([x.max(), y.max()]))
 
 
 def typical_width(area, length):

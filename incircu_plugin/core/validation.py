@@ -48,19 +48,20 @@ def check_coordinates(coordinates, name, whole=True):
         extent is left to the callers, whose messages name the degenerate geometry.
     """
     coordinates = np.asarray(coordinates, dtype=float).reshape(-1, 2)
-    finite = np.all(np.isfinite(coordinates), axis=1)
-    if not np.all(finite):
-        bad = coordinates[~finite][0]
+    if not np.isfinite(coordinates).all():
+        bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
         raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     if len(coordinates) == 0:
         return
-    magnitude = float(np.max(np.abs(coordinates)))
+    x, y = coordinates[:, 0], coordinates[:, 1]
+    low_x, low_y, high_x, high_y = float(x.min()), float(y.min()), float(x.max()), float(y.max())
+    magnitude = max(abs(low_x), abs(low_y), abs(high_x), abs(high_y))
     if magnitude > MAX_COORDINATE:
         raise InvalidGeometryError(
             f"The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {MAX_COORDINATE:.0e}: products of "
             "such coordinates overflow float64. Use a projected CRS in metres, or scale the data down."
         )
-    extent = float(np.hypot(*(coordinates.max(axis=0) - coordinates.min(axis=0))))
+    extent = float(np.hypot(high_x - low_x, high_y - low_y))
     if not whole or extent == 0:
         return
     if extent < MIN_EXTENT:
@@ -113,6 +114,12 @@ def split_point_coordinates(split_points):
     """
     if split_points is None:
         return np.empty((0, 2))
+    if isinstance(split_points, np.ndarray) and split_points.ndim == 2 and split_points.dtype.kind in "iuf":
+        # Already coordinates (what this function returns, passed on by the public functions): the same
+        # checks as point by point below.
+        if split_points.shape[1] not in (2, 3) and len(split_points):
+            raise SplitPointError(f"Split point 0 must be an (x, y) pair of numbers, got {split_points[0]!r}.")
+        return _checked_split_points(np.array(split_points[:, :2], dtype=float).reshape(-1, 2))
     if isinstance(split_points, MultiPoint):
         split_points = list(split_points.geoms)
     elif isinstance(split_points, shapely.Geometry):
@@ -122,7 +129,11 @@ def split_point_coordinates(split_points):
     if isinstance(split_points, (str, bytes)):
         raise TypeError(f"Split points must be a sequence of points, got {type(split_points).__name__}.")
     coordinates = [_split_point(index, point) for index, point in enumerate(split_points)]
-    coordinates = np.array(coordinates, dtype=float).reshape(-1, 2)
+    return _checked_split_points(np.array(coordinates, dtype=float).reshape(-1, 2))
+
+
+def _checked_split_points(coordinates):
+    """``coordinates`` (split points, an (n, 2) float array, CRS units) once :func:`check_coordinates` passes."""
     try:
         check_coordinates(coordinates, "split points", whole=False)
     except InvalidGeometryError as error:
