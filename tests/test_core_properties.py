@@ -117,3 +117,26 @@ def test_swapping_the_split_points_reverses_the_centerline(drawn):
     assert np.hypot(*(np.asarray(backward.line.coords[0]) - case.split_points[1])) <= tolerance
     assert np.hypot(*(np.asarray(backward.line.coords[-1]) - case.split_points[0])) <= tolerance
     check_centerline(backward, case.chain_b[::-1], case.chain_a[::-1], case.polygon, case.split_points[::-1])
+
+
+def test_a_station_a_hair_past_a_convex_corner_sees_the_corners_other_edge():
+    # Shrunk from a hypothesis example: after the projected placement's rounding, a station of the fixed
+    # sampling (spacing 0.2, 30 spacings = 6.0) lay 4.5e-10 past the 112 degree corner at 5.99999999955 on the
+    # first chain. Its disk met the corner's other edge below the solver's smallest contact, passed it and
+    # touched the split point: a vertex 1.28 outside the polygon (the API then refused the whole line).
+    case = geometry_cases.wavy_channel(
+        length=290.0,
+        mean_width=WIDTH,
+        n=(63, 31),
+        harmonics=(),
+        width_variation=0.0,
+        width_wavelength=30.0,
+        jitter=0.0,
+        seed=0,
+        placement=geometry_cases.Placement(scale=1.0, angle=0.5887536628509353, offset=(4.6e6, 5.1e6)),
+        split_fractions=(0.6, 0.5),
+        teeth=0.2,
+    )
+    result = polygon_centerline(case.polygon, case.split_points, spacing=0.02 * case.width)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    assert_on_medial_axis(result, case.chain_a, case.chain_b, case.polygon)
