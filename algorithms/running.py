@@ -297,7 +297,7 @@ class FeatureRun:
 
     def _batch_progress(self, fraction, span):
         """Progress callback of a batch starting at ``progress_base`` and ``span`` percent long."""
-        self.feedback.setProgress(self.progress_base + fraction * span)
+        self.feedback.setProgress(min(self.progress_base + fraction * span, 100.0))
         return not self.feedback.isCanceled()
 
     def _finish(self, task, outcome):
