@@ -35,7 +35,7 @@ from incircu_plugin.core import (
 )
 from incircu_plugin.core.errors import OptionError
 from tests.support import geometry_cases
-from tests.support.oracle import MedialOracle, check_centerline
+from tests.support.oracle import MedialOracle, assert_within_tolerance, check_centerline
 
 ANALYTIC = geometry_cases.analytic_cases()
 WAVY = [
@@ -61,39 +61,6 @@ def marked(cases):
 
 #: Largest ratio of output vertices to the vertices of both chains at the default tolerance.
 VERTEX_RATIO = 1.5
-
-
-def assert_within_tolerance(result, chain_a, chain_b, region, tolerance, oracle=None, near_ends=None):
-    """Vertices on the oracle's axis and the Hausdorff distance between line and axis within ``tolerance``.
-
-    ``near_ends``: target points within this distance of these points are not compared (open mode: the
-    line starts at the end gap's midpoint by definition, where the axis crosses the gap elsewhere).
-    """
-    oracle = oracle or MedialOracle(chain_a, chain_b, region=region)
-    coords = np.asarray(result.line.coords)[:, :2]
-    if len(coords) > 2:
-        distance = oracle.distance(coords[1:-1])
-        limit = 1e-7 * oracle.extent + 4.0 * oracle.error_bound
-        worst = int(np.argmax(distance))
-        assert distance[worst] <= limit, f"vertex {coords[worst + 1].tolist()} is {distance[worst]:.3g} off the axis"
-    step = tolerance / 10.0
-    dense = shapely.get_coordinates(shapely.segmentize(result.line, step))
-    if near_ends is not None:
-        dense = dense[away_from(dense, *near_ends)]
-    away = oracle.distance(dense).max()
-    assert away <= tolerance + step, f"the line is {away:.3g} from the axis, tolerance {tolerance:.3g}"
-    if near_ends is None:
-        missed = oracle.hausdorff_from_target(result.line, step)
-    else:
-        targets = shapely.get_coordinates(shapely.segmentize(shapely.multilinestrings(list(oracle.segments)), step))
-        targets = targets[away_from(targets, *near_ends)]
-        missed = float(shapely.distance(result.line, shapely.points(targets)).max())
-    assert missed <= tolerance + step, f"the axis is {missed:.3g} from the line, tolerance {tolerance:.3g}"
-
-
-def away_from(points, ends, distance):
-    """Mask of the points farther than ``distance`` from every point of ``ends``."""
-    return np.min([np.hypot(*(points - end).T) for end in ends], axis=0) > distance
 
 
 @pytest.mark.parametrize("case", marked(CASES))

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Boundary, Samples, left_normal, ranges, solve, solve_in_chunks
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -90,7 +90,7 @@ class _Spans:
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
         at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
         return Samples(
-            chain=self.chain[span].astype(np.int8),
+            chain=self.chain[span],
             point=self.point[span] + along[:, None] * self.unit[span],
             direction=direction,
             scale=np.ones(len(span)),
@@ -331,8 +331,8 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
         Each parabola's focus, a point of its directrix and the directrix's unit direction.
     ends : ndarray of shape (n, 2, 2)
         Two points of each parabola.
-    tolerance : float
-        Largest distance between a chord and its arc, CRS units.
+    tolerance : float or ndarray of shape (n,)
+        Largest distance between a chord and its arc, CRS units (per parabola).
 
     Returns
     -------
@@ -370,15 +370,24 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
 
 
 class _Tracer:
-    """The samples of one adaptive tracing, grown round by round, and the rules that grow them."""
+    """The samples of one adaptive tracing, grown round by round, and the rules that grow them.
+
+    The chains come in pairs (chains ``2k`` and ``2k + 1``: one feature of a joint tracing); ``closed``,
+    ``tolerance``, ``width``, ``max_t`` and ``min_t`` are arrays with one value per chain.
+    """
 
     def __init__(self, chains, sides, boundary, closed, tolerance, width, max_t, min_t):
         self.spans = _build_spans(chains, sides, boundary)
         self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
+        self.split_vertex = _split_vertices(boundary, closed)
         self.count = 0
         self.store = {}
+
+    def of(self, values, intervals):
+        """Per-chain ``values`` for each interval (the chain of its span)."""
+        return values[self.spans.chain[intervals.span]]
 
     def add(self, samples, t, emit, other_site):
         """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain.
@@ -415,7 +424,7 @@ class _Tracer:
         return self.store["point"][index] + self.store["t"][index, None] * self.store["direction"][index]
 
     def trace(self, report):
-        """Run the rounds; returns the emitted samples as :class:`AxisPoints`."""
+        """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
         intervals = self._initial(report)
         for round_index in range(MAX_ROUNDS):
             open_ = self._is_open(intervals)
@@ -513,13 +522,14 @@ class _Tracer:
         finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
         radius = np.fmax(self.t[intervals.left], self.t[intervals.right])
         move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
-        wide = move > SMALLEST_MOVE * self.tolerance
+        tolerance = self.of(self.tolerance, intervals)
+        wide = move > SMALLEST_MOVE * tolerance
         known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
         with np.errstate(invalid="ignore"):
             chord = np.hypot(*(self.centres(intervals.left) - self.centres(intervals.right)).T)
-            apart = chord > SETTLED_CHORD * self.tolerance
+            apart = chord > SETTLED_CHORD * tolerance
         return (intervals.site0 != intervals.site1) & finite & wide & known & apart
 
     def _is_curved(self, intervals):
@@ -534,7 +544,7 @@ class _Tracer:
         span, site = intervals.span, intervals.site0
         curved = (site == intervals.site1) & (site >= 0) & ~intervals.verified
         curved &= np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        curved &= sites.chain(site) == 1 - spans.chain[span]
+        curved &= sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
         edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & (sites.kinds[vertex] == 0)
@@ -549,10 +559,11 @@ class _Tracer:
         u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
-        known = np.where(np.isfinite(known), 1.25 * known, self.width)
+        width = self.of(self.width, intervals)
+        known = np.where(np.isfinite(known), 1.25 * known, width)
         # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
         trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
-        return u, np.maximum(trial, self.width / 16.0), found, at_end
+        return u, np.maximum(trial, width / 16.0), found, at_end
 
     def _settle_at_ends(self, intervals, at_end):
         """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
@@ -561,7 +572,7 @@ class _Tracer:
         """
         end = np.where(at_end == 0, intervals.left, intervals.right)
         centre = self.centres(end)
-        slack = EVENT_TOLERANCE * self.t[end] + self.min_t
+        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)
         with np.errstate(invalid="ignore"):
             touching = np.abs(self.sites.distance(intervals.site0, centre) - self.t[end]) <= slack
             touching &= np.abs(self.sites.distance(intervals.site1, centre) - self.t[end]) <= slack
@@ -587,16 +598,14 @@ class _Tracer:
             parting = np.hypot(*((centre - foot0) / distance0[:, None] - (centre - foot1) / distance1[:, None]).T)
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
-            return tuple(found & (gap0 <= s + self.min_t) & (gap1 <= s + self.min_t) for s in scale)
+            min_t = self.of(self.min_t, intervals)
+            return tuple(found & (gap0 <= s + min_t) & (gap1 <= s + min_t) for s in scale)
 
     def _at_split_point(self, site):
         """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
         evidence of a contact with the other chain (it also lies on the own one)."""
-        b = self.boundary
-        ends = b.segment_count + np.array(
-            [0, len(self.boundary.position[0]) - 1, len(self.boundary.position[0]), len(b.vertex) - 1]
-        )
-        return self.closed & np.any(site[:, None] == ends, axis=1)
+        vertex = site - self.boundary.segment_count
+        return (vertex >= 0) & self.split_vertex[np.clip(vertex, 0, len(self.split_vertex) - 1)]
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -606,8 +615,8 @@ class _Tracer:
         both chains, the rounding chose the own one).
         """
         chain = self.spans.chain[intervals.span]
-        other0 = self.sites.chain(intervals.site0) == 1 - chain
-        other1 = self.sites.chain(intervals.site1) == 1 - chain
+        other0 = self.sites.chain(intervals.site0) == chain ^ 1
+        other1 = self.sites.chain(intervals.site1) == chain ^ 1
         forced = event & (status == SKIPPED) & (other0 | other1)
         emit = (status == CLEAR) | ((status == TIED) & event & ~self._at_split_point(site)) | forced
         other_site = np.where(forced, np.where(other0, intervals.site0, intervals.site1), site)
@@ -624,7 +633,7 @@ class _Tracer:
         anchor = np.where(on_fan[:, None], b.start[segment], spans.point[span])
         unit = np.where(on_fan[:, None], b.unit[segment], spans.unit[span])
         ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
-        owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.tolerance)
+        owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals))
         offset = centre - spans.point[span[owner]]
         angle = np.arctan2(
             np.einsum("ij,ij->i", offset, spans.normal[span[owner]]),
@@ -632,15 +641,15 @@ class _Tracer:
         )
         along = np.einsum("ij,ij->i", offset, spans.unit[span[owner]])
         u = np.clip(np.where(on_fan[owner], angle, along), intervals.u0[owner], intervals.u1[owner])
-        return owner, u, 1.001 * radius + self.min_t
+        return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
 
     def _points(self):
-        """The emitted samples as :class:`AxisPoints`."""
+        """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on."""
         store = {name: values[: self.count] for name, values in self.store.items()}
         index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
         centre = self.centres(index)
         other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
-        return AxisPoints.from_chain_feet(
+        points = AxisPoints.from_chain_feet(
             store["chain"][index],
             centre,
             store["t"][index],
@@ -649,6 +658,7 @@ class _Tracer:
             other_foot,
             other_position,
         )
+        return points, store["chain"][index]
 
 
 def _solve_all(samples, index, *arguments):
@@ -660,6 +670,8 @@ def _solve_all(samples, index, *arguments):
 
 def _initial_samples(spans, sites, closed, boundary):
     """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
+
+    ``closed``: per chain, whether its pair of chains shares both end points.
 
     A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
     ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
@@ -676,16 +688,15 @@ def _initial_samples(spans, sites, closed, boundary):
     corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain
     site[2 * edge[corner_at_start]] = edge[corner_at_start] - 1
     site[2 * edge[corner_at_end] + 1] = edge[corner_at_end] + 1
-    if closed:
-        first_edges = np.array([boundary.offset[0], boundary.offset[1]])
-        last_edges = np.array([boundary.offset[1] - 1, edge_count - 1])
-        for edges, which, outward in ((first_edges, 0, 1.0), (last_edges, 1, -1.0)):
-            for chain_id in (0, 1):
-                own, other = edges[chain_id], edges[1 - chain_id]
-                # Convex at the split point: the other chain's end edge leaves it into the region.
-                if np.dot(outward * boundary.unit[other], spans.normal[own]) > STRAIGHT_TURN:
-                    site[2 * own + which] = other
-                    status[2 * own + which] = CLEAR
+    # Convex at a split point: the other chain's end edge leaves it into the region.
+    first_edge = np.asarray(boundary.offset)
+    last_edge = np.append(first_edge[1:], edge_count) - 1
+    chain = np.flatnonzero(closed)
+    for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
+        own, other = edges[chain], edges[chain ^ 1]
+        convex = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own]) > STRAIGHT_TURN
+        site[2 * own[convex] + which] = other[convex]
+        status[2 * own[convex] + which] = CLEAR
     return samples, site, status
 
 
@@ -740,6 +751,15 @@ def _split_at_stations(intervals, owner, u, probe_index, probe_site):
     )
 
 
+def _split_vertices(boundary, closed):
+    """Mask of the vertices that are split points: both ends of every chain whose pair is closed."""
+    mask = np.zeros(len(boundary.vertex), dtype=bool)
+    first = np.asarray(boundary.offset) + np.arange(len(boundary.offset))
+    last = np.append(first[1:], len(boundary.vertex)) - 1
+    mask[first[closed]] = mask[last[closed]] = True
+    return mask
+
+
 def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
     """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
 
@@ -748,27 +768,99 @@ def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_
     of the axis and its chords. ``chains``, ``boundary``, ``width``, ``max_t``, ``min_t`` and ``report`` are
     as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
-    return _Tracer(chains, sides, boundary, closed, tolerance, width, max_t, min_t).trace(report)
+    per_chain = [np.full(2, value) for value in (closed, tolerance, width, max_t, min_t)]
+    return _Tracer(chains, sides, boundary, *per_chain).trace(report)[0]
+
+
+def trace_one(request, report):
+    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``."""
+    return adaptive_axis_points(
+        request.chains,
+        request.sides,
+        request.boundary,
+        request.closed,
+        request.tolerance,
+        request.width,
+        request.max_t,
+        request.min_t,
+        report,
+    )
+
+
+#: A joint tracing places its features on a grid of cells this many times their largest extent, and takes
+#: features whose extents differ at most by ``JOINT_EXTENT_RATIO``: coordinates then stay within a few tens
+#: of each feature's extent, so the shared frame costs a few bits of float64 at most.
+JOINT_CELL = 1.25
+JOINT_EXTENT_RATIO = 4.0
+
+#: Most segments in one joint tracing (bounds its memory).
+JOINT_SEGMENTS = 1 << 17
 
 
 def trace_together(requests, report):
-    """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects; a list in their order.
+    """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
 
-    ``report(fraction)`` is called with the fraction of the requests done.
+    Requests of similar extent are placed side by side in one frame and traced in one set of vectorised
+    rounds (contacts are only ever sought within a feature's own pair of chains); each feature's points
+    are shifted back. ``report(fraction)`` is called as the groups are done. Returns a list of
+    :class:`.contacts.AxisPoints` in the requests' order.
     """
+    results = [None] * len(requests)
+    groups = _joint_groups(requests)
+    for done, group in enumerate(groups):
+        part = lambda fraction, begin=done: report((begin + fraction) / len(groups))
+        if len(group) == 1:
+            results[group[0]] = trace_one(requests[group[0]], part)
+        else:
+            for index, points in zip(group, _trace_group([requests[i] for i in group], part)):
+                results[index] = points
+    return results
+
+
+def _joint_groups(requests):
+    """Indices of the requests in groups traced together: similar extents, at most ``JOINT_SEGMENTS``."""
+    extents = np.array([request.extent for request in requests])
+    sizes = np.array([request.boundary.segment_count for request in requests])
+    groups, current, smallest, segments = [], [], 0.0, 0
+    for index in np.argsort(extents, kind="stable"):
+        if current and (extents[index] > JOINT_EXTENT_RATIO * smallest or segments + sizes[index] > JOINT_SEGMENTS):
+            groups.append(current)
+            current = []
+        if not current:
+            smallest, segments = extents[index], 0
+        current.append(int(index))
+        segments += sizes[index]
+    return groups + [current] if current else groups
+
+
+def _trace_group(requests, report):
+    """Trace ``requests`` in one frame: each shifted to its cell of a square grid; their points shifted back."""
+    columns = int(np.ceil(np.sqrt(len(requests))))
+    cell = JOINT_CELL * max(request.extent for request in requests)
+    rank = np.arange(len(requests))
+    offsets = cell * (np.stack([rank % columns, rank // columns], axis=1) - 0.5 * (columns - 1))
+    chains = [chain + offset for request, offset in zip(requests, offsets) for chain in request.chains]
+    sides = [side for request in requests for side in request.sides]
+    per_chain = [
+        np.repeat([getattr(request, name) for request in requests], 2)
+        for name in ("closed", "tolerance", "width", "max_t", "min_t")
+    ]
+    tracer = _Tracer(chains, sides, Boundary(chains), *per_chain)
+    points, chain = tracer.trace(report)
+    feature = chain >> 1
+    order = np.argsort(feature, kind="stable")
+    bounds = np.searchsorted(feature[order], np.arange(len(requests) + 1))
     results = []
-    for index, request in enumerate(requests):
+    for index, offset in enumerate(offsets):
+        mine = points.subset(order[bounds[index] : bounds[index + 1]])
         results.append(
-            adaptive_axis_points(
-                request.chains,
-                request.sides,
-                request.boundary,
-                request.closed,
-                request.tolerance,
-                request.width,
-                request.max_t,
-                request.min_t,
-                lambda fraction, done=index: report((done + fraction) / len(requests)),
+            AxisPoints(
+                mine.centre - offset,
+                mine.radius,
+                mine.foot_a - offset,
+                mine.foot_b - offset,
+                mine.position_a,
+                mine.position_b,
             )
         )
     return results

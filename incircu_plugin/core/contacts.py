@@ -118,6 +118,9 @@ class Boundary:
         self.first_of_chain = np.zeros(count, dtype=bool)
         self.first_of_chain[offsets] = True
         self.segment_count = count
+        #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
+        #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.
+        self.several_pairs = len(chains) > 2
         self.vertex = np.concatenate(chains)
         self.vertex_position = np.concatenate(positions)
         self.vertex_chain = np.concatenate([np.full(len(chain), chain_id) for chain_id, chain in enumerate(chains)])
@@ -187,6 +190,13 @@ class Boundary:
             order = np.argsort(box, kind="stable")
             box, segment = box[order], segment[order]
         return box, segment
+
+    def within(self, segment, point, distance):
+        """Whether each segment comes within ``distance`` (CRS units) of the matching ``point``."""
+        dx, dy = point[:, 0] - self.start_x[segment], point[:, 1] - self.start_y[segment]
+        along = np.clip(dx * self.unit_x[segment] + dy * self.unit_y[segment], 0.0, self.length[segment])
+        ex, ey = dx - along * self.unit_x[segment], dy - along * self.unit_y[segment]
+        return ex * ex + ey * ey <= distance * distance
 
     def _overlaps(self, segment, low, high):
         """Whether each segment's bounding box meets the matching box ``low..high``."""
@@ -294,6 +304,11 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     return t, along, site
 
 
+def per_sample(value, chain):
+    """``value`` for samples of the chains ``chain``: a scalar as is, an array per chain indexed by chain."""
+    return np.full(len(chain), value, dtype=float) if np.ndim(value) == 0 else np.asarray(value)[chain]
+
+
 def group_minimum(group, values, size):
     """Minimum of ``values`` per group id (``group`` sorted ascending); inf for empty groups."""
     result = np.full(size, np.inf)
@@ -306,6 +321,9 @@ def group_minimum(group, values, size):
 def solve(samples, index, boundary, trial, max_t, min_t):
     """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
 
+    ``max_t`` (the largest disk parameter searched) and ``min_t`` (the smallest that counts as a contact) are
+    lengths, CRS units, or arrays of them per chain (see :func:`per_sample`).
+
     Returns arrays aligned with ``index``: ``contact_t`` (parameter of the first contact with anything, inf
     when none within ``max_t``), ``status`` (``SKIPPED``; ``TIED``: the first contact lies on the other
     chain and, within ``TIE_TOLERANCE``, on the sample's own chain too; ``CLEAR``: on the other chain only),
@@ -315,6 +333,7 @@ def solve(samples, index, boundary, trial, max_t, min_t):
     count = len(index)
     point, direction = samples.point[index], samples.direction[index]
     scale, slide = samples.scale[index], samples.slide[index]
+    max_t, min_t = per_sample(max_t, samples.chain[index]), per_sample(min_t, samples.chain[index])
     radius = np.array(trial, dtype=float)
     contact_t = np.full(count, np.inf)
     status = np.full(count, SKIPPED, dtype=np.int8)
@@ -328,6 +347,11 @@ def solve(samples, index, boundary, trial, max_t, min_t):
         # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
         reach = radius[active, None] * (1.0 + 1e-9)
         query, segment = boundary.candidates(centre - reach, centre + reach)
+        if boundary.several_pairs:
+            mine = boundary.chain_id[segment] >> 1 == samples.chain[index[active[query]]] >> 1
+            query, segment = query[mine], segment[mine]
+        near = boundary.within(segment, centre[query], reach[query, 0])
+        query, segment = query[near], segment[near]
         pair = active[query]
         sample = index[pair]
         t, along, touched = first_contacts(
@@ -345,7 +369,7 @@ def solve(samples, index, boundary, trial, max_t, min_t):
         own_vertex = (touched >= boundary.start_site[samples.first_own[sample]]) & (
             touched <= boundary.start_site[samples.last_own[sample]] + 1
         )
-        t[own_segment | own_vertex | (t <= min_t)] = np.inf
+        t[own_segment | own_vertex | (t <= min_t[pair])] = np.inf
         on_own = boundary.chain_id[segment] == samples.chain[sample]
         t_own = np.where(on_own, t, np.inf)
         t_other = np.where(on_own, np.inf, t)
@@ -379,12 +403,12 @@ def solve(samples, index, boundary, trial, max_t, min_t):
         pending = active[~settled]
         best = best[~settled]
         radius[pending] = np.minimum(best, 2.0 * radius[pending])
-        active = pending[radius[pending] <= max_t]
+        active = pending[radius[pending] <= max_t[pending]]
     return contact_t, status, contact, position, site
 
 
 def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
-    """Settle ``index`` (sorted by position) from coarse to fine.
+    """Settle ``index`` (sorted by position) from coarse to fine; ``trial_radius`` as ``max_t`` in :func:`solve`.
 
     Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk; all
     at once up to ``COARSE_STRIDE ** 2`` samples) is solved first from a global trial radius, then each finer
@@ -392,6 +416,7 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     answer keeps the candidate boxes tight where the width varies. ``report(done)`` is called after each level with the number of samples settled.
     """
     count = len(index)
+    trial_radius = per_sample(trial_radius, samples.chain[index])
     contact_t = np.full(count, np.nan)
     status = np.zeros(count, dtype=np.int8)
     contact = np.empty((count, 2))
@@ -412,9 +437,9 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
         if np.any(known):
             estimate = np.interp(along[level], along[known], samples.scale[index[known]] * contact_t[known])
             # Not much below the global trial: doubling up from a tiny trial (near a split point) takes long.
-            trial = np.maximum(1.05 * estimate / samples.scale[index[level]], SMALLEST_TRIAL * trial_radius)
+            trial = np.maximum(1.05 * estimate / samples.scale[index[level]], SMALLEST_TRIAL * trial_radius[level])
         else:
-            trial = np.full(level.sum(), trial_radius)
+            trial = trial_radius[level]
         contact_t[level], status[level], contact[level], position[level], site[level] = solve(
             samples, index[level], boundary, trial, max_t, min_t
         )
@@ -459,8 +484,9 @@ class AxisPoints:
 
     @staticmethod
     def from_chain_feet(chain, centre, radius, own_foot, own_position, other_foot, other_position):
-        """Points whose feet are given as on the sampled chain (``chain``, 0 or 1) and on the other one."""
-        on_a = (chain == 0)[:, None]
+        """Points whose feet are given as on the sampled chain (``chain``; even: the first chain of its pair)
+        and on the other one."""
+        on_a = (chain % 2 == 0)[:, None]
         return AxisPoints(
             centre,
             radius,

@@ -15,7 +15,7 @@ from typing import Callable
 
 import numpy as np
 
-from .adaptive import adaptive_axis_points, trace_together
+from .adaptive import trace_one, trace_together
 
 
 class Cancelled(Exception):
@@ -62,18 +62,8 @@ class TraceRequest:
 
 
 def trace_alone(request):
-    """The axis points of one request (:class:`.contacts.AxisPoints`)."""
-    return adaptive_axis_points(
-        request.chains,
-        request.sides,
-        request.boundary,
-        request.closed,
-        request.tolerance,
-        request.width,
-        request.max_t,
-        request.min_t,
-        request.report,
-    )
+    """The axis points of one request (:class:`.contacts.AxisPoints`), reporting to its own ``report``."""
+    return trace_one(request, request.report)
 
 
 def run_alone(steps):

@@ -1,0 +1,122 @@
+"""Joint tracing (``adaptive.trace_together``): many features in one vectorised tracing, each still exact.
+
+The features of a joint tracing share one frame and one set of rounds; contacts are only sought within a
+feature's own pair of chains. Checked against the segment-Voronoi oracle and against tracing each feature
+alone:
+
+- every feature of a mixed batch (closed and open chains, straight and curved axes, islands, extents from
+  1 to 1,000) is within its tolerance of its exact medial axis, with its vertices on it;
+- each feature's line is the one it gets alone, up to the rounding of the shared frame (a few float64
+  steps of the frame's coordinates, which stay within a few tens of the feature's extent), which may tip
+  the final simplification between equally good vertices: ends equal, lines within the tolerance;
+- features overlapping in space (the same place in the joint frame before their shift) never see each other;
+- features of very different extents are traced in different groups, each group within the documented
+  extent ratio and segment budget.
+"""
+
+import numpy as np
+import pytest
+import shapely
+
+from incircu_plugin.core import default_tolerance, split_polygon
+from incircu_plugin.core.adaptive import JOINT_EXTENT_RATIO, JOINT_SEGMENTS, _joint_groups
+from incircu_plugin.core.chains import orient_bank_lines
+from incircu_plugin.core.engine import centerline_steps
+from incircu_plugin.core.steps import run_alone, run_together
+from tests.support import geometry_cases
+from tests.support.oracle import assert_within_tolerance, check_centerline
+
+CLOSED = geometry_cases.analytic_cases() + [
+    geometry_cases.wavy_channel(seed=31),
+    geometry_cases.wavy_channel(seed=32, n=(25, 80), split_fractions=(0.15, 0.9), teeth=0.05),
+]
+OPEN = [geometry_cases.wavy_channel(seed=34), geometry_cases.analytic_cases()[0]]
+
+
+def scaled(case, factor):
+    """The case's polygon and split points scaled by ``factor`` about the origin."""
+    polygon = shapely.affinity.scale(case.polygon, factor, factor, origin=(0.0, 0.0))
+    return polygon, [(factor * x, factor * y) for x, y in case.split_points]
+
+
+def closed_jobs():
+    """(name, chains, region, ends) of every closed case at three scales: 1, 1/30 and 30 times."""
+    jobs = []
+    for case in CLOSED:
+        for factor in (1.0, 1.0 / 30.0, 30.0):
+            polygon, ends = scaled(case, factor)
+            jobs.append((f"{case.name} x{factor:g}", split_polygon(polygon, ends), polygon, ends, None))
+    return jobs
+
+
+def open_jobs():
+    """(name, chains, region, ends, end gap) of the bank pairs of the open cases."""
+    jobs = []
+    for case in OPEN:
+        line_a, line_b = geometry_cases.bank_pair(case, False, True)
+        region = geometry_cases.channel_case("region", case.bank_a, case.bank_b, case.width).polygon
+        ends = [tuple(0.5 * (case.bank_a[i] + case.bank_b[i])) for i in (0, -1)]
+        gap = max(np.hypot(*(case.bank_a[i] - case.bank_b[i])) for i in (0, -1))
+        jobs.append((f"{case.name} banks", orient_bank_lines(line_a, line_b), region, ends, gap))
+    return jobs
+
+
+JOBS = closed_jobs() + open_jobs()
+
+
+@pytest.fixture(scope="module")
+def joint_results():
+    return run_together([centerline_steps(*chains) for _, chains, _, _, _ in JOBS])
+
+
+@pytest.mark.parametrize("job", range(len(JOBS)), ids=[job[0] for job in JOBS])
+def test_every_feature_of_a_joint_tracing_is_within_its_tolerance_of_its_axis(joint_results, job):
+    name, (chain_a, chain_b), region, ends, gap = JOBS[job]
+    result = joint_results[job]
+    assert not isinstance(result, Exception), f"{name}: {result!r}"
+    check_centerline(result, chain_a, chain_b, region, ends)
+    near_ends = None if gap is None else ([np.asarray(end) for end in ends], gap)
+    assert_within_tolerance(result, chain_a, chain_b, region, default_tolerance(chain_a, chain_b), near_ends=near_ends)
+
+
+@pytest.mark.parametrize("job", range(len(JOBS)), ids=[job[0] for job in JOBS])
+def test_a_joint_tracing_gives_each_feature_the_line_it_gets_alone(joint_results, job):
+    _, (chain_a, chain_b), _, _, _ = JOBS[job]
+    alone = run_alone(centerline_steps(chain_a, chain_b))
+    joint = joint_results[job]
+    extent = np.ptp(np.concatenate([chain_a, chain_b]), axis=0).max()
+    # Both lines are the exact axis points simplified to half the tolerance; the shared frame's rounding
+    # (a few float64 steps of coordinates a few tens of extents large) can only tip the simplification's
+    # choice between vertices that deviate equally (symmetric shapes), so the lines agree to the tolerance
+    # and their ends and end radii to rounding.
+    assert joint.line.hausdorff_distance(alone.line) <= default_tolerance(chain_a, chain_b)
+    for index in (0, -1):
+        assert np.hypot(*np.subtract(joint.line.coords[index], alone.line.coords[index])) <= 1e-9 * extent
+        assert abs(joint.radii[index] - alone.radii[index]) <= 1e-9 * extent
+
+
+def test_features_at_the_same_place_do_not_see_each_other():
+    # Two channels on top of each other (their boxes coincide): each alone has its own axis; a joint tracing
+    # that let one see the other's banks would give the narrow one the wide one's contacts or vice versa.
+    narrow = geometry_cases.rectangle(length=100.0, width=10.0, n=11)
+    wide = geometry_cases.rectangle(length=100.0, width=30.0, n=11)
+    chains = [split_polygon(case.polygon, case.split_points) for case in (narrow, wide)]
+    joint = run_together([centerline_steps(*pair) for pair in chains])
+    for case, result in zip((narrow, wide), joint):
+        assert result.radii.max() == pytest.approx(case.width / 2.0, rel=1e-12)
+
+
+def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budget():
+    class Request:
+        def __init__(self, extent, segments):
+            self.extent = extent
+            self.boundary = type("B", (), {"segment_count": segments})()
+
+    extents = [1.0, 3.9, 4.1, 1000.0, 2.0, 30.0, 100.0, 1e-3]
+    requests = [Request(extent, 10) for extent in extents] + [Request(2.0, JOINT_SEGMENTS - 15)] * 3
+    groups = _joint_groups(requests)
+    assert sorted(index for group in groups for index in group) == list(range(len(requests)))
+    for group in groups:
+        sizes = [requests[i].extent for i in group]
+        assert max(sizes) <= JOINT_EXTENT_RATIO * min(sizes)
+        assert sum(requests[i].boundary.segment_count for i in group) <= JOINT_SEGMENTS or len(group) == 1
