@@ -84,10 +84,23 @@ def as_shapely(geometry):
     return shapely.from_wkb(bytes(flat.asWkb()))
 
 
-def assert_close(line, expected, extent, label):
-    one, other = shapely.get_coordinates(line), shapely.get_coordinates(expected)
-    assert one.shape == other.shape, label
-    assert np.max(np.abs(one - other)) <= ROUNDING * extent + 16 * np.spacing(np.max(np.abs(other))), label
+def axis_tolerance(shape):
+    """The core's default tolerance for a polygon without holes: its typical width (area over half its
+    perimeter, the mean length of its two chains) / 200, CRS units."""
+    return max(2.0 * part.area / part.length / 200.0 for part in shapely.get_parts(shape))
+
+
+def assert_close(line, expected, tolerance, label):
+    """A line computed in a batch against the core alone: the shared frame's rounding may tip the final
+    simplification between equally good vertices, so the lines agree within the axis ``tolerance`` and their
+    ends within ``ROUNDING`` of the extent."""
+    coordinates = shapely.get_coordinates(expected)
+    extent = np.max(np.ptp(coordinates, axis=0))
+    rounding = ROUNDING * extent + 16 * np.spacing(np.max(np.abs(coordinates)))
+    assert line.hausdorff_distance(expected) <= tolerance + rounding, label
+    for one, other in zip(shapely.get_parts(line), shapely.get_parts(expected), strict=True):
+        for index in (0, -1):
+            assert np.hypot(*np.subtract(one.coords[index], other.coords[index])) <= rounding, label
 
 
 def skipped_ids(feedback):
@@ -114,7 +127,7 @@ def test_polygons_over_several_batches_equal_the_core_per_feature(small_batches)
     for n in good:
         outcomes = multipolygon_centerlines(shapes[n])
         lines = [outcome.result.line for outcome in outcomes if outcome.error is None]
-        assert_close(as_shapely(written[n].geometry()), shapely.MultiLineString(lines), 300.0, n)
+        assert_close(as_shapely(written[n].geometry()), shapely.MultiLineString(lines), axis_tolerance(shapes[n]), n)
     assert feedback.steps == sorted(feedback.steps) and feedback.steps[-1] == 100.0
 
 
@@ -129,10 +142,10 @@ def test_geographic_features_in_one_batch_are_written_in_their_own_frame(small_b
     for n, shape in enumerate(shapes):
         projection = LocalProjection.around(shape, "EPSG:4326")
         (outcome,) = multipolygon_centerlines(projection.to_local(shape))
-        expected = projection.to_geographic(outcome.result.line)
-        line = as_shapely(written[n].geometry())
-        assert line.hausdorff_distance(expected) <= 1e-6 * 0.02, n
-        assert written[n]["length"] == pytest.approx(outcome.result.line.length, rel=1e-9)
+        # Compared in metres, in the feature's own projection: a line written through another feature's
+        # projection would land kilometres away.
+        line = projection.to_local(as_shapely(written[n].geometry()))
+        assert_close(line, outcome.result.line, axis_tolerance(projection.to_local(shape)), n)
 
 
 def test_cancel_mid_layer_writes_whole_batches_only(small_batches):
@@ -167,4 +180,7 @@ def test_lines_over_several_batches_equal_the_core_per_pair(small_batches):
     assert list(written) == [0, 1, 2, 3, 5, 7]
     for n in written:
         expected = lines_centerline(banks_a[n], banks_b[n]).line
-        assert_close(as_shapely(written[n].geometry()), expected, 200.0, n)
+        # The default tolerance between two lines: the area between them over their mean length, / 200.
+        between = Polygon([*banks_a[n].coords, *banks_b[n].coords])  # the banks face each other
+        tolerance = between.area / (0.5 * (banks_a[n].length + banks_b[n].length)) / 200.0
+        assert_close(as_shapely(written[n].geometry()), expected, tolerance, n)
