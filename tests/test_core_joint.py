@@ -109,8 +109,7 @@ def test_features_at_the_same_place_do_not_see_each_other():
 def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budget():
     class Request:
         def __init__(self, extent, segments):
-            self.extent = extent
-            self.boundary = type("B", (), {"segment_count": segments})()
+            self.extent, self.segment_count = extent, segments
 
     extents = [1.0, 3.9, 4.1, 1000.0, 2.0, 30.0, 100.0, 1e-3]
     requests = [Request(extent, 10) for extent in extents] + [Request(2.0, JOINT_SEGMENTS - 15)] * 3
@@ -119,4 +118,4 @@ def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budg
     for group in groups:
         sizes = [requests[i].extent for i in group]
         assert max(sizes) <= JOINT_EXTENT_RATIO * min(sizes)
-        assert sum(requests[i].boundary.segment_count for i in group) <= JOINT_SEGMENTS or len(group) == 1
+        assert sum(requests[i].segment_count for i in group) <= JOINT_SEGMENTS or len(group) == 1

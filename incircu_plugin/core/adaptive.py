@@ -1,6 +1,6 @@
 """Error-bounded adaptive tracing of the medial axis between two chains (the engine's default).
 
-Along each chain the point where a maximal disk touches it moves over *spans*: the edges (the disk slides
+Along a chain the point where a maximal disk touches it moves over *spans*: the edges (the disk slides
 along the edge, centre on the edge's normal) and the reflex vertices (the disk pivots about the vertex, its
 centre on a fan of directions between the two edges' normals). On a span the disk's first contact with
 the rest of the boundary is one *site* (a segment's interior or a vertex) between *events*, and between two
@@ -17,15 +17,37 @@ point of a parabola computed in closed form.
 
 A convex vertex needs no sample: the edges next to it meet the corner's own edge line at ``t = 0``, and the
 event where that line and the other chain are equally far is the junction of the corner's branch with the
-axis. Both chains are traced, so every vertex of the boundary starts samples and no site of either chain is
-missed between samples of the other.
+axis.
+
+Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
+a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
+that touch the same site: the disks between them lie in the region enclosed by the span, that site and the
+two (empty) end disks, which the boundary cannot enter without crossing one of them. A probe whose first
+contact is the vertex where its interval's two segments meet touches that vertex, not the segments: it is
+no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
+there touches the other chain too, whatever it touches first: it is a point of the axis.
+
+Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
+:class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
 
 from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import CLEAR, SKIPPED, TIED, AxisPoints, Boundary, Samples, left_normal, ranges, solve, solve_in_chunks
+from .contacts import (
+    CHUNK,
+    CLEAR,
+    SKIPPED,
+    TIED,
+    AxisPoints,
+    Boundary,
+    Samples,
+    left_normal,
+    ranges,
+    solve,
+    solve_in_chunks,
+)
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -125,62 +147,52 @@ class _Intervals:
         return _Intervals(*(np.concatenate(values) for values in zip(*(vars(part).values() for part in parts))))
 
 
-def _chain_geometry(chain, side):
-    """Unit edge directions, inward normals, and the kind of each interior vertex (+1 convex, -1 reflex, 0)."""
-    step = np.diff(chain, axis=0)
-    unit = step / np.hypot(*step.T)[:, None]
-    normal = side * left_normal(unit)
-    turn = np.arctan2(
-        unit[:-1, 0] * unit[1:, 1] - unit[:-1, 1] * unit[1:, 0], np.einsum("ij,ij->i", unit[:-1], unit[1:])
+@dataclass(frozen=True)
+class _Geometry:
+    """Inward normals of every segment, and the turn and kind of every junction of two segments of a chain.
+
+    Junction ``j`` joins segments ``joint[j]`` and ``joint[j] + 1``; its kind is +1 (convex), -1 (reflex) or 0
+    (straight). ``vertex_kind`` is the kind of every vertex, chain after chain (0 at the chains' ends).
+    """
+
+    normal: np.ndarray
+    joint: np.ndarray
+    turn: np.ndarray
+    kind: np.ndarray
+    vertex_kind: np.ndarray
+
+
+def _geometry(boundary, sides):
+    """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
+    side = np.asarray(sides, dtype=float)[boundary.chain_id]
+    unit = boundary.unit
+    normal = side[:, None] * left_normal(unit)
+    joint = np.flatnonzero(~boundary.last_of_chain)
+    before, after = unit[joint], unit[joint + 1]
+    turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
+    signed = side[joint] * turn
+    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0))
+    vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
+    vertex_kind[joint + boundary.chain_id[joint] + 1] = kind
+    return _Geometry(normal, joint, turn, kind, vertex_kind)
+
+
+def _build_spans(boundary, geometry):
+    """The edge spans of all chains, then the fan spans of their reflex vertices."""
+    count = boundary.segment_count
+    reflex = geometry.joint[geometry.kind < 0]
+    turn = geometry.turn[geometry.kind < 0]
+    first_normal = geometry.normal[reflex]
+    return _Spans(
+        kind=np.concatenate([np.full(count, EDGE), np.full(len(reflex), FAN)]),
+        chain=np.concatenate([boundary.chain_id, boundary.chain_id[reflex]]),
+        segment=np.concatenate([np.arange(count), reflex]),
+        length=np.concatenate([boundary.segment_end_position - boundary.segment_position, np.abs(turn)]),
+        point=np.concatenate([boundary.start, boundary.end[reflex]]),
+        unit=np.concatenate([boundary.unit, first_normal]),
+        normal=np.concatenate([geometry.normal, np.sign(turn)[:, None] * left_normal(first_normal)]),
+        position=np.concatenate([boundary.segment_position, boundary.segment_end_position[reflex]]),
     )
-    kind = np.where(side * turn > STRAIGHT_TURN, 1, np.where(side * turn < -STRAIGHT_TURN, -1, 0))
-    return unit, normal, turn, kind
-
-
-def _build_spans(chains, sides, boundary):
-    """The edge spans of both chains, then the fan spans of their reflex vertices."""
-    edges, fans = [], []
-    for chain_id, (chain, side) in enumerate(zip(chains, sides)):
-        unit, normal, turn, kind = _chain_geometry(chain, side)
-        offset = boundary.offset[chain_id]
-        count = len(chain) - 1
-        positions = boundary.position[chain_id]
-        edges.append(
-            (
-                np.full(count, EDGE),
-                np.full(count, chain_id),
-                offset + np.arange(count),
-                np.diff(positions),
-                chain[:-1],
-                unit,
-                normal,
-                positions[:-1],
-            )
-        )
-        reflex = np.flatnonzero(kind < 0) + 1
-        first_normal = normal[reflex - 1]
-        fans.append(
-            (
-                np.full(len(reflex), FAN),
-                np.full(len(reflex), chain_id),
-                offset + reflex - 1,
-                np.abs(turn[reflex - 1]),
-                chain[reflex],
-                first_normal,
-                np.sign(turn[reflex - 1])[:, None] * left_normal(first_normal),
-                positions[reflex],
-            )
-        )
-    return _Spans(*(np.concatenate(values) for values in zip(*(edges + fans))))
-
-
-def _vertex_kinds(chains, sides):
-    """Kind of every vertex of both chains (+1 convex, -1 reflex, 0 straight or chain end), chain after chain."""
-    kinds = []
-    for chain, side in zip(chains, sides):
-        kind = _chain_geometry(chain, side)[3]
-        kinds.append(np.concatenate([[0], kind, [0]]))
-    return np.concatenate(kinds)
 
 
 def _straight_runs(kinds, boundary):
@@ -376,12 +388,16 @@ class _Tracer:
     ``tolerance``, ``width``, ``max_t`` and ``min_t`` are arrays with one value per chain.
     """
 
-    def __init__(self, chains, sides, boundary, closed, tolerance, width, max_t, min_t):
-        self.spans = _build_spans(chains, sides, boundary)
-        self.sites = _Sites(boundary, _vertex_kinds(chains, sides))
+    def __init__(self, sides, boundary, closed, tolerance, width, max_t, min_t):
+        geometry = _geometry(boundary, sides)
+        self.spans = _build_spans(boundary, geometry)
+        self.sites = _Sites(boundary, geometry.vertex_kind)
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
+        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
+        #: chains has a foot on each, so one chain's spans meet all of it).
+        self.traced = np.arange(len(closed)) % 2 == 0
         self.count = 0
         self.store = {}
 
@@ -445,7 +461,7 @@ class _Tracer:
             t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
             event_probes = probes.subset(slice(0, count))
-            event, exact = self._is_event(events, event_probes, t[:count], found)
+            event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
             event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
@@ -463,12 +479,15 @@ class _Tracer:
 
     def _solve_probes(self, probes, trial):
         """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
-        spatial-index queries); returns ``t``, status and canonical site in the probes' order."""
+        spatial-index queries), ``CHUNK`` at a time (bounds the candidate pairs held at once); returns ``t``,
+        status and canonical site in the probes' order."""
         order = np.lexsort((probes.position, probes.chain))
         t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
-        t[order], status[order], _, _, site[order] = solve(
-            probes, order, self.boundary, trial[order], self.max_t, self.min_t
-        )
+        for begin in range(0, len(order), CHUNK):
+            chunk = order[begin : begin + CHUNK]
+            t[chunk], status[chunk], _, _, site[chunk] = solve(
+                probes, chunk, self.boundary, trial[chunk], self.max_t, self.min_t
+            )
         return t, status, self.sites.canonical(site)
 
     def _initial(self, report):
@@ -476,15 +495,16 @@ class _Tracer:
         corners (both its ends are given the corners' own edges: its axis point would take a round to find);
         returns the intervals of every span between them."""
         spans, sites, b = self.spans, self.sites, self.boundary
-        samples, synthetic_site, synthetic_status = _initial_samples(spans, sites, self.closed, b)
-        solved = np.flatnonzero(synthetic_site < 0)
-        t = np.zeros(len(synthetic_site))
+        samples, synthetic_site, synthetic_status, split_vertex = _initial_samples(spans, sites, self.closed, b)
+        traced_edge = self.traced[b.chain_id]
+        solved = np.flatnonzero((synthetic_site < 0) & np.repeat(traced_edge, 2))
+        t = np.where(np.repeat(traced_edge, 2), 0.0, np.inf)
         status, site = synthetic_status.copy(), synthetic_site.copy()
         t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
             samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
         )
         edge = np.arange(b.segment_count)
-        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0)
+        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0) & traced_edge
         middle_edge = edge[between_corners]
         middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
         middle_t, middle_status, _, _, middle_site = _solve_all(
@@ -501,11 +521,15 @@ class _Tracer:
         status = np.concatenate([status, middle_status])
         site = sites.canonical(np.concatenate([site, middle_site]))
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
-        self.add(samples, t, emit, site)
+        # A disk tangent at a straight split point touches the other chain there: whatever it touches first
+        # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
+        split_vertex = np.concatenate([split_vertex, np.full(len(middle_edge), -1)])
+        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[samples.chain]) & ~emit
+        self.add(samples, t, emit | at_split, np.where(at_split, split_vertex, site))
         middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
-        reflex = np.flatnonzero(spans.kind == FAN)
+        reflex = np.flatnonzero((spans.kind == FAN) & self.traced[spans.chain])
         incoming = spans.segment[reflex]
-        whole = edge[~between_corners]
+        whole = edge[~between_corners & traced_edge]
         span = np.concatenate([whole, middle_edge, middle_edge, reflex])
         u0 = np.concatenate(
             [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
@@ -547,7 +571,8 @@ class _Tracer:
         curved &= sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
-        edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & (sites.kinds[vertex] == 0)
+        untraced_fan = ~self.traced[b.vertex_chain[vertex]]
+        edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & ((sites.kinds[vertex] == 0) | untraced_fan)
         return curved & (fan | edge)
 
     def _event_candidates(self, intervals):
@@ -581,9 +606,12 @@ class _Tracer:
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
 
-    def _is_event(self, intervals, probes, t, found):
+    def _is_event(self, intervals, probes, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
         loosely, to ``LOOSE_EVENT_TOLERANCE`` relative to its radius, and exactly (two masks).
+
+        A probe first touching another site (``site``) at the one point where both sites' feet coincide (the
+        vertex joining two segments) touches that vertex, not the two segments: it is no event between them.
 
         Exactly means to ``EVENT_TOLERANCE`` relative to the radius times the parting of the two feet as seen
         from the centre (the distance between the unit vectors towards them): a gap ``g`` in the radius puts
@@ -599,6 +627,8 @@ class _Tracer:
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
             min_t = self.of(self.min_t, intervals)
+            own_site = (site == intervals.site0) | (site == intervals.site1)
+            found = found & (own_site | (np.hypot(*(foot0 - foot1).T) > EVENT_TOLERANCE * t + min_t))
             return tuple(found & (gap0 <= s + min_t) & (gap1 <= s + min_t) for s in scale)
 
     def _at_split_point(self, site):
@@ -671,7 +701,8 @@ def _solve_all(samples, index, *arguments):
 def _initial_samples(spans, sites, closed, boundary):
     """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
 
-    ``closed``: per chain, whether its pair of chains shares both end points.
+    ``closed``: per chain, whether its pair of chains shares both end points. Also returns, per sample, the
+    site of the other chain's vertex when the sample lies at a straight split point (else -1).
 
     A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
     ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
@@ -691,13 +722,19 @@ def _initial_samples(spans, sites, closed, boundary):
     # Convex at a split point: the other chain's end edge leaves it into the region.
     first_edge = np.asarray(boundary.offset)
     last_edge = np.append(first_edge[1:], edge_count) - 1
+    split_vertex = np.full(2 * edge_count, -1)
     chain = np.flatnonzero(closed)
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
-        convex = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own]) > STRAIGHT_TURN
+        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own])
+        convex = turn > STRAIGHT_TURN
         site[2 * own[convex] + which] = other[convex]
         status[2 * own[convex] + which] = CLEAR
-    return samples, site, status
+        # The other chain's vertex at a straight split point (the other chain's end vertex of that side).
+        straight = np.abs(turn) <= STRAIGHT_TURN
+        vertex = other + (chain ^ 1) + which
+        split_vertex[2 * own[straight] + which] = edge_count + vertex[straight]
+    return samples, site, status, split_vertex
 
 
 def _split_at(intervals, u, probe_index, probe_site, event):
@@ -760,22 +797,21 @@ def _split_vertices(boundary, closed):
     return mask
 
 
-def adaptive_axis_points(chains, sides, boundary, closed, tolerance, width, max_t, min_t, report):
+def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t, report):
     """Points of the medial axis between the chains, every chord within ``tolerance`` of it.
 
     ``sides`` gives, per chain, +1 when the region lies left of it and -1 when right; ``closed`` is true
     when the chains share both end points; ``tolerance`` (CRS units) bounds the distance between a parabola
-    of the axis and its chords. ``chains``, ``boundary``, ``width``, ``max_t``, ``min_t`` and ``report`` are
-    as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
+    of the axis and its chords. ``boundary`` (the chains' :class:`.contacts.Boundary`), ``width``, ``max_t``,
+    ``min_t`` and ``report`` are as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     per_chain = [np.full(2, value) for value in (closed, tolerance, width, max_t, min_t)]
-    return _Tracer(chains, sides, boundary, *per_chain).trace(report)[0]
+    return _Tracer(sides, boundary, *per_chain).trace(report)[0]
 
 
 def trace_one(request, report):
     """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``."""
     return adaptive_axis_points(
-        request.chains,
         request.sides,
         request.boundary,
         request.closed,
@@ -820,7 +856,7 @@ def trace_together(requests, report):
 def _joint_groups(requests):
     """Indices of the requests in groups traced together: similar extents, at most ``JOINT_SEGMENTS``."""
     extents = np.array([request.extent for request in requests])
-    sizes = np.array([request.boundary.segment_count for request in requests])
+    sizes = np.array([request.segment_count for request in requests])
     groups, current, smallest, segments = [], [], 0.0, 0
     for index in np.argsort(extents, kind="stable"):
         if current and (extents[index] > JOINT_EXTENT_RATIO * smallest or segments + sizes[index] > JOINT_SEGMENTS):
@@ -845,7 +881,7 @@ def _trace_group(requests, report):
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
-    tracer = _Tracer(chains, sides, Boundary(chains), *per_chain)
+    tracer = _Tracer(sides, Boundary(chains), *per_chain)
     points, chain = tracer.trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")

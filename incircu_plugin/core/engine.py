@@ -359,7 +359,7 @@ def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=
             )
         sides = (frame.side, -frame.side)
         points = yield TraceRequest(
-            frame.chains, sides, frame.boundary, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
+            frame.chains, sides, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
         )
     centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance)
     return CenterlineResult(

@@ -11,18 +11,20 @@ rounds' overhead once per batch instead of once per feature.
 """
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Callable
 
 import numpy as np
 
 from .adaptive import trace_one, trace_together
+from .contacts import Boundary
 
 
 class Cancelled(Exception):
     """Raised when the progress callback asks the engine to stop."""
 
 
-@dataclass(frozen=True)
+@dataclass
 class TraceRequest:
     """What one pair of chains asks of the adaptive tracer (see :func:`.adaptive.adaptive_axis_points`).
 
@@ -32,8 +34,6 @@ class TraceRequest:
         The chains in their local frame, CRS units.
     sides : tuple of two float
         +1 when the region lies left of the chain, -1 when right.
-    boundary : Boundary
-        The chains' segments (:class:`.contacts.Boundary`).
     closed : bool
         Whether the chains share both end points.
     tolerance : float
@@ -46,13 +46,22 @@ class TraceRequest:
 
     chains: list
     sides: tuple
-    boundary: object
     closed: bool
     tolerance: float
     width: float
     max_t: float
     min_t: float
     report: Callable[[float], None]
+
+    @cached_property
+    def boundary(self):
+        """The chains' segments (:class:`.contacts.Boundary`), built when the request is traced alone."""
+        return Boundary(self.chains)
+
+    @property
+    def segment_count(self):
+        """Number of segments of both chains."""
+        return sum(len(chain) - 1 for chain in self.chains)
 
     @property
     def extent(self):
