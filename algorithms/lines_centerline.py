@@ -113,33 +113,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                         ).format(name, len(merged.asGeometryCollection()))
                     )
 
-        run.progress_step = 100.0 / max(len(groups_a), 1)
-        for current, (key, (first, geometries)) in enumerate(groups_a.items()):
-            if feedback.isCanceled():
-                break
-            run.progress_base = current * run.progress_step
-            feedback.setProgress(run.progress_base)
-            if key not in groups_b:
-                run.skip(first.id(), self.tr("no line in LINES_B has {} = {!r}").format(field_b, key))
-                continue
-            line_a = self.merged_line(geometries)
-            line_b = self.merged_line(groups_b[key][1])
-            if line_a.isMultipart() and len(line_a.asGeometryCollection()) > 1:
-                run.skip(first.id(), self.tr("the lines of LINES_A with this pairing value do not join into one"))
-                continue
-            if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
-                run.skip(first.id(), self.tr("the lines of LINES_B with this pairing value do not join into one"))
-                continue
-            run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
-            result = run.compute(
-                first.id(),
-                None,
-                run.core.lines_centerline,
-                run.frame.to_core(line_a),
-                run.frame.to_core(line_b),
-                **sampling,
-            )
-            run.write(first, [] if result is None else [(0, result)])
+        tasks = (
+            self._task(run, key, first, geometries, groups_b, field_b, sampling)
+            for key, (first, geometries) in groups_a.items()
+        )
+        run.run_batches(tasks, len(groups_a))
         for key, (first, _) in groups_b.items():
             if key not in groups_a:
                 run.warn(
@@ -148,6 +126,23 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                     )
                 )
         return run.finish()
+
+    def _task(self, run, key, first, geometries, groups_b, field_b, sampling):
+        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines."""
+        if key not in groups_b:
+            return run.skip_task(first, self.tr("no line in LINES_B has {} = {!r}").format(field_b, key))
+        line_a = self.merged_line(geometries)
+        line_b = self.merged_line(groups_b[key][1])
+        if line_a.isMultipart() and len(line_a.asGeometryCollection()) > 1:
+            return run.skip_task(first, self.tr("the lines of LINES_A with this pairing value do not join into one"))
+        if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
+            return run.skip_task(first, self.tr("the lines of LINES_B with this pairing value do not join into one"))
+        run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
+        steps = run.core.lines_centerline_steps(
+            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, **sampling
+        )
+        vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
+        return run.task(first, steps, lambda result: [(0, result)], vertices)
 
     @staticmethod
     def group_features(source, field_name, request):

@@ -1,5 +1,7 @@
 """Processing algorithm ``incircu:polygoncenterline``: one unbranched centerline per polygon (part)."""
 
+from functools import partial
+
 from qgis.core import (
     QgsFeatureRequest,
     QgsProcessingParameterBoolean,
@@ -11,6 +13,7 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
+from .running import no_geometry
 from .split_points import SplitPoints
 
 
@@ -145,38 +148,42 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
                     guides.append(guide_feature.geometry())
 
-        for feature in run.features(source):
+        options = dict(sampling, islands=islands, end_rule=end_rule, snap_tolerance=snap_tolerance or None)
+
+        def task(feature):
+            if not run.has_geometry(feature):
+                return run.skip_task(feature, no_geometry())
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
-            shape = run.frame.to_core(geometry)
-            guide = _guide_near(run.frame, geometry, guides, guide_index)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
-            outcomes = run.compute(
-                feature.id(),
-                None,
-                run.core.multipolygon_centerlines,
-                shape,
+            steps = run.core.multipolygon_centerline_steps(
+                run.frame.to_core(geometry),
                 candidates or None,
-                snap_tolerance=snap_tolerance or None,
-                **sampling,
-                islands=islands,
-                end_rule=end_rule,
-                guide=guide,
+                guide=_guide_near(run.frame, geometry, guides, guide_index),
+                progress=run.keep_going,
+                **options,
             )
-            several = len(outcomes or ()) > 1
-            parts = []
-            for outcome in outcomes or ():
-                part_index = outcome.part_index if several else None
-                if outcome.error is not None:
-                    run.skip(feature.id(), str(outcome.error), part_index)
-                    continue
-                for note in getattr(outcome.result, "notes", ()):
-                    run.warn(self.tr("Feature {}: {}").format(run.where(feature.id(), part_index), note))
-                if outcome.result.ends_found and split_source is not None:
-                    run.note(feature.id(), self.tr("no split points given, ends found automatically"), part_index)
-                parts.append((outcome.part_index, outcome.result))
-            run.write(feature, parts)
+            parts = partial(self._parts, run, feature.id(), split_source is not None)
+            return run.task(feature, steps, parts, geometry.constGet().nCoordinates())
+
+        run.run_batches(map(task, run.source_features(source)), source.featureCount())
         return run.finish()
+
+    def _parts(self, run, feature_id, split_points_given, outcomes):
+        """The successful parts of a polygon to write; warn about the others and about automatic ends."""
+        several = len(outcomes) > 1
+        parts = []
+        for outcome in outcomes:
+            part_index = outcome.part_index if several else None
+            if outcome.error is not None:
+                run.skip(feature_id, str(outcome.error), part_index)
+                continue
+            for note in getattr(outcome.result, "notes", ()):
+                run.warn(self.tr("Feature {}: {}").format(run.where(feature_id, part_index), note))
+            if outcome.result.ends_found and split_points_given:
+                run.note(feature_id, self.tr("no split points given, ends found automatically"), part_index)
+            parts.append((outcome.part_index, outcome.result))
+        return parts
 
 
 def _guide_near(frame, geometry, guides, index):

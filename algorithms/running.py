@@ -1,4 +1,12 @@
-"""Per-feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts."""
+"""Feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts.
+
+The centerline algorithms compute their features in batches traced together (:meth:`FeatureRun.run_batches`,
+the core's ``centerlines_together``); the network algorithm computes one feature at a time
+(:meth:`FeatureRun.features` and :meth:`FeatureRun.compute`).
+"""
+
+from dataclasses import dataclass
+from typing import Any, Callable, Optional
 
 from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsWkbTypes
 from qgis.PyQt.QtCore import QCoreApplication
@@ -11,6 +19,40 @@ GEOMETRY_TYPE_NAMES = {
     GeometryType.Line: "line",
     GeometryType.Polygon: "polygon",
 }
+
+
+@dataclass
+class FeatureTask:
+    """One input feature's work in :meth:`FeatureRun.run_batches`.
+
+    Attributes
+    ----------
+    feature : QgsFeature
+        The feature written with the result (its attributes and id).
+    steps : generator or None
+        The core's step generator (``*_centerline_steps``); None when the feature is skipped.
+    parts : callable or None
+        ``parts(result)`` -> list of ``(part_index, CenterlineResult)`` to write, from what the generator
+        returned; it may warn about the feature (through the run, in input order).
+    vertices : int
+        The feature's boundary vertices, for the batch bounds.
+    projection : LocalProjection or None
+        The working frame's projection the feature is computed in (None for a projected layer).
+    skip_reason : str or None
+        Why the feature is skipped without computing.
+    """
+
+    feature: Any
+    steps: Any = None
+    parts: Optional[Callable[[Any], list]] = None
+    vertices: int = 0
+    projection: Any = None
+    skip_reason: Optional[str] = None
+
+
+def no_geometry():
+    """Why a feature without geometry is skipped (translated)."""
+    return QCoreApplication.translate("IncirCuAlgorithm", "the feature has no geometry")
 
 
 class FeatureRun:
@@ -96,18 +138,31 @@ class FeatureRun:
         """
         total = source.featureCount()
         self.progress_step = 100.0 / total if total > 0 else 0.0
+        for current, feature in enumerate(self.source_features(source, request)):
+            self.progress_base = current * self.progress_step
+            self.feedback.setProgress(self.progress_base)
+            if not self.has_geometry(feature):
+                self.skip(feature.id(), no_geometry())
+                continue
+            yield feature
+
+    def source_features(self, source, request=None):
+        """Yield every feature of ``source`` (also those without geometry), stopping when the user cancels.
+
+        Processing's invalid-geometry filter is bypassed (see :meth:`features`).
+        """
         features = source.getFeatures(
             request or QgsFeatureRequest(), ProcessingFeatureSourceFlag.SkipGeometryValidityChecks
         )
-        for current, feature in enumerate(features):
+        for feature in features:
             if self.feedback.isCanceled():
                 break
-            self.progress_base = current * self.progress_step
-            self.feedback.setProgress(self.progress_base)
-            if not feature.hasGeometry() or feature.geometry().isEmpty():
-                self.skip(feature.id(), QCoreApplication.translate("IncirCuAlgorithm", "the feature has no geometry"))
-                continue
             yield feature
+
+    @staticmethod
+    def has_geometry(feature):
+        """True when ``feature`` has a non-empty geometry."""
+        return feature.hasGeometry() and not feature.geometry().isEmpty()
 
     def report_progress(self, fraction):
         """Progress callback for the core: ``fraction`` of the current feature done; False cancels."""
@@ -154,17 +209,108 @@ class FeatureRun:
             return function(*args, progress=self.report_progress, **kwargs)
         except self.core.Cancelled:
             return None
-        except self.core.IncirCuError as error:
-            self.skip(feature_id, str(error), part_index)
         except Exception as error:  # noqa: BLE001 - one bad feature must not abort a run of thousands
-            self.skip(
-                feature_id,
-                QCoreApplication.translate(
-                    "IncirCuAlgorithm", "unexpected {}: {} (please report this with the feature)"
-                ).format(type(error).__name__, error),
-                part_index,
-            )
+            self.skip_failed(feature_id, error, part_index)
         return None
+
+    def skip_failed(self, feature_id, error, part_index=None):
+        """Skip a feature (part) whose computation raised ``error``: a core error says why; another exception
+        is unexpected and asks for a report."""
+        if isinstance(error, self.core.IncirCuError):
+            self.skip(feature_id, str(error), part_index)
+            return
+        self.skip(
+            feature_id,
+            QCoreApplication.translate(
+                "IncirCuAlgorithm", "unexpected {}: {} (please report this with the feature)"
+            ).format(type(error).__name__, error),
+            part_index,
+        )
+
+    def task(self, feature, steps, parts, vertices):
+        """A :class:`FeatureTask` computed in the working frame as it is now (centred on the feature).
+
+        Parameters
+        ----------
+        feature : QgsFeature
+            Written with the result.
+        steps : generator
+            The core's step generator; give it ``progress=run.keep_going`` so a cancel stops it.
+        parts : callable
+            See :class:`FeatureTask`.
+        vertices : int
+            The feature's boundary vertices.
+        """
+        return FeatureTask(feature, steps, parts, vertices, self.frame.projection)
+
+    @staticmethod
+    def skip_task(feature, reason):
+        """A :class:`FeatureTask` skipping ``feature`` for ``reason`` (warned in input order)."""
+        return FeatureTask(feature, skip_reason=reason)
+
+    def keep_going(self, fraction):
+        """Progress callback of one feature's steps in a batch: only says whether to go on (False cancels)."""
+        return not self.feedback.isCanceled()
+
+    def run_batches(self, tasks, total):
+        """Compute ``tasks`` in batches traced together; write each feature's outcome in input order.
+
+        A feature whose computation fails is skipped with a warning (see :meth:`skip_failed`); the others go
+        on. Progress runs over the whole layer; a cancel stops between batches and inside one (the batch being
+        computed is then not written).
+
+        Parameters
+        ----------
+        tasks : iterable of FeatureTask
+            In input order, read lazily (one batch at a time, see the core's ``batches``).
+        total : int
+            Number of tasks, for the progress.
+        """
+        from ..incircu_plugin.core.api import batches  # needs Shapely, checked by require_core
+
+        self.progress_step = 100.0 / total if total > 0 else 0.0
+        done = 0
+        for batch in batches(tasks, lambda task: task.vertices):
+            if self.feedback.isCanceled():
+                return
+            outcomes = self._computed(batch, done)
+            if outcomes is None:
+                return
+            for task, outcome in zip(batch, outcomes):
+                self._finish(task, outcome)
+            done += len(batch)
+
+    def _computed(self, batch, done):
+        """The outcome of every task of ``batch`` (None for a skipped one); None when the user cancelled."""
+        self.progress_base = done * self.progress_step
+        span = len(batch) * self.progress_step
+        try:
+            computed = iter(
+                self.core.centerlines_together(
+                    [task.steps for task in batch if task.steps is not None],
+                    lambda fraction: self._batch_progress(fraction, span),
+                )
+            )
+        except self.core.Cancelled:
+            return None
+        return [None if task.steps is None else next(computed) for task in batch]
+
+    def _batch_progress(self, fraction, span):
+        """Progress callback of a batch starting at ``progress_base`` and ``span`` percent long."""
+        self.feedback.setProgress(min(self.progress_base + fraction * span, 100.0))
+        return not self.feedback.isCanceled()
+
+    def _finish(self, task, outcome):
+        """Skip or write one task's feature, given what its steps returned or raised."""
+        feature_id = task.feature.id()
+        if task.skip_reason is not None:
+            self.skip(feature_id, task.skip_reason)
+        elif isinstance(outcome, Exception):
+            self.skip_failed(feature_id, outcome)
+        else:
+            # The results are in the frame the feature was computed in; the frame has moved on since.
+            self.frame.projection = task.projection
+            self.write(task.feature, task.parts(outcome))
 
     def write(self, feature, parts):
         """Write the results of one input feature."""

@@ -17,9 +17,10 @@ from .chains import (
     validate_polygon,
 )
 from .ends import END_RULES, find_ends
-from .engine import CenterlineResult, centerline_from_chains
+from .engine import CenterlineResult, centerline_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
+from .steps import run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Largest distance of a returned line's vertex outside its polygon, relative to the polygon's extent.
@@ -31,6 +32,12 @@ ISLAND_MODES = ("main_channel", "ignore")
 
 #: Share of a polygon's progress taken by finding its ends automatically.
 ENDS_PROGRESS_SHARE = 0.2
+
+#: Most features in one batch of :func:`batches` (traced together by :func:`centerlines_together`).
+BATCH_FEATURES = 256
+
+#: Most boundary vertices in one batch of :func:`batches`: bounds the memory a batch holds at once.
+BATCH_VERTICES = 100_000
 
 
 def check_island_mode(islands):
@@ -101,6 +108,39 @@ def polygon_centerline(
     >>> result.line.coords[0], result.line.coords[-1], float(result.widths.max())
     ((0.0, 5.0), (100.0, 5.0), 10.0)
     """
+    return run_alone(
+        polygon_centerline_steps(
+            polygon,
+            split_points,
+            spacing=spacing,
+            samples_per_chain=samples_per_chain,
+            tolerance=tolerance,
+            snap_tolerance=snap_tolerance,
+            islands=islands,
+            end_rule=end_rule,
+            guide=guide,
+            progress=progress,
+        )
+    )
+
+
+def polygon_centerline_steps(
+    polygon,
+    split_points=None,
+    *,
+    spacing=None,
+    samples_per_chain=None,
+    tolerance=None,
+    snap_tolerance=None,
+    islands="main_channel",
+    end_rule="main_stem",
+    guide=None,
+    progress=None,
+):
+    """:func:`polygon_centerline` as steps (see :mod:`.steps`): a generator yielding the adaptive tracing's
+    :class:`.steps.TraceRequest` and returning the :class:`PolygonCenterlineResult`; raises as
+    :func:`polygon_centerline` does. Run it with :func:`centerlines_together` or :func:`.steps.run_alone`.
+    """
     validate_polygon(polygon)
     check_island_mode(islands)
     if end_rule not in END_RULES:
@@ -118,7 +158,7 @@ def polygon_centerline(
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
-    result = centerline_from_chains(
+    result = yield from centerline_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
@@ -190,12 +230,22 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
     >>> result.line.coords[0], float(result.radii.max())
     ((0.0, 4.0), 4.0)
     """
-    c1, c2 = orient_bank_lines(line_a, line_b)
-    return _checked(
-        centerline_from_chains(
-            c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    return run_alone(
+        lines_centerline_steps(
+            line_a, line_b, spacing=spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
         )
     )
+
+
+def lines_centerline_steps(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
+    """:func:`lines_centerline` as steps (see :func:`polygon_centerline_steps`); returns the
+    :class:`CenterlineResult`.
+    """
+    c1, c2 = orient_bank_lines(line_a, line_b)
+    result = yield from centerline_steps(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+    )
+    return _checked(result)
 
 
 def _checked(result, region=None):
@@ -351,6 +401,16 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     >>> [round(o.result.length, 6) for o in outcomes]
     [50.0, 50.0]
     """
+    return run_alone(multipolygon_centerline_steps(geometry, split_points, snap_tolerance=snap_tolerance, **options))
+
+
+def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance=None, **options):
+    """:func:`multipolygon_centerlines` as steps (see :func:`polygon_centerline_steps`): the parts are traced
+    one after the other; returns the list of :class:`PartOutcome`.
+
+    A part's error is caught wherever it arises, also when a driver throws it into the generator at the part's
+    request (as :func:`.steps.run_together` does with a failed tracing).
+    """
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     progress = options.pop("progress", None)
     outcomes = []
@@ -363,7 +423,7 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
                     f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
                     "it needs 2 (or none, to find its ends automatically)."
                 )
-            result = polygon_centerline(
+            result = yield from polygon_centerline_steps(
                 part,
                 mine or None,
                 snap_tolerance=snap_tolerance,
@@ -389,3 +449,85 @@ def _detached(error):
         current.__traceback__ = None
         current = current.__cause__ or current.__context__
     return error
+
+
+def centerlines_together(step_generators, progress=None):
+    """Run many ``*_steps`` generators with one joint adaptive tracing: a layer of small features at once.
+
+    The results are those of the plain functions (:func:`polygon_centerline` and the others) up to
+    floating-point rounding; tracing small features together pays the tracer's per-round overhead once per
+    batch instead of once per feature. Give batches of bounded size (see :func:`batches`).
+
+    Parameters
+    ----------
+    step_generators : iterable of generator
+        From :func:`polygon_centerline_steps`, :func:`multipolygon_centerline_steps` or
+        :func:`lines_centerline_steps`, in any mix. Each generator's own ``progress`` is still called (it
+        may cancel); the batch's progress goes to ``progress``.
+    progress : callable, optional
+        Called with the fraction of the batch done (0 to 1); when it returns False, :class:`Cancelled` is raised.
+
+    Returns
+    -------
+    list
+        Per generator, in order: what the plain function would return, or the exception it would raise (an
+        ``Exception`` instance, without traceback).
+
+    Raises
+    ------
+    Cancelled
+        If a progress callback returned False.
+
+    Examples
+    --------
+    >>> from shapely.geometry import Polygon, box
+    >>> outcomes = centerlines_together(
+    ...     [
+    ...         polygon_centerline_steps(box(0, 0, 100, 10), [(0, 5), (100, 5)]),
+    ...         polygon_centerline_steps(Polygon([(0, 0), (2, 2), (2, 0), (0, 2)]), [(0, 1), (2, 1)]),
+    ...         lines_centerline_steps([(0, 0), (50, 0)], [(0, 8), (50, 8)]),
+    ...     ]
+    ... )
+    >>> outcomes[0].line.length, type(outcomes[1]).__name__, outcomes[2].line.coords[0]
+    (100.0, 'InvalidGeometryError', (0.0, 4.0))
+    """
+    return [
+        _detached(outcome) if isinstance(outcome, Exception) else outcome
+        for outcome in run_together(step_generators, progress)
+    ]
+
+
+def batches(items, vertex_count):
+    """Split ``items`` into consecutive lists of at most :data:`BATCH_FEATURES` items and
+    :data:`BATCH_VERTICES` vertices (a larger item alone), for :func:`centerlines_together`.
+
+    Parameters
+    ----------
+    items : iterable
+        Read lazily: a batch is yielded as soon as it is full.
+    vertex_count : callable
+        ``vertex_count(item)`` -> the item's number of boundary vertices.
+
+    Yields
+    ------
+    list
+        The next batch, in input order.
+
+    Examples
+    --------
+    >>> [len(batch) for batch in batches(range(600), lambda item: 1)]
+    [256, 256, 88]
+    """
+    batch, vertices = [], 0
+    for item in items:
+        count = vertex_count(item)
+        if batch and vertices + count > BATCH_VERTICES:
+            yield batch
+            batch, vertices = [], 0
+        batch.append(item)
+        vertices += count
+        if len(batch) >= BATCH_FEATURES or vertices >= BATCH_VERTICES:
+            yield batch
+            batch, vertices = [], 0
+    if batch:
+        yield batch

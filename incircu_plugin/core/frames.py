@@ -17,7 +17,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, MultiLineString, MultiPolygon
 
-from .api import multipolygon_centerlines
+from .api import batches, centerlines_together, multipolygon_centerline_steps
 from .ends import GUIDE_SEARCH_SHARE
 from .errors import IncirCuError
 from .geodesy import LocalProjection, degrees_covering
@@ -152,10 +152,15 @@ def _frame_centerlines(data, points, guides, snap_tolerance, options):
     )
     nearby_guides = _nearby(shapes, _guide_margins(shapes), guides)
     crs_name = crs.srs if geographic else None
-    rows = [
-        _row(shape, nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options)
-        for i, shape in enumerate(shapes)
-    ]
+    rows = []
+    for batch in batches(range(len(shapes)), lambda i: int(shapely.get_num_coordinates(shapes[i]))):
+        starts = [
+            _row_start(shapes[i], nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options) for i in batch
+        ]
+        traced = iter(centerlines_together([start[1] for start in starts if not isinstance(start, Exception)]))
+        for i, start in zip(batch, starts):
+            outcome = start if isinstance(start, Exception) else next(traced)
+            rows.append(_failed(outcome) if isinstance(outcome, Exception) else _row(shapes[i], start[0], outcome))
     columns = {
         name: pandas.Series([row[1][name] for row in rows], dtype=dtype, index=geometry.index)
         for name, dtype in RESULT_COLUMNS.items()
@@ -193,45 +198,53 @@ def _nearby(shapes, margins, candidates):
     return found
 
 
-def _row(shape, points, guides, crs_name, snap_tolerance, options):
-    """The centerline of one row: ``(geometry, attributes)``; any failure goes into ``attributes["error"]``."""
+def _row_start(shape, points, guides, crs_name, snap_tolerance, options):
+    """The work of one row: ``(projection or None, multipolygon_centerline_steps)``, or the exception raised."""
     try:
-        return _row_centerline(shape, points, guides, crs_name, snap_tolerance, options)
+        geographic = crs_name is not None and shape is not None and not shape.is_empty
+        projection = LocalProjection.around(shape, crs_name) if geographic else None
+        local = shape if projection is None else projection.to_local(shape)
+        candidates = [np.asarray(point.coords[0]) for point in points]
+        extra = {}
+        guide_lines = [part for guide in guides for part in shapely.get_parts(guide) if part.geom_type == "LineString"]
+        guide_lines = [line for line in guide_lines if not line.is_empty]
+        if guide_lines:
+            extra["guide"] = MultiLineString(guide_lines)
+        if projection is not None:
+            candidates = [projection.to_local(point) for point in candidates]
+            extra = {name: projection.to_local(value) for name, value in extra.items()}
+        steps = multipolygon_centerline_steps(
+            local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
+        )
+        return projection, steps
     except Exception as error:  # noqa: BLE001 - one bad row must not stop a frame of millions
-        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": _message(error)}
+        return error
 
 
-def _row_centerline(shape, points, guides, crs_name, snap_tolerance, options):
-    """:func:`_row` without the safety net: the parts that failed are named in ``error``, the others kept."""
-    geographic = crs_name is not None and shape is not None and not shape.is_empty
-    projection = LocalProjection.around(shape, crs_name) if geographic else None
-    local = shape if projection is None else projection.to_local(shape)
-    candidates = [np.asarray(point.coords[0]) for point in points]
-    extra = {}
-    guide_lines = [part for guide in guides for part in shapely.get_parts(guide) if part.geom_type == "LineString"]
-    guide_lines = [line for line in guide_lines if not line.is_empty]
-    if guide_lines:
-        extra["guide"] = MultiLineString(guide_lines)
-    if projection is not None:
-        candidates = [projection.to_local(point) for point in candidates]
-        extra = {name: projection.to_local(value) for name, value in extra.items()}
-    outcomes = multipolygon_centerlines(
-        local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
-    )
-    several = isinstance(shape, MultiPolygon)
-    error = "; ".join(
-        (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
-        for outcome in outcomes
-        if outcome.error is not None
-    )
-    results = [outcome.result for outcome in outcomes if outcome.error is None]
-    if not results:
-        return None, {**dict.fromkeys(RESULT_COLUMNS), "error": error}
-    statistics = width_statistics(results)
-    attributes = {name: statistics[name] for name in RESULT_COLUMNS if name in statistics}
-    attributes["error"] = error or None
-    lines = [result.line if projection is None else projection.to_geographic(result.line) for result in results]
-    return (MultiLineString(lines) if several else LineString(lines[0])), attributes
+def _row(shape, projection, outcomes):
+    """A row's ``(geometry, attributes)`` from its parts' outcomes; the parts that failed are named in ``error``."""
+    try:
+        several = isinstance(shape, MultiPolygon)
+        error = "; ".join(
+            (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
+            for outcome in outcomes
+            if outcome.error is not None
+        )
+        results = [outcome.result for outcome in outcomes if outcome.error is None]
+        if not results:
+            return None, {**dict.fromkeys(RESULT_COLUMNS), "error": error}
+        statistics = width_statistics(results)
+        attributes = {name: statistics[name] for name in RESULT_COLUMNS if name in statistics}
+        attributes["error"] = error or None
+        lines = [result.line if projection is None else projection.to_geographic(result.line) for result in results]
+        return (MultiLineString(lines) if several else LineString(lines[0])), attributes
+    except Exception as error:  # noqa: BLE001 - as in _row_start
+        return _failed(error)
+
+
+def _failed(error):
+    """The ``(geometry, attributes)`` of a row that failed with ``error``."""
+    return None, {**dict.fromkeys(RESULT_COLUMNS), "error": _message(error)}
 
 
 def _message(error):
