@@ -6,8 +6,10 @@ places). Tools:
 
 - in this process's fork, polygon after polygon (:func:`harness.run_layer`, killed past the time limit):
   IncirCu's core with split points, without them (automatic ends) and, when the core has the ``tolerance``
-  keyword, at a fine tolerance; pygeoops, label_centerlines, centerline, SFCGAL (as ``bench_compare.py``
-  runs them). Time = sum of the tool calls.
+  keyword, at a fine tolerance; and, when the core has ``centerlines_together``, the whole layer traced
+  together in one call (as the plugin runs a layer; each polygon is given an equal share of the time);
+  pygeoops, label_centerlines, centerline, SFCGAL (as ``bench_compare.py`` runs them). Time = sum of the
+  tool calls.
 - one ``qgis_process run`` on the whole layer in a GeoPackage, as a QGIS user would: IncirCu
   (``incircu:polygoncenterline`` with and without a split-point layer) and GRASS ``v.voronoi.skeleton``.
   Time = wall time of the call, QGIS start-up and GeoPackage writing included.
@@ -45,11 +47,13 @@ from peers import (
     QgisProcess,
     Tool,
     core_accepts,
+    core_provides,
     mean_width,
     peer_tools,
     run_incircu,
     run_incircu_automatic_ends,
     run_incircu_fine,
+    run_incircu_together,
 )
 from report import format_layer
 
@@ -60,11 +64,15 @@ OUTLINE_CRS = "EPSG:3857"
 
 
 def core_tools():
-    """IncirCu's core rows: with split points, automatic ends, and a fine tolerance when the core has one."""
+    """IncirCu's core rows: with split points (one by one, and the layer together when the core can), automatic
+    ends, and a fine tolerance when the core has one."""
     tools = [
         Tool("IncirCu (core)", run_incircu, True, "polygon_centerline(polygon, ends), defaults"),
         Tool("IncirCu (core, automatic ends)", run_incircu_automatic_ends, True, "polygon_centerline(polygon)"),
     ]
+    if core_provides("centerlines_together"):
+        note = "centerlines_together(polygon_centerline_steps(polygon, ends)), the layer in batches"
+        tools.insert(1, Tool("IncirCu (core, layer together)", run_incircu, True, note, run_all=run_incircu_together))
     if core_accepts("tolerance"):
         note = f"polygon_centerline(polygon, ends, tolerance={FINE_TOLERANCE:g} × width)"
         tools.append(Tool(f"IncirCu (core, tolerance {FINE_TOLERANCE:g} w)", run_incircu_fine, True, note))

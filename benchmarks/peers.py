@@ -85,6 +85,13 @@ def core_accepts(keyword):
     return keyword in inspect.signature(polygon_centerline).parameters
 
 
+def core_provides(name):
+    """Whether the checked-out core exports ``name`` (``centerlines_together`` after issue 9's batching)."""
+    import incircu_plugin.core
+
+    return hasattr(incircu_plugin.core, name)
+
+
 def incircu_options(case, tolerance=None):
     """Keyword arguments of the core for ``case``: its spacing, and ``tolerance`` (CRS units) when the core has
     that keyword (before issue 9's engine it has not, and the call runs at the default)."""
@@ -119,6 +126,24 @@ def run_incircu_automatic_ends(case):
     from incircu_plugin.core import polygon_centerline
 
     return polygon_centerline(case.polygon, **incircu_options(case)).line
+
+
+def run_incircu_together(cases):
+    """IncirCu through the geometry core, the whole layer traced together (``centerlines_together`` on
+    ``batches`` of ``polygon_centerline_steps``, as the plugin runs a layer): one line or exception per case."""
+    from incircu_plugin.core import centerlines_together, polygon_centerline_steps
+    from incircu_plugin.core.api import batches
+
+    results = []
+    for batch in batches(cases, lambda case: case.vertex_count):
+        steps = [
+            polygon_centerline_steps(case.polygon, [case.ends[0], case.ends[1]], **incircu_options(case))
+            for case in batch
+        ]
+        results.extend(
+            outcome if isinstance(outcome, Exception) else outcome.line for outcome in centerlines_together(steps)
+        )
+    return results
 
 
 def run_pygeoops(case):
@@ -256,6 +281,8 @@ class Tool:
     note: str = ""
     #: Runs another program (qgis_process): no memory cap on the child, which that program would inherit.
     external: bool = False
+    #: ``run_all(cases)`` -> one geometry (or exception) per case: the whole layer in one call, as a batch.
+    run_all: Optional[Callable] = None
 
 
 def peer_tools(grass_runner=None):

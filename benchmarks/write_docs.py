@@ -22,7 +22,7 @@ BENCH_DIR = Path(__file__).resolve().parent
 if str(BENCH_DIR) not in sys.path:
     sys.path.insert(0, str(BENCH_DIR))
 
-from report import _number, _seconds, format_layer, format_measurements, layer_reference
+from report import _number, _seconds, core_layer_row, format_layer, format_measurements, layer_reference
 
 REPO_ROOT = BENCH_DIR.parent
 RESULTS_DIR = BENCH_DIR / "results"
@@ -282,9 +282,9 @@ def issue9_verdicts(compare, layer_results, core):
 
     rivers = layer_results["layers"][0] if layer_results else None
     if rivers:
-        ours = _row(rivers, "IncirCu (core)")
+        ours = core_layer_row(rivers)
         pygeoops = _speedup(rivers, "pygeoops")
-        add(f"{rivers['name']}: IncirCu ≥ 5× pygeoops (polygons/s, core)",
+        add(f"{rivers['name']}: IncirCu ≥ 5× pygeoops (polygons/s, {ours['tool']})",
             f"{_number(pygeoops)}× ({_number(ours['polygons_per_second'])} vs "
             f"{_number(_row(rivers, 'pygeoops')['polygons_per_second'])} polygons/s)" if pygeoops else "–",
             None if pygeoops is None else pygeoops >= 5)
@@ -358,10 +358,12 @@ outline as a layer of one polygon. IncirCu `{layer_results['incircu_version']}`;
 {layer_results['wall_seconds'] / 60:.0f} min.
 
 - **polygons/s**: polygons attempted / time. Core and peers: the sum of the tool calls, polygon after polygon in
-  one forked process (stopped past its time limit). `qgis_process` rows: the wall time of one
-  `qgis_process run` on the whole GeoPackage layer, QGIS start-up ({_seconds(startup)} alone) and output
-  writing included. **IncirCu × faster** compares like with like: core rows with `IncirCu (core)`,
-  `qgis_process` rows with `IncirCu (qgis_process)`.
+  one forked process (stopped past its time limit); `IncirCu (core, layer together)`: one call on the whole
+  layer (`centerlines_together` on `batches`, how the plugin runs a layer). `qgis_process` rows: the wall
+  time of one `qgis_process run` on the whole GeoPackage layer, QGIS start-up ({_seconds(startup)} alone)
+  and output writing included. **IncirCu × faster** compares each tool used its fastest way on the layer:
+  core rows and peers with `IncirCu (core, layer together)` (else `IncirCu (core)`), `qgis_process` rows
+  with `IncirCu (qgis_process)`.
 - **one clean line**: one part and one branch. **output v**: vertices of the output lines.
 - **deviation** (× width): from the output, sampled every width/50, to the exact medial axis between the two
   chains (oracle), or, where the oracle rejects the chains (islands spliced in by slits), to IncirCu's line at
@@ -399,14 +401,14 @@ def summary(compare, layer_results, core):
     put("accuracy_factor_max", max(factors, default=None), "compare.json: best peer's mean deviation / IncirCu's")
     if layer_results:
         rivers = layer_results["layers"][0]
-        ours = _row(rivers, "IncirCu (core)")
+        ours = core_layer_row(rivers)
         put("layer_polygons", rivers["polygons"], "layer.json: polygons in the river layer")
-        put("layer_polygons_per_second", ours["polygons_per_second"], "layer.json: IncirCu (core)")
-        put("layer_vs_pygeoops", _speedup(rivers, "pygeoops"), "layer.json: IncirCu (core) / pygeoops, polygons/s")
+        put("layer_polygons_per_second", ours["polygons_per_second"], f"layer.json: {ours['tool']}")
+        put("layer_vs_pygeoops", _speedup(rivers, "pygeoops"), f"layer.json: {ours['tool']} / pygeoops, polygons/s")
         put("layer_vs_grass", _speedup(rivers, "GRASS v.voronoi.skeleton (qgis_process)"),
             "layer.json: IncirCu (qgis_process) / GRASS (qgis_process), polygons/s")
         put("layer_output_vs_input", ours["output_vertices"] / ours["input_vertices"],
-            "layer.json: IncirCu (core) output vertices / input vertices")
+            f"layer.json: {ours['tool']} output vertices / input vertices")
     if core and "error" not in core["end_to_end"]:
         end = core["end_to_end"]
         put("end_to_end_vertices", end["vertices"], "core.json: end_to_end vertices")

@@ -223,6 +223,25 @@ def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
     assert second.error is None and second.result.line.length == pytest.approx(50.0, rel=1e-9)
 
 
+def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
+    # run_alone, like run_together, raises a failed tracing inside the generator: the part gets the error.
+    from incircu_plugin.core import steps
+
+    calls = []
+
+    def failing_first(request):
+        calls.append(request)
+        if len(calls) == 1:
+            raise CenterlineError("the tracing failed")
+        return trace_alone(request)
+
+    monkeypatch.setattr(steps, "trace_alone", failing_first)
+    outcomes = run_alone(multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])))
+    assert len(calls) == 2
+    assert (outcomes[0].result, str(outcomes[0].error)) == (None, "the tracing failed")
+    assert outcomes[1].error is None and outcomes[1].result.line.length == pytest.approx(50.0, rel=1e-9)
+
+
 def test_batch_progress_rises_from_0_to_1():
     cases = [geometry_cases.rectangle(), geometry_cases.tapered_channel(), geometry_cases.annulus_sector()]
     fractions = []

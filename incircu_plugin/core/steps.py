@@ -76,11 +76,22 @@ def trace_alone(request):
 
 
 def run_alone(steps):
-    """Drive one step generator to its end, tracing each of its requests alone; returns its value."""
+    """Drive one step generator to its end, tracing each of its requests alone; returns its value.
+
+    A tracing that fails raises its exception inside the generator, at the request, as :func:`run_together`
+    does (a multipart feature then loses that part only).
+    """
     try:
         request = next(steps)
         while True:
-            request = steps.send(trace_alone(request))
+            try:
+                points = trace_alone(request)
+            except Cancelled:
+                raise
+            except Exception as error:  # noqa: BLE001 - the generator decides what a failed tracing means
+                request = steps.throw(error)
+                continue
+            request = steps.send(points)
     except StopIteration as stop:
         return stop.value
 
