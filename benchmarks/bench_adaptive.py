@@ -9,7 +9,8 @@ Every row runs both engines in the same run, each in a fresh child process (``OM
 ratio holds even on a loaded machine; absolute times do not. Rows, all at each engine's defaults:
 
 - the 100 x 10 rectangle with 24 boundary vertices: ``polygon_centerline`` per call (median of
-  ``--repeats``), the per-call overhead small features pay;
+  ``--repeats``), the per-call overhead small features pay; and per feature when 1,000 of them are traced
+  together (``centerlines_together``, as the plugin runs a layer; trees without it report an error);
 - the constant-width meander (2 km, width 20, 2,333 boundary vertices), from the chains, median;
 - synthetic rivers (``tests/support/geometry_cases.synthetic_river``, a vertex every quarter width) with
   10^4 .. 10^N boundary vertices, from the chains, end to end: time and peak resident memory of the child
@@ -31,6 +32,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 
+#: Rectangles traced together in the "per feature, traced together" row (as the plugin runs a layer).
+TOGETHER = 1000
+
 #: Longest a child may run, seconds (the engine before the adaptive one needs about 30 s at 10^6 vertices).
 CHILD_TIMEOUT = 900
 
@@ -44,6 +48,12 @@ def _child(root, row, size, repeats):
     if row == "rectangle":
         case = geometry_cases.rectangle(n=11)
         run = lambda: polygon_centerline(case.polygon, case.split_points)
+    elif row == "rectangles together":
+        from incircu_plugin.core import centerlines_together, polygon_centerline_steps
+
+        case = geometry_cases.rectangle(n=11)
+        steps = lambda: [polygon_centerline_steps(case.polygon, case.split_points) for _ in range(TOGETHER)]
+        run = lambda: centerlines_together(steps())[0]
     elif row == "meander":
         case = geometry_cases.meander_with_vertex_count(2333)
         run = lambda: centerline_from_chains(case.chain_a, case.chain_b)
@@ -56,6 +66,8 @@ def _child(root, row, size, repeats):
         result = run()
         times.append(time.perf_counter() - start)
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    if row == "rectangles together":
+        times = [duration / TOGETHER for duration in times]
     vertices = len(case.chain_a) + len(case.chain_b) - 2
     print(
         json.dumps(
@@ -124,6 +136,7 @@ def main():
     )
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     rows = [("rectangle 100x10, 24 v, per call", "rectangle", 0, arguments.repeats)]
+    rows.append((f"same, per feature of {TOGETHER:,} traced together", "rectangles together", 0, 5))
     rows.append(("meander 2 km, 2,333 v", "meander", 0, max(5, arguments.repeats // 20)))
     rows += [(f"river {10**k:,} v", "river", 10**k, 1) for k in range(4, arguments.max_exponent + 1)]
     for label, row, size, repeats in rows:

@@ -86,12 +86,13 @@ def outline_cases(with_oracle=True):
 
 
 def _fine_incircu_reference(polygon, ends, width):
-    """Distance to IncirCu's line at a fixed spacing of width/200: the reference where the oracle cannot run."""
+    """Distance to IncirCu's line within width/2000 of the exact axis (adaptive sampling, every vertex on the
+    axis): the reference where the oracle cannot run."""
     from metrics import NearestDistance
 
     from incircu_plugin.core import polygon_centerline
 
-    return NearestDistance(polygon_centerline(polygon, ends, spacing=width / 200.0).line)
+    return NearestDistance(polygon_centerline(polygon, ends, tolerance=width / 2000.0).line)
 
 
 def river_cases(count, seed, with_reference=True):
@@ -99,7 +100,7 @@ def river_cases(count, seed, with_reference=True):
 
     The reference axis is the oracle's target set between the two chains (islands spliced in as IncirCu
     does); where the oracle rejects the chains (the slits of zero width to islands touch), it is IncirCu's
-    own line at a fixed spacing of width/200 (``axis_kind`` ``"IncirCu w/200"``).
+    own line within width/2000 of the exact axis (``axis_kind`` ``"IncirCu w/2000"``).
     """
     from rivers import river_layer
 
@@ -119,6 +120,6 @@ def river_cases(count, seed, with_reference=True):
                 case.axis_kind = "oracle"
             except ValueError:
                 case.axis_distance = _fine_incircu_reference(river.polygon, river.ends, river.width)
-                case.axis_kind = "IncirCu w/200"
+                case.axis_kind = "IncirCu w/2000"
         cases.append(case)
     return cases
