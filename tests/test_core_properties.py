@@ -12,10 +12,13 @@ import math
 
 import numpy as np
 import pytest
+import shapely
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from incircu_plugin.core import lines_centerline, polygon_centerline
+from benchmarks.rivers import river_layer
+from incircu_plugin.core import lines_centerline, polygon_centerline, split_polygon
+from incircu_plugin.core.islands import bridge_islands
 from tests.support import geometry_cases
 from tests.support.oracle import MedialOracle, check_centerline
 
@@ -140,3 +143,17 @@ def test_a_station_a_hair_past_a_convex_corner_sees_the_corners_other_edge():
     result = polygon_centerline(case.polygon, case.split_points, spacing=0.02 * case.width)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
     assert_on_medial_axis(result, case.chain_a, case.chain_b, case.polygon)
+
+
+def test_the_stub_from_a_split_point_is_ordered_by_radius():
+    # River 69 of the benchmark layer (seed 0, two islands), fixed sampling: two disks tangent at the first
+    # split point (radius 6.1 and 7.6) had feet equal up to 1e-7 m but ordering keys 3.6e-10 apart, so the
+    # larger came first and the line crossed itself there (at every spacing from w/20 to w/200).
+    river = river_layer(count=70)[69]
+    chain_a, chain_b = split_polygon(river.polygon, river.ends)
+    holes = [shapely.get_coordinates(ring) for ring in river.polygon.interiors]
+    chain_a, chain_b = bridge_islands(chain_a, chain_b, holes)
+    ends = [end.coords[0] for end in river.ends]
+    for fraction in (0.05, 0.005):
+        result = polygon_centerline(river.polygon, river.ends, spacing=fraction * river.width)
+        check_centerline(result, chain_a, chain_b, river.polygon, ends)

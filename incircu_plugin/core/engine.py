@@ -243,14 +243,22 @@ def _ordered(points, side, lengths, coincidence):
 
     Those arc lengths grow monotonically along the axis between the chains. Points whose feet are the same
     two vertices (two facing reflex corners) tie on them; they lie on the bisector of those vertices,
-    ordered by the direction of travel, perpendicular to ``foot_b - foot_a``.
+    ordered by the direction of travel, perpendicular to ``foot_b - foot_a``. Points whose feet are both a
+    split point lie on the stub from it: their disks grow away from the first split point and shrink into
+    the last, so they are ordered by radius.
     """
     across = points.foot_b - points.foot_a
     travel = side * np.stack([across[:, 1], -across[:, 0]], axis=1)
     along = points.position_a / max(lengths[0], coincidence) + points.position_b / max(lengths[1], coincidence)
+    # Feet one point up to rounding: a split point, where both chains start (0) or end (2). No direction of
+    # travel there; the radius orders the points.
+    one_foot = np.hypot(*across.T) <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    along = np.where(one_foot, np.round(along), along)
+    crossing = np.where(one_foot, 0.0, np.einsum("ij,ij->i", points.centre, travel))
+    growing = np.where(along < 1.0, points.radius, -points.radius)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
     along = np.round(along / ORDER_RESOLUTION)
-    return np.lexsort((np.einsum("ij,ij->i", points.centre, travel), along))
+    return np.lexsort((growing, crossing, along))
 
 
 def _line_ends(chains, closed):
