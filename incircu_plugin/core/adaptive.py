@@ -40,6 +40,7 @@ from .contacts import (
     CLEAR,
     SKIPPED,
     TIED,
+    ArrayRecord,
     AxisPoints,
     Boundary,
     Samples,
@@ -124,7 +125,7 @@ class _Spans:
 
 
 @dataclass
-class _Intervals:
+class _Intervals(ArrayRecord):
     """Intervals ``[u0, u1]`` of spans between two samples (indices ``left``, ``right``), with the sites first
     touched at each end; ``verified`` once the stations of a parabola have been solved inside it."""
 
@@ -136,15 +137,6 @@ class _Intervals:
     site0: np.ndarray
     site1: np.ndarray
     verified: np.ndarray
-
-    def subset(self, index):
-        """The intervals ``index`` (an index array or mask)."""
-        return _Intervals(*(value[index] for value in vars(self).values()))
-
-    @staticmethod
-    def concatenate(parts):
-        """All intervals of ``parts``, one after the other."""
-        return _Intervals(*(np.concatenate(values) for values in zip(*(vars(part).values() for part in parts))))
 
 
 @dataclass(frozen=True)

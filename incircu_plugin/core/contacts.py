@@ -59,8 +59,21 @@ SINGLE_INDEX = 1 << 17
 ALL_PAIRS = 1 << 15
 
 
+class ArrayRecord:
+    """Mixin for a dataclass whose fields are arrays with one row per item (samples, points, intervals)."""
+
+    def subset(self, index):
+        """The items ``index`` (an index array or mask)."""
+        return type(self)(*(getattr(self, field.name)[index] for field in fields(self)))
+
+    @classmethod
+    def concatenate(cls, parts):
+        """All items of ``parts``, one after the other."""
+        return cls(*(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(cls)))
+
+
 @dataclass(frozen=True)
-class Samples:
+class Samples(ArrayRecord):
     """Samples of the chains, sorted by chain, then by arc-length ``position`` along it.
 
     The disk family of sample ``i`` has centre ``point + t*direction`` and radius ``scale*t``; segments
@@ -77,15 +90,6 @@ class Samples:
     slide: np.ndarray
     first_own: np.ndarray
     last_own: np.ndarray
-
-    def subset(self, index):
-        """The samples ``index`` (an index array or mask)."""
-        return Samples(*(getattr(self, field.name)[index] for field in fields(self)))
-
-    @staticmethod
-    def concatenate(parts):
-        """All samples of ``parts``, one after the other."""
-        return Samples(*(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(Samples)))
 
 
 class Boundary:
@@ -449,7 +453,7 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
 
 
 @dataclass(frozen=True)
-class AxisPoints:
+class AxisPoints(ArrayRecord):
     """Points of the medial axis between the chains, with their incircles, in no particular order.
 
     Attributes
@@ -470,17 +474,6 @@ class AxisPoints:
     foot_b: np.ndarray
     position_a: np.ndarray
     position_b: np.ndarray
-
-    def subset(self, index):
-        """The points ``index`` (an index array or mask)."""
-        return AxisPoints(*(getattr(self, field.name)[index] for field in fields(self)))
-
-    @staticmethod
-    def concatenate(parts):
-        """All points of ``parts``, one after the other."""
-        return AxisPoints(
-            *(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(AxisPoints))
-        )
 
     @staticmethod
     def from_chain_feet(chain, centre, radius, own_foot, own_position, other_foot, other_position):

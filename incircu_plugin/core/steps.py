@@ -63,7 +63,7 @@ class TraceRequest:
         """Number of segments of both chains."""
         return sum(len(chain) - 1 for chain in self.chains)
 
-    @property
+    @cached_property
     def extent(self):
         """Larger side of the chains' bounding box, CRS units."""
         points = np.concatenate(self.chains)
