@@ -17,7 +17,7 @@ from .chains import (
     validate_polygon,
 )
 from .ends import END_RULES, find_ends
-from .engine import CenterlineResult, centerline_steps
+from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
 from .steps import run_alone, run_together
@@ -156,9 +156,11 @@ def polygon_centerline_steps(
         split_points = (ends.start, ends.end)
         ends_from = "guide" if ends.guided else "automatic"
     c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
+    steps = clean_chains_steps
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
-    result = yield from centerline_steps(
+        steps = centerline_steps
+    result = yield from steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
@@ -242,7 +244,7 @@ def lines_centerline_steps(line_a, line_b, *, spacing=None, samples_per_chain=No
     :class:`CenterlineResult`.
     """
     c1, c2 = orient_bank_lines(line_a, line_b)
-    result = yield from centerline_steps(
+    result = yield from clean_chains_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
     return _checked(result)

@@ -17,7 +17,7 @@ from .errors import (
     SplitPointError,
     format_point,
 )
-from .polyline import as_coordinates, cumulative_lengths
+from .polyline import as_coordinates, cumulative_lengths, points_at
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
@@ -197,30 +197,36 @@ def validate_polygon(polygon):
     _LastValid.remember(polygon)
 
 
-def _insert_at(line, positions, along, tolerance):
+def _insert_at(ring, positions, along, tolerance):
     """Insert the points at arc lengths ``along`` into a closed ring, each unless a vertex is already there.
 
-    ``line`` is the ring as a LineString, ``positions`` the arc lengths of its vertices; ``along`` are arc
-    lengths farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point
-    is tested, and they are inserted in one pass. Returns the ring's vertices and their arc lengths.
+    ``ring`` holds the ring's vertices (closed), ``positions`` their arc lengths; ``along`` are arc lengths
+    farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point is
+    tested, and they are inserted in one pass. Returns the ring's vertices and their arc lengths.
     """
-    ring = shapely.get_coordinates(line)
     along = np.sort(np.asarray(along, dtype=float))
-    new = np.array([np.abs(positions[:-1] - position).min() > tolerance for position in along], dtype=bool)
+    new = np.abs(positions[None, :-1] - along[:, None]).min(axis=1) > tolerance
     if not new.any():
         return ring, positions
     index = np.searchsorted(positions, along[new], side="right")
-    points = shapely.get_coordinates(shapely.line_interpolate_point(line, along[new]))
+    points = points_at(ring, positions, along[new])
     return np.insert(ring, index, points, axis=0), np.insert(positions, index, along[new])
 
 
-def positions_on_ring(exterior, points, tolerance):
+def counter_clockwise_exterior(polygon):
+    """The vertices of a polygon's exterior ring (closed: the last repeats the first), counter-clockwise, CRS
+    units; the same ring as ``shapely.geometry.polygon.orient(polygon, 1.0).exterior``."""
+    ring = shapely.get_coordinates(polygon.exterior)
+    return ring if signed_area(ring) >= 0 else ring[::-1]
+
+
+def positions_on_ring(ring, points, tolerance):
     """Return the arc length along a ring of the nearest point to each split point.
 
     Parameters
     ----------
-    exterior : LineString or LinearRing
-        The ring, CRS units.
+    ring : ndarray of shape (n, 2)
+        The ring's vertices, closed, CRS units.
     points : sequence of ndarray of shape (2,)
         The split points, CRS units.
     tolerance : float
@@ -236,6 +242,7 @@ def positions_on_ring(exterior, points, tolerance):
     SplitPointError
         If a point is farther than ``tolerance`` from the ring.
     """
+    exterior = shapely.linestrings(ring)
     geometries = shapely.points(np.asarray(points, dtype=float).reshape(-1, 2))
     for point, distance in zip(points, shapely.distance(exterior, geometries).tolist()):
         if distance > tolerance:
@@ -286,22 +293,20 @@ def split_polygon(polygon, split_points, tolerance=None):
     if len(points) != 2:
         raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
     tolerance = tolerance_length(tolerance, "snap_tolerance")
-    exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
-    ring = shapely.get_coordinates(exterior)
+    ring = counter_clockwise_exterior(polygon)
     extent = extent_of(ring)
     if tolerance is None:
         tolerance = 1e-6 * extent
     coincidence = COINCIDENCE_TOLERANCE * extent
     ring = np.concatenate([clean_chain(ring[:-1], "exterior ring", coincidence), ring[:1]])
-    exterior = LineString(ring)
     positions = cumulative_lengths(ring)
-    along = positions_on_ring(exterior, points, tolerance)
+    along = positions_on_ring(ring, points, tolerance)
     perimeter = positions[-1]
     along = [0.0 if position >= perimeter - coincidence else position for position in along]
     gap = abs(along[0] - along[1])
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
-    ring, positions = _insert_at(exterior, positions, along, coincidence)
+    ring, positions = _insert_at(ring, positions, along, coincidence)
     start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
     loop = ring[:-1]
     n = len(loop)

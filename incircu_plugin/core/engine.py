@@ -192,8 +192,10 @@ def _distinct(points, tolerance):
 
     The last point is always kept; the kept point before it is dropped when within ``tolerance`` of it.
     """
-    step = np.hypot(*np.diff(points, axis=0).T)
-    keep = np.concatenate([[True], step > tolerance])
+    step = points[1:] - points[:-1]
+    keep = np.empty(len(points), dtype=bool)
+    keep[0] = True
+    np.greater(np.hypot(step[:, 0], step[:, 1]), tolerance, out=keep[1:])
     keep[-1] = True
     kept = np.flatnonzero(keep)
     if len(kept) > 2 and np.hypot(*(points[kept[-2]] - points[-1])) <= tolerance:
@@ -247,14 +249,17 @@ def _ordered(points, side, lengths, coincidence):
     split point lie on the stub from it: their disks grow away from the first split point and shrink into
     the last, so they are ordered by radius.
     """
-    across = points.foot_b - points.foot_a
-    travel = side * np.stack([across[:, 1], -across[:, 0]], axis=1)
+    across_x = points.foot_b[:, 0] - points.foot_a[:, 0]
+    across_y = points.foot_b[:, 1] - points.foot_a[:, 1]
     along = points.position_a / max(lengths[0], coincidence) + points.position_b / max(lengths[1], coincidence)
+    # The centre's component along the direction of travel, side * (across_y, -across_x).
+    crossing = side * (points.centre[:, 0] * across_y - points.centre[:, 1] * across_x)
     # Feet one point up to rounding: a split point, where both chains start (0) or end (2). No direction of
     # travel there; the radius orders the points.
-    one_foot = np.hypot(*across.T) <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
-    along = np.where(one_foot, np.round(along), along)
-    crossing = np.where(one_foot, 0.0, np.einsum("ij,ij->i", points.centre, travel))
+    one_foot = np.hypot(across_x, across_y) <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    if one_foot.any():
+        along[one_foot] = np.round(along[one_foot])
+        crossing[one_foot] = 0.0
     growing = np.where(along < 1.0, points.radius, -points.radius)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
     along = np.round(along / ORDER_RESOLUTION)
@@ -280,11 +285,11 @@ def _with_ends(values, order, ends):
 
 
 def _clean_chains(c1, c2):
-    """Both chains as coordinate arrays without zero-length segments, and the coincidence distance."""
+    """Both chains as coordinate arrays without zero-length segments (see :func:`.chains.clean_chain`)."""
     chains = [as_coordinates(c1, "first chain"), as_coordinates(c2, "second chain")]
     coincidence = COINCIDENCE_TOLERANCE * extent_of(*chains)
     names = ("first chain", "second chain")
-    return [clean_chain(chain, name, coincidence) for chain, name in zip(chains, names)], coincidence
+    return [clean_chain(chain, name, coincidence) for chain, name in zip(chains, names)]
 
 
 def centerline_from_chains(
@@ -354,12 +359,28 @@ def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=
     :class:`.steps.TraceRequest` (adaptive sampling; none with fixed sampling), receives its axis points and
     returns the :class:`CenterlineResult`. Raises as :func:`centerline_from_chains` does.
     """
+    return (
+        yield from clean_chains_steps(
+            *_clean_chains(c1, c2),
+            spacing,
+            samples_per_chain=samples_per_chain,
+            tolerance=tolerance,
+            progress=progress,
+        )
+    )
+
+
+def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None):
+    """:func:`centerline_steps` for chains :func:`.chains.clean_chain` returned at the chains' coincidence
+    distance (those of :func:`.chains.split_polygon` and :func:`.chains.orient_bank_lines`): float arrays of
+    shape (n, 2), CRS units, which are not checked or cleaned again.
+    """
     spacing = _length_option(spacing, "spacing")
     tolerance = _length_option(tolerance, "tolerance")
     fixed = spacing is not None or samples_per_chain is not None
     if fixed and tolerance is not None:
         raise OptionError("Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).")
-    frame = _Frame(*_clean_chains(c1, c2))
+    frame = _Frame([c1, c2])
     report = reporter(progress)
     if fixed:
         spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths, frame.default_width)
@@ -388,23 +409,27 @@ def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=
 class _Frame:
     """The chains in a local frame (shifted to their bounding box's centre) and what the samplers need."""
 
-    def __init__(self, chains, coincidence):
-        self.coincidence = coincidence
-        self.extent = extent_of(*chains)
-        self.lengths = [float(cumulative_lengths(c)[-1]) for c in chains]
-        self.origin = local_origin(*chains)
-        self.chains = [c - self.origin for c in chains]
-        area = signed_area(np.concatenate([self.chains[0], self.chains[1][::-1]]))
+    def __init__(self, chains):
+        # Both chains as one ring (the first, then the second backwards) serve the extent, origin and area.
+        ring = np.concatenate([chains[0], chains[1][::-1]])
+        self.extent = extent_of(ring)
+        self.coincidence = COINCIDENCE_TOLERANCE * self.extent
+        self.origin = local_origin(ring)
+        ring = ring - self.origin
+        first = len(chains[0])
+        self.chains = [ring[:first], np.ascontiguousarray(ring[first:][::-1])]
+        self.lengths = [float(cumulative_lengths(c)[-1]) for c in self.chains]
+        area = signed_area(ring)
         width = typical_width(abs(area), 0.5 * sum(self.lengths))
         #: The width the defaults (spacing, tolerance) are fractions of, CRS units.
         self.default_width = _width_or_fallback(width, self.extent)
         start_gap = np.hypot(*(self.chains[0][0] - self.chains[1][0]))
         end_gap = np.hypot(*(self.chains[0][-1] - self.chains[1][-1]))
-        self.closed = bool(start_gap <= coincidence and end_gap <= coincidence)
+        self.closed = bool(start_gap <= self.coincidence and end_gap <= self.coincidence)
         self.side = 1.0 if area >= 0 else -1.0
         #: Typical width (the first trial radius), the largest disk parameter searched and the smallest one
         #: that counts as a contact, CRS units.
-        self.limits = (max(width, coincidence), 4.0 * self.extent, 1e-12 * self.extent)
+        self.limits = (max(width, self.coincidence), 4.0 * self.extent, 1e-12 * self.extent)
 
     @cached_property
     def boundary(self):

@@ -38,7 +38,14 @@ import shapely
 from shapely.geometry import LineString, Point
 
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
-from .chains import COINCIDENCE_TOLERANCE, extent_of, positions_on_ring, split_polygon, validate_polygon
+from .chains import (
+    COINCIDENCE_TOLERANCE,
+    counter_clockwise_exterior,
+    extent_of,
+    positions_on_ring,
+    split_polygon,
+    validate_polygon,
+)
 from .engine import CenterlineResult, centerline_from_chains
 from .errors import IncirCuError, SplitPointError, format_point
 from .islands import bridge_islands
@@ -276,12 +283,12 @@ def _ring_order(polygon, split_points, tolerance):
     xy = [_as_xy(point) for point in split_points]
     if not all(np.all(np.isfinite(p)) for p in xy):
         raise SplitPointError("A split point has a NaN or infinite coordinate.")
-    exterior = shapely.geometry.polygon.orient(polygon, 1.0).exterior
-    extent = extent_of(shapely.get_coordinates(exterior))
+    ring = counter_clockwise_exterior(polygon)
+    extent = extent_of(ring)
     if tolerance is None or tolerance <= 0:
         tolerance = 1e-6 * extent
-    perimeter = exterior.length
-    along = positions_on_ring(exterior, xy, tolerance)
+    perimeter = float(cumulative_lengths(ring)[-1])
+    along = positions_on_ring(ring, xy, tolerance)
     relative = np.mod(np.asarray(along) - along[0], perimeter)
     order = [0] + sorted(range(1, len(xy)), key=lambda index: relative[index])
     gaps = np.diff(np.append(relative[order], perimeter))

@@ -128,6 +128,21 @@ def split_point_coordinates(split_points):
         )
     if isinstance(split_points, (str, bytes)):
         raise TypeError(f"Split points must be a sequence of points, got {type(split_points).__name__}.")
+    split_points = list(split_points)
+    if split_points and all(isinstance(point, tuple) for point in split_points):
+        # (x, y) tuples (the usual case): numbers only give a numeric array, checked as one.
+        try:
+            array = np.array(split_points)
+        except ValueError:
+            array = None
+        if array is not None and array.ndim == 2 and array.dtype.kind in "iuf" and array.shape[1] in (2, 3):
+            return _checked_split_points(np.array(array[:, :2], dtype=float))
+    if split_points and all(isinstance(point, Point) for point in split_points):
+        # Points only (the usual case): their coordinates in one call, the same checks as point by point.
+        empty = shapely.is_empty(split_points)
+        if empty.any():
+            raise SplitPointError(f"Split point {int(np.argmax(empty))} is an empty point.")
+        return _checked_split_points(shapely.get_coordinates(split_points))
     coordinates = [_split_point(index, point) for index, point in enumerate(split_points)]
     return _checked_split_points(np.array(coordinates, dtype=float).reshape(-1, 2))
 
