@@ -96,15 +96,17 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     """
     if tolerance is None:
         tolerance = COINCIDENCE_TOLERANCE * extent_of(coordinates)
-    direction = np.diff(coordinates, axis=0)
+    direction = coordinates[1:] - coordinates[:-1]
     step = np.hypot(direction[:, 0], direction[:, 1])
     long_enough = step > tolerance
-    chain = coordinates[np.concatenate([[True], long_enough])]
+    if long_enough.all():
+        chain = coordinates.copy()
+    else:
+        chain = coordinates[np.concatenate([[True], long_enough])]
+        direction = chain[1:] - chain[:-1]
+        step = np.hypot(direction[:, 0], direction[:, 1])
     if len(chain) < 2:
         raise ChainError(f"The {name} has fewer than 2 distinct points.")
-    if not long_enough.all():
-        direction = np.diff(chain, axis=0)
-        step = np.hypot(direction[:, 0], direction[:, 1])
     incoming, outgoing = direction[:-1], direction[1:]
     backward = np.einsum("ij,ij->i", incoming, outgoing) < 0
     if not backward.any():
@@ -307,11 +309,11 @@ def split_polygon(polygon, split_points, tolerance=None):
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     ring, positions = _insert_at(ring, positions, along, coincidence)
-    start, end = (int(np.argmin(np.abs(positions[:-1] - position))) for position in along)
+    start, end = np.abs(positions[:-1, None] - along).argmin(axis=0).tolist()
     loop = ring[:-1]
     n = len(loop)
-    forward = (start + np.arange((end - start) % n + 1)) % n
-    backward = (start - np.arange((start - end) % n + 1)) % n
+    forward = np.arange(start, start + (end - start) % n + 1) % n
+    backward = np.arange(start, start - (start - end) % n - 1, -1) % n
     return loop[forward], loop[backward]
 
 

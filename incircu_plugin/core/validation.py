@@ -53,16 +53,17 @@ def check_coordinates(coordinates, name, whole=True):
         raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     if len(coordinates) == 0:
         return
-    x, y = coordinates[:, 0], coordinates[:, 1]
-    low_x, low_y, high_x, high_y = float(x.min()), float(y.min()), float(x.max()), float(y.max())
-    magnitude = max(abs(low_x), abs(low_y), abs(high_x), abs(high_y))
+    magnitude = float(np.abs(coordinates).max())
     if magnitude > MAX_COORDINATE:
         raise InvalidGeometryError(
             f"The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {MAX_COORDINATE:.0e}: products of "
             "such coordinates overflow float64. Use a projected CRS in metres, or scale the data down."
         )
-    extent = float(np.hypot(high_x - low_x, high_y - low_y))
-    if not whole or extent == 0:
+    if not whole:
+        return
+    x, y = coordinates[:, 0], coordinates[:, 1]
+    extent = float(np.hypot(x.max() - x.min(), y.max() - y.min()))
+    if extent == 0:
         return
     if extent < MIN_EXTENT:
         raise InvalidGeometryError(
