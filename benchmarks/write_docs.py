@@ -190,9 +190,9 @@ def scaling_table(rows):
     incircu = [r for r in rows if r["tool"] == "IncirCu" and r["seconds"]]
     if incircu:
         per_vertex = ", ".join(f"{r['vertices']:,} v: {r['seconds'] / r['vertices'] * 1e6:.2g} µs" for r in incircu)
-        text += (f"\nIncirCu time per boundary vertex: {per_vertex}. IncirCu samples every vertex plus a point every"
-                 " width/20 (its default spacing), and this river has a vertex every width/4 on each bank, so it"
-                 " solves about six samples per boundary vertex: per sample, a sixth of these figures.\n")
+        text += (f"\nIncirCu time per boundary vertex: {per_vertex}. IncirCu's adaptive sampling (its default) solves"
+                 " the vertices of one chain and the events and parabola stations between them, about three exact"
+                 " solves per boundary vertex on rivers like this one.\n")
     return text
 
 
@@ -366,8 +366,8 @@ outline as a layer of one polygon. IncirCu `{layer_results['incircu_version']}`;
   with `IncirCu (qgis_process)`.
 - **one clean line**: one part and one branch. **output v**: vertices of the output lines.
 - **deviation** (× width): from the output, sampled every width/50, to the exact medial axis between the two
-  chains (oracle), or, where the oracle rejects the chains (islands spliced in by slits), to IncirCu's line at
-  spacing width/200; mean over polygons of the mean, median and largest of the per-polygon maxima. Automatic
+  chains (oracle), or, where the oracle rejects the chains (islands spliced in by slits), to IncirCu's own line
+  within width/2000 of the exact axis (adaptive sampling); mean over polygons of the mean, median and largest of the per-polygon maxima. Automatic
   ends are measured against the axis between the caps, so their deviation includes where the ends differ.
 """
     return text + "".join(format_layer(layer) for layer in layer_results["layers"])

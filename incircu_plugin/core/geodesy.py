@@ -19,11 +19,20 @@ import math
 from dataclasses import replace
 
 import numpy as np
-import pyproj
 import shapely
-from pyproj.enums import TransformDirection
 
 from .errors import InvalidGeometryError
+
+#: Directions of a PROJ transformation, as ``pyproj``'s ``Transformer.transform`` takes them.
+FORWARD, INVERSE = "FORWARD", "INVERSE"
+
+
+def _pyproj():
+    """The ``pyproj`` module, imported on first use: only longitude/latitude data needs it, and importing it
+    costs about 0.1 s of every run on projected data."""
+    import pyproj
+
+    return pyproj
 
 
 class LocalProjection:
@@ -48,7 +57,7 @@ class LocalProjection:
         self.longitude = float(longitude)
         # A bare PROJ pipeline on the CRS's ellipsoid: building CRS objects and transformers between them would
         # cost some 40 ms per feature.
-        self._transformer = pyproj.Transformer.from_pipeline(
+        self._transformer = _pyproj().Transformer.from_pipeline(
             "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad "
             f"+step +proj=aeqd +lat_0={float(latitude)!r} +lon_0={float(longitude)!r} {_ellipsoid(geographic_crs)}"
         )
@@ -86,7 +95,7 @@ class LocalProjection:
 
     def _transform(self, xy, direction):
         transformed = _transform_array(self._transformer, xy, direction)
-        if direction == TransformDirection.INVERSE:
+        if direction == INVERSE:
             # PROJ returns longitudes in [-180, 180]; keep them within 180 degrees of the centre instead, so a
             # shape across the antimeridian stays continuous (longitudes beyond 180 or below -180).
             longitude = transformed[..., 0]
@@ -103,7 +112,7 @@ class LocalProjection:
         Longitudes are taken modulo 360 degrees, so a shape across the antimeridian may be stored either way
         (179.9 to 180.1, or wrapped as 179.9 and -179.9).
         """
-        return self._apply(TransformDirection.FORWARD, geometry)
+        return self._apply(FORWARD, geometry)
 
     def to_geographic(self, geometry):
         """Bring a geometry or an ``(n, 2)`` array from local metres back to degrees.
@@ -111,7 +120,7 @@ class LocalProjection:
         Longitudes lie within 180 degrees of the projection centre: a line across the antimeridian comes back
         continuous (for example from 179.9 to 180.1), never wrapped round the globe.
         """
-        return self._apply(TransformDirection.INVERSE, geometry)
+        return self._apply(INVERSE, geometry)
 
     def result_to_geographic(self, result):
         """Bring a :class:`CenterlineResult` back to degrees; its radii stay in metres."""
@@ -155,6 +164,7 @@ def central_longitude(longitudes):
 @functools.lru_cache(maxsize=16)
 def _ellipsoid(geographic_crs):
     """PROJ ellipsoid parameters (``+a=... +rf=...``) of a geographic CRS, checked to be geographic."""
+    pyproj = _pyproj()
     try:
         geographic = pyproj.CRS(geographic_crs)
     except pyproj.exceptions.CRSError as error:
