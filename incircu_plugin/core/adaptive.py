@@ -877,18 +877,16 @@ def _trace_group(requests, report):
     points, chain = tracer.trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
-    bounds = np.searchsorted(feature[order], np.arange(len(requests) + 1))
-    results = []
-    for index, offset in enumerate(offsets):
-        mine = points.subset(order[bounds[index] : bounds[index + 1]])
-        results.append(
-            AxisPoints(
-                mine.centre - offset,
-                mine.radius,
-                mine.foot_a - offset,
-                mine.foot_b - offset,
-                mine.position_a,
-                mine.position_b,
-            )
-        )
-    return results
+    feature = feature[order]
+    # Every point shifted back at once; then each feature's points are a slice of the sorted arrays.
+    shift = offsets[feature]
+    points = AxisPoints(
+        points.centre[order] - shift,
+        points.radius[order],
+        points.foot_a[order] - shift,
+        points.foot_b[order] - shift,
+        points.position_a[order],
+        points.position_b[order],
+    )
+    bounds = np.searchsorted(feature, np.arange(len(requests) + 1)).tolist()
+    return [points.subset(slice(begin, end)) for begin, end in zip(bounds[:-1], bounds[1:])]
