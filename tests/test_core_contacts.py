@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
-from incircu_plugin.core.contacts import Boundary, first_contacts
-from incircu_plugin.core.engine import _distinct, _first_of_each_centre
+from incircu_plugin.core.contacts import AxisPoints, Boundary, first_contacts
+from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
 
 
 def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
@@ -142,3 +142,28 @@ def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_pred
 def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
     centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
     assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+
+
+def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
+    # Points whose feet lie at the same arc lengths (ties of the first key) must come in the order of the
+    # full three-key sort: across the direction of travel, then by radius; drawn with many ties on purpose.
+    rng = np.random.default_rng(7)
+    count = 2000
+    position_a = rng.integers(0, 40, count).astype(float)
+    position_b = rng.integers(0, 3, count).astype(float)
+    foot_a = np.stack([position_a, np.zeros(count)], axis=1)
+    foot_b = np.stack([position_a, np.full(count, 2.0)], axis=1)
+    centre = np.stack([position_a, rng.integers(0, 3, count).astype(float)], axis=1)
+    radius = rng.integers(1, 4, count).astype(float)
+    points = AxisPoints(centre, radius, foot_a, foot_b, position_a, position_b)
+    lengths, side = (50.0, 50.0), 1.0
+    order = _ordered(points, side, lengths, 1e-12)
+    # The three keys by their definitions: the feet's relative arc lengths, the centre's component along
+    # the direction of travel side * (across_y, -across_x) with across = foot_b - foot_a = (0, 2), and the
+    # radius, growing before the middle of the axis and shrinking after it.
+    raw = position_a / lengths[0] + position_b / lengths[1]
+    along = np.round(raw / ORDER_RESOLUTION)
+    crossing = side * centre[:, 0] * 2.0
+    growing = np.where(raw < 1.0, radius, -radius)
+    assert order.tolist() == np.lexsort((growing, crossing, along)).tolist()
+    assert sorted(order.tolist()) == list(range(count))

@@ -263,7 +263,17 @@ def _ordered(points, side, lengths, coincidence):
     growing = np.where(along < 1.0, points.radius, -points.radius)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
     along = np.round(along / ORDER_RESOLUTION)
-    return np.lexsort((growing, crossing, along))
+    # np.lexsort((growing, crossing, along)), with the two other keys looked at only where ``along`` ties: a
+    # stable sort by ``along``, then each run of ties (contiguous, in input order) sorted by all three keys.
+    order = np.argsort(along, kind="stable")
+    key = along[order]
+    tied = np.zeros(len(order), dtype=bool)
+    tied[1:] = key[1:] == key[:-1]
+    tied[:-1] |= tied[1:]
+    if tied.any():
+        runs = order[tied]
+        order[tied] = runs[np.lexsort((growing[runs], crossing[runs], along[runs]))]
+    return order
 
 
 def _line_ends(chains, closed):
