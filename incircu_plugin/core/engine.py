@@ -227,17 +227,15 @@ def _fewest_vertices(points, tolerance):
     When the plain simplification crosses itself, GEOS's (slower) topology-preserving one keeps the line
     simple.
     """
-    whole = shapely.linestrings(points)
+    # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
+    # keeps, so the kept ones are known without matching coordinates.
+    whole = shapely.linestrings(np.column_stack([points, np.arange(len(points), dtype=float)]))
     line = shapely.simplify(whole, tolerance, preserve_topology=False)
     if not shapely.is_simple(line):
         line = shapely.simplify(whole, tolerance, preserve_topology=True)
-    kept = np.sort(np.ascontiguousarray(shapely.get_coordinates(line)).view(np.complex128).ravel())
-    keys = np.ascontiguousarray(points).view(np.complex128).ravel()
-    if len(kept) == 0:
-        return np.zeros(len(keys), dtype=bool)
-    # np.isin(keys, kept), by a binary search in the few kept vertices instead of sorting all of them.
-    found = np.minimum(np.searchsorted(kept, keys), len(kept) - 1)
-    return kept[found] == keys
+    keep = np.zeros(len(points), dtype=bool)
+    keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
+    return keep
 
 
 def _ordered(points, side, lengths, coincidence):
