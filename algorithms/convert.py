@@ -1,5 +1,6 @@
 """Geometry hand-over between QGIS and the core: WKB conversion and the local metric frame of geographic layers."""
 
+import numpy as np
 import shapely
 from qgis.core import (
     QgsGeometry,
@@ -130,6 +131,12 @@ class WorkingFrame:
         """Return a QGIS geometry of the layer as a Shapely geometry in the working frame."""
         shape = to_shapely(geometry)
         return shape if self.projection is None else self.projection.to_local(shape)
+
+    def coordinates_to_core(self, coordinates):
+        """Return layer coordinates (a sequence of (x, y) pairs) as an ``(n, 2)`` array in the working frame
+        (metres for a geographic layer)."""
+        coordinates = np.asarray(coordinates, dtype=float).reshape(-1, 2)
+        return coordinates if self.projection is None else self.projection.to_local(coordinates)
 
     def to_layer(self, shape):
         """Return a Shapely geometry or ``(n, 2)`` array of the working frame in the layer's CRS."""

@@ -1,6 +1,6 @@
 """Output layers of the IncirCu algorithms: fields, statistics and the writing of core results."""
 
-import numpy as np
+import shapely
 from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
@@ -171,7 +171,7 @@ class CenterlineWriter:
         for group in groups:
             lines = []
             for _, result in group:
-                coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
+                coordinates = frame.to_layer(shapely.get_coordinates(result.line))
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
             statistics = width_statistics([result for _, result in group])
@@ -193,7 +193,7 @@ class CenterlineWriter:
 
     def _write_extras(self, source_fid, part_index, result, frame):
         if self.vertices is not None:
-            coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
+            coordinates = frame.to_layer(shapely.get_coordinates(result.line))
             for index, ((x, y), chainage, radius) in enumerate(
                 zip(coordinates, vertex_chainages(result), result.radii)
             ):

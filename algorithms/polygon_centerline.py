@@ -158,7 +158,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
             steps = run.core.multipolygon_centerline_steps(
                 run.frame.to_core(geometry),
-                candidates or None,
+                candidates if len(candidates) else None,
                 guide=_guide_near(run.frame, geometry, guides, guide_index),
                 progress=run.keep_going,
                 **options,

@@ -1,6 +1,6 @@
 """Split points of the polygon algorithms: read once per run with their ids, found per polygon by a spatial index."""
 
-from qgis.core import QgsFeatureRequest, QgsGeometry, QgsPointXY, QgsRectangle, QgsSpatialIndex
+from qgis.core import QgsFeatureRequest, QgsRectangle, QgsSpatialIndex
 
 
 def layer_margin(distance, geometry, geographic):
@@ -13,7 +13,8 @@ def layer_margin(distance, geometry, geographic):
 
 
 class SplitPoints:
-    """Every vertex of a point layer, in the polygon layer's CRS, with the id of its feature.
+    """Every vertex of a point layer, in the polygon layer's CRS (``points``: (x, y) pairs), with the id of its
+    feature.
 
     Parameters
     ----------
@@ -38,7 +39,7 @@ class SplitPoints:
             point_id = feature.attribute(field) if field >= 0 else feature.id()
             for vertex in feature.geometry().vertices():
                 self.index.addFeature(len(self.points), QgsRectangle(vertex.x(), vertex.y(), vertex.x(), vertex.y()))
-                self.points.append(vertex)
+                self.points.append((vertex.x(), vertex.y()))
                 self.ids.append(point_id)
 
     def near(self, geometry, distance, frame):
@@ -55,14 +56,11 @@ class SplitPoints:
 
         Returns
         -------
-        points : list of shapely Point
+        points : ndarray of shape (n, 2)
             In the working frame.
         ids : list
             The id of each point's feature.
         """
         margin = layer_margin(distance, geometry, self.geographic)
         found = self.index.intersects(geometry.boundingBox().buffered(margin))
-        points = [
-            frame.to_core(QgsGeometry.fromPointXY(QgsPointXY(self.points[i].x(), self.points[i].y()))) for i in found
-        ]
-        return points, [self.ids[i] for i in found]
+        return frame.coordinates_to_core([self.points[i] for i in found]), [self.ids[i] for i in found]

@@ -419,12 +419,13 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
     request (as :func:`.steps.run_together` does with a failed tracing).
     """
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
+    coordinates = shapely.get_coordinates(points).reshape(-1, 2)
     progress = options.pop("progress", None)
     outcomes = []
     for index, (part, near) in enumerate(parts):
         try:
             validate_polygon(part)
-            mine = [points[i] for i in near]
+            mine = coordinates[near]
             if len(mine) not in (0, 2):
                 raise SplitPointError(
                     f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
@@ -432,7 +433,7 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
                 )
             result = yield from polygon_centerline_steps(
                 part,
-                mine or None,
+                mine if len(mine) else None,
                 snap_tolerance=snap_tolerance,
                 progress=part_progress(progress, index, len(parts)),
                 **options,

@@ -89,14 +89,17 @@ def width_statistics(results):
         (True when every part had automatic ends), ``ends_from`` (the parts' ``split_points``, ``guide`` or
         ``automatic``, comma-separated; None for lines); lengths in the results' CRS units.
     """
-    widths, integral, span = [], 0.0, 0.0
+    widths, integral, span, vertices = [], 0.0, 0.0, 0
     for result in results:
+        chainages = vertex_chainages(result)
+        vertices += len(chainages)
         positive = result.widths > 0
-        width, chainage = result.widths[positive], vertex_chainages(result)[positive]
-        widths.extend(float(w) for w in width)
+        width, chainage = result.widths[positive], chainages[positive]
+        widths.append(width)
         if len(width) > 1:
-            integral += float(np.sum(0.5 * (width[1:] + width[:-1]) * np.diff(chainage)))
+            integral += float(np.sum(0.5 * (width[1:] + width[:-1]) * (chainage[1:] - chainage[:-1])))
             span += float(chainage[-1] - chainage[0])
+    widths = np.concatenate(widths).tolist() if widths else []
     if widths and span <= 0:
         integral, span = sum(widths), len(widths)
     return {
@@ -104,7 +107,7 @@ def width_statistics(results):
         "width_min": min(widths) if widths else None,
         "width_mean": integral / span if widths else None,
         "width_max": max(widths) if widths else None,
-        "n_vertices": int(sum(len(result.line.coords) for result in results)),
+        "n_vertices": vertices,
         "ends_found": all(bool(result.ends_found) for result in results),
         "ends_from": ",".join(sorted({result.ends_from for result in results if hasattr(result, "ends_from")})) or None,
     }
