@@ -12,7 +12,8 @@
 # polygons and the real outlines, issue 9), bench_core.py (10^6 vertices end to end, peak memory),
 # bench_paper.py (Fig. 4 and Table 1 of the paper), profile_incircu.py, and writes docs/benchmark.md,
 # docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/;
-# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page.
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page, and
+# bench_plugin.py prints the plugin's cost per feature against the core's.
 #
 # Options: --quick (no GRASS, 40 rivers, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
@@ -89,6 +90,12 @@ fi
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
 "$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
+# The plugin's feature loop against the core per feature (issue 9's small features); prints its table.
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_plugin.py" --count 500 --repeats 1
+else
+  "$PYTHON" "$BENCH_DIR/bench_plugin.py"
+fi
 # Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
 # (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
 if [ -x "$REPO_ROOT/.venv/bin/python" ]; then
