@@ -234,10 +234,11 @@ def _find_ends(polygon, rule, guide, check):
     trunk_radii = radii[path]
     junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
     along = cumulative_lengths(trunk)
-    first = _centred_end(local, trunk, trunk_radii, junction, along, 1.0, step)
-    second = _centred_end(local, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
+    ring = _Ring(local.exterior)
+    first = _centred_end(ring, trunk, trunk_radii, junction, along, 1.0, step)
+    second = _centred_end(ring, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
     if np.hypot(*(first - second)) <= MIN_SEPARATION:
-        second = _opposite_point(local.exterior, first)
+        second = _opposite_point(ring.exterior, first)
     check(1.0)
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
@@ -347,13 +348,13 @@ def _interpolate(points, along, position):
     return points[index] + fraction * (points[index + 1] - points[index])
 
 
-def _centred_end(polygon, trunk, radii, junction, along, extent, step):
+def _centred_end(ring, trunk, radii, junction, along, extent, step):
     """Return the end at the start of ``trunk``, centred in its end cap (see the module docstring).
 
     Parameters
     ----------
-    polygon : Polygon
-        Valid polygon, CRS units.
+    ring : _Ring
+        The polygon's exterior ring, counter-clockwise, CRS units.
     trunk : ndarray of shape (k, 2)
         Longest skeleton path, starting at the end to centre.
     radii : ndarray of shape (k,)
@@ -373,7 +374,7 @@ def _centred_end(polygon, trunk, radii, junction, along, extent, step):
         The end, on the polygon's exterior ring, CRS units.
     """
     if len(trunk) < 2:
-        return _nearest_boundary_point(polygon, trunk[0])
+        return _nearest_boundary_points(ring.exterior, trunk[:1])[0]
     position = _last_trunk_position(radii, along, junction)
     last_trunk_point = _interpolate(trunk, along, position)
     radius = max(float(np.interp(position, along, radii)), step)
@@ -381,11 +382,10 @@ def _centred_end(polygon, trunk, radii, junction, along, extent, step):
     if not np.any(chord):
         chord = trunk[0] - last_trunk_point
     if not np.any(chord):
-        return _nearest_boundary_point(polygon, last_trunk_point)
+        return _nearest_boundary_points(ring.exterior, last_trunk_point[None])[0]
     chord = chord / np.hypot(*chord)
     normal = np.array([-chord[1], chord[0]])
-    left = _nearest_boundary_point(polygon, last_trunk_point + radius * normal)
-    right = _nearest_boundary_point(polygon, last_trunk_point - radius * normal)
+    left, right = _nearest_boundary_points(ring.exterior, last_trunk_point + np.outer([1.0, -1.0], radius * normal))
     tangent = np.array([left[1] - right[1], right[0] - left[0]])
     tangent_norm = float(np.hypot(*tangent))
     if tangent_norm <= 1e-9 * extent:
@@ -393,11 +393,11 @@ def _centred_end(polygon, trunk, radii, junction, along, extent, step):
     else:
         tangent = tangent / tangent_norm * np.sign(np.dot(tangent, chord) or 1.0)
     ray = LineString([last_trunk_point, last_trunk_point + tangent * 2.0 * extent])
-    hits = shapely.get_coordinates(shapely.intersection(ray, polygon.exterior))
+    hits = shapely.get_coordinates(shapely.intersection(ray, ring.exterior))
     if len(hits) == 0:
-        return _nearest_boundary_point(polygon, last_trunk_point)
+        return _nearest_boundary_points(ring.exterior, last_trunk_point[None])[0]
     exit_point = hits[int(np.argmin(np.hypot(*(hits - last_trunk_point).T)))]
-    return _cap_middle(polygon.exterior, left, right, exit_point)
+    return _cap_middle(ring, left, right, exit_point)
 
 
 def _last_trunk_position(radii, along, junction):
@@ -437,7 +437,38 @@ def _last_trunk_position(radii, along, junction):
     return float(along[index - 1] + (along[index] - along[index - 1]) * (-before) / (after - before))
 
 
-def _cap_middle(exterior, left, right, exit_point):
+class _Ring:
+    """A polygon's exterior ring and what the end caps need of it, computed once.
+
+    Attributes
+    ----------
+    exterior : LinearRing
+        Counter-clockwise, CRS units.
+    perimeter : float
+        CRS units.
+    positions : ndarray of shape (m,)
+        Arc length of each vertex (without the closing one and zero-length segments), CRS units.
+    turn : ndarray of shape (m,)
+        Signed turn of the ring at each of those vertices, radians (positive to the left).
+    """
+
+    def __init__(self, exterior):
+        self.exterior = exterior
+        self.perimeter = exterior.length
+        ring = shapely.get_coordinates(exterior)
+        step = np.diff(ring, axis=0)
+        keep = np.hypot(*step.T) > 0.0
+        vertices = ring[:-1][keep]
+        self.positions = np.concatenate([[0.0], np.cumsum(np.hypot(*step.T))])[:-1][keep]
+        incoming = vertices - np.roll(vertices, 1, axis=0)
+        outgoing = np.roll(vertices, -1, axis=0) - vertices
+        self.turn = np.arctan2(
+            incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
+            np.einsum("ij,ij->i", incoming, outgoing),
+        )
+
+
+def _cap_middle(ring, left, right, exit_point):
     """Return the middle of the end cap: the ring arc from ``right`` to ``left`` through the exit.
 
     Corners are the arc's vertices where a counter-clockwise ring turns left by ``CORNER_TURN`` or more.
@@ -447,7 +478,7 @@ def _cap_middle(exterior, left, right, exit_point):
 
     Parameters
     ----------
-    exterior : LinearRing
+    ring : _Ring
         The polygon's exterior ring, counter-clockwise, CRS units.
     left, right : ndarray of shape (2,)
         Where the last trunk point's disk touches the two banks, CRS units.
@@ -459,8 +490,10 @@ def _cap_middle(exterior, left, right, exit_point):
     ndarray of shape (2,)
         The end, CRS units; ``exit_point`` itself when the arc is more than half the ring.
     """
-    perimeter = exterior.length
-    at_left, at_right, at_exit = (exterior.project(Point(xy)) for xy in (left, right, exit_point))
+    perimeter = ring.perimeter
+    at_left, at_right, at_exit = shapely.line_locate_point(
+        ring.exterior, shapely.points(np.array([left, right, exit_point]))
+    ).tolist()
     forward = (at_left - at_right) % perimeter
     if (at_exit - at_right) % perimeter <= forward:
         start, length = at_right, forward
@@ -468,28 +501,17 @@ def _cap_middle(exterior, left, right, exit_point):
         start, length = at_left, perimeter - forward
     if length > perimeter / 2.0:
         return exit_point
-    ring = shapely.get_coordinates(exterior)
-    step = np.diff(ring, axis=0)
-    keep = np.hypot(*step.T) > 0.0
-    vertices = ring[:-1][keep]
-    positions = np.concatenate([[0.0], np.cumsum(np.hypot(*step.T))])[:-1][keep]
-    incoming = vertices - np.roll(vertices, 1, axis=0)
-    outgoing = np.roll(vertices, -1, axis=0) - vertices
-    turn = np.arctan2(
-        incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
-        np.einsum("ij,ij->i", incoming, outgoing),
-    )
-    offset = (positions - start) % perimeter
-    corners = np.sort(offset[(offset > 0.0) & (offset < length) & (turn >= CORNER_TURN)])
+    offset = (ring.positions - start) % perimeter
+    corners = np.sort(offset[(offset > 0.0) & (offset < length) & (ring.turn >= CORNER_TURN)])
     if len(corners) == 1:
         target = corners[0]
     elif len(corners) > 1:
         target = (corners[0] + corners[-1]) / 2.0
     else:
         target = length / 2.0
-    return np.asarray(exterior.interpolate((start + target) % perimeter).coords[0])
+    return shapely.get_coordinates(shapely.line_interpolate_point(ring.exterior, (start + target) % perimeter))[0]
 
 
-def _nearest_boundary_point(polygon, xy):
-    """Return the point of the polygon's exterior ring nearest to ``xy``, CRS units."""
-    return np.asarray(shapely.shortest_line(Point(xy), polygon.exterior).coords[1])
+def _nearest_boundary_points(exterior, xy):
+    """Return the point of the ring ``exterior`` nearest to each of the points ``xy`` (shape (n, 2)), CRS units."""
+    return shapely.get_coordinates(shapely.shortest_line(shapely.points(xy), exterior))[1::2]
