@@ -98,8 +98,9 @@ class _Spans:
     normal: np.ndarray
     position: np.ndarray
 
-    def samples(self, span, u, boundary):
-        """The samples at parameters ``u`` of spans ``span``."""
+    def frame(self, span, u):
+        """Point and direction of the samples at parameters ``u`` of spans ``span``, and how far along its
+        edge each point lies (CRS units; 0 on a fan)."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
         angle = np.where(edge, 0.0, u)
@@ -108,13 +109,19 @@ class _Spans:
             self.normal[span],
             np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
         )
+        return self.point[span] + along[:, None] * self.unit[span], direction, along
+
+    def samples(self, span, u, boundary):
+        """The samples at parameters ``u`` of spans ``span``."""
+        edge = self.kind[span] == EDGE
+        point, direction, along = self.frame(span, u)
         segment = self.segment[span]
         # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
         at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
         return Samples(
             chain=self.chain[span],
-            point=self.point[span] + along[:, None] * self.unit[span],
+            point=point,
             direction=direction,
             scale=np.ones(len(span)),
             position=self.position[span] + along,
@@ -397,25 +404,19 @@ class _Tracer:
         """Per-chain ``values`` for each interval (the chain of its span)."""
         return values[self.spans.chain[intervals.span]]
 
-    def add(self, samples, t, emit, other_site):
-        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain.
+    def add(self, span, u, t, emit, other_site):
+        """Append solved samples (at parameters ``u`` of spans ``span``); returns their indices.
+        ``other_site`` gives the foot on the other chain.
 
-        The arrays grow by doubling, so a round costs its own samples only.
+        A sample is stored as its span and parameter (its point and direction follow from them, see
+        :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
         """
-        columns = {
-            "point": samples.point,
-            "direction": samples.direction,
-            "chain": samples.chain,
-            "position": samples.position,
-            "t": t,
-            "emit": emit,
-            "other_site": other_site,
-        }
+        columns = {"span": span, "u": u, "t": t, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
         for name, values in columns.items():
             stored = self.store.get(name)
             if stored is None or len(stored) < self.count:
-                grown = np.empty((max(2 * self.count, 64),) + values.shape[1:], dtype=values.dtype)
+                grown = np.empty(max(self.count + self.count // 2, 64), dtype=values.dtype)
                 if stored is not None:
                     grown[:start] = stored[:start]
                 self.store[name] = stored = grown
@@ -429,7 +430,8 @@ class _Tracer:
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.store["point"][index] + self.store["t"][index, None] * self.store["direction"][index]
+        point, direction, _ = self.spans.frame(self.store["span"][index], self.store["u"][index])
+        return point + self.store["t"][index, None] * direction
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
@@ -455,11 +457,11 @@ class _Tracer:
             event_probes = probes.subset(slice(0, count))
             event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
-            event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
+            event_index = self.add(span[:count], u[:count], t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
             accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
-            station_index = self.add(probes.subset(slice(count, None)), t[count:], accepted, site[count:])
+            station_index = self.add(span[count:], u[count:], t[count:], accepted, site[count:])
             intervals = _Intervals.concatenate(
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
@@ -483,55 +485,66 @@ class _Tracer:
         return t, status, self.sites.canonical(site)
 
     def _initial(self, report):
-        """Solve the samples at both ends of every edge, and in the middle of an edge between two convex
+        """Solve the samples at both ends of every traced edge, and in the middle of an edge between two convex
         corners (both its ends are given the corners' own edges: its axis point would take a round to find);
         returns the intervals of every span between them."""
-        spans, sites, b = self.spans, self.sites, self.boundary
-        samples, synthetic_site, synthetic_status, split_vertex = _initial_samples(spans, sites, self.closed, b)
-        traced_edge = self.traced[b.chain_id]
-        solved = np.flatnonzero((synthetic_site < 0) & np.repeat(traced_edge, 2))
-        t = np.where(np.repeat(traced_edge, 2), 0.0, np.inf)
-        status, site = synthetic_status.copy(), synthetic_site.copy()
-        t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
-            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
+        spans, b = self.spans, self.boundary
+        edge, given_site, status, split_vertex = _initial_samples(spans, self.sites, self.closed, self.traced, b)
+        between_corners = (given_site[0::2] >= 0) & (given_site[1::2] >= 0)
+        middle = np.flatnonzero(between_corners)
+        middle_edge = edge[middle]
+        span = np.concatenate([np.repeat(edge, 2), middle_edge])
+        u = np.concatenate(
+            [np.stack([np.zeros(len(edge)), spans.length[edge]], axis=1).ravel(), 0.5 * spans.length[middle_edge]]
         )
-        edge = np.arange(b.segment_count)
-        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0) & traced_edge
-        middle_edge = edge[between_corners]
-        middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
-        middle_t, middle_status, _, _, middle_site = _solve_all(
-            middles,
-            np.arange(len(middle_edge)),
-            b,
-            0.625 * self.width,
-            self.max_t,
-            self.min_t,
-            lambda done: report(0.6 + 0.2 * done),
-        )
-        samples = Samples.concatenate([samples, middles])
-        t = np.concatenate([t, middle_t])
-        status = np.concatenate([status, middle_status])
-        site = sites.canonical(np.concatenate([site, middle_site]))
+        t, status, site = self._solve_initial(spans.samples(span, u, b), given_site, status, report)
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
         split_vertex = np.concatenate([split_vertex, np.full(len(middle_edge), -1)])
-        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[samples.chain]) & ~emit
-        self.add(samples, t, emit | at_split, np.where(at_split, split_vertex, site))
-        middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
+        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[spans.chain[span]]) & ~emit
+        self.add(span, u, t, emit | at_split, np.where(at_split, split_vertex, site))
+        middle_index = 2 * len(edge) + np.arange(len(middle_edge))
         reflex = np.flatnonzero((spans.kind == FAN) & self.traced[spans.chain])
-        incoming = spans.segment[reflex]
-        whole = edge[~between_corners & traced_edge]
-        span = np.concatenate([whole, middle_edge, middle_edge, reflex])
+        incoming = np.searchsorted(edge, spans.segment[reflex])
+        whole = np.flatnonzero(~between_corners)
+        span = np.concatenate([edge[whole], middle_edge, middle_edge, reflex])
         u0 = np.concatenate(
             [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
         )
         u1 = np.concatenate(
-            [spans.length[whole], 0.5 * spans.length[middle_edge], spans.length[middle_edge], spans.length[reflex]]
+            [
+                spans.length[edge[whole]],
+                0.5 * spans.length[middle_edge],
+                spans.length[middle_edge],
+                spans.length[reflex],
+            ]
         )
-        left = np.concatenate([2 * whole, 2 * middle_edge, middle_index, 2 * incoming + 1])
-        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
+        left = np.concatenate([2 * whole, 2 * middle, middle_index, 2 * incoming + 1])
+        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle + 1, 2 * (incoming + 1)])
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
+
+    def _solve_initial(self, samples, given_site, given_status, report):
+        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved),
+        then the middles after them (``given_status`` for the ends). Returns ``t``, status and canonical site
+        of every sample."""
+        count = len(given_site)
+        solved = np.flatnonzero(given_site < 0)
+        middles = np.arange(count, len(samples.chain))
+        t = np.zeros(len(samples.chain))
+        site = np.concatenate([given_site, np.full(len(middles), -1)])
+        status = np.concatenate([given_status, np.full(len(middles), SKIPPED, dtype=np.int8)])
+        for index, begin, share in ((solved, 0.0, 0.6), (middles, 0.6, 0.2)):
+            t[index], status[index], _, _, site[index] = _solve_all(
+                samples,
+                index,
+                self.boundary,
+                0.625 * self.width,
+                self.max_t,
+                self.min_t,
+                lambda done, begin=begin, share=share: report(begin + share * done),
+            )
+        return t, status, self.sites.canonical(site)
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
@@ -669,18 +682,16 @@ class _Tracer:
         """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on."""
         store = {name: values[: self.count] for name, values in self.store.items()}
         index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
-        centre = self.centres(index)
+        span, t = store["span"][index], store["t"][index]
+        point, direction, along = self.spans.frame(span, store["u"][index])
+        centre = point + t[:, None] * direction
+        del direction
         other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
+        chain = self.spans.chain[span]
         points = AxisPoints.from_chain_feet(
-            store["chain"][index],
-            centre,
-            store["t"][index],
-            store["point"][index],
-            store["position"][index],
-            other_foot,
-            other_position,
+            chain, centre, t, point, self.spans.position[span] + along, other_foot, other_position
         )
-        return points, store["chain"][index]
+        return points, chain
 
 
 def _solve_all(samples, index, *arguments):
@@ -690,43 +701,44 @@ def _solve_all(samples, index, *arguments):
     return solve_in_chunks(samples, index, *arguments)
 
 
-def _initial_samples(spans, sites, closed, boundary):
-    """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
+def _initial_samples(spans, sites, closed, traced, boundary):
+    """The given sites of the samples at both ends of every edge of the traced chains (``traced``: per chain).
 
-    ``closed``: per chain, whether its pair of chains shares both end points. Also returns, per sample, the
-    site of the other chain's vertex when the sample lies at a straight split point (else -1).
+    ``closed``: per chain, whether its pair of chains shares both end points. Returns the traced edges
+    (global segment indices; the ``k``-th one's samples are ``2k`` and ``2k + 1``) and, per sample, the given
+    site (-1: to be solved), its status, and the site of the other chain's vertex when the sample lies at a
+    straight split point (else -1).
 
     A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
     ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
-    point). Returns the samples and, per sample, the given site (-1: to be solved) and status.
+    point).
     """
-    edge_count = boundary.segment_count
-    edge = np.arange(edge_count)
-    u = np.stack([np.zeros(edge_count), spans.length[:edge_count]], axis=1).ravel()
-    samples = spans.samples(np.repeat(edge, 2), u, boundary)
-    site = np.full(2 * edge_count, -1)
-    status = np.full(2 * edge_count, SKIPPED, dtype=np.int8)
-    start_vertex = edge + boundary.chain_id
-    corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain
-    corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain
-    site[2 * edge[corner_at_start]] = edge[corner_at_start] - 1
-    site[2 * edge[corner_at_end] + 1] = edge[corner_at_end] + 1
+    edge = np.flatnonzero(traced[boundary.chain_id])
+    rank = np.arange(len(edge))
+    site = np.full(2 * len(edge), -1)
+    status = np.full(2 * len(edge), SKIPPED, dtype=np.int8)
+    start_vertex = edge + boundary.chain_id[edge]
+    corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain[edge]
+    corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain[edge]
+    site[2 * rank[corner_at_start]] = edge[corner_at_start] - 1
+    site[2 * rank[corner_at_end] + 1] = edge[corner_at_end] + 1
     # Convex at a split point: the other chain's end edge leaves it into the region.
     first_edge = np.asarray(boundary.offset)
-    last_edge = np.append(first_edge[1:], edge_count) - 1
-    split_vertex = np.full(2 * edge_count, -1)
-    chain = np.flatnonzero(closed)
+    last_edge = np.append(first_edge[1:], boundary.segment_count) - 1
+    split_vertex = np.full(2 * len(edge), -1)
+    chain = np.flatnonzero(closed & traced)
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
+        own_rank = np.searchsorted(edge, own)
         turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own])
         convex = turn > STRAIGHT_TURN
-        site[2 * own[convex] + which] = other[convex]
-        status[2 * own[convex] + which] = CLEAR
+        site[2 * own_rank[convex] + which] = other[convex]
+        status[2 * own_rank[convex] + which] = CLEAR
         # The other chain's vertex at a straight split point (the other chain's end vertex of that side).
         straight = np.abs(turn) <= STRAIGHT_TURN
         vertex = other + (chain ^ 1) + which
-        split_vertex[2 * own[straight] + which] = edge_count + vertex[straight]
-    return samples, site, status, split_vertex
+        split_vertex[2 * own_rank[straight] + which] = boundary.segment_count + vertex[straight]
+    return edge, site, status, split_vertex
 
 
 def _split_at(intervals, u, probe_index, probe_site, event):
