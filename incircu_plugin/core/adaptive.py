@@ -81,7 +81,7 @@ SMALLEST_MOVE = 1e-6
 
 @dataclass(frozen=True)
 class _Spans:
-    """The spans of both chains.
+    """The spans of the traced chains (see :class:`_Tracer`).
 
     A sample at parameter ``u`` of span ``i`` lies at ``point + u * unit`` with direction ``normal`` on an
     edge, and at ``point`` with direction ``cos(u) * unit + sin(u) * normal`` on a fan; ``segment`` is the
@@ -103,13 +103,17 @@ class _Spans:
         edge each point lies (CRS units; 0 on a fan)."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
-        angle = np.where(edge, 0.0, u)
-        direction = np.where(
-            edge[:, None],
-            self.normal[span],
-            np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
-        )
-        return self.point[span] + along[:, None] * self.unit[span], direction, along
+        point, direction = self.point[span], self.normal[span]
+        on_edge, on_fan = np.flatnonzero(edge), np.flatnonzero(~edge)
+        del edge
+        point[on_edge] += along[on_edge, None] * self.unit[span[on_edge]]
+        angle, fan = u[on_fan, None], span[on_fan]
+        direction[on_fan] = np.cos(angle) * self.unit[fan] + np.sin(angle) * direction[on_fan]
+        return point, direction, along
+
+    def position_at(self, span, u):
+        """Arc length along its chain of the samples at parameters ``u`` of spans ``span``, CRS units."""
+        return self.position[span] + np.where(self.kind[span] == EDGE, u, 0.0)
 
     def samples(self, span, u, boundary):
         """The samples at parameters ``u`` of spans ``span``."""
@@ -145,6 +149,11 @@ class _Intervals(ArrayRecord):
     site1: np.ndarray
     verified: np.ndarray
 
+    def __post_init__(self):
+        """The index columns as int32 (see :class:`.contacts.Boundary`)."""
+        for name in ("span", "left", "right", "site0", "site1"):
+            setattr(self, name, np.asarray(getattr(self, name), dtype=np.int32))
+
 
 @dataclass(frozen=True)
 class _Geometry:
@@ -170,27 +179,31 @@ def _geometry(boundary, sides):
     before, after = unit[joint], unit[joint + 1]
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
     signed = side[joint] * turn
-    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0))
+    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
     vertex_kind[joint + boundary.chain_id[joint] + 1] = kind
     return _Geometry(normal, joint, turn, kind, vertex_kind)
 
 
-def _build_spans(boundary, geometry):
-    """The edge spans of all chains, then the fan spans of their reflex vertices."""
-    count = boundary.segment_count
-    reflex = geometry.joint[geometry.kind < 0]
-    turn = geometry.turn[geometry.kind < 0]
+def _build_spans(boundary, geometry, traced):
+    """The edge spans of the traced chains (``traced``: per chain), in the order of their segments, then the
+    fan spans of their reflex vertices."""
+    edge = np.flatnonzero(traced[boundary.chain_id])
+    joint = geometry.kind < 0
+    joint &= traced[boundary.chain_id[geometry.joint]]
+    reflex = geometry.joint[joint]
+    turn = geometry.turn[joint]
     first_normal = geometry.normal[reflex]
+    start, end = boundary.segment_position[edge], boundary.segment_end_position[edge]
     return _Spans(
-        kind=np.concatenate([np.full(count, EDGE), np.full(len(reflex), FAN)]),
-        chain=np.concatenate([boundary.chain_id, boundary.chain_id[reflex]]),
-        segment=np.concatenate([np.arange(count), reflex]),
-        length=np.concatenate([boundary.segment_end_position - boundary.segment_position, np.abs(turn)]),
-        point=np.concatenate([boundary.start, boundary.end[reflex]]),
-        unit=np.concatenate([boundary.unit, first_normal]),
-        normal=np.concatenate([geometry.normal, np.sign(turn)[:, None] * left_normal(first_normal)]),
-        position=np.concatenate([boundary.segment_position, boundary.segment_end_position[reflex]]),
+        kind=np.concatenate([np.full(len(edge), EDGE, dtype=np.int8), np.full(len(reflex), FAN, dtype=np.int8)]),
+        chain=boundary.chain_id[np.concatenate([edge, reflex])],
+        segment=np.concatenate([edge, reflex]).astype(boundary.chain_id.dtype),
+        length=np.concatenate([end - start, np.abs(turn)]),
+        point=np.concatenate([boundary.start[edge], boundary.end(reflex)]),
+        unit=np.concatenate([boundary.unit[edge], first_normal]),
+        normal=np.concatenate([geometry.normal[edge], np.sign(turn)[:, None] * left_normal(first_normal)]),
+        position=np.concatenate([start, boundary.segment_end_position[reflex]]),
     )
 
 
@@ -380,6 +393,10 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     return owner, centre, radius
 
 
+#: Types of the tracer's per-sample columns (indices fit int32, see :class:`.contacts.Boundary`).
+_STORE_TYPES = {"span": np.int32, "u": float, "t": float, "emit": bool, "other_site": np.int32}
+
+
 class _Tracer:
     """The samples of one adaptive tracing, grown round by round, and the rules that grow them.
 
@@ -388,15 +405,15 @@ class _Tracer:
     """
 
     def __init__(self, sides, boundary, closed, tolerance, width, max_t, min_t):
+        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
+        #: chains has a foot on each, so one chain's spans meet all of it).
+        self.traced = np.arange(len(closed)) % 2 == 0
         geometry = _geometry(boundary, sides)
-        self.spans = _build_spans(boundary, geometry)
+        self.spans = _build_spans(boundary, geometry, self.traced)
         self.sites = _Sites(boundary, geometry.vertex_kind)
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
-        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
-        #: chains has a foot on each, so one chain's spans meet all of it).
-        self.traced = np.arange(len(closed)) % 2 == 0
         self.count = 0
         self.store = {}
 
@@ -416,7 +433,7 @@ class _Tracer:
         for name, values in columns.items():
             stored = self.store.get(name)
             if stored is None or len(stored) < self.count:
-                grown = np.empty(max(self.count + self.count // 2, 64), dtype=values.dtype)
+                grown = np.empty(max(self.count + self.count // 2, 64), dtype=_STORE_TYPES[name])
                 if stored is not None:
                     grown[:start] = stored[:start]
                 self.store[name] = stored = grown
@@ -440,6 +457,8 @@ class _Tracer:
             open_ = self._is_open(intervals)
             curved = ~open_ & self._is_curved(intervals)
             events, curves = intervals.subset(open_), intervals.subset(curved)
+            # Only the open and curved intervals go on: the others are released before the round's output is built.
+            intervals = open_ = curved = None
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
@@ -451,11 +470,12 @@ class _Tracer:
             owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
-            probes = self.spans.samples(span, u, self.boundary)
-            t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
+            t, status, site = self._solve_probes(span, u, np.concatenate([event_trial, station_trial]))
+            del event_trial, station_trial
             count = len(event_u)
-            event_probes = probes.subset(slice(0, count))
-            event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
+            point, direction, _ = self.spans.frame(span[:count], event_u)
+            event, exact = self._is_event(events, point + t[:count, None] * direction, t[:count], site[:count], found)
+            del point, direction
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
             event_index = self.add(span[:count], u[:count], t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
@@ -471,16 +491,18 @@ class _Tracer:
             )
         return self._points()
 
-    def _solve_probes(self, probes, trial):
-        """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
-        spatial-index queries), ``CHUNK`` at a time (bounds the candidate pairs held at once); returns ``t``,
-        status and canonical site in the probes' order."""
-        order = np.lexsort((probes.position, probes.chain))
-        t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
+    def _solve_probes(self, span, u, trial):
+        """Solve the probes at parameters ``u`` of spans ``span`` in the order of their points along the chains
+        (neighbouring candidate boxes share spatial-index queries), ``CHUNK`` at a time (bounds the candidate
+        pairs and the samples held at once); returns ``t``, status and canonical site in the probes' order."""
+        order = np.lexsort((self.spans.position_at(span, u), self.spans.chain[span]))
+        t, status = np.empty(len(order)), np.empty(len(order), dtype=np.int8)
+        site = np.empty(len(order), dtype=np.int32)
         for begin in range(0, len(order), CHUNK):
             chunk = order[begin : begin + CHUNK]
+            probes = self.spans.samples(span[chunk], u[chunk], self.boundary)
             t[chunk], status[chunk], _, _, site[chunk] = solve(
-                probes, chunk, self.boundary, trial[chunk], self.max_t, self.min_t
+                probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
         return t, status, self.sites.canonical(site)
 
@@ -490,35 +512,29 @@ class _Tracer:
         returns the intervals of every span between them."""
         spans, b = self.spans, self.boundary
         edge, given_site, status, split_vertex = _initial_samples(spans, self.sites, self.closed, self.traced, b)
+        # The traced edges' spans come first, in the same order.
+        edge_span = np.arange(len(edge))
         between_corners = (given_site[0::2] >= 0) & (given_site[1::2] >= 0)
         middle = np.flatnonzero(between_corners)
-        middle_edge = edge[middle]
-        span = np.concatenate([np.repeat(edge, 2), middle_edge])
+        span = np.concatenate([np.repeat(edge_span, 2), middle])
         u = np.concatenate(
-            [np.stack([np.zeros(len(edge)), spans.length[edge]], axis=1).ravel(), 0.5 * spans.length[middle_edge]]
+            [np.stack([np.zeros(len(edge)), spans.length[edge_span]], axis=1).ravel(), 0.5 * spans.length[middle]]
         )
         t, status, site = self._solve_initial(spans.samples(span, u, b), given_site, status, report)
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
-        split_vertex = np.concatenate([split_vertex, np.full(len(middle_edge), -1)])
+        split_vertex = np.concatenate([split_vertex, np.full(len(middle), -1)])
         at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[spans.chain[span]]) & ~emit
         self.add(span, u, t, emit | at_split, np.where(at_split, split_vertex, site))
-        middle_index = 2 * len(edge) + np.arange(len(middle_edge))
-        reflex = np.flatnonzero((spans.kind == FAN) & self.traced[spans.chain])
+        middle_index = 2 * len(edge) + np.arange(len(middle))
+        reflex = np.flatnonzero(spans.kind == FAN)
         incoming = np.searchsorted(edge, spans.segment[reflex])
         whole = np.flatnonzero(~between_corners)
-        span = np.concatenate([edge[whole], middle_edge, middle_edge, reflex])
-        u0 = np.concatenate(
-            [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
-        )
+        span = np.concatenate([whole, middle, middle, reflex])
+        u0 = np.concatenate([np.zeros(len(whole) + len(middle)), 0.5 * spans.length[middle], np.zeros(len(reflex))])
         u1 = np.concatenate(
-            [
-                spans.length[edge[whole]],
-                0.5 * spans.length[middle_edge],
-                spans.length[middle_edge],
-                spans.length[reflex],
-            ]
+            [spans.length[whole], 0.5 * spans.length[middle], spans.length[middle], spans.length[reflex]]
         )
         left = np.concatenate([2 * whole, 2 * middle, middle_index, 2 * incoming + 1])
         right = np.concatenate([2 * whole + 1, middle_index, 2 * middle + 1, 2 * (incoming + 1)])
@@ -611,7 +627,7 @@ class _Tracer:
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
 
-    def _is_event(self, intervals, probes, t, site, found):
+    def _is_event(self, intervals, centre, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
         loosely, to ``LOOSE_EVENT_TOLERANCE`` relative to its radius, and exactly (two masks).
 
@@ -621,9 +637,8 @@ class _Tracer:
         Exactly means to ``EVENT_TOLERANCE`` relative to the radius times the parting of the two feet as seen
         from the centre (the distance between the unit vectors towards them): a gap ``g`` in the radius puts
         the centre about ``g`` / parting off the axis, which is large where the feet nearly coincide (two
-        nearly collinear segments meeting at a split point).
+        nearly collinear segments meeting at a split point). ``centre``: the probes' disk centres.
         """
-        centre = probes.point + t[:, None] * probes.direction
         with np.errstate(invalid="ignore", divide="ignore"):
             foot0, foot1 = self.sites.feet(intervals.site0, centre)[0], self.sites.feet(intervals.site1, centre)[0]
             distance0 = np.where(intervals.site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
@@ -679,19 +694,18 @@ class _Tracer:
         return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
 
     def _points(self):
-        """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on."""
-        store = {name: values[: self.count] for name, values in self.store.items()}
-        index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
-        span, t = store["span"][index], store["t"][index]
-        point, direction, along = self.spans.frame(span, store["u"][index])
+        """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on (the first chain of
+        its pair, so its foot is ``foot_a``). Releases the store."""
+        store, self.store = self.store, {}
+        index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
+        span, u, t, other_site = (store[name][index] for name in ("span", "u", "t", "other_site"))
+        del store, index
+        point, direction, along = self.spans.frame(span, u)
         centre = point + t[:, None] * direction
-        del direction
-        other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
-        chain = self.spans.chain[span]
-        points = AxisPoints.from_chain_feet(
-            chain, centre, t, point, self.spans.position[span] + along, other_foot, other_position
-        )
-        return points, chain
+        del direction, u
+        other_foot, other_position = self.sites.feet(other_site, centre)
+        points = AxisPoints(centre, t, point, other_foot, self.spans.position[span] + along, other_position)
+        return points, self.spans.chain[span]
 
 
 def _solve_all(samples, index, *arguments):
@@ -730,7 +744,7 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
         own_rank = np.searchsorted(edge, own)
-        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own])
+        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own_rank])
         convex = turn > STRAIGHT_TURN
         site[2 * own_rank[convex] + which] = other[convex]
         status[2 * own_rank[convex] + which] = CLEAR
@@ -814,10 +828,14 @@ def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t
 
 
 def trace_one(request, report):
-    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``."""
+    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``.
+
+    The request's :class:`.contacts.Boundary` is built here and released with the tracer (not cached on the
+    request, which lives on while its centerline is assembled).
+    """
     return adaptive_axis_points(
         request.sides,
-        request.boundary,
+        Boundary(request.chains),
         request.closed,
         request.tolerance,
         request.width,
