@@ -242,13 +242,19 @@ class _Sites:
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
         b = self.boundary
-        is_segment = site < b.segment_count
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        foot, position = np.empty((len(site), 2)), np.empty(len(site))
+        on_vertex = site >= b.segment_count
+        row = np.flatnonzero(on_vertex)
+        vertex = site[row] - b.segment_count
+        foot[row], position[row] = b.vertex[vertex], b.vertex_position[vertex]
+        row = np.flatnonzero(~on_vertex)
+        del on_vertex, vertex
+        segment = np.maximum(site[row], 0)
+        start, unit = b.start[segment], b.unit[segment]
         run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
-        foot = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
-        position = np.where(is_segment, b.segment_position[segment] + along, b.vertex_position[vertex])
+        along = np.clip(np.einsum("ij,ij->i", centre[row] - start, unit), 0.0, run_length)
+        foot[row] = start + along[:, None] * unit
+        position[row] = b.segment_position[segment] + along
         return foot, position
 
     def distance(self, site, centre):
@@ -570,12 +576,14 @@ class _Tracer:
         tolerance = self.of(self.tolerance, intervals)
         wide = move > SMALLEST_MOVE * tolerance
         known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
+        open_ = (intervals.site0 != intervals.site1) & finite & wide & known
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
-        with np.errstate(invalid="ignore"):
-            chord = np.hypot(*(self.centres(intervals.left) - self.centres(intervals.right)).T)
-            apart = chord > SETTLED_CHORD * tolerance
-        return (intervals.site0 != intervals.site1) & finite & wide & known & apart
+        candidate = np.flatnonzero(open_)
+        left, right = intervals.left[candidate], intervals.right[candidate]
+        chord = np.hypot(*(self.centres(left) - self.centres(right)).T)
+        open_[candidate] = chord > SETTLED_CHORD * tolerance[candidate]
+        return open_
 
     def _is_curved(self, intervals):
         """Intervals between samples touching one site of the other chain where the axis is a parabola.
@@ -695,17 +703,22 @@ class _Tracer:
 
     def _points(self):
         """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on (the first chain of
-        its pair, so its foot is ``foot_a``). Releases the store."""
+        its pair, so its foot is ``foot_a``). Releases the store and the spatial index; works ``CHUNK``
+        points at a time, so that only the output is held in full."""
+        self.boundary.release_index()
         store, self.store = self.store, {}
         index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
         span, u, t, other_site = (store[name][index] for name in ("span", "u", "t", "other_site"))
         del store, index
-        point, direction, along = self.spans.frame(span, u)
-        centre = point + t[:, None] * direction
-        del direction, u
-        other_foot, other_position = self.sites.feet(other_site, centre)
-        points = AxisPoints(centre, t, point, other_foot, self.spans.position[span] + along, other_position)
-        return points, self.spans.chain[span]
+        centre, foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2)), np.empty((len(t), 2))
+        position_a, position_b = np.empty(len(t)), np.empty(len(t))
+        for begin in range(0, len(t), CHUNK):
+            part = slice(begin, begin + CHUNK)
+            foot_a[part], direction, along = self.spans.frame(span[part], u[part])
+            centre[part] = foot_a[part] + t[part, None] * direction
+            position_a[part] = self.spans.position[span[part]] + along
+            foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
+        return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
 
 
 def _solve_all(samples, index, *arguments):
