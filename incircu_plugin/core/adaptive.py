@@ -400,7 +400,7 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
 
 
 #: Types of the tracer's per-sample columns (indices fit int32, see :class:`.contacts.Boundary`).
-_STORE_TYPES = {"span": np.int32, "u": float, "t": float, "emit": bool, "other_site": np.int32}
+_STORE_TYPES = {"span": np.int32, "u": float, "t": float, "centre": float, "emit": bool, "other_site": np.int32}
 
 
 class _Tracer:
@@ -427,19 +427,20 @@ class _Tracer:
         """Per-chain ``values`` for each interval (the chain of its span)."""
         return values[self.spans.chain[intervals.span]]
 
-    def add(self, span, u, t, emit, other_site):
-        """Append solved samples (at parameters ``u`` of spans ``span``); returns their indices.
-        ``other_site`` gives the foot on the other chain.
+    def add(self, span, u, t, centre, emit, other_site):
+        """Append solved samples (at parameters ``u`` of spans ``span``, disk centres ``centre``); returns
+        their indices. ``other_site`` gives the foot on the other chain.
 
         A sample is stored as its span and parameter (its point and direction follow from them, see
         :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
         """
-        columns = {"span": span, "u": u, "t": t, "emit": emit, "other_site": other_site}
+        columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
         for name, values in columns.items():
             stored = self.store.get(name)
             if stored is None or len(stored) < self.count:
-                grown = np.empty(max(self.count + self.count // 2, 64), dtype=_STORE_TYPES[name])
+                size = max(self.count + self.count // 2, 64)
+                grown = np.empty((size,) + values.shape[1:], dtype=_STORE_TYPES[name])
                 if stored is not None:
                     grown[:start] = stored[:start]
                 self.store[name] = stored = grown
@@ -453,8 +454,7 @@ class _Tracer:
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        point, direction, _ = self.spans.frame(self.store["span"][index], self.store["u"][index])
-        return point + self.store["t"][index, None] * direction
+        return self.store["centre"][index]
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
@@ -476,18 +476,16 @@ class _Tracer:
             owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
-            t, status, site = self._solve_probes(span, u, np.concatenate([event_trial, station_trial]))
+            t, status, site, centre = self._solve_probes(span, u, np.concatenate([event_trial, station_trial]))
             del event_trial, station_trial
             count = len(event_u)
-            point, direction, _ = self.spans.frame(span[:count], event_u)
-            event, exact = self._is_event(events, point + t[:count, None] * direction, t[:count], site[:count], found)
-            del point, direction
+            event, exact = self._is_event(events, centre[:count], t[:count], site[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
-            event_index = self.add(span[:count], u[:count], t[:count], emit, other_site)
+            event_index = self.add(span[:count], u[:count], t[:count], centre[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
             accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
-            station_index = self.add(span[count:], u[count:], t[count:], accepted, site[count:])
+            station_index = self.add(span[count:], u[count:], t[count:], centre[count:], accepted, site[count:])
             intervals = _Intervals.concatenate(
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
@@ -500,17 +498,19 @@ class _Tracer:
     def _solve_probes(self, span, u, trial):
         """Solve the probes at parameters ``u`` of spans ``span`` in the order of their points along the chains
         (neighbouring candidate boxes share spatial-index queries), ``CHUNK`` at a time (bounds the candidate
-        pairs and the samples held at once); returns ``t``, status and canonical site in the probes' order."""
+        pairs and the samples held at once); returns ``t``, status, canonical site and disk centre in the
+        probes' order."""
         order = np.lexsort((self.spans.position_at(span, u), self.spans.chain[span]))
         t, status = np.empty(len(order)), np.empty(len(order), dtype=np.int8)
-        site = np.empty(len(order), dtype=np.int32)
+        site, centre = np.empty(len(order), dtype=np.int32), np.empty((len(order), 2))
         for begin in range(0, len(order), CHUNK):
             chunk = order[begin : begin + CHUNK]
             probes = self.spans.samples(span[chunk], u[chunk], self.boundary)
             t[chunk], status[chunk], _, _, site[chunk] = solve(
                 probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
-        return t, status, self.sites.canonical(site)
+            centre[chunk] = probes.point + t[chunk, None] * probes.direction
+        return t, status, self.sites.canonical(site), centre
 
     def _initial(self, report):
         """Solve the samples at both ends of every traced edge, and in the middle of an edge between two convex
@@ -526,13 +526,16 @@ class _Tracer:
         u = np.concatenate(
             [np.stack([np.zeros(len(edge)), spans.length[edge_span]], axis=1).ravel(), 0.5 * spans.length[middle]]
         )
-        t, status, site = self._solve_initial(spans.samples(span, u, b), given_site, status, report)
+        samples = spans.samples(span, u, b)
+        t, status, site = self._solve_initial(samples, given_site, status, report)
+        centre = samples.point + t[:, None] * samples.direction
+        del samples
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
         split_vertex = np.concatenate([split_vertex, np.full(len(middle), -1)])
         at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[spans.chain[span]]) & ~emit
-        self.add(span, u, t, emit | at_split, np.where(at_split, split_vertex, site))
+        self.add(span, u, t, centre, emit | at_split, np.where(at_split, split_vertex, site))
         middle_index = 2 * len(edge) + np.arange(len(middle))
         reflex = np.flatnonzero(spans.kind == FAN)
         incoming = np.searchsorted(edge, spans.segment[reflex])
@@ -708,14 +711,13 @@ class _Tracer:
         self.boundary.release_index()
         store, self.store = self.store, {}
         index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
-        span, u, t, other_site = (store[name][index] for name in ("span", "u", "t", "other_site"))
+        span, u, t, centre, other_site = (store[name][index] for name in ("span", "u", "t", "centre", "other_site"))
         del store, index
-        centre, foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2)), np.empty((len(t), 2))
+        foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2))
         position_a, position_b = np.empty(len(t)), np.empty(len(t))
         for begin in range(0, len(t), CHUNK):
             part = slice(begin, begin + CHUNK)
-            foot_a[part], direction, along = self.spans.frame(span[part], u[part])
-            centre[part] = foot_a[part] + t[part, None] * direction
+            foot_a[part], _, along = self.spans.frame(span[part], u[part])
             position_a[part] = self.spans.position[span[part]] + along
             foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
         return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
