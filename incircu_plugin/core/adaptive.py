@@ -431,8 +431,8 @@ class _Tracer:
         """Append solved samples (at parameters ``u`` of spans ``span``, disk centres ``centre``); returns
         their indices. ``other_site`` gives the foot on the other chain.
 
-        A sample is stored as its span and parameter (its point and direction follow from them, see
-        :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
+        A sample is stored as its span, parameter and centre (its point and direction follow from span and
+        parameter, see :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
         """
         columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)

@@ -57,6 +57,9 @@ QUERY_GROUP = 2
 INDEX_RUN = 8
 SINGLE_INDEX = 1 << 17
 
+#: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
+MAX_SEGMENTS = 2**30 - 1
+
 #: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
 ALL_PAIRS = 1 << 15
 
@@ -99,13 +102,15 @@ class Boundary:
 
     A *site* is what a disk can touch: the interior of segment ``g`` (site ``g``) or a vertex (site
     ``segment_count + v``, with ``v`` the vertex's index in ``vertex``, the chains' vertices one chain after
-    the other).
+    the other). Segment ``g`` runs from vertex ``g + chain_id[g]`` to the next one. Per segment it holds
+    one copy of each quantity (the x and y columns are views of the coordinate arrays; end points are read
+    from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites in int32.
     """
 
     def __init__(self, chains):
         sizes = np.array([len(chain) - 1 for chain in chains])
         count = int(sizes.sum())
-        if count + len(chains) >= 2**30:
+        if count + len(chains) > MAX_SEGMENTS:
             raise InvalidGeometryError(f"The boundary has {count:,} segments, more than this engine can index.")
         self.segment_count = count
         #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
@@ -123,7 +128,6 @@ class Boundary:
         self.last_of_chain[np.cumsum(sizes) - 1] = True
         self.first_of_chain = np.zeros(count, dtype=bool)
         self.first_of_chain[self.offset] = True
-        # Segment g runs from vertex g + chain_id[g] to the next one.
         start_vertex = np.arange(count, dtype=np.int32) + self.chain_id
         self.start = self.vertex[start_vertex]
         self.segment_position = self.vertex_position[start_vertex]
