@@ -52,9 +52,10 @@ SMALLEST_TRIAL = 1.0 / 16.0
 QUERY_GROUP = 2
 
 #: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
-#: and its tree node cost about 0.35 kB: at 10^6 segments runs of 8 save 60 MiB over runs of 4 for the same
-#: time), and the most segments indexed one by one (faster to query).
-INDEX_RUN = 8
+#: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
+#: of 8 would save about 33 MiB at 10^6 segments for the same time, but they change the order of the
+#: candidates, hence which of two equally near feet an event on the other chain reports.
+INDEX_RUN = 4
 SINGLE_INDEX = 1 << 17
 
 #: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
