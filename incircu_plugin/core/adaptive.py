@@ -103,10 +103,10 @@ class _Spans:
         edge each point lies (CRS units; 0 on a fan)."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
-        point, direction = self.point[span], self.normal[span]
-        on_edge, on_fan = np.flatnonzero(edge), np.flatnonzero(~edge)
-        del edge
-        point[on_edge] += along[on_edge, None] * self.unit[span[on_edge]]
+        point = self.point[span]
+        point += along[:, None] * self.unit[span]
+        direction = self.normal[span]
+        on_fan = np.flatnonzero(~edge)
         angle, fan = u[on_fan, None], span[on_fan]
         direction[on_fan] = np.cos(angle) * self.unit[fan] + np.sin(angle) * direction[on_fan]
         return point, direction, along
