@@ -81,7 +81,7 @@ SMALLEST_MOVE = 1e-6
 
 @dataclass(frozen=True)
 class _Spans:
-    """The spans of both chains.
+    """The spans of the traced chains (see :class:`_Tracer`).
 
     A sample at parameter ``u`` of span ``i`` lies at ``point + u * unit`` with direction ``normal`` on an
     edge, and at ``point`` with direction ``cos(u) * unit + sin(u) * normal`` on a fan; ``segment`` is the
@@ -98,23 +98,34 @@ class _Spans:
     normal: np.ndarray
     position: np.ndarray
 
+    def frame(self, span, u):
+        """Point and direction of the samples at parameters ``u`` of spans ``span``, and how far along its
+        edge each point lies (CRS units; 0 on a fan)."""
+        edge = self.kind[span] == EDGE
+        along = np.where(edge, u, 0.0)
+        point = self.point[span]
+        point += along[:, None] * self.unit[span]
+        direction = self.normal[span]
+        on_fan = np.flatnonzero(~edge)
+        angle, fan = u[on_fan, None], span[on_fan]
+        direction[on_fan] = np.cos(angle) * self.unit[fan] + np.sin(angle) * direction[on_fan]
+        return point, direction, along
+
+    def position_at(self, span, u):
+        """Arc length along its chain of the samples at parameters ``u`` of spans ``span``, CRS units."""
+        return self.position[span] + np.where(self.kind[span] == EDGE, u, 0.0)
+
     def samples(self, span, u, boundary):
         """The samples at parameters ``u`` of spans ``span``."""
         edge = self.kind[span] == EDGE
-        along = np.where(edge, u, 0.0)
-        angle = np.where(edge, 0.0, u)
-        direction = np.where(
-            edge[:, None],
-            self.normal[span],
-            np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
-        )
+        point, direction, along = self.frame(span, u)
         segment = self.segment[span]
         # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
         at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
         return Samples(
             chain=self.chain[span],
-            point=self.point[span] + along[:, None] * self.unit[span],
+            point=point,
             direction=direction,
             scale=np.ones(len(span)),
             position=self.position[span] + along,
@@ -137,6 +148,11 @@ class _Intervals(ArrayRecord):
     site0: np.ndarray
     site1: np.ndarray
     verified: np.ndarray
+
+    def __post_init__(self):
+        """The index columns as int32 (see :class:`.contacts.Boundary`)."""
+        for name in ("span", "left", "right", "site0", "site1"):
+            setattr(self, name, np.asarray(getattr(self, name), dtype=np.int32))
 
 
 @dataclass(frozen=True)
@@ -163,27 +179,31 @@ def _geometry(boundary, sides):
     before, after = unit[joint], unit[joint + 1]
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
     signed = side[joint] * turn
-    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0))
+    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
     vertex_kind[joint + boundary.chain_id[joint] + 1] = kind
     return _Geometry(normal, joint, turn, kind, vertex_kind)
 
 
-def _build_spans(boundary, geometry):
-    """The edge spans of all chains, then the fan spans of their reflex vertices."""
-    count = boundary.segment_count
-    reflex = geometry.joint[geometry.kind < 0]
-    turn = geometry.turn[geometry.kind < 0]
+def _build_spans(boundary, geometry, traced):
+    """The edge spans of the traced chains (``traced``: per chain), in the order of their segments, then the
+    fan spans of their reflex vertices."""
+    edge = np.flatnonzero(traced[boundary.chain_id])
+    joint = geometry.kind < 0
+    joint &= traced[boundary.chain_id[geometry.joint]]
+    reflex = geometry.joint[joint]
+    turn = geometry.turn[joint]
     first_normal = geometry.normal[reflex]
+    start, end = boundary.segment_position[edge], boundary.segment_end_position[edge]
     return _Spans(
-        kind=np.concatenate([np.full(count, EDGE), np.full(len(reflex), FAN)]),
-        chain=np.concatenate([boundary.chain_id, boundary.chain_id[reflex]]),
-        segment=np.concatenate([np.arange(count), reflex]),
-        length=np.concatenate([boundary.segment_end_position - boundary.segment_position, np.abs(turn)]),
-        point=np.concatenate([boundary.start, boundary.end[reflex]]),
-        unit=np.concatenate([boundary.unit, first_normal]),
-        normal=np.concatenate([geometry.normal, np.sign(turn)[:, None] * left_normal(first_normal)]),
-        position=np.concatenate([boundary.segment_position, boundary.segment_end_position[reflex]]),
+        kind=np.concatenate([np.full(len(edge), EDGE, dtype=np.int8), np.full(len(reflex), FAN, dtype=np.int8)]),
+        chain=boundary.chain_id[np.concatenate([edge, reflex])],
+        segment=np.concatenate([edge, reflex]).astype(boundary.chain_id.dtype),
+        length=np.concatenate([end - start, np.abs(turn)]),
+        point=np.concatenate([boundary.start[edge], boundary.end(reflex)]),
+        unit=np.concatenate([boundary.unit[edge], first_normal]),
+        normal=np.concatenate([geometry.normal[edge], np.sign(turn)[:, None] * left_normal(first_normal)]),
+        position=np.concatenate([start, boundary.segment_end_position[reflex]]),
     )
 
 
@@ -222,13 +242,19 @@ class _Sites:
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
         b = self.boundary
-        is_segment = site < b.segment_count
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        foot, position = np.empty((len(site), 2)), np.empty(len(site))
+        on_vertex = site >= b.segment_count
+        row = np.flatnonzero(on_vertex)
+        vertex = site[row] - b.segment_count
+        foot[row], position[row] = b.vertex[vertex], b.vertex_position[vertex]
+        row = np.flatnonzero(~on_vertex)
+        del on_vertex, vertex
+        segment = np.maximum(site[row], 0)
+        start, unit = b.start[segment], b.unit[segment]
         run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre - b.start[segment], b.unit[segment]), 0.0, run_length)
-        foot = np.where(is_segment[:, None], b.start[segment] + along[:, None] * b.unit[segment], b.vertex[vertex])
-        position = np.where(is_segment, b.segment_position[segment] + along, b.vertex_position[vertex])
+        along = np.clip(np.einsum("ij,ij->i", centre[row] - start, unit), 0.0, run_length)
+        foot[row] = start + along[:, None] * unit
+        position[row] = b.segment_position[segment] + along
         return foot, position
 
     def distance(self, site, centre):
@@ -373,6 +399,10 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     return owner, centre, radius
 
 
+#: Types of the tracer's per-sample columns (indices fit int32, see :class:`.contacts.Boundary`).
+_STORE_TYPES = {"span": np.int32, "u": float, "t": float, "centre": float, "emit": bool, "other_site": np.int32}
+
+
 class _Tracer:
     """The samples of one adaptive tracing, grown round by round, and the rules that grow them.
 
@@ -381,15 +411,15 @@ class _Tracer:
     """
 
     def __init__(self, sides, boundary, closed, tolerance, width, max_t, min_t):
+        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
+        #: chains has a foot on each, so one chain's spans meet all of it).
+        self.traced = np.arange(len(closed)) % 2 == 0
         geometry = _geometry(boundary, sides)
-        self.spans = _build_spans(boundary, geometry)
+        self.spans = _build_spans(boundary, geometry, self.traced)
         self.sites = _Sites(boundary, geometry.vertex_kind)
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
-        #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
-        #: chains has a foot on each, so one chain's spans meet all of it).
-        self.traced = np.arange(len(closed)) % 2 == 0
         self.count = 0
         self.store = {}
 
@@ -397,25 +427,20 @@ class _Tracer:
         """Per-chain ``values`` for each interval (the chain of its span)."""
         return values[self.spans.chain[intervals.span]]
 
-    def add(self, samples, t, emit, other_site):
-        """Append solved samples; returns their indices. ``other_site`` gives the foot on the other chain.
+    def add(self, span, u, t, centre, emit, other_site):
+        """Append solved samples (at parameters ``u`` of spans ``span``, disk centres ``centre``); returns
+        their indices. ``other_site`` gives the foot on the other chain.
 
-        The arrays grow by doubling, so a round costs its own samples only.
+        A sample is stored as its span, parameter and centre (its point and direction follow from span and
+        parameter, see :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
         """
-        columns = {
-            "point": samples.point,
-            "direction": samples.direction,
-            "chain": samples.chain,
-            "position": samples.position,
-            "t": t,
-            "emit": emit,
-            "other_site": other_site,
-        }
+        columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
         for name, values in columns.items():
             stored = self.store.get(name)
             if stored is None or len(stored) < self.count:
-                grown = np.empty((max(2 * self.count, 64),) + values.shape[1:], dtype=values.dtype)
+                size = max(self.count + self.count // 2, 64)
+                grown = np.empty((size,) + values.shape[1:], dtype=_STORE_TYPES[name])
                 if stored is not None:
                     grown[:start] = stored[:start]
                 self.store[name] = stored = grown
@@ -429,7 +454,7 @@ class _Tracer:
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.store["point"][index] + self.store["t"][index, None] * self.store["direction"][index]
+        return self.store["centre"][index]
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
@@ -438,6 +463,8 @@ class _Tracer:
             open_ = self._is_open(intervals)
             curved = ~open_ & self._is_curved(intervals)
             events, curves = intervals.subset(open_), intervals.subset(curved)
+            # Only the open and curved intervals go on: the others are released before the round's output is built.
+            intervals = open_ = curved = None
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
@@ -449,17 +476,16 @@ class _Tracer:
             owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([events.span, curves.span[owner]])
             u = np.concatenate([event_u, station_u])
-            probes = self.spans.samples(span, u, self.boundary)
-            t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
+            t, status, site, centre = self._solve_probes(span, u, np.concatenate([event_trial, station_trial]))
+            del event_trial, station_trial
             count = len(event_u)
-            event_probes = probes.subset(slice(0, count))
-            event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
+            event, exact = self._is_event(events, centre[:count], t[:count], site[:count], found)
             emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
-            event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
+            event_index = self.add(span[:count], u[:count], t[:count], centre[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
             accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
-            station_index = self.add(probes.subset(slice(count, None)), t[count:], accepted, site[count:])
+            station_index = self.add(span[count:], u[count:], t[count:], centre[count:], accepted, site[count:])
             intervals = _Intervals.concatenate(
                 [
                     _split_at(events, event_u, event_index, site[:count], event),
@@ -469,69 +495,81 @@ class _Tracer:
             )
         return self._points()
 
-    def _solve_probes(self, probes, trial):
-        """Solve probes in the order of their points along the chains (neighbouring candidate boxes share
-        spatial-index queries), ``CHUNK`` at a time (bounds the candidate pairs held at once); returns ``t``,
-        status and canonical site in the probes' order."""
-        order = np.lexsort((probes.position, probes.chain))
-        t, status, site = np.empty(len(order)), np.empty(len(order), dtype=np.int8), np.empty(len(order), dtype=int)
+    def _solve_probes(self, span, u, trial):
+        """Solve the probes at parameters ``u`` of spans ``span`` in the order of their points along the chains
+        (neighbouring candidate boxes share spatial-index queries), ``CHUNK`` at a time (bounds the candidate
+        pairs and the samples held at once); returns ``t``, status, canonical site and disk centre in the
+        probes' order."""
+        order = np.lexsort((self.spans.position_at(span, u), self.spans.chain[span]))
+        t, status = np.empty(len(order)), np.empty(len(order), dtype=np.int8)
+        site, centre = np.empty(len(order), dtype=np.int32), np.empty((len(order), 2))
         for begin in range(0, len(order), CHUNK):
             chunk = order[begin : begin + CHUNK]
+            probes = self.spans.samples(span[chunk], u[chunk], self.boundary)
             t[chunk], status[chunk], _, _, site[chunk] = solve(
-                probes, chunk, self.boundary, trial[chunk], self.max_t, self.min_t
+                probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
-        return t, status, self.sites.canonical(site)
+            centre[chunk] = probes.point + t[chunk, None] * probes.direction
+        return t, status, self.sites.canonical(site), centre
 
     def _initial(self, report):
-        """Solve the samples at both ends of every edge, and in the middle of an edge between two convex
+        """Solve the samples at both ends of every traced edge, and in the middle of an edge between two convex
         corners (both its ends are given the corners' own edges: its axis point would take a round to find);
         returns the intervals of every span between them."""
-        spans, sites, b = self.spans, self.sites, self.boundary
-        samples, synthetic_site, synthetic_status, split_vertex = _initial_samples(spans, sites, self.closed, b)
-        traced_edge = self.traced[b.chain_id]
-        solved = np.flatnonzero((synthetic_site < 0) & np.repeat(traced_edge, 2))
-        t = np.where(np.repeat(traced_edge, 2), 0.0, np.inf)
-        status, site = synthetic_status.copy(), synthetic_site.copy()
-        t[solved], status[solved], _, _, site[solved] = solve_in_chunks(
-            samples, solved, b, 0.625 * self.width, self.max_t, self.min_t, lambda done: report(0.6 * done)
+        spans, b = self.spans, self.boundary
+        edge, given_site, status, split_vertex = _initial_samples(spans, self.sites, self.closed, self.traced, b)
+        # The traced edges' spans come first, in the same order.
+        edge_span = np.arange(len(edge))
+        between_corners = (given_site[0::2] >= 0) & (given_site[1::2] >= 0)
+        middle = np.flatnonzero(between_corners)
+        span = np.concatenate([np.repeat(edge_span, 2), middle])
+        u = np.concatenate(
+            [np.stack([np.zeros(len(edge)), spans.length[edge_span]], axis=1).ravel(), 0.5 * spans.length[middle]]
         )
-        edge = np.arange(b.segment_count)
-        between_corners = (synthetic_site[2 * edge] >= 0) & (synthetic_site[2 * edge + 1] >= 0) & traced_edge
-        middle_edge = edge[between_corners]
-        middles = spans.samples(middle_edge, 0.5 * spans.length[middle_edge], b)
-        middle_t, middle_status, _, _, middle_site = _solve_all(
-            middles,
-            np.arange(len(middle_edge)),
-            b,
-            0.625 * self.width,
-            self.max_t,
-            self.min_t,
-            lambda done: report(0.6 + 0.2 * done),
-        )
-        samples = Samples.concatenate([samples, middles])
-        t = np.concatenate([t, middle_t])
-        status = np.concatenate([status, middle_status])
-        site = sites.canonical(np.concatenate([site, middle_site]))
+        samples = spans.samples(span, u, b)
+        t, status, site = self._solve_initial(samples, given_site, status, report)
+        centre = samples.point + t[:, None] * samples.direction
+        del samples
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
-        split_vertex = np.concatenate([split_vertex, np.full(len(middle_edge), -1)])
-        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[samples.chain]) & ~emit
-        self.add(samples, t, emit | at_split, np.where(at_split, split_vertex, site))
-        middle_index = 2 * b.segment_count + np.arange(len(middle_edge))
-        reflex = np.flatnonzero((spans.kind == FAN) & self.traced[spans.chain])
-        incoming = spans.segment[reflex]
-        whole = edge[~between_corners & traced_edge]
-        span = np.concatenate([whole, middle_edge, middle_edge, reflex])
-        u0 = np.concatenate(
-            [np.zeros(len(whole) + len(middle_edge)), 0.5 * spans.length[middle_edge], np.zeros(len(reflex))]
-        )
+        split_vertex = np.concatenate([split_vertex, np.full(len(middle), -1)])
+        at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[spans.chain[span]]) & ~emit
+        self.add(span, u, t, centre, emit | at_split, np.where(at_split, split_vertex, site))
+        middle_index = 2 * len(edge) + np.arange(len(middle))
+        reflex = np.flatnonzero(spans.kind == FAN)
+        incoming = np.searchsorted(edge, spans.segment[reflex])
+        whole = np.flatnonzero(~between_corners)
+        span = np.concatenate([whole, middle, middle, reflex])
+        u0 = np.concatenate([np.zeros(len(whole) + len(middle)), 0.5 * spans.length[middle], np.zeros(len(reflex))])
         u1 = np.concatenate(
-            [spans.length[whole], 0.5 * spans.length[middle_edge], spans.length[middle_edge], spans.length[reflex]]
+            [spans.length[whole], 0.5 * spans.length[middle], spans.length[middle], spans.length[reflex]]
         )
-        left = np.concatenate([2 * whole, 2 * middle_edge, middle_index, 2 * incoming + 1])
-        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
+        left = np.concatenate([2 * whole, 2 * middle, middle_index, 2 * incoming + 1])
+        right = np.concatenate([2 * whole + 1, middle_index, 2 * middle + 1, 2 * (incoming + 1)])
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
+
+    def _solve_initial(self, samples, given_site, given_status, report):
+        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved),
+        then the middles after them (``given_status`` for the ends). Returns ``t``, status and canonical site
+        of every sample."""
+        count = len(given_site)
+        solved = np.flatnonzero(given_site < 0)
+        middles = np.arange(count, len(samples.chain))
+        t = np.zeros(len(samples.chain))
+        site = np.concatenate([given_site, np.full(len(middles), -1)])
+        status = np.concatenate([given_status, np.full(len(middles), SKIPPED, dtype=np.int8)])
+        for index, begin, share in ((solved, 0.0, 0.6), (middles, 0.6, 0.2)):
+            t[index], status[index], _, _, site[index] = _solve_all(
+                samples,
+                index,
+                self.boundary,
+                0.625 * self.width,
+                self.max_t,
+                self.min_t,
+                lambda done, begin=begin, share=share: report(begin + share * done),
+            )
+        return t, status, self.sites.canonical(site)
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
@@ -541,12 +579,14 @@ class _Tracer:
         tolerance = self.of(self.tolerance, intervals)
         wide = move > SMALLEST_MOVE * tolerance
         known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
+        open_ = (intervals.site0 != intervals.site1) & finite & wide & known
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
-        with np.errstate(invalid="ignore"):
-            chord = np.hypot(*(self.centres(intervals.left) - self.centres(intervals.right)).T)
-            apart = chord > SETTLED_CHORD * tolerance
-        return (intervals.site0 != intervals.site1) & finite & wide & known & apart
+        candidate = np.flatnonzero(open_)
+        left, right = intervals.left[candidate], intervals.right[candidate]
+        chord = np.hypot(*(self.centres(left) - self.centres(right)).T)
+        open_[candidate] = chord > SETTLED_CHORD * tolerance[candidate]
+        return open_
 
     def _is_curved(self, intervals):
         """Intervals between samples touching one site of the other chain where the axis is a parabola.
@@ -598,7 +638,7 @@ class _Tracer:
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
 
-    def _is_event(self, intervals, probes, t, site, found):
+    def _is_event(self, intervals, centre, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
         loosely, to ``LOOSE_EVENT_TOLERANCE`` relative to its radius, and exactly (two masks).
 
@@ -608,9 +648,8 @@ class _Tracer:
         Exactly means to ``EVENT_TOLERANCE`` relative to the radius times the parting of the two feet as seen
         from the centre (the distance between the unit vectors towards them): a gap ``g`` in the radius puts
         the centre about ``g`` / parting off the axis, which is large where the feet nearly coincide (two
-        nearly collinear segments meeting at a split point).
+        nearly collinear segments meeting at a split point). ``centre``: the probes' disk centres.
         """
-        centre = probes.point + t[:, None] * probes.direction
         with np.errstate(invalid="ignore", divide="ignore"):
             foot0, foot1 = self.sites.feet(intervals.site0, centre)[0], self.sites.feet(intervals.site1, centre)[0]
             distance0 = np.where(intervals.site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
@@ -666,21 +705,22 @@ class _Tracer:
         return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
 
     def _points(self):
-        """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on."""
-        store = {name: values[: self.count] for name, values in self.store.items()}
-        index = np.flatnonzero(store["emit"] & np.isfinite(store["t"]))
-        centre = self.centres(index)
-        other_foot, other_position = self.sites.feet(store["other_site"][index], centre)
-        points = AxisPoints.from_chain_feet(
-            store["chain"][index],
-            centre,
-            store["t"][index],
-            store["point"][index],
-            store["position"][index],
-            other_foot,
-            other_position,
-        )
-        return points, store["chain"][index]
+        """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on (the first chain of
+        its pair, so its foot is ``foot_a``). Releases the store and the spatial index; works ``CHUNK``
+        points at a time, so that only the output is held in full."""
+        self.boundary.release_index()
+        store, self.store = self.store, {}
+        index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
+        span, u, t, centre, other_site = (store[name][index] for name in ("span", "u", "t", "centre", "other_site"))
+        del store, index
+        foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2))
+        position_a, position_b = np.empty(len(t)), np.empty(len(t))
+        for begin in range(0, len(t), CHUNK):
+            part = slice(begin, begin + CHUNK)
+            foot_a[part], _, along = self.spans.frame(span[part], u[part])
+            position_a[part] = self.spans.position[span[part]] + along
+            foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
+        return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
 
 
 def _solve_all(samples, index, *arguments):
@@ -690,43 +730,44 @@ def _solve_all(samples, index, *arguments):
     return solve_in_chunks(samples, index, *arguments)
 
 
-def _initial_samples(spans, sites, closed, boundary):
-    """Samples at both ends of every edge (edge ``i``: ``2i`` and ``2i + 1``), with the given sites.
+def _initial_samples(spans, sites, closed, traced, boundary):
+    """The given sites of the samples at both ends of every edge of the traced chains (``traced``: per chain).
 
-    ``closed``: per chain, whether its pair of chains shares both end points. Also returns, per sample, the
-    site of the other chain's vertex when the sample lies at a straight split point (else -1).
+    ``closed``: per chain, whether its pair of chains shares both end points. Returns the traced edges
+    (global segment indices; the ``k``-th one's samples are ``2k`` and ``2k + 1``) and, per sample, the given
+    site (-1: to be solved), its status, and the site of the other chain's vertex when the sample lies at a
+    straight split point (else -1).
 
     A sample next to a convex corner is not solved: the corner's other edge line is its first contact, at
     ``t = 0`` (skipped). At a convex split point the other chain's end edge is (clear, the disk is the
-    point). Returns the samples and, per sample, the given site (-1: to be solved) and status.
+    point).
     """
-    edge_count = boundary.segment_count
-    edge = np.arange(edge_count)
-    u = np.stack([np.zeros(edge_count), spans.length[:edge_count]], axis=1).ravel()
-    samples = spans.samples(np.repeat(edge, 2), u, boundary)
-    site = np.full(2 * edge_count, -1)
-    status = np.full(2 * edge_count, SKIPPED, dtype=np.int8)
-    start_vertex = edge + boundary.chain_id
-    corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain
-    corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain
-    site[2 * edge[corner_at_start]] = edge[corner_at_start] - 1
-    site[2 * edge[corner_at_end] + 1] = edge[corner_at_end] + 1
+    edge = np.flatnonzero(traced[boundary.chain_id])
+    rank = np.arange(len(edge))
+    site = np.full(2 * len(edge), -1)
+    status = np.full(2 * len(edge), SKIPPED, dtype=np.int8)
+    start_vertex = edge + boundary.chain_id[edge]
+    corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain[edge]
+    corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain[edge]
+    site[2 * rank[corner_at_start]] = edge[corner_at_start] - 1
+    site[2 * rank[corner_at_end] + 1] = edge[corner_at_end] + 1
     # Convex at a split point: the other chain's end edge leaves it into the region.
     first_edge = np.asarray(boundary.offset)
-    last_edge = np.append(first_edge[1:], edge_count) - 1
-    split_vertex = np.full(2 * edge_count, -1)
-    chain = np.flatnonzero(closed)
+    last_edge = np.append(first_edge[1:], boundary.segment_count) - 1
+    split_vertex = np.full(2 * len(edge), -1)
+    chain = np.flatnonzero(closed & traced)
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
-        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own])
+        own_rank = np.searchsorted(edge, own)
+        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own_rank])
         convex = turn > STRAIGHT_TURN
-        site[2 * own[convex] + which] = other[convex]
-        status[2 * own[convex] + which] = CLEAR
+        site[2 * own_rank[convex] + which] = other[convex]
+        status[2 * own_rank[convex] + which] = CLEAR
         # The other chain's vertex at a straight split point (the other chain's end vertex of that side).
         straight = np.abs(turn) <= STRAIGHT_TURN
         vertex = other + (chain ^ 1) + which
-        split_vertex[2 * own[straight] + which] = edge_count + vertex[straight]
-    return samples, site, status, split_vertex
+        split_vertex[2 * own_rank[straight] + which] = boundary.segment_count + vertex[straight]
+    return edge, site, status, split_vertex
 
 
 def _split_at(intervals, u, probe_index, probe_site, event):
@@ -802,10 +843,14 @@ def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t
 
 
 def trace_one(request, report):
-    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``."""
+    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``.
+
+    The request's :class:`.contacts.Boundary` is built here and released with the tracer (not cached on the
+    request, which lives on while its centerline is assembled).
+    """
     return adaptive_axis_points(
         request.sides,
-        request.boundary,
+        Boundary(request.chains),
         request.closed,
         request.tolerance,
         request.width,

@@ -18,6 +18,7 @@ from functools import partial
 import numpy as np
 import shapely
 
+from .errors import InvalidGeometryError
 from .polyline import cumulative_lengths
 
 #: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
@@ -50,10 +51,15 @@ SMALLEST_TRIAL = 1.0 / 16.0
 #: Consecutive samples whose candidate boxes share one spatial-index query.
 QUERY_GROUP = 2
 
-#: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS box per
-#: segment costs about 0.5 kB), and the most segments indexed one by one (faster to query).
+#: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
+#: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
+#: of 8 would save about 33 MiB at 10^6 segments for the same time, but they change the order of the
+#: candidates, hence which of two equally near feet an event on the other chain reports.
 INDEX_RUN = 4
 SINGLE_INDEX = 1 << 17
+
+#: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
+MAX_SEGMENTS = 2**30 - 1
 
 #: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
 ALL_PAIRS = 1 << 15
@@ -97,54 +103,61 @@ class Boundary:
 
     A *site* is what a disk can touch: the interior of segment ``g`` (site ``g``) or a vertex (site
     ``segment_count + v``, with ``v`` the vertex's index in ``vertex``, the chains' vertices one chain after
-    the other).
+    the other). Segment ``g`` runs from vertex ``g + chain_id[g]`` to the next one. Per segment it holds
+    one copy of each quantity (the x and y columns are views of the coordinate arrays; end points are read
+    from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites in int32.
     """
 
     def __init__(self, chains):
-        starts, ends, chain_ids, offsets, positions = [], [], [], [], []
-        count = 0
-        for chain_id, chain in enumerate(chains):
-            starts.append(chain[:-1])
-            ends.append(chain[1:])
-            chain_ids.append(np.full(len(chain) - 1, chain_id))
-            offsets.append(count)
-            count += len(chain) - 1
-            positions.append(cumulative_lengths(chain))
-        self.start = np.concatenate(starts)
-        self.end = np.concatenate(ends)
-        self.chain_id = np.concatenate(chain_ids)
-        self.offset = offsets
-        self.position = positions
-        self.segment_position = np.concatenate([p[:-1] for p in positions])
-        self.segment_end_position = np.concatenate([p[1:] for p in positions])
-        self.last_of_chain = np.zeros(count, dtype=bool)
-        self.last_of_chain[np.cumsum([len(c) - 1 for c in chains]) - 1] = True
-        self.first_of_chain = np.zeros(count, dtype=bool)
-        self.first_of_chain[offsets] = True
+        sizes = np.array([len(chain) - 1 for chain in chains])
+        count = int(sizes.sum())
+        if count + len(chains) > MAX_SEGMENTS:
+            raise InvalidGeometryError(f"The boundary has {count:,} segments, more than this engine can index.")
         self.segment_count = count
         #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
         #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.
         self.several_pairs = len(chains) > 2
+        self.offset = list(np.cumsum(sizes) - sizes)
         self.vertex = np.concatenate(chains)
-        self.vertex_position = np.concatenate(positions)
-        self.vertex_chain = np.concatenate([np.full(len(chain), chain_id) for chain_id, chain in enumerate(chains)])
-        self.start_site = count + np.arange(count) + self.chain_id
-        delta = self.end - self.start
-        self.length = np.hypot(*delta.T)
-        self.unit = delta / self.length[:, None]
-        self.start_x, self.start_y = self.start[:, 0].copy(), self.start[:, 1].copy()
-        self.unit_x, self.unit_y = self.unit[:, 0].copy(), self.unit[:, 1].copy()
-        low, high = np.minimum(self.start, self.end), np.maximum(self.start, self.end)
-        self.low_x, self.low_y = low[:, 0].copy(), low[:, 1].copy()
-        self.high_x, self.high_y = high[:, 0].copy(), high[:, 1].copy()
+        self.vertex_position = np.concatenate([cumulative_lengths(chain) for chain in chains])
+        vertex_offset = self.offset + np.arange(len(chains))
+        #: Per chain, the arc length of every vertex (views of ``vertex_position``), CRS units.
+        self.position = [self.vertex_position[o : o + s + 1] for o, s in zip(vertex_offset, sizes)]
+        self.vertex_chain = np.repeat(np.arange(len(chains), dtype=np.int32), sizes + 1)
+        self.chain_id = np.repeat(np.arange(len(chains), dtype=np.int32), sizes)
+        self.last_of_chain = np.zeros(count, dtype=bool)
+        self.last_of_chain[np.cumsum(sizes) - 1] = True
+        self.first_of_chain = np.zeros(count, dtype=bool)
+        self.first_of_chain[self.offset] = True
+        start_vertex = np.arange(count, dtype=np.int32) + self.chain_id
+        self.start = self.vertex[start_vertex]
+        self.segment_position = self.vertex_position[start_vertex]
+        self.segment_end_position = self.vertex_position[start_vertex + 1]
+        self.start_site = start_vertex + np.int32(count)
+        end = self.vertex[start_vertex + 1]
+        del start_vertex
+        self.low, self.high = np.minimum(self.start, end), np.maximum(self.start, end)
+        end -= self.start
+        self.length = np.hypot(end[:, 0], end[:, 1])
+        self.unit = end / self.length[:, None]
+        del end
+        # Coordinate columns as views (no copies).
+        self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
+        self.unit_x, self.unit_y = self.unit[:, 0], self.unit[:, 1]
+        self.low_x, self.low_y = self.low[:, 0], self.low[:, 1]
+        self.high_x, self.high_y = self.high[:, 0], self.high[:, 1]
         # The index of a large boundary holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer
         # GEOS geometries to build, store and search; a run's hits are filtered segment by segment.
         self.index_run = 1 if count <= SINGLE_INDEX else INDEX_RUN
-        run_start = np.arange(0, len(self.start), self.index_run)
-        self.run_low = np.minimum.reduceat(low, run_start)
-        self.run_high = np.maximum.reduceat(high, run_start)
-        self.run_size = np.diff(np.append(run_start, len(self.start)))
+        run_start = np.arange(0, count, self.index_run)
+        self.run_low = np.minimum.reduceat(self.low, run_start)
+        self.run_high = np.maximum.reduceat(self.high, run_start)
+        self.run_size = np.diff(np.append(run_start, count)).astype(np.int32)
         self._tree = None
+
+    def end(self, segment):
+        """End points of the segments ``segment`` (global indices)."""
+        return self.vertex[segment + self.chain_id[segment] + 1]
 
     @property
     def tree(self):
@@ -152,6 +165,10 @@ class Boundary:
         if self._tree is None:
             self._tree = shapely.STRtree(_diagonals(self.run_low, self.run_high))
         return self._tree
+
+    def release_index(self):
+        """Free the spatial index (it is built again on the next use)."""
+        self._tree = None
 
     def candidates(self, low, high):
         """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
