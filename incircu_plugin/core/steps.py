@@ -17,7 +17,6 @@ from typing import Callable
 import numpy as np
 
 from .adaptive import trace_one, trace_together
-from .contacts import Boundary
 
 
 class Cancelled(Exception):
@@ -52,11 +51,6 @@ class TraceRequest:
     max_t: float
     min_t: float
     report: Callable[[float], None]
-
-    @cached_property
-    def boundary(self):
-        """The chains' segments (:class:`.contacts.Boundary`), built when the request is traced alone."""
-        return Boundary(self.chains)
 
     @property
     def segment_count(self):
