@@ -31,7 +31,7 @@ Several features are traced together (:func:`trace_together`) as pairs of chains
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -63,6 +63,15 @@ STRAIGHT_TURN = 1e-9
 #: scaled by how far apart the two feet are seen from the centre (see :meth:`_Tracer._is_event`).
 EVENT_TOLERANCE = 1e-8
 LOOSE_EVENT_TOLERANCE = 1e-6
+
+#: Most events predicted in one interval (between consecutive sites of the other chain's walk), and how many
+#: sites of the other chain next to the one touched beside an own-chain contact are tried as the walk's start.
+MAX_PREDICTED = 8
+PREDICTION_WINDOW = 4
+
+#: Relative slack (of the radius) with which a predicted event's disk touches its two sites and none of its
+#: interval's end sites is nearer (a closed-form filter only: the probe decides).
+PREDICTION_SLACK = 1e-6
 
 #: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
 SETTLED_CHORD = 1.0 / 16.0
@@ -199,13 +208,36 @@ def _straight_runs(kinds, boundary):
     return first, boundary.segment_end_position[last]
 
 
+def _site_sequence(boundary, kinds, line_of):
+    """The sites of every chain in their order along it, and each site's rank in that sequence.
+
+    A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
+    that ends it, and its end vertex: every site a disk in the region can touch first, since a convex vertex
+    never is one (a disk touching it from inside touches one of its segments first or as well). A segment's
+    rank is its run's; a convex (or straight) vertex's is -1.
+    """
+    count = boundary.segment_count
+    segment = np.flatnonzero(line_of == np.arange(count))
+    chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
+    vertex = np.flatnonzero((kinds < 0) | chain_end)
+    # Vertex ``g + chain`` starts segment ``g``: keys 2g (vertex), 2g + 1 (segment) follow the chains.
+    keys = np.concatenate([2 * segment + 1, 2 * (vertex - boundary.vertex_chain[vertex])])
+    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")]
+    rank = np.full(count + len(boundary.vertex), -1)
+    rank[sequence] = np.arange(len(sequence))
+    rank[:count] = rank[line_of]
+    return sequence, rank
+
+
 class _Sites:
-    """Site arithmetic: which chain a site is on, the site a segment stands for, feet and radii on spans."""
+    """Site arithmetic: which chain a site is on, the site a segment stands for, the sites' order along their
+    chains, feet and radii on spans."""
 
     def __init__(self, boundary, kinds):
         self.boundary = boundary
         self.kinds = kinds
         self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
+        self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
 
     def canonical(self, site):
         """Segment sites replaced by the first segment of their straight run (one line, one site)."""
@@ -373,6 +405,18 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     return owner, centre, radius
 
 
+def _own_ranks(spans, sites, boundary):
+    """Per span, the lowest and highest rank of the sites its samples touch by construction: an edge's
+    segment (its straight run) and end vertices, a fan's vertex and two segments."""
+    first = spans.segment
+    last = first + (spans.kind == FAN)
+    start_vertex = boundary.start_site[first]
+    end_vertex = boundary.start_site[last] + 1
+    low = np.where(sites.rank[start_vertex] >= 0, sites.rank[start_vertex], sites.rank[first])
+    high = np.where(sites.rank[end_vertex] >= 0, sites.rank[end_vertex], sites.rank[last])
+    return low, high
+
+
 class _Tracer:
     """The samples of one adaptive tracing, grown round by round, and the rules that grow them.
 
@@ -390,6 +434,7 @@ class _Tracer:
         #: The chains whose spans are sampled: the first of each pair (every point of the axis between two
         #: chains has a foot on each, so one chain's spans meet all of it).
         self.traced = np.arange(len(closed)) % 2 == 0
+        self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
 
@@ -445,25 +490,31 @@ class _Tracer:
             settled = self._settle_at_ends(events, at_end)
             carried = events.subset(settled)
             events = events.subset(~settled)
-            event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
-            owner, station_u, station_trial = self._stations(curves)
-            span = np.concatenate([events.span, curves.span[owner]])
+            owner, event_u, event_trial, found, pairs = self._event_nodes(
+                events, event_u[~settled], event_trial[~settled], found[~settled]
+            )
+            station_owner, station_u, station_trial = self._stations(curves)
+            span = np.concatenate([pairs.span, curves.span[station_owner]])
             u = np.concatenate([event_u, station_u])
             probes = self.spans.samples(span, u, self.boundary)
             t, status, site = self._solve_probes(probes, np.concatenate([event_trial, station_trial]))
             count = len(event_u)
             event_probes = probes.subset(slice(0, count))
-            event, exact = self._is_event(events, event_probes, t[:count], site[:count], found)
-            emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
-            event_index = self.add(probes.subset(slice(0, count)), t[:count], emit, other_site)
+            event, exact = self._is_event(pairs, event_probes, t[:count], site[:count], found)
+            emit, other_site = self._event_emission(pairs, status[:count], site[:count], exact)
+            event_index = self.add(event_probes, t[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
-            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
+            own = curves.site0[station_owner]
+            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == own))
             station_index = self.add(probes.subset(slice(count, None)), t[count:], accepted, site[count:])
+            # At an event the pieces on either side keep its two sites; elsewhere both take the probe's site.
+            before, after = np.where(event, pairs.site0, site[:count]), np.where(event, pairs.site1, site[:count])
+            station_site = site[count:]
             intervals = _Intervals.concatenate(
                 [
-                    _split_at(events, event_u, event_index, site[:count], event),
-                    _split_at_stations(curves, owner, station_u, station_index, site[count:]),
+                    _split_at_nodes(events, owner, event_u, event_index, before, after, False),
+                    _split_at_nodes(curves, station_owner, station_u, station_index, station_site, station_site, True),
                     carried,
                 ]
             )
@@ -575,12 +626,128 @@ class _Tracer:
         terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
         u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
+        return u, self._trial(intervals, radius, found), found, at_end
+
+    def _trial(self, intervals, radius, found):
+        """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
         width = self.of(self.width, intervals)
         known = np.where(np.isfinite(known), 1.25 * known, width)
         # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
         trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
-        return u, np.maximum(trial, width / 16.0), found, at_end
+        return np.maximum(trial, width / 16.0)
+
+    def _pair_events(self, intervals, site0, site1):
+        """The event of ``site0`` and ``site1`` inside each interval, in closed form: its parameter and radius,
+        whether it lies strictly inside, and whether its disk touches both sites (their segments, not only
+        their lines) with neither end site of the interval nearer (to ``PREDICTION_SLACK``)."""
+        pair = replace(intervals, site0=site0, site1=site1)
+        middle = 0.5 * (intervals.u0 + intervals.u1)
+        terms0 = self.sites.radius_terms(self.spans, pair.span, site0, middle)
+        terms1 = self.sites.radius_terms(self.spans, pair.span, site1, middle)
+        u, found, _ = _crossing(self.spans, pair, terms0, terms1)
+        radius = _radius_at(self.spans, pair.span, terms0, u)
+        samples = self.spans.samples(pair.span, u, self.boundary)
+        centre = samples.point + np.where(np.isfinite(radius), radius, 0.0)[:, None] * samples.direction
+        slack = PREDICTION_SLACK * radius
+        distance = self.sites.distance
+        with np.errstate(invalid="ignore"):
+            touching = (np.abs(distance(site0, centre) - radius) <= slack) & (
+                np.abs(distance(site1, centre) - radius) <= slack
+            )
+            empty = (distance(intervals.site0, centre) >= radius - slack) & (
+                distance(intervals.site1, centre) >= radius - slack
+            )
+        return u, radius, found & np.isfinite(radius), touching & empty
+
+    def _walk_start(self, intervals, anchor, step):
+        """Rank of the other chain's site first touched next to each interval's own-chain end site.
+
+        The candidates are the ``PREDICTION_WINDOW`` sites from ``anchor`` (the rank of the interval's other
+        end site) by ``step`` (-1: the own site is at ``u0``, whose neighbour is the earliest event with it; +1:
+        at ``u1``, the latest). Returns ``anchor`` where none is predicted.
+        """
+        sites, width = self.sites, PREDICTION_WINDOW + 1
+        owner = np.repeat(np.arange(len(anchor)), width)
+        rank = anchor[owner] + step[owner] * np.tile(np.arange(width), len(anchor))
+        candidate = sites.sequence[np.clip(rank, 0, len(sites.sequence) - 1)]
+        other = self.spans.chain[intervals.span[owner]] ^ 1
+        valid = (rank >= 0) & (rank < len(sites.sequence)) & (sites.chain(candidate) == other)
+        own_first = step[owner] < 0
+        site0 = np.where(own_first, intervals.site0[owner], candidate)
+        site1 = np.where(own_first, candidate, intervals.site1[owner])
+        u, _, found, possible = self._pair_events(intervals.subset(owner), site0, site1)
+        score = np.where(valid & found & possible, np.where(own_first, u, -u), np.inf).reshape(-1, width)
+        best = np.argmin(score, axis=1)
+        return np.where(np.isfinite(score.min(axis=1)), anchor + step * best, anchor)
+
+    def _walks(self, intervals):
+        """The run of the other chain's site sequence each interval's contact is predicted to walk through.
+
+        Returns per interval the ranks ``first`` and ``last`` of the run, whether the interval's own-chain end
+        site comes before it (``head``, at ``u0``) or after it (``tail``, at ``u1``), and the number of events.
+        """
+        sites = self.sites
+        other = self.spans.chain[intervals.span] ^ 1
+        chain0, chain1 = sites.chain(intervals.site0), sites.chain(intervals.site1)
+        rank0, rank1 = sites.rank[intervals.site0], sites.rank[intervals.site1]
+        head = (chain0 == other ^ 1) & (chain1 == other) & (rank1 >= 0)
+        tail = (chain0 == other) & (chain1 == other ^ 1) & (rank0 >= 0)
+        # Two sites of one chain: a walk along the own chain must not pass the span's own sites.
+        low, high = np.minimum(rank0, rank1), np.maximum(rank0, rank1)
+        span = intervals.span
+        apart = (chain0 == other) | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
+        both = (chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart
+        # The chains of a pair run the same way: beside the own site, the walk starts before the other end
+        # site (head) or ends after it (tail).
+        start = np.where(head, rank1, rank0)
+        step = np.where(head, -1, 1)
+        start[head | tail] = self._walk_start(intervals.subset(head | tail), start[head | tail], step[head | tail])
+        first = np.where(head, start, rank0)
+        last = np.where(tail, start, rank1)
+        events = np.abs(last - first) + head + tail
+        return first, last, head, tail, np.where(both | head | tail, events, 0)
+
+    def _event_nodes(self, intervals, event_u, event_trial, found):
+        """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
+        form (:meth:`_walks`, :meth:`_pair_events`: each event inside, each disk touching its two sites and
+        the events in order), else its one event candidate (``event_u``, ``event_trial``, ``found``).
+
+        Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
+        interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
+        """
+        first, last, head, tail, events = self._walks(intervals)
+        predicted = (events >= 2) & (events <= MAX_PREDICTED)
+        counts = np.where(predicted, events + 1, 0)
+        owner, index = ranges(counts)
+        body = first[owner] + np.where(last >= first, 1, -1)[owner] * (index - head[owner])
+        site = self.sites.sequence[np.clip(body, 0, len(self.sites.sequence) - 1)]
+        site = np.where(head[owner] & (index == 0), intervals.site0[owner], site)
+        site = np.where(tail[owner] & (index == counts[owner] - 1), intervals.site1[owner], site)
+        pair = np.flatnonzero(index < counts[owner] - 1)
+        pair_owner = owner[pair]
+        pieces = intervals.subset(pair_owner)
+        u, radius, inside, possible = self._pair_events(pieces, site[pair], site[pair + 1])
+        in_order = np.ones(len(pair), dtype=bool)
+        in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
+        failed = np.bincount(pair_owner, weights=~(inside & possible & in_order), minlength=len(counts)) > 0
+        keep = np.flatnonzero(~failed[pair_owner])
+        single = np.flatnonzero(~predicted | failed)
+        pieces = pieces.subset(keep)
+        node_owner = np.concatenate([single, pair_owner[keep]])
+        probe_pairs = replace(
+            intervals.subset(node_owner),
+            site0=np.concatenate([intervals.site0[single], site[pair[keep]]]),
+            site1=np.concatenate([intervals.site1[single], site[pair[keep] + 1]]),
+        )
+        trial = self._trial(pieces, radius[keep], np.ones(len(keep), dtype=bool))
+        return (
+            node_owner,
+            np.concatenate([event_u[single], u[keep]]),
+            np.concatenate([event_trial[single], trial]),
+            np.concatenate([found[single], np.ones(len(keep), dtype=bool)]),
+            probe_pairs,
+        )
 
     def _settle_at_ends(self, intervals, at_end):
         """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
@@ -729,44 +896,26 @@ def _initial_samples(spans, sites, closed, boundary):
     return samples, site, status, split_vertex
 
 
-def _split_at(intervals, u, probe_index, probe_site, event):
-    """The two halves of every interval at its probe: resolved at an event, else with the probe's site."""
-    unverified = np.zeros(len(u), dtype=bool)
-    left = _Intervals(
-        intervals.span,
-        intervals.u0,
-        u,
-        intervals.left,
-        probe_index,
-        intervals.site0,
-        np.where(event, intervals.site0, probe_site),
-        unverified,
-    )
-    right = _Intervals(
-        intervals.span,
-        u,
-        intervals.u1,
-        probe_index,
-        intervals.right,
-        np.where(event, intervals.site1, probe_site),
-        intervals.site1,
-        unverified,
-    )
-    return _Intervals.concatenate([left, right])
+def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verified):
+    """Every interval cut at its nodes (samples ``index`` at parameters ``u`` of interval ``owner``).
 
-
-def _split_at_stations(intervals, owner, u, probe_index, probe_site):
-    """Every curved interval cut at its stations (sorted by ``u``), the pieces marked verified."""
+    A node's ``site_before`` becomes the site at the right end of the piece before it, ``site_after`` the one at
+    the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
+    marked ``verified`` (the stations of a parabola) or not.
+    """
     order = np.lexsort((u, owner))
-    owner, u, probe_index, probe_site = owner[order], u[order], probe_index[order], probe_site[order]
+    owner, u, index = owner[order], u[order], index[order]
+    site_before, site_after = site_before[order], site_after[order]
     nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
     node_owner, rank = ranges(nodes)
     first, last = rank == 0, rank == nodes[node_owner] - 1
     inner = ~first & ~last
-    node_u, node_index, node_site = np.empty(len(rank)), np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
-    node_u[first], node_index[first], node_site[first] = intervals.u0, intervals.left, intervals.site0
-    node_u[last], node_index[last], node_site[last] = intervals.u1, intervals.right, intervals.site1
-    node_u[inner], node_index[inner], node_site[inner] = u, probe_index, probe_site
+    node_u, node_index = np.empty(len(rank)), np.empty(len(rank), dtype=int)
+    node_before, node_after = np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
+    node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
+    node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
+    node_u[inner], node_index[inner] = u, index
+    node_before[inner], node_after[inner] = site_before, site_after
     a = np.flatnonzero(~last)
     return _Intervals(
         intervals.span[node_owner[a]],
@@ -774,9 +923,9 @@ def _split_at_stations(intervals, owner, u, probe_index, probe_site):
         node_u[a + 1],
         node_index[a],
         node_index[a + 1],
-        node_site[a],
-        node_site[a + 1],
-        np.ones(len(a), dtype=bool),
+        node_after[a],
+        node_before[a + 1],
+        np.full(len(a), verified),
     )
 
 
