@@ -64,13 +64,11 @@ STRAIGHT_TURN = 1e-9
 EVENT_TOLERANCE = 1e-8
 LOOSE_EVENT_TOLERANCE = 1e-6
 
-#: Most events predicted in one interval (between consecutive sites of the other chain's walk), and how many
-#: sites of the other chain next to the one touched beside an own-chain contact are tried as the walk's start.
+#: Most events predicted in one interval (between consecutive sites of a chain's walk).
 MAX_PREDICTED = 8
-PREDICTION_WINDOW = 4
 
-#: Relative slack (of the radius) with which a predicted event's disk touches its two sites and none of its
-#: interval's end sites is nearer (a closed-form filter only: the probe decides).
+#: Relative slack (of the radius) with which a predicted event's disk touches its two sites (a closed-form
+#: filter only: the probe decides).
 PREDICTION_SLACK = 1e-6
 
 #: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
@@ -107,8 +105,8 @@ class _Spans:
     normal: np.ndarray
     position: np.ndarray
 
-    def samples(self, span, u, boundary):
-        """The samples at parameters ``u`` of spans ``span``."""
+    def _points_and_directions(self, span, u):
+        """Sample points, their inward directions, and where each span is an edge, at parameters ``u``."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
         angle = np.where(edge, 0.0, u)
@@ -117,13 +115,23 @@ class _Spans:
             self.normal[span],
             np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
         )
+        return self.point[span] + along[:, None] * self.unit[span], direction, edge, along
+
+    def centres(self, span, u, radius):
+        """Centres of the disks of ``radius`` (CRS units) at parameters ``u`` of spans ``span``."""
+        point, direction, _, _ = self._points_and_directions(span, u)
+        return point + radius[:, None] * direction
+
+    def samples(self, span, u, boundary):
+        """The samples at parameters ``u`` of spans ``span``."""
+        point, direction, edge, along = self._points_and_directions(span, u)
         segment = self.segment[span]
         # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
         at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
         return Samples(
             chain=self.chain[span],
-            point=self.point[span] + along[:, None] * self.unit[span],
+            point=point,
             direction=direction,
             scale=np.ones(len(span)),
             position=self.position[span] + along,
@@ -478,7 +486,7 @@ class _Tracer:
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
-        intervals = self._initial(report)
+        intervals = self._corner_junctions(self._initial(report))
         for round_index in range(MAX_ROUNDS):
             open_ = self._is_open(intervals)
             curved = ~open_ & self._is_curved(intervals)
@@ -584,6 +592,65 @@ class _Tracer:
         right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
+    def _corner_samples(self, edge):
+        """Samples on the bisector of the convex corner at the start of each edge ``edge`` (the disks touch
+        both its segments, ``slide * t`` from the corner, with radius ``scale * t``)."""
+        b, normal = self.boundary, self.spans.normal
+        bisector = normal[edge - 1] + normal[edge]
+        bisector /= np.hypot(*bisector.T)[:, None]
+        return Samples(
+            chain=b.chain_id[edge],
+            point=b.start[edge],
+            direction=bisector,
+            scale=np.einsum("ij,ij->i", bisector, normal[edge]),
+            position=b.segment_position[edge],
+            slide=np.abs(np.einsum("ij,ij->i", bisector, b.unit[edge])),
+            first_own=edge - 1,
+            last_own=edge,
+        )
+
+    def _corner_junctions(self, intervals):
+        """Split the intervals on both sides of every convex corner of a traced chain at its junction.
+
+        The largest empty disk on the corner's bisector touches both its segments and first touches a site
+        elsewhere: one solve gives the event that the intervals beside the corner (each with the corner's
+        other segment as its site at the corner) would otherwise probe one by one, from both sides. Its
+        disk is the sample of both edges where it touches them; a junction touching an edge beyond its
+        interval is left to the rounds.
+        """
+        b = self.boundary
+        after = np.flatnonzero((intervals.u0 == 0.0) & (self.spans.kind[intervals.span] == EDGE))
+        after = after[self.sites.kinds[intervals.span[after] + b.chain_id[intervals.span[after]]] > 0]
+        after = after[~b.first_of_chain[intervals.span[after]]]
+        edge = intervals.span[after]
+        before = np.full(b.segment_count, -1)
+        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
+        before[intervals.span[ends]] = ends
+        before = before[edge - 1]
+        keep = before >= 0
+        after, before, edge = after[keep], before[keep], edge[keep]
+        corners = self._corner_samples(edge)
+        t, status, site = self._solve_probes(corners, 0.625 * self.width[corners.chain])
+        along = corners.slide * t
+        radius = corners.scale * t
+        inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
+        inside &= intervals.u1[before] - along > intervals.u0[before]
+        after, before, edge = after[inside], before[inside], edge[inside]
+        along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
+        span = np.concatenate([edge, edge - 1])
+        u = np.concatenate([along, intervals.u1[before] - along])
+        emit = (status == CLEAR) | ((status == TIED) & ~self._at_split_point(site))
+        index = self.add(self.spans.samples(span, u, b), np.tile(radius, 2), np.tile(emit, 2), np.tile(site, 2))
+        owner = np.concatenate([after, before])
+        # Beside the corner the disk touches the corner's other segment (the interval's site there).
+        site_before = np.concatenate([intervals.site0[after], site])
+        site_after = np.concatenate([site, intervals.site1[before]])
+        cut, owner = np.unique(owner, return_inverse=True)
+        pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
+        uncut = np.ones(len(intervals.span), dtype=bool)
+        uncut[cut] = False
+        return _Intervals.concatenate([pieces, intervals.subset(uncut)])
+
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
         finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
@@ -640,73 +707,32 @@ class _Tracer:
     def _pair_events(self, intervals, site0, site1):
         """The event of ``site0`` and ``site1`` inside each interval, in closed form: its parameter and radius,
         whether it lies strictly inside, and whether its disk touches both sites (their segments, not only
-        their lines) with neither end site of the interval nearer (to ``PREDICTION_SLACK``)."""
-        pair = replace(intervals, site0=site0, site1=site1)
+        their lines) to ``PREDICTION_SLACK``."""
         middle = 0.5 * (intervals.u0 + intervals.u1)
-        terms0 = self.sites.radius_terms(self.spans, pair.span, site0, middle)
-        terms1 = self.sites.radius_terms(self.spans, pair.span, site1, middle)
-        u, found, _ = _crossing(self.spans, pair, terms0, terms1)
-        radius = _radius_at(self.spans, pair.span, terms0, u)
-        samples = self.spans.samples(pair.span, u, self.boundary)
-        centre = samples.point + np.where(np.isfinite(radius), radius, 0.0)[:, None] * samples.direction
+        terms0 = self.sites.radius_terms(self.spans, intervals.span, site0, middle)
+        terms1 = self.sites.radius_terms(self.spans, intervals.span, site1, middle)
+        u, found, _ = _crossing(self.spans, intervals, terms0, terms1)
+        radius = _radius_at(self.spans, intervals.span, terms0, u)
+        found &= np.isfinite(radius)
+        centre = self.spans.centres(intervals.span, u, np.where(found, radius, 0.0))
         slack = PREDICTION_SLACK * radius
-        distance = self.sites.distance
         with np.errstate(invalid="ignore"):
-            touching = (np.abs(distance(site0, centre) - radius) <= slack) & (
-                np.abs(distance(site1, centre) - radius) <= slack
-            )
-            empty = (distance(intervals.site0, centre) >= radius - slack) & (
-                distance(intervals.site1, centre) >= radius - slack
-            )
-        return u, radius, found & np.isfinite(radius), touching & empty
-
-    def _walk_start(self, intervals, anchor, step):
-        """Rank of the other chain's site first touched next to each interval's own-chain end site.
-
-        The candidates are the ``PREDICTION_WINDOW`` sites from ``anchor`` (the rank of the interval's other
-        end site) by ``step`` (-1: the own site is at ``u0``, whose neighbour is the earliest event with it; +1:
-        at ``u1``, the latest). Returns ``anchor`` where none is predicted.
-        """
-        sites, width = self.sites, PREDICTION_WINDOW + 1
-        owner = np.repeat(np.arange(len(anchor)), width)
-        rank = anchor[owner] + step[owner] * np.tile(np.arange(width), len(anchor))
-        candidate = sites.sequence[np.clip(rank, 0, len(sites.sequence) - 1)]
-        other = self.spans.chain[intervals.span[owner]] ^ 1
-        valid = (rank >= 0) & (rank < len(sites.sequence)) & (sites.chain(candidate) == other)
-        own_first = step[owner] < 0
-        site0 = np.where(own_first, intervals.site0[owner], candidate)
-        site1 = np.where(own_first, candidate, intervals.site1[owner])
-        u, _, found, possible = self._pair_events(intervals.subset(owner), site0, site1)
-        score = np.where(valid & found & possible, np.where(own_first, u, -u), np.inf).reshape(-1, width)
-        best = np.argmin(score, axis=1)
-        return np.where(np.isfinite(score.min(axis=1)), anchor + step * best, anchor)
+            touching = np.abs(self.sites.distance(site0, centre) - radius) <= slack
+            touching &= np.abs(self.sites.distance(site1, centre) - radius) <= slack
+        return u, radius, found, touching
 
     def _walks(self, intervals):
-        """The run of the other chain's site sequence each interval's contact is predicted to walk through.
-
-        Returns per interval the ranks ``first`` and ``last`` of the run, whether the interval's own-chain end
-        site comes before it (``head``, at ``u0``) or after it (``tail``, at ``u1``), and the number of events.
-        """
+        """The run of its chain's site sequence each interval's contact is predicted to walk through, from its
+        site at ``u0`` to its site at ``u1``: the ranks ``first``, ``last`` of the run and its number of events
+        (0 where the two sites lie on different chains, or the run would pass the span's own sites)."""
         sites = self.sites
-        other = self.spans.chain[intervals.span] ^ 1
         chain0, chain1 = sites.chain(intervals.site0), sites.chain(intervals.site1)
-        rank0, rank1 = sites.rank[intervals.site0], sites.rank[intervals.site1]
-        head = (chain0 == other ^ 1) & (chain1 == other) & (rank1 >= 0)
-        tail = (chain0 == other) & (chain1 == other ^ 1) & (rank0 >= 0)
-        # Two sites of one chain: a walk along the own chain must not pass the span's own sites.
-        low, high = np.minimum(rank0, rank1), np.maximum(rank0, rank1)
+        first, last = sites.rank[intervals.site0], sites.rank[intervals.site1]
+        low, high = np.minimum(first, last), np.maximum(first, last)
         span = intervals.span
-        apart = (chain0 == other) | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
-        both = (chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart
-        # The chains of a pair run the same way: beside the own site, the walk starts before the other end
-        # site (head) or ends after it (tail).
-        start = np.where(head, rank1, rank0)
-        step = np.where(head, -1, 1)
-        start[head | tail] = self._walk_start(intervals.subset(head | tail), start[head | tail], step[head | tail])
-        first = np.where(head, start, rank0)
-        last = np.where(tail, start, rank1)
-        events = np.abs(last - first) + head + tail
-        return first, last, head, tail, np.where(both | head | tail, events, 0)
+        other = chain0 == self.spans.chain[span] ^ 1
+        apart = other | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
+        return first, last, np.where((chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart, high - low, 0)
 
     def _event_nodes(self, intervals, event_u, event_trial, found):
         """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
@@ -716,14 +742,11 @@ class _Tracer:
         Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
         interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
         """
-        first, last, head, tail, events = self._walks(intervals)
+        first, last, events = self._walks(intervals)
         predicted = (events >= 2) & (events <= MAX_PREDICTED)
         counts = np.where(predicted, events + 1, 0)
         owner, index = ranges(counts)
-        body = first[owner] + np.where(last >= first, 1, -1)[owner] * (index - head[owner])
-        site = self.sites.sequence[np.clip(body, 0, len(self.sites.sequence) - 1)]
-        site = np.where(head[owner] & (index == 0), intervals.site0[owner], site)
-        site = np.where(tail[owner] & (index == counts[owner] - 1), intervals.site1[owner], site)
+        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
         pair = np.flatnonzero(index < counts[owner] - 1)
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
