@@ -15,9 +15,25 @@ piece needs no vertex; a parabola gets stations placed analytically so that each
 tolerance of it. Every vertex is therefore exactly on the medial axis: a solved sample, an event or a
 point of a parabola computed in closed form.
 
-A convex vertex needs no sample: the edges next to it meet the corner's own edge line at ``t = 0``, and the
-event where that line and the other chain are equally far is the junction of the corner's branch with the
-axis.
+*Predicted walks.* When an interval's two sites lie on one chain but are not neighbours along it, the contact
+almost always walks through the sites between them in chain order: the straight runs of segments and the
+reflex vertices between them (a convex vertex is never a first contact of a disk in the region: :func:`_site_sequence`).
+The events between consecutive sites of that walk are computed in closed form and, when each lies inside the
+interval and they come in the walk's order, all are probed in the same round
+(else the interval's one event is, as above). Each probe is judged exactly like the single event: where it
+verifies (its first contact ties the two sites) the pieces beside it keep those two sites, else both take
+the probe's first contact. A walk along the own chain is only predicted when it does not pass the span's own
+sites (the solver never reports those). Either way every piece is labelled with sites that its end samples
+really touch first, and a piece is settled only when both its ends touch the same site, so the argument
+below is unchanged: a wrong prediction costs probes, never a site.
+
+A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
+and the event where that line and the other chain are equally far is the junction of the corner's branch with
+the axis. Before the rounds that junction is solved directly, once for both edges: the disks on the corner's
+bisector (radius ``scale * t``, touching both segments ``slide * t`` from the corner) first touch the rest
+of the boundary at the largest empty disk touching both segments, which is the junction; it is cut into both
+edges' intervals as a sample of each (their disks are the same disk). Where it would touch a segment beyond its
+interval (a short edge) the rounds find the junction as an event.
 
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
@@ -67,10 +83,6 @@ LOOSE_EVENT_TOLERANCE = 1e-6
 #: Most events predicted in one interval (between consecutive sites of a chain's walk).
 MAX_PREDICTED = 8
 
-#: Relative slack (of the radius) with which a predicted event's disk touches its two sites (a closed-form
-#: filter only: the probe decides).
-PREDICTION_SLACK = 1e-6
-
 #: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
 SETTLED_CHORD = 1.0 / 16.0
 
@@ -105,8 +117,8 @@ class _Spans:
     normal: np.ndarray
     position: np.ndarray
 
-    def _points_and_directions(self, span, u):
-        """Sample points, their inward directions, and where each span is an edge, at parameters ``u``."""
+    def samples(self, span, u, boundary):
+        """The samples at parameters ``u`` of spans ``span``."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
         angle = np.where(edge, 0.0, u)
@@ -115,23 +127,13 @@ class _Spans:
             self.normal[span],
             np.cos(angle)[:, None] * self.unit[span] + np.sin(angle)[:, None] * self.normal[span],
         )
-        return self.point[span] + along[:, None] * self.unit[span], direction, edge, along
-
-    def centres(self, span, u, radius):
-        """Centres of the disks of ``radius`` (CRS units) at parameters ``u`` of spans ``span``."""
-        point, direction, _, _ = self._points_and_directions(span, u)
-        return point + radius[:, None] * direction
-
-    def samples(self, span, u, boundary):
-        """The samples at parameters ``u`` of spans ``span``."""
-        point, direction, edge, along = self._points_and_directions(span, u)
         segment = self.segment[span]
         # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
         at_end = edge & (u >= self.length[span]) & ~boundary.last_of_chain[segment]
         return Samples(
             chain=self.chain[span],
-            point=point,
+            point=self.point[span] + along[:, None] * self.unit[span],
             direction=direction,
             scale=np.ones(len(span)),
             position=self.position[span] + along,
@@ -220,9 +222,9 @@ def _site_sequence(boundary, kinds, line_of):
     """The sites of every chain in their order along it, and each site's rank in that sequence.
 
     A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
-    that ends it, and its end vertex: every site a disk in the region can touch first, since a convex vertex
-    never is one (a disk touching it from inside touches one of its segments first or as well). A segment's
-    rank is its run's; a convex (or straight) vertex's is -1.
+    that ends it, and its end vertex: every site a disk in the region can touch first. A convex vertex never
+    is one: next to it the region is a wedge narrower than a half-plane, and a disk inside a wedge touching
+    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1.
     """
     count = boundary.segment_count
     segment = np.flatnonzero(line_of == np.arange(count))
@@ -705,21 +707,14 @@ class _Tracer:
         return np.maximum(trial, width / 16.0)
 
     def _pair_events(self, intervals, site0, site1):
-        """The event of ``site0`` and ``site1`` inside each interval, in closed form: its parameter and radius,
-        whether it lies strictly inside, and whether its disk touches both sites (their segments, not only
-        their lines) to ``PREDICTION_SLACK``."""
+        """The event of ``site0`` and ``site1`` inside each interval, in closed form: its parameter, its radius
+        and whether it lies strictly inside (the probe decides whether it is one)."""
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms0 = self.sites.radius_terms(self.spans, intervals.span, site0, middle)
         terms1 = self.sites.radius_terms(self.spans, intervals.span, site1, middle)
         u, found, _ = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, intervals.span, terms0, u)
-        found &= np.isfinite(radius)
-        centre = self.spans.centres(intervals.span, u, np.where(found, radius, 0.0))
-        slack = PREDICTION_SLACK * radius
-        with np.errstate(invalid="ignore"):
-            touching = np.abs(self.sites.distance(site0, centre) - radius) <= slack
-            touching &= np.abs(self.sites.distance(site1, centre) - radius) <= slack
-        return u, radius, found, touching
+        return u, radius, found & np.isfinite(radius)
 
     def _walks(self, intervals):
         """The run of its chain's site sequence each interval's contact is predicted to walk through, from its
@@ -736,8 +731,8 @@ class _Tracer:
 
     def _event_nodes(self, intervals, event_u, event_trial, found):
         """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
-        form (:meth:`_walks`, :meth:`_pair_events`: each event inside, each disk touching its two sites and
-        the events in order), else its one event candidate (``event_u``, ``event_trial``, ``found``).
+        form (:meth:`_walks`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
+        walk's order), else its one event candidate (``event_u``, ``event_trial``, ``found``).
 
         Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
         interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
@@ -750,10 +745,10 @@ class _Tracer:
         pair = np.flatnonzero(index < counts[owner] - 1)
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
-        u, radius, inside, possible = self._pair_events(pieces, site[pair], site[pair + 1])
+        u, radius, inside = self._pair_events(pieces, site[pair], site[pair + 1])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
-        failed = np.bincount(pair_owner, weights=~(inside & possible & in_order), minlength=len(counts)) > 0
+        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
         keep = np.flatnonzero(~failed[pair_owner])
         single = np.flatnonzero(~predicted | failed)
         pieces = pieces.subset(keep)
