@@ -33,7 +33,7 @@ the axis. Before the rounds that junction is solved directly, once for both edge
 bisector (radius ``scale * t``, touching both segments ``slide * t`` from the corner) first touch the rest
 of the boundary at the largest empty disk touching both segments, which is the junction; it is cut into both
 edges' intervals as a sample of each (their disks are the same disk). Where it would touch a segment beyond its
-interval (a short edge) the rounds find the junction as an event.
+interval (a short edge), or next to a chain's end, the rounds find the junction as an event.
 
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
@@ -618,12 +618,15 @@ class _Tracer:
         elsewhere: one solve gives the event that the intervals beside the corner (each with the corner's
         other segment as its site at the corner) would otherwise probe one by one, from both sides. Its
         disk is the sample of both edges where it touches them; a junction touching an edge beyond its
-        interval is left to the rounds.
+        interval, or beside a chain's end, is left to the rounds.
         """
         b = self.boundary
         after = np.flatnonzero((intervals.u0 == 0.0) & (self.spans.kind[intervals.span] == EDGE))
         after = after[self.sites.kinds[intervals.span[after] + b.chain_id[intervals.span[after]]] > 0]
-        after = after[~b.first_of_chain[intervals.span[after]]]
+        # Beside a chain's end the junction may touch the other chain at the split point itself (a tie whose
+        # foot the ordering cannot place on a side): there the rounds find it, as an event of the edge.
+        edge = intervals.span[after]
+        after = after[~b.first_of_chain[edge] & ~b.first_of_chain[edge - 1] & ~b.last_of_chain[edge]]
         edge = intervals.span[after]
         before = np.full(b.segment_count, -1)
         ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
