@@ -283,9 +283,9 @@ def predicted_events(monkeypatch):
     counted = {"events": 0}
     original = adaptive._Tracer._pair_events
 
-    def counting(self, intervals, site0, site1):
-        counted["events"] += len(site0)
-        return original(self, intervals, site0, site1)
+    def counting(self, intervals, terms0, terms1):
+        counted["events"] += len(intervals.span)
+        return original(self, intervals, terms0, terms1)
 
     monkeypatch.setattr(adaptive._Tracer, "_pair_events", counting)
     return counted

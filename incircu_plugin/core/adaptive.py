@@ -709,12 +709,9 @@ class _Tracer:
         trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
         return np.maximum(trial, width / 16.0)
 
-    def _pair_events(self, intervals, site0, site1):
-        """The event of ``site0`` and ``site1`` inside each interval, in closed form: its parameter, its radius
-        and whether it lies strictly inside (the probe decides whether it is one)."""
-        middle = 0.5 * (intervals.u0 + intervals.u1)
-        terms0 = self.sites.radius_terms(self.spans, intervals.span, site0, middle)
-        terms1 = self.sites.radius_terms(self.spans, intervals.span, site1, middle)
+    def _pair_events(self, intervals, terms0, terms1):
+        """The event of two sites (their :meth:`_Sites.radius_terms`) inside each interval, in closed form: its
+        parameter, its radius and whether it lies strictly inside (the probe decides whether it is one)."""
         u, found, _ = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, intervals.span, terms0, u)
         return u, radius, found & np.isfinite(radius)
@@ -745,10 +742,13 @@ class _Tracer:
         counts = np.where(predicted, events + 1, 0)
         owner, index = ranges(counts)
         site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+        # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
+        middle = 0.5 * (intervals.u0 + intervals.u1)
+        terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
         pair = np.flatnonzero(index < counts[owner] - 1)
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
-        u, radius, inside = self._pair_events(pieces, site[pair], site[pair + 1])
+        u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
         failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
