@@ -594,22 +594,46 @@ class _Tracer:
         right = np.concatenate([2 * whole + 1, middle_index, 2 * middle_edge + 1, 2 * (incoming + 1)])
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
-    def _corner_samples(self, edge):
-        """Samples on the bisector of the convex corner at the start of each edge ``edge`` (the disks touch
-        both its segments, ``slide * t`` from the corner, with radius ``scale * t``)."""
-        b, normal = self.boundary, self.spans.normal
-        bisector = normal[edge - 1] + normal[edge]
+    def _corner_samples(self, span):
+        """Samples on the bisector of the convex corner at the start of each edge span ``span`` (span
+        ``span - 1`` is the edge before it; the disks touch both segments ``slide * t`` from the corner, with
+        radius ``scale * t``)."""
+        spans, segment = self.spans, self.spans.segment[span]
+        bisector = spans.normal[span - 1] + spans.normal[span]
         bisector /= np.hypot(*bisector.T)[:, None]
         return Samples(
-            chain=b.chain_id[edge],
-            point=b.start[edge],
+            chain=spans.chain[span],
+            point=spans.point[span],
             direction=bisector,
-            scale=np.einsum("ij,ij->i", bisector, normal[edge]),
-            position=b.segment_position[edge],
-            slide=np.abs(np.einsum("ij,ij->i", bisector, b.unit[edge])),
-            first_own=edge - 1,
-            last_own=edge,
+            scale=np.einsum("ij,ij->i", bisector, spans.normal[span]),
+            position=spans.position[span],
+            slide=np.abs(np.einsum("ij,ij->i", bisector, spans.unit[span])),
+            first_own=segment - 1,
+            last_own=segment,
         )
+
+    def _beside_corners(self, intervals):
+        """The intervals on both sides of the convex corners of the traced chains: per corner, the one that
+        starts at it (on the edge after it) and the one that ends at it (on the edge before it).
+
+        Beside a chain's end the junction may touch the other chain at the split point itself (a tie whose
+        foot the ordering cannot place on a side): those corners are left out.
+        """
+        b, spans = self.boundary, self.spans
+        after = np.flatnonzero((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE))
+        segment = spans.segment[intervals.span[after]]
+        corner = self.sites.kinds[segment + b.chain_id[segment]] > 0
+        corner &= ~b.first_of_chain[segment] & ~b.first_of_chain[segment - 1] & ~b.last_of_chain[segment]
+        after = after[corner]
+        # The interval ending at the end of edge span k has that edge's end sample, 2k + 1, at its right.
+        before = np.full(len(spans.kind), -1)
+        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
+        before[intervals.span[ends]] = ends
+        before = before[intervals.span[after] - 1]
+        after, before = after[before >= 0], before[before >= 0]
+        # In the order of the spans (along the chains), as the coarse-to-fine solution needs.
+        order = np.argsort(intervals.span[after], kind="stable")
+        return after[order], before[order]
 
     def _corner_junctions(self, intervals):
         """Split the intervals on both sides of every convex corner of a traced chain at its junction.
@@ -621,28 +645,18 @@ class _Tracer:
         interval, or beside a chain's end, is left to the rounds.
         """
         b = self.boundary
-        after = np.flatnonzero((intervals.u0 == 0.0) & (self.spans.kind[intervals.span] == EDGE))
-        after = after[self.sites.kinds[intervals.span[after] + b.chain_id[intervals.span[after]]] > 0]
-        # Beside a chain's end the junction may touch the other chain at the split point itself (a tie whose
-        # foot the ordering cannot place on a side): there the rounds find it, as an event of the edge.
-        edge = intervals.span[after]
-        after = after[~b.first_of_chain[edge] & ~b.first_of_chain[edge - 1] & ~b.last_of_chain[edge]]
-        edge = intervals.span[after]
-        before = np.full(b.segment_count, -1)
-        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
-        before[intervals.span[ends]] = ends
-        before = before[edge - 1]
-        keep = before >= 0
-        after, before, edge = after[keep], before[keep], edge[keep]
-        corners = self._corner_samples(edge)
-        t, status, site = self._solve_probes(corners, 0.625 * self.width[corners.chain])
-        along = corners.slide * t
-        radius = corners.scale * t
+        after, before = self._beside_corners(intervals)
+        corners = self._corner_samples(intervals.span[after])
+        t, status, _, _, site = _solve_all(
+            corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
+        )
+        site = self.sites.canonical(site)
+        along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
         inside &= intervals.u1[before] - along > intervals.u0[before]
-        after, before, edge = after[inside], before[inside], edge[inside]
+        after, before = after[inside], before[inside]
         along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
-        span = np.concatenate([edge, edge - 1])
+        span = np.concatenate([intervals.span[after], intervals.span[before]])
         u = np.concatenate([along, intervals.u1[before] - along])
         emit = (status == CLEAR) | ((status == TIED) & ~self._at_split_point(site))
         index = self.add(self.spans.samples(span, u, b), np.tile(radius, 2), np.tile(emit, 2), np.tile(site, 2))
