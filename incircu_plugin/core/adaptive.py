@@ -17,15 +17,15 @@ point of a parabola computed in closed form.
 
 *Predicted walks.* When an interval's two sites lie on one chain but are not neighbours along it, the contact
 almost always walks through the sites between them in chain order: the straight runs of segments and the
-reflex vertices between them (a convex vertex is never a first contact of a disk in the region: :func:`_site_sequence`).
-The events between consecutive sites of that walk are computed in closed form and, when each lies inside the
-interval and they come in the walk's order, all are probed in the same round
-(else the interval's one event is, as above). Each probe is judged exactly like the single event: where it
-verifies (its first contact ties the two sites) the pieces beside it keep those two sites, else both take
-the probe's first contact. A walk along the own chain is only predicted when it does not pass the span's own
-sites (the solver never reports those). Either way every piece is labelled with sites that its end samples
-really touch first, and a piece is settled only when both its ends touch the same site, so the argument
-below is unchanged: a wrong prediction costs probes, never a site.
+reflex vertices between them (a convex vertex is never a first contact of a disk in the region:
+:func:`_site_sequence`). The events between consecutive sites of that walk are computed in closed form and,
+when each lies inside the interval and they come in the walk's order, all are probed in the same round (else
+the interval's one event is, as above). Each probe is judged exactly like the single event: where it verifies
+(its first contact ties the two sites) the pieces beside it keep those two sites, else both take the probe's
+first contact. A walk along the own chain is only predicted when it does not pass the span's own sites (the
+solver never reports those). Either way every piece is labelled with sites that its end samples really touch
+first, and a piece is settled only when both its ends touch the same site, so the argument below is unchanged:
+a wrong prediction costs probes, never a site.
 
 A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
 and the event where that line and the other chain are equally far is the junction of the corner's branch with
@@ -420,8 +420,9 @@ def _own_ranks(spans, sites, boundary):
     segment (its straight run) and end vertices, a fan's vertex and two segments."""
     first = spans.segment
     last = first + (spans.kind == FAN)
-    start_vertex = boundary.start_site[first]
-    end_vertex = boundary.start_site[last] + 1
+    # Segment g starts at vertex g + chain (site ``segment_count`` + that).
+    start_vertex = boundary.segment_count + first + boundary.chain_id[first]
+    end_vertex = boundary.segment_count + last + boundary.chain_id[last] + 1
     low = np.where(sites.rank[start_vertex] >= 0, sites.rank[start_vertex], sites.rank[first])
     high = np.where(sites.rank[end_vertex] >= 0, sites.rank[end_vertex], sites.rank[last])
     return low, high
