@@ -252,3 +252,92 @@ def near_end_channels(draw):
 def test_split_points_near_corners_give_one_simple_line_within_the_tolerance(drawn):
     polygon, split_points = drawn
     assert_adaptive_properties(polygon, split_points)
+
+
+def toothed_channel(length, width, bottom_step, tooth, depth, spike=None):
+    """A channel whose bottom bank has a vertex every ``bottom_step`` (long edges: their samples touch sites of
+    the top bank several sites apart) and whose top bank has teeth pointing into the region every ``tooth``
+    (``depth`` deep: reflex tips, convex valleys); ``spike`` = (x, height) adds a thin spike to the bottom bank.
+    Returns the polygon and its split points (the middles of the two ends)."""
+    xs = np.arange(0.0, length + 0.5 * bottom_step, bottom_step)
+    bottom = [(x, 0.0) for x in xs]
+    if spike is not None:
+        x, height = spike
+        bottom = [p for p in bottom if p[0] < x - 0.2] + [(x - 0.2, 0.0), (x, height), (x + 0.2, 0.0)]
+        bottom += [p for p in [(x_, 0.0) for x_ in xs] if p[0] > x + 0.2]
+    tips = np.arange(tooth, length - 0.5 * tooth, tooth)
+    top = [(length, width)]
+    for tip in tips[::-1]:
+        top += (
+            [(tip + 0.5 * tooth, width), (tip, width - depth)] if tip + 0.5 * tooth < length else [(tip, width - depth)]
+        )
+    top += [(0.0, width)]
+    return Polygon(bottom + top), [(0.0, 0.5 * width), (length, 0.5 * width)]
+
+
+@pytest.fixture
+def predicted_events(monkeypatch):
+    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them)."""
+    from incircu_plugin.core import adaptive
+
+    counted = {"events": 0}
+    original = adaptive._Tracer._pair_events
+
+    def counting(self, intervals, terms0, terms1):
+        counted["events"] += len(intervals.span)
+        return original(self, intervals, terms0, terms1)
+
+    monkeypatch.setattr(adaptive._Tracer, "_pair_events", counting)
+    return counted
+
+
+def test_a_walk_over_reflex_teeth_of_the_other_bank_stays_on_the_axis(predicted_events):
+    # Each long bottom edge faces several teeth: its contact walks segment, reflex tip, segment, ... (the
+    # convex valleys are no sites), and the events between them are predicted in one round.
+    polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4)
+    assert_adaptive_properties(polygon, split_points)
+    assert predicted_events["events"] > 0
+
+
+def test_a_walk_interrupted_by_a_spike_of_the_own_bank_stays_on_the_axis(predicted_events):
+    # A thin spike of the bottom bank reaches to 2 of the top teeth: between two top sites the disks of the
+    # bottom edges beside it touch its tip first, so predicted events between top sites there are wrong.
+    polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4, spike=(21.0, 7.6))
+    assert_adaptive_properties(polygon, split_points)
+    assert predicted_events["events"] > 0
+
+
+def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(predicted_events):
+    # A bay of the top bank behind a narrow mouth: its sites lie between the mouth's in the top bank's order,
+    # but no disk of the bottom bank reaches them (the contact jumps across the mouth).
+    polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4)
+    ring = list(polygon.exterior.coords)[:-1]
+    mouth = next(i for i, (x, y) in enumerate(ring) if y == 10.0 and 18.0 < x < 22.0)
+    x = ring[mouth][0]
+    bay = [(x + 0.1, 10.0), (x + 0.1, 10.5), (x + 3.0, 10.5), (x + 3.0, 14.0), (x - 3.0, 14.0), (x - 3.0, 10.5)]
+    bay += [(x - 0.1, 10.5), (x - 0.1, 10.0)]
+    polygon = Polygon(ring[:mouth] + bay + ring[mouth + 1 :])
+    assert polygon.is_valid
+    assert_adaptive_properties(polygon, split_points)
+    assert predicted_events["events"] > 0
+
+
+def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monkeypatch):
+    # A bottom bank bulging out of the region (convex corners), its edges alternately long and very short: a
+    # corner's bisector disk touches the short edge beyond its end (left to the rounds), a long one inside it.
+    from incircu_plugin.core import adaptive
+
+    corners = {"count": 0}
+    original = adaptive._Tracer._corner_samples
+
+    def counting(self, edge):
+        corners["count"] += len(edge)
+        return original(self, edge)
+
+    monkeypatch.setattr(adaptive._Tracer, "_corner_samples", counting)
+    steps = np.cumsum(np.tile([3.0, 0.05], 10))
+    xs = np.concatenate([[0.0], 40.0 * steps / steps[-1]])
+    bottom = [(x, -3.0 * np.sin(np.pi * x / 40.0)) for x in xs]
+    polygon = Polygon(bottom + [(40.0, 10.0), (0.0, 10.0)])
+    assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
+    assert corners["count"] > 0

@@ -15,9 +15,25 @@ piece needs no vertex; a parabola gets stations placed analytically so that each
 tolerance of it. Every vertex is therefore exactly on the medial axis: a solved sample, an event or a
 point of a parabola computed in closed form.
 
-A convex vertex needs no sample: the edges next to it meet the corner's own edge line at ``t = 0``, and the
-event where that line and the other chain are equally far is the junction of the corner's branch with the
-axis.
+*Predicted walks.* When an interval's two sites lie on one chain but are not neighbours along it, the contact
+almost always walks through the sites between them in chain order: the straight runs of segments and the
+reflex vertices between them (a convex vertex is never a first contact of a disk in the region:
+:func:`_site_sequence`). The events between consecutive sites of that walk are computed in closed form and,
+when each lies inside the interval and they come in the walk's order, all are probed in the same round (else
+the interval's one event is, as above). Each probe is judged exactly like the single event: where it verifies
+(its first contact ties the two sites) the pieces beside it keep those two sites, else both take the probe's
+first contact. A walk along the own chain is only predicted when it does not pass the span's own sites (the
+solver never reports those). Either way every piece is labelled with sites that its end samples really touch
+first, and a piece is settled only when both its ends touch the same site, so the argument below is unchanged:
+a wrong prediction costs probes, never a site.
+
+A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
+and the event where that line and the other chain are equally far is the junction of the corner's branch with
+the axis. Before the rounds that junction is solved directly, once for both edges: the disks on the corner's
+bisector (radius ``scale * t``, touching both segments ``slide * t`` from the corner) first touch the rest
+of the boundary at the largest empty disk touching both segments, which is the junction; it is cut into both
+edges' intervals as a sample of each (their disks are the same disk). Where it would touch a segment beyond its
+interval (a short edge), or next to a chain's end, the rounds find the junction as an event.
 
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
@@ -31,7 +47,7 @@ Several features are traced together (:func:`trace_together`) as pairs of chains
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -63,6 +79,9 @@ STRAIGHT_TURN = 1e-9
 #: scaled by how far apart the two feet are seen from the centre (see :meth:`_Tracer._is_event`).
 EVENT_TOLERANCE = 1e-8
 LOOSE_EVENT_TOLERANCE = 1e-6
+
+#: Most events predicted in one interval (between consecutive sites of a chain's walk).
+MAX_PREDICTED = 8
 
 #: Fraction of the tolerance under which two neighbouring samples' centres settle their interval.
 SETTLED_CHORD = 1.0 / 16.0
@@ -219,13 +238,36 @@ def _straight_runs(kinds, boundary):
     return first, boundary.segment_end_position[last]
 
 
+def _site_sequence(boundary, kinds, line_of):
+    """The sites of every chain in their order along it, and each site's rank in that sequence.
+
+    A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
+    that ends it, and its end vertex: every site a disk in the region can touch first. A convex vertex never
+    is one: next to it the region is a wedge narrower than a half-plane, and a disk inside a wedge touching
+    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1.
+    """
+    count = boundary.segment_count
+    segment = np.flatnonzero(line_of == np.arange(count))
+    chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
+    vertex = np.flatnonzero((kinds < 0) | chain_end)
+    # Vertex ``g + chain`` starts segment ``g``: keys 2g (vertex), 2g + 1 (segment) follow the chains.
+    keys = np.concatenate([2 * segment + 1, 2 * (vertex - boundary.vertex_chain[vertex])])
+    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")]
+    rank = np.full(count + len(boundary.vertex), -1)
+    rank[sequence] = np.arange(len(sequence))
+    rank[:count] = rank[line_of]
+    return sequence, rank
+
+
 class _Sites:
-    """Site arithmetic: which chain a site is on, the site a segment stands for, feet and radii on spans."""
+    """Site arithmetic: which chain a site is on, the site a segment stands for, the sites' order along their
+    chains, feet and radii on spans."""
 
     def __init__(self, boundary, kinds):
         self.boundary = boundary
         self.kinds = kinds
         self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
+        self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
 
     def canonical(self, site):
         """Segment sites replaced by the first segment of their straight run (one line, one site)."""
@@ -403,6 +445,19 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
 _STORE_TYPES = {"span": np.int32, "u": float, "t": float, "centre": float, "emit": bool, "other_site": np.int32}
 
 
+def _own_ranks(spans, sites, boundary):
+    """Per span, the lowest and highest rank of the sites its samples touch by construction: an edge's
+    segment (its straight run) and end vertices, a fan's vertex and two segments."""
+    first = spans.segment
+    last = first + (spans.kind == FAN)
+    # Segment g starts at vertex g + chain (site ``segment_count`` + that).
+    start_vertex = boundary.segment_count + first + boundary.chain_id[first]
+    end_vertex = boundary.segment_count + last + boundary.chain_id[last] + 1
+    low = np.where(sites.rank[start_vertex] >= 0, sites.rank[start_vertex], sites.rank[first])
+    high = np.where(sites.rank[end_vertex] >= 0, sites.rank[end_vertex], sites.rank[last])
+    return low, high
+
+
 class _Tracer:
     """The samples of one adaptive tracing, grown round by round, and the rules that grow them.
 
@@ -420,6 +475,7 @@ class _Tracer:
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
+        self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
 
@@ -458,7 +514,7 @@ class _Tracer:
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
-        intervals = self._initial(report)
+        intervals = self._corner_junctions(self._initial(report))
         for round_index in range(MAX_ROUNDS):
             open_ = self._is_open(intervals)
             curved = ~open_ & self._is_curved(intervals)
@@ -472,24 +528,30 @@ class _Tracer:
             settled = self._settle_at_ends(events, at_end)
             carried = events.subset(settled)
             events = events.subset(~settled)
-            event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
-            owner, station_u, station_trial = self._stations(curves)
-            span = np.concatenate([events.span, curves.span[owner]])
+            owner, event_u, event_trial, found, pairs = self._event_nodes(
+                events, event_u[~settled], event_trial[~settled], found[~settled]
+            )
+            station_owner, station_u, station_trial = self._stations(curves)
+            span = np.concatenate([pairs.span, curves.span[station_owner]])
             u = np.concatenate([event_u, station_u])
             t, status, site, centre = self._solve_probes(span, u, np.concatenate([event_trial, station_trial]))
             del event_trial, station_trial
             count = len(event_u)
-            event, exact = self._is_event(events, centre[:count], t[:count], site[:count], found)
-            emit, other_site = self._event_emission(events, status[:count], site[:count], exact)
+            event, exact = self._is_event(pairs, centre[:count], t[:count], site[:count], found)
+            emit, other_site = self._event_emission(pairs, status[:count], site[:count], exact)
             event_index = self.add(span[:count], u[:count], t[:count], centre[:count], emit, other_site)
             # A station's tie counts only with the parabola's own site (near a tie elsewhere the contact is
             # known to the square root of the tie's tolerance only).
-            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == curves.site0[owner]))
+            own = curves.site0[station_owner]
+            accepted = (status[count:] == CLEAR) | ((status[count:] == TIED) & (site[count:] == own))
             station_index = self.add(span[count:], u[count:], t[count:], centre[count:], accepted, site[count:])
+            # At an event the pieces on either side keep its two sites; elsewhere both take the probe's site.
+            before, after = np.where(event, pairs.site0, site[:count]), np.where(event, pairs.site1, site[:count])
+            station_site = site[count:]
             intervals = _Intervals.concatenate(
                 [
-                    _split_at(events, event_u, event_index, site[:count], event),
-                    _split_at_stations(curves, owner, station_u, station_index, site[count:]),
+                    _split_at_nodes(events, owner, event_u, event_index, before, after, False),
+                    _split_at_nodes(curves, station_owner, station_u, station_index, station_site, station_site, True),
                     carried,
                 ]
             )
@@ -571,6 +633,83 @@ class _Tracer:
             )
         return t, status, self.sites.canonical(site)
 
+    def _corner_samples(self, span):
+        """Samples on the bisector of the convex corner at the start of each edge span ``span`` (span
+        ``span - 1`` is the edge before it; the disks touch both segments ``slide * t`` from the corner, with
+        radius ``scale * t``)."""
+        spans, segment = self.spans, self.spans.segment[span]
+        bisector = spans.normal[span - 1] + spans.normal[span]
+        bisector /= np.hypot(*bisector.T)[:, None]
+        return Samples(
+            chain=spans.chain[span],
+            point=spans.point[span],
+            direction=bisector,
+            scale=np.einsum("ij,ij->i", bisector, spans.normal[span]),
+            position=spans.position[span],
+            slide=np.abs(np.einsum("ij,ij->i", bisector, spans.unit[span])),
+            first_own=segment - 1,
+            last_own=segment,
+        )
+
+    def _beside_corners(self, intervals):
+        """The intervals on both sides of the convex corners of the traced chains: per corner, the one that
+        starts at it (on the edge after it) and the one that ends at it (on the edge before it).
+
+        Beside a chain's end the junction may touch the other chain at the split point itself (a tie whose
+        foot the ordering cannot place on a side): those corners are left out.
+        """
+        b, spans = self.boundary, self.spans
+        after = np.flatnonzero((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE))
+        segment = spans.segment[intervals.span[after]]
+        corner = self.sites.kinds[segment + b.chain_id[segment]] > 0
+        corner &= ~b.first_of_chain[segment] & ~b.first_of_chain[segment - 1] & ~b.last_of_chain[segment]
+        after = after[corner]
+        # The interval ending at the end of edge span k has that edge's end sample, 2k + 1, at its right.
+        before = np.full(len(spans.kind), -1)
+        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
+        before[intervals.span[ends]] = ends
+        before = before[intervals.span[after] - 1]
+        after, before = after[before >= 0], before[before >= 0]
+        # In the order of the spans (along the chains), as the coarse-to-fine solution needs.
+        order = np.argsort(intervals.span[after], kind="stable")
+        return after[order], before[order]
+
+    def _corner_junctions(self, intervals):
+        """Split the intervals on both sides of every convex corner of a traced chain at its junction.
+
+        The largest empty disk on the corner's bisector touches both its segments and first touches a site
+        elsewhere: one solve gives the event that the intervals beside the corner (each with the corner's
+        other segment as its site at the corner) would otherwise probe one by one, from both sides. Its
+        disk is the sample of both edges where it touches them; a junction touching an edge beyond its
+        interval, or beside a chain's end, is left to the rounds.
+        """
+        b = self.boundary
+        after, before = self._beside_corners(intervals)
+        corners = self._corner_samples(intervals.span[after])
+        t, status, _, _, site = _solve_all(
+            corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
+        )
+        site = self.sites.canonical(site)
+        along, radius = corners.slide * t, corners.scale * t
+        inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
+        inside &= intervals.u1[before] - along > intervals.u0[before]
+        centre = corners.point[inside] + t[inside, None] * corners.direction[inside]
+        after, before = after[inside], before[inside]
+        along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
+        span = np.concatenate([intervals.span[after], intervals.span[before]])
+        u = np.concatenate([along, intervals.u1[before] - along])
+        emit = (status == CLEAR) | ((status == TIED) & ~self._at_split_point(site))
+        index = self.add(span, u, np.tile(radius, 2), np.tile(centre, (2, 1)), np.tile(emit, 2), np.tile(site, 2))
+        owner = np.concatenate([after, before])
+        # Beside the corner the disk touches the corner's other segment (the interval's site there).
+        site_before = np.concatenate([intervals.site0[after], site])
+        site_after = np.concatenate([site, intervals.site1[before]])
+        cut, owner = np.unique(owner, return_inverse=True)
+        pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
+        uncut = np.ones(len(intervals.span), dtype=bool)
+        uncut[cut] = False
+        return _Intervals.concatenate([pieces, intervals.subset(uncut)])
+
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
         finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
@@ -615,12 +754,77 @@ class _Tracer:
         terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
         u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
+        return u, self._trial(intervals, radius, found), found, at_end
+
+    def _trial(self, intervals, radius, found):
+        """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
         width = self.of(self.width, intervals)
         known = np.where(np.isfinite(known), 1.25 * known, width)
         # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
         trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
-        return u, np.maximum(trial, width / 16.0), found, at_end
+        return np.maximum(trial, width / 16.0)
+
+    def _pair_events(self, intervals, terms0, terms1):
+        """The event of two sites (their :meth:`_Sites.radius_terms`) inside each interval, in closed form: its
+        parameter, its radius and whether it lies strictly inside (the probe decides whether it is one)."""
+        u, found, _ = _crossing(self.spans, intervals, terms0, terms1)
+        radius = _radius_at(self.spans, intervals.span, terms0, u)
+        return u, radius, found & np.isfinite(radius)
+
+    def _walks(self, intervals):
+        """The run of its chain's site sequence each interval's contact is predicted to walk through, from its
+        site at ``u0`` to its site at ``u1``: the ranks ``first``, ``last`` of the run and its number of events
+        (0 where the two sites lie on different chains, or the run would pass the span's own sites)."""
+        sites = self.sites
+        chain0, chain1 = sites.chain(intervals.site0), sites.chain(intervals.site1)
+        first, last = sites.rank[intervals.site0], sites.rank[intervals.site1]
+        low, high = np.minimum(first, last), np.maximum(first, last)
+        span = intervals.span
+        other = chain0 == self.spans.chain[span] ^ 1
+        apart = other | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
+        return first, last, np.where((chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart, high - low, 0)
+
+    def _event_nodes(self, intervals, event_u, event_trial, found):
+        """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
+        form (:meth:`_walks`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
+        walk's order), else its one event candidate (``event_u``, ``event_trial``, ``found``).
+
+        Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
+        interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
+        """
+        first, last, events = self._walks(intervals)
+        predicted = (events >= 2) & (events <= MAX_PREDICTED)
+        counts = np.where(predicted, events + 1, 0)
+        owner, index = ranges(counts)
+        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+        # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
+        middle = 0.5 * (intervals.u0 + intervals.u1)
+        terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
+        pair = np.flatnonzero(index < counts[owner] - 1)
+        pair_owner = owner[pair]
+        pieces = intervals.subset(pair_owner)
+        u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
+        in_order = np.ones(len(pair), dtype=bool)
+        in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
+        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
+        keep = np.flatnonzero(~failed[pair_owner])
+        single = np.flatnonzero(~predicted | failed)
+        pieces = pieces.subset(keep)
+        node_owner = np.concatenate([single, pair_owner[keep]])
+        probe_pairs = replace(
+            intervals.subset(node_owner),
+            site0=np.concatenate([intervals.site0[single], site[pair[keep]]]),
+            site1=np.concatenate([intervals.site1[single], site[pair[keep] + 1]]),
+        )
+        trial = self._trial(pieces, radius[keep], np.ones(len(keep), dtype=bool))
+        return (
+            node_owner,
+            np.concatenate([event_u[single], u[keep]]),
+            np.concatenate([event_trial[single], trial]),
+            np.concatenate([found[single], np.ones(len(keep), dtype=bool)]),
+            probe_pairs,
+        )
 
     def _settle_at_ends(self, intervals, at_end):
         """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
@@ -770,44 +974,26 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     return edge, site, status, split_vertex
 
 
-def _split_at(intervals, u, probe_index, probe_site, event):
-    """The two halves of every interval at its probe: resolved at an event, else with the probe's site."""
-    unverified = np.zeros(len(u), dtype=bool)
-    left = _Intervals(
-        intervals.span,
-        intervals.u0,
-        u,
-        intervals.left,
-        probe_index,
-        intervals.site0,
-        np.where(event, intervals.site0, probe_site),
-        unverified,
-    )
-    right = _Intervals(
-        intervals.span,
-        u,
-        intervals.u1,
-        probe_index,
-        intervals.right,
-        np.where(event, intervals.site1, probe_site),
-        intervals.site1,
-        unverified,
-    )
-    return _Intervals.concatenate([left, right])
+def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verified):
+    """Every interval cut at its nodes (samples ``index`` at parameters ``u`` of interval ``owner``).
 
-
-def _split_at_stations(intervals, owner, u, probe_index, probe_site):
-    """Every curved interval cut at its stations (sorted by ``u``), the pieces marked verified."""
+    A node's ``site_before`` becomes the site at the right end of the piece before it, ``site_after`` the one at
+    the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
+    marked ``verified`` (the stations of a parabola) or not.
+    """
     order = np.lexsort((u, owner))
-    owner, u, probe_index, probe_site = owner[order], u[order], probe_index[order], probe_site[order]
+    owner, u, index = owner[order], u[order], index[order]
+    site_before, site_after = site_before[order], site_after[order]
     nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
     node_owner, rank = ranges(nodes)
     first, last = rank == 0, rank == nodes[node_owner] - 1
     inner = ~first & ~last
-    node_u, node_index, node_site = np.empty(len(rank)), np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
-    node_u[first], node_index[first], node_site[first] = intervals.u0, intervals.left, intervals.site0
-    node_u[last], node_index[last], node_site[last] = intervals.u1, intervals.right, intervals.site1
-    node_u[inner], node_index[inner], node_site[inner] = u, probe_index, probe_site
+    node_u, node_index = np.empty(len(rank)), np.empty(len(rank), dtype=int)
+    node_before, node_after = np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
+    node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
+    node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
+    node_u[inner], node_index[inner] = u, index
+    node_before[inner], node_after[inner] = site_before, site_after
     a = np.flatnonzero(~last)
     return _Intervals(
         intervals.span[node_owner[a]],
@@ -815,9 +1001,9 @@ def _split_at_stations(intervals, owner, u, probe_index, probe_site):
         node_u[a + 1],
         node_index[a],
         node_index[a + 1],
-        node_site[a],
-        node_site[a + 1],
-        np.ones(len(a), dtype=bool),
+        node_after[a],
+        node_before[a + 1],
+        np.full(len(a), verified),
     )
 
 
