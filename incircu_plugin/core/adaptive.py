@@ -450,9 +450,8 @@ def _own_ranks(spans, sites, boundary):
     segment (its straight run) and end vertices, a fan's vertex and two segments."""
     first = spans.segment
     last = first + (spans.kind == FAN)
-    # Segment g starts at vertex g + chain (site ``segment_count`` + that).
-    start_vertex = boundary.segment_count + first + boundary.chain_id[first]
-    end_vertex = boundary.segment_count + last + boundary.chain_id[last] + 1
+    start_vertex = boundary.start_site[first]
+    end_vertex = boundary.start_site[last] + 1
     low = np.where(sites.rank[start_vertex] >= 0, sites.rank[start_vertex], sites.rank[first])
     high = np.where(sites.rank[end_vertex] >= 0, sites.rank[end_vertex], sites.rank[last])
     return low, high
