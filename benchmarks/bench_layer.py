@@ -4,7 +4,7 @@ Inputs: the seeded layer of :mod:`rivers` (``--count`` river-like polygons, spli
 extra rows, each real outline of :mod:`outlines` as a layer of one polygon (split at the ends ``find_ends``
 places). Tools:
 
-- in this process's fork, polygon after polygon (:func:`harness.run_layer`, killed past the time limit):
+- in a clean child process, polygon after polygon (:func:`harness.run_layer`, killed past the time limit):
   IncirCu's core with split points, without them (automatic ends) and, when the core has the ``tolerance``
   keyword, at a fine tolerance; and, when the core has ``centerlines_together``, the whole layer traced
   together in one call (as the plugin runs a layer; each polygon is given an equal share of the time);

@@ -358,7 +358,7 @@ outline as a layer of one polygon. IncirCu `{layer_results['incircu_version']}`;
 {layer_results['wall_seconds'] / 60:.0f} min.
 
 - **polygons/s**: polygons attempted / time. Core and peers: the sum of the tool calls, polygon after polygon in
-  one forked process (stopped past its time limit); `IncirCu (core, layer together)`: one call on the whole
+  one clean child process (forked from a fork server that only imported the tools; stopped past its time limit); `IncirCu (core, layer together)`: one call on the whole
   layer (`centerlines_together` on `batches`, how the plugin runs a layer). `qgis_process` rows: the wall
   time of one `qgis_process run` on the whole GeoPackage layer, QGIS start-up ({_seconds(startup)} alone)
   and output writing included. **IncirCu × faster** compares each tool used its fastest way on the layer:
@@ -541,7 +541,8 @@ synthetic river's polygon and split points at the core's defaults (input generat
   issue's constant-width meander (2 km × 20, 2,333 vertices); larger inputs in the scaling run. Real outlines: {outline_info}, projected to a local azimuthal
   equidistant CRS (metres), largest part, split at the ends `find_ends` places.
 - **Time**: median wall time of several runs (fewer when a run is long; `runs` column), each tool from
-  a shapely polygon to its lines, in a forked process killed past its time limit. GRASS time is one
+  a shapely polygon to its lines, in a clean child process (forked from a fork server that only imported
+  the tools) killed past its time limit. GRASS time is one
   `qgis_process run` as a QGIS user launches it, start-up included (a provider-loading `qgis_process`
   call alone takes {_seconds(startup)}).
 - **parts** = connected pieces of the output, **branches** = edges between nodes of degree ≠ 2 after
