@@ -7,6 +7,7 @@ end radii within ``ROUNDING`` of the feature's extent, every foot lies at its ve
 agree in type and message, in input order.
 """
 
+import gc
 from dataclasses import dataclass
 from typing import Callable
 
@@ -32,7 +33,8 @@ from incircu_plugin.core import (
     polygon_centerline_steps,
     split_polygon,
 )
-from incircu_plugin.core.steps import run_alone, trace_alone
+from incircu_plugin.core import steps as steps_module
+from incircu_plugin.core.steps import collector_paused, run_alone, trace_alone
 from tests.support import geometry_cases
 
 #: Largest difference allowed between a feature traced together and alone at the line's ends, as a fraction
@@ -293,3 +295,34 @@ def test_lines_with_an_error_together_with_good_ones():
     expected = run_alone(lines_centerline_steps(*good))
     tolerance = default_tolerance(*(np.asarray(line.coords) for line in good))
     assert_same_result(together[1], expected, rounding_of(good[0].union(good[1])), tolerance, "good")
+
+
+def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeypatch):
+    seen = []
+    tracer = steps_module.trace_together
+    monkeypatch.setattr(steps_module, "trace_together", lambda *a: seen.append(gc.isenabled()) or tracer(*a))
+    monkeypatch.setattr(steps_module, "trace_one", lambda *a: seen.append(gc.isenabled()) or tracer([a[0]], a[1])[0])
+    case = geometry_cases.rectangle()
+    for enabled in (True, False):
+        (gc.enable if enabled else gc.disable)()
+        try:
+            centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)])
+            polygon_centerline(case.polygon, case.split_points)
+            assert gc.isenabled() is enabled
+            with pytest.raises(Cancelled):
+                centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)], lambda f: False)
+            assert gc.isenabled() is enabled
+        finally:
+            gc.enable()
+    assert seen and not any(seen)
+
+
+def test_overlapping_pauses_restore_the_collector_when_the_last_ends():
+    assert gc.isenabled()
+    first, second = collector_paused(), collector_paused()
+    first.__enter__()
+    second.__enter__()
+    first.__exit__(None, None, None)
+    assert not gc.isenabled()
+    second.__exit__(None, None, None)
+    assert gc.isenabled()
