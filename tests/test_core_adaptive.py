@@ -29,6 +29,7 @@ from incircu_plugin.core import (
     IncirCuError,
     centerline_from_chains,
     default_tolerance,
+    engine,
     lines_centerline,
     polygon_centerline,
     split_polygon,
@@ -79,6 +80,39 @@ def test_a_tight_tolerance_bounds_the_distance_to_the_medial_axis(case):
     result = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
     assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
+
+
+@pytest.mark.parametrize("piece", [2, 5, 16])
+def test_a_line_simplified_in_pieces_stays_within_the_tolerance(monkeypatch, piece):
+    # Long lines are simplified in pieces that share their end vertices (SIMPLIFY_PIECE points each).
+    case = geometry_cases.meander()
+    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", piece)
+    result = polygon_centerline(case.polygon, case.split_points)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    tolerance = default_tolerance(case.chain_a, case.chain_b)
+    assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
+
+
+@pytest.mark.parametrize("piece", [3, 40, 10_000])
+def test_pieces_keep_their_ends_and_every_dropped_vertex_near_its_chord(monkeypatch, piece):
+    rng = np.random.default_rng(7)
+    # Increasing x: neither the line nor any subset of its vertices crosses itself (no topology fallback).
+    points = np.cumsum(
+        np.abs(rng.normal(size=(1_000, 2))) * [1.0, 0.0] + rng.normal(size=(1_000, 2)) * [0.0, 1.0], axis=0
+    )
+    tolerance = 0.5
+    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", piece)
+    keep = engine._fewest_vertices(points, tolerance)
+    assert keep[::piece].all() and keep[-1]
+    kept = np.flatnonzero(keep)
+    chords = shapely.linestrings(np.stack([points[kept[:-1]], points[kept[1:]]], axis=1))
+    owner = np.searchsorted(kept, np.arange(len(points)), side="right") - 1
+    dropped = np.flatnonzero(~keep)
+    distance = shapely.distance(chords[owner[dropped]], shapely.points(points[dropped]))
+    assert distance.max() <= tolerance * (1.0 + 1e-12)
+    if piece >= len(points):
+        plain = shapely.simplify(shapely.LineString(points), tolerance, preserve_topology=False)
+        assert np.array_equal(points[keep], shapely.get_coordinates(plain))
 
 
 def test_a_tighter_tolerance_gives_more_vertices_on_a_curved_axis():
