@@ -59,9 +59,9 @@ from shapely.geometry import LineString, Point
 
 from .chains import extent_of, validate_polygon
 from .errors import IncirCuError, InvalidGeometryError
-from .paths import heaviest_path
+from .paths import heaviest_paths
 from .polyline import cumulative_lengths, typical_width
-from .skeleton import skeleton_graph
+from .skeleton import joint_dual_graph, triangulation
 from .steps import Cancelled
 
 #: Rules for the automatic ends (see the module docstring).
@@ -171,14 +171,55 @@ def find_ends(polygon, *, rule="main_stem", guide=None, progress=None):
     >>> [round(c, 6) for c in ends.start.coords[0] + ends.end.coords[0]]
     [0.0, 1.0, 10.0, 1.0]
     """
+    (outcome,) = _ends_together([polygon], _checked_rule(rule), [guide], _cancel_check(progress))
+    if isinstance(outcome, Exception):
+        raise outcome
+    return outcome
+
+
+def find_ends_together(polygons, *, rule="main_stem", guides=None, progress=None):
+    """Find the ends of many polygons at once: :func:`find_ends` of each, with the same answers.
+
+    The polygons are triangulated one by one (one GEOS call each); their skeletons, the contraction of the
+    skeletons' chains and the weights are then computed together, so a batch of small features pays the
+    numpy calls' overhead once instead of once per feature.
+
+    Parameters
+    ----------
+    polygons : sequence of Polygon
+        CRS units (each in its own; they need not be apart).
+    rule : {"main_stem", "longest_path"}
+        Path rule, as for :func:`find_ends`.
+    guides : sequence of (LineString or MultiLineString or None), optional
+        One guide per polygon (see :func:`find_ends`); None: no guides.
+    progress : callable, optional
+        Called with the fraction done (0 to 1); returning False stops the search with :class:`Cancelled`.
+
+    Returns
+    -------
+    list
+        Per polygon, in order: its :class:`EndsResult`, or the exception :func:`find_ends` raises for it
+        (an ``Exception`` instance, such as :class:`InvalidGeometryError` for an invalid or too thin one).
+
+    Raises
+    ------
+    IncirCuError
+        If ``rule`` is unknown.
+    Cancelled
+        If ``progress`` returned False.
+    """
+    polygons = list(polygons)
+    guides = [None] * len(polygons) if guides is None else list(guides)
+    if len(guides) != len(polygons):
+        raise IncirCuError(f"{len(guides)} guides were given for {len(polygons)} polygons.")
+    return _ends_together(polygons, _checked_rule(rule), guides, _cancel_check(progress))
+
+
+def _checked_rule(rule):
+    """Return ``rule``; raise :class:`IncirCuError` if it is not one of ``END_RULES``."""
     if rule not in END_RULES:
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(rule, ", ".join(END_RULES)))
-    try:
-        validate_polygon(polygon)
-        _validate_guide(guide)
-        return _find_ends(polygon, rule, guide, _cancel_check(progress))
-    except shapely.errors.GEOSException as error:
-        raise InvalidGeometryError(f"The ends of the polygon cannot be found: {error}.") from error
+    return rule
 
 
 def _validate_guide(guide):
@@ -202,8 +243,38 @@ def _cancel_check(progress):
     return check
 
 
-def _find_ends(polygon, rule, guide, check):
-    """Find the ends of a validated polygon (see :func:`find_ends`); ``check(fraction)`` may cancel."""
+@dataclass
+class _Frame:
+    """A polygon moved to its local frame (origin at its box centre, unit bounding-box diagonal).
+
+    Attributes
+    ----------
+    polygon : Polygon
+        The input, CRS units.
+    origin : ndarray of shape (2,)
+        Centre of its bounding box, CRS units.
+    scale : float
+        Its bounding-box diagonal, CRS units.
+    local : Polygon
+        The polygon in the local frame, counter-clockwise.
+    guide : LineString or MultiLineString or None
+        The guide in the local frame.
+    triangles : tuple
+        Its skeleton's triangulation (see :func:`.skeleton.triangulation`).
+    """
+
+    polygon: object
+    origin: np.ndarray
+    scale: float
+    local: object
+    guide: object
+    triangles: tuple
+
+
+def _framed(polygon, guide):
+    """Return the :class:`_Frame` of a polygon after validating it and its guide; raise as :func:`find_ends`."""
+    validate_polygon(polygon)
+    _validate_guide(guide)
     bounds = np.asarray(polygon.bounds, dtype=float)
     origin = (bounds[:2] + bounds[2:]) / 2.0
     scale = extent_of(bounds.reshape(2, 2))
@@ -216,36 +287,117 @@ def _find_ends(polygon, rule, guide, check):
         return shapely.transform(geometry, lambda xy: (xy - origin) / scale)
 
     local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
+    local_guide = None if guide is None else to_local(guide)
+    return _Frame(polygon, origin, scale, local, local_guide, triangulation(local))
+
+
+def _as_outcome(error):
+    """Return the exception :func:`find_ends` raises for ``error`` (a GEOS error becomes invalid geometry)."""
+    if isinstance(error, shapely.errors.GEOSException):
+        wrapped = InvalidGeometryError(f"The ends of the polygon cannot be found: {error}.")
+        wrapped.__cause__ = error
+        error = wrapped
+    error.__traceback__ = None
+    return error
+
+
+def _each(items, compute, outcomes, check, begin, end):
+    """Return ``compute(i, item)`` for each item whose outcome is not yet known, None where it raised then.
+
+    An item that raises gets its error as outcome (see :func:`_as_outcome`).
+
+    ``check`` gets fractions from ``begin`` to ``end`` now and then; :class:`Cancelled` passes through.
+    """
+    results = [None] * len(items)
+    every = max(1, len(items) // 16)
+    for index, item in enumerate(items):
+        if outcomes[index] is not None:
+            continue
+        if index % every == 0:
+            check(begin + (end - begin) * index / len(items))
+        try:
+            results[index] = compute(index, item)
+        except Cancelled:
+            raise
+        except Exception as error:  # noqa: BLE001 - one polygon's failure is its outcome, not the batch's
+            outcomes[index] = _as_outcome(error)
+    return results
+
+
+def _ends_together(polygons, rule, guides, check):
+    """Return each polygon's :class:`EndsResult` or exception (see :func:`find_ends_together`)."""
     check(0.0)
-    nodes, radii, spans, edges, step = skeleton_graph(local)
-    if len(edges) == 0:
-        raise InvalidGeometryError("The polygon is too thin or too small to find its ends automatically.")
+    outcomes = [None] * len(polygons)
+    frames = _each(polygons, lambda index, polygon: _framed(polygon, guides[index]), outcomes, check, 0.0, 0.5)
     check(0.5)
-    weights, guided = _edge_weights(local, nodes, spans, edges, rule, None if guide is None else to_local(guide))
-    path = heaviest_path(
-        len(nodes),
-        edges,
-        weights,
-        int(np.argmax(radii)),
-        acyclic=len(local.interiors) == 0,
-        check=lambda: check(0.7),
-    )
-    trunk = nodes[path]
-    trunk_radii = radii[path]
-    junction = np.bincount(edges.ravel(), minlength=len(nodes))[path] >= 3
+    try:
+        trunks = _joint_trunks(frames, rule, outcomes, check)
+    except Cancelled:
+        raise
+    except Exception as error:  # noqa: BLE001 - find which polygon fails, and let the others through
+        if len(polygons) == 1:
+            return [_as_outcome(error)]
+        return [_ends_together([polygon], rule, [guide], _no_check)[0] for polygon, guide in zip(polygons, guides)]
+    results = _each(trunks, lambda index, trunk: _ends_of_trunk(frames[index], *trunk), outcomes, check, 0.7, 1.0)
+    check(1.0)
+    return [result if outcome is None else outcome for result, outcome in zip(results, outcomes)]
+
+
+def _no_check(fraction):
+    """A progress check that never cancels."""
+
+
+def _joint_trunks(frames, rule, outcomes, check):
+    """Return per frame its trunk ``(points, radii, junction, step, guided)``, None for a failed one.
+
+    The skeletons of all frames are built, weighed and contracted together (see :func:`.paths.heaviest_paths`).
+    A polygon whose skeleton has no edge gets :class:`InvalidGeometryError` in ``outcomes``.
+    """
+    live = [index for index, frame in enumerate(frames) if frame is not None]
+    if not live:
+        return [None] * len(frames)
+    nodes, radii, spans, edges, owner = joint_dual_graph([frames[index].triangles for index in live])
+    node_start = np.searchsorted(owner, np.arange(len(live) + 1))
+    edge_owner = owner[edges[:, 0]]
+    edge_counts = np.bincount(edge_owner, minlength=len(live))
+    weights = _rule_weights(nodes, spans, edges, rule)
+    trunks = [None] * len(frames)
+    starts, trees, chosen = [], [], []
+    for position, index in enumerate(live):
+        if edge_counts[position] == 0:
+            outcomes[index] = InvalidGeometryError(
+                "The polygon is too thin or too small to find its ends automatically."
+            )
+            continue
+        low, high = node_start[position], node_start[position + 1]
+        guided = frames[index].guide is not None and _guide_weights(
+            frames[index], nodes[low:high], spans[low:high], edges, weights, low, edge_owner == position
+        )
+        starts.append(low + int(np.argmax(radii[low:high])))
+        trees.append(len(frames[index].local.interiors) == 0)
+        chosen.append((index, guided))
+    paths = heaviest_paths(len(nodes), edges, weights, starts, trees, check=lambda: check(0.6))
+    junction = np.bincount(edges.ravel(), minlength=len(nodes)) >= 3
+    for (index, guided), path in zip(chosen, paths):
+        trunks[index] = (nodes[path], radii[path], junction[path], frames[index].triangles[3], guided)
+    return trunks
+
+
+def _ends_of_trunk(frame, trunk, trunk_radii, junction, step, guided):
+    """Return the :class:`EndsResult` of a polygon from its trunk (local frame, see :func:`_joint_trunks`)."""
+    origin, scale = frame.origin, frame.scale
     along = cumulative_lengths(trunk)
-    ring = _Ring(local.exterior)
+    ring = _Ring(frame.local.exterior)
     first = _centred_end(ring, trunk, trunk_radii, junction, along, 1.0, step)
     second = _centred_end(ring, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
     if np.hypot(*(first - second)) <= MIN_SEPARATION:
         second = _opposite_point(ring.exterior, first)
-    check(1.0)
     diameter = 2.0 * float(trunk_radii.max())
     path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
     elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
     ends = [xy * scale + origin for xy in (first, second)]
     if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
-        ends = [_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in ends]
+        ends = [_on_ring(frame.polygon.exterior, xy, ON_RING * scale) for xy in ends]
     first, second = sorted(ends, key=lambda xy: (xy[0], xy[1]))
     return EndsResult(
         start=Point(first),
@@ -254,6 +406,28 @@ def _find_ends(polygon, rule, guide, check):
         trunk=LineString(trunk * scale + origin) if len(trunk) > 1 else None,
         guided=guided,
     )
+
+
+def _rule_weights(nodes, spans, edges, rule):
+    """Return the weight of each skeleton edge under ``rule``: its swept area or its length, CRS units."""
+    lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
+    return _swept_area(lengths, spans, edges) if rule == "main_stem" else lengths
+
+
+def _swept_area(lengths, spans, edges):
+    """Return each edge's length times the mean width at its two nodes, CRS units squared."""
+    return lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
+
+
+def _guide_weights(frame, nodes, spans, edges, weights, node_offset, mask):
+    """Set one polygon's edge weights (``mask``) from its guide when the guide counts; return whether it did.
+
+    ``nodes`` and ``spans`` are that polygon's, whose first node is ``node_offset`` in ``edges``.
+    """
+    own, guided = _edge_weights(frame.local, nodes, spans, edges[mask] - node_offset, "main_stem", frame.guide)
+    if guided:
+        weights[mask] = own
+    return guided
 
 
 def _edge_weights(polygon, nodes, spans, edges, rule, guide):
@@ -274,9 +448,8 @@ def _edge_weights(polygon, nodes, spans, edges, rule, guide):
     weights : ndarray of shape (e,)
     guided : bool
     """
-    lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
-    area = lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
-    weights = area if rule == "main_stem" else lengths
+    weights = _rule_weights(nodes, spans, edges, rule)
+    area = _rule_weights(nodes, spans, edges, "main_stem")
     earnings = None if guide is None else _guide_earnings(polygon, nodes, spans, guide)
     if earnings is None or not np.any(earnings > 0.0):
         return weights, False

@@ -88,9 +88,71 @@ def skeleton_graph(polygon):
     InvalidGeometryError
         If no triangulation of the samples can be built.
     """
+    triangles = triangulation(polygon)
+    return joint_dual_graph([triangles])[:4] + (triangles[3],)
+
+
+def triangulation(polygon):
+    """Return the conforming Delaunay triangulation of a polygon's boundary samples, and their step.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        Valid polygon, CRS units, scaled to a size about 1 near the origin (for accuracy).
+
+    Returns
+    -------
+    corners : ndarray of shape (t, 3, 2)
+        Triangle corners, CRS units.
+    corner_ids : ndarray of shape (t, 3) of int
+        Sample index of each corner.
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring, for each sample.
+    step : float
+        Densification step, CRS units.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If no triangulation of the samples can be built.
+    """
     rings, step = boundary_samples(polygon)
-    corners, corner_ids, following = _conforming_triangulation(rings, step)
-    return _dual_graph(corners, corner_ids, following) + (step,)
+    return _conforming_triangulation(rings, step) + (step,)
+
+
+def joint_dual_graph(triangulations):
+    """Return the skeletons of several polygons at once: the dual graph of all their triangles.
+
+    The polygons' triangles are only concatenated (each in its own frame), so each polygon's skeleton is
+    exactly the one it gets alone; one pass of numpy calls serves them all.
+
+    Parameters
+    ----------
+    triangulations : list of tuple
+        Per polygon, what :func:`triangulation` returns.
+
+    Returns
+    -------
+    nodes, radii, spans : ndarray
+        As :func:`skeleton_graph` returns them, the polygons' nodes one polygon after the other; CRS units
+        of each polygon's frame.
+    edges : ndarray of shape (e, 2) of int
+        Node indices of each skeleton edge (into all the nodes).
+    owner : ndarray of shape (k,) of int
+        Index in ``triangulations`` of each node's polygon (non-decreasing).
+    """
+    sample_counts = [len(triangles[2]) for triangles in triangulations]
+    offsets = np.concatenate([[0], np.cumsum(sample_counts)[:-1]]).astype(np.int64)
+    corners = np.concatenate([np.empty((0, 3, 2))] + [triangles[0] for triangles in triangulations])
+    corner_ids = np.concatenate(
+        [np.empty((0, 3), np.int64)] + [triangles[1] + offset for triangles, offset in zip(triangulations, offsets)]
+    )
+    following = np.concatenate(
+        [np.empty(0, np.int64)] + [triangles[2] + offset for triangles, offset in zip(triangulations, offsets)]
+    )
+    triangle_owner = np.repeat(np.arange(len(triangulations)), [len(triangles[0]) for triangles in triangulations])
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following)
+    return nodes, radii, spans, edges, triangle_owner[inside]
 
 
 def boundary_samples(polygon):
@@ -157,6 +219,8 @@ def _conforming_triangulation(rings, step):
 def _dual_graph(corners, corner_ids, following):
     """Return the nodes, radii, spans and edges of the dual graph of the triangles inside the rings.
 
+    Also returns the mask of the triangles kept (one node each, in order).
+
     Inside triangles are those whose counter-clockwise sides run along the boundary the way the (oriented)
     rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat triangles
     of nearly collinear samples, whose orientation means nothing) take no part.
@@ -197,10 +261,10 @@ def _dual_graph(corners, corner_ids, following):
     radii[beyond] = double_area[beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
     # Across a channel sampled coarser than its width, the circumcircle overestimates the width: the height
     # of the triangle over its longest boundary side is the distance to the other bank.
-    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1)
+    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1, initial=0.0)
     across = boundary_side > 0.0
     spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
-    return nodes, radii, spans, edges
+    return nodes, radii, spans, edges, inside
 
 
 def _shared_sides(side_start, side_end, count):
