@@ -13,7 +13,7 @@ import shapely
 from shapely.geometry import LineString, Polygon, box
 
 from benchmarks.rivers import river_layer
-from incircu_plugin.core import Cancelled, find_ends
+from incircu_plugin.core import Cancelled, centerlines_together, find_ends, polygon_centerline, polygon_centerline_steps
 from incircu_plugin.core.ends import find_ends_together
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
 from tests.support import geometry_cases
@@ -140,3 +140,36 @@ def test_progress_rises_and_cancel_stops_the_batch():
     with pytest.raises(Cancelled):
         find_ends_together(polygons, progress=lambda fraction: calls.append(fraction) or len(calls) < 3)
     assert len(calls) == 3
+
+
+def test_a_batch_of_centerlines_finds_its_automatic_ends_together(monkeypatch):
+    from incircu_plugin.core import steps
+
+    polygons = [box(0.0, 0.0, 100.0, 10.0 + index) for index in range(5)] + [box(0.0, 0.0, 10.0, 10.0)]
+    expected = [polygon_centerline(polygon) for polygon in polygons]
+    batches = []
+    joint = steps.find_ends_together
+    monkeypatch.setattr(
+        steps, "find_ends_together", lambda polygons, **options: batches.append(polygons) or joint(polygons, **options)
+    )
+    monkeypatch.setattr(steps, "find_ends", None)
+    together = centerlines_together([polygon_centerline_steps(polygon) for polygon in polygons])
+    assert [len(batch) for batch in batches] == [len(polygons)]
+    for polygon, outcome, alone in zip(polygons, together, expected):
+        assert outcome.notes == alone.notes and outcome.ends_from == alone.ends_from == "automatic"
+        rounding = 1e-9 * extent(polygon)
+        for index in (0, -1):
+            assert np.hypot(*np.subtract(outcome.line.coords[index], alone.line.coords[index])) <= rounding
+    assert together[-1].notes and "not elongated" in together[-1].notes[0]
+
+
+def test_a_features_own_progress_can_cancel_the_ends_round(monkeypatch):
+    from incircu_plugin.core import steps
+
+    monkeypatch.setattr(steps, "_traced", None)  # cancelled before any tracing
+    generators = [
+        polygon_centerline_steps(box(0.0, 0.0, 100.0, 10.0)),
+        polygon_centerline_steps(box(0.0, 0.0, 100.0, 12.0), progress=lambda fraction: fraction < 0.05),
+    ]
+    with pytest.raises(Cancelled):
+        centerlines_together(generators)

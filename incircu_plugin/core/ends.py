@@ -58,11 +58,10 @@ import shapely
 from shapely.geometry import LineString, Point
 
 from .chains import extent_of, validate_polygon
-from .errors import IncirCuError, InvalidGeometryError
+from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
 from .polyline import cumulative_lengths, typical_width
 from .skeleton import joint_dual_graph, triangulation
-from .steps import Cancelled
 
 #: Rules for the automatic ends (see the module docstring).
 END_RULES = ("main_stem", "longest_path")
