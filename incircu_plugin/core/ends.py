@@ -60,7 +60,7 @@ from shapely.geometry import LineString, Point
 from .chains import extent_of, validate_polygon
 from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
-from .polyline import cumulative_lengths, typical_width
+from .polyline import typical_width
 from .skeleton import joint_dual_graph, triangulation
 
 #: Rules for the automatic ends (see the module docstring).
@@ -331,13 +331,14 @@ def _ends_together(polygons, rule, guides, check):
     check(0.5)
     try:
         trunks = _joint_trunks(frames, rule, outcomes, check)
+        check(0.8)
+        results = _ends_of_trunks(frames, trunks)
     except Cancelled:
         raise
     except Exception as error:  # noqa: BLE001 - find which polygon fails, and let the others through
         if len(polygons) == 1:
             return [_as_outcome(error)]
         return [_ends_together([polygon], rule, [guide], _no_check)[0] for polygon, guide in zip(polygons, guides)]
-    results = _each(trunks, lambda index, trunk: _ends_of_trunk(frames[index], *trunk), outcomes, check, 0.7, 1.0)
     check(1.0)
     return [result if outcome is None else outcome for result, outcome in zip(results, outcomes)]
 
@@ -380,31 +381,6 @@ def _joint_trunks(frames, rule, outcomes, check):
     for (index, guided), path in zip(chosen, paths):
         trunks[index] = (nodes[path], radii[path], junction[path], frames[index].triangles[3], guided)
     return trunks
-
-
-def _ends_of_trunk(frame, trunk, trunk_radii, junction, step, guided):
-    """Return the :class:`EndsResult` of a polygon from its trunk (local frame, see :func:`_joint_trunks`)."""
-    origin, scale = frame.origin, frame.scale
-    along = cumulative_lengths(trunk)
-    ring = _Ring(frame.local.exterior)
-    first = _centred_end(ring, trunk, trunk_radii, junction, along, 1.0, step)
-    second = _centred_end(ring, trunk[::-1], trunk_radii[::-1], junction[::-1], along[-1] - along[::-1], 1.0, step)
-    if np.hypot(*(first - second)) <= MIN_SEPARATION:
-        second = _opposite_point(ring.exterior, first)
-    diameter = 2.0 * float(trunk_radii.max())
-    path_length = float(along[-1] + trunk_radii[0] + trunk_radii[-1])
-    elongated = bool(diameter > 0.0 and path_length >= ELONGATION_THRESHOLD * diameter)
-    ends = [xy * scale + origin for xy in (first, second)]
-    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
-        ends = [_on_ring(frame.polygon.exterior, xy, ON_RING * scale) for xy in ends]
-    first, second = sorted(ends, key=lambda xy: (xy[0], xy[1]))
-    return EndsResult(
-        start=Point(first),
-        end=Point(second),
-        elongated=elongated,
-        trunk=LineString(trunk * scale + origin) if len(trunk) > 1 else None,
-        guided=guided,
-    )
 
 
 def _rule_weights(nodes, spans, edges, rule):
@@ -505,185 +481,301 @@ def _on_ring(exterior, xy, tolerance):
     return vertices[int(np.argmin(np.hypot(*(vertices - np.asarray(point.coords[0])).T)))]
 
 
-def _opposite_point(exterior, xy):
-    """Return the point of the ring half its perimeter along from the point nearest to ``xy``, CRS units."""
-    position = exterior.project(Point(xy)) + exterior.length / 2.0
-    return np.asarray(exterior.interpolate(position % exterior.length).coords[0])
-
-
-def _interpolate(points, along, position):
-    """Return the point at arc length ``position`` of a polyline with cumulative lengths ``along``."""
-    position = min(max(position, 0.0), along[-1])
-    index = int(np.clip(np.searchsorted(along, position, side="right") - 1, 0, len(points) - 2))
-    span = along[index + 1] - along[index]
-    fraction = 0.0 if span <= 0.0 else (position - along[index]) / span
-    return points[index] + fraction * (points[index + 1] - points[index])
-
-
-def _centred_end(ring, trunk, radii, junction, along, extent, step):
-    """Return the end at the start of ``trunk``, centred in its end cap (see the module docstring).
+def _ends_of_trunks(frames, trunks):
+    """Return the :class:`EndsResult` of each frame with a trunk (None for the others), all centred together.
 
     Parameters
     ----------
-    ring : _Ring
-        The polygon's exterior ring, counter-clockwise, CRS units.
-    trunk : ndarray of shape (k, 2)
-        Longest skeleton path, starting at the end to centre.
-    radii : ndarray of shape (k,)
-        Clearance of each trunk vertex, CRS units.
-    junction : ndarray of shape (k,) of bool
-        Whether each trunk vertex is a junction of the skeleton (three neighbours).
-    along : ndarray of shape (k,)
-        Arc length of each trunk vertex from the start, CRS units.
-    extent : float
-        Bounding-box diagonal of the polygon, CRS units (length of the ray).
-    step : float
-        Densification step, CRS units (smallest look-back and reach).
+    frames : list of _Frame or None
+    trunks : list of tuple or None
+        Per frame, ``(points, radii, junction, step, guided)`` in its local frame (see :func:`_joint_trunks`).
 
     Returns
     -------
-    ndarray of shape (2,)
-        The end, on the polygon's exterior ring, CRS units.
+    list of EndsResult or None
     """
-    if len(trunk) < 2:
-        return _nearest_boundary_points(ring.exterior, trunk[:1])[0]
-    position = _last_trunk_position(radii, along, junction)
-    last_trunk_point = _interpolate(trunk, along, position)
-    radius = max(float(np.interp(position, along, radii)), step)
-    chord = last_trunk_point - _interpolate(trunk, along, position + max(radius, 2.0 * step))
-    if not np.any(chord):
-        chord = trunk[0] - last_trunk_point
-    if not np.any(chord):
-        return _nearest_boundary_points(ring.exterior, last_trunk_point[None])[0]
-    chord = chord / np.hypot(*chord)
-    normal = np.array([-chord[1], chord[0]])
-    left, right = _nearest_boundary_points(ring.exterior, last_trunk_point + np.outer([1.0, -1.0], radius * normal))
-    tangent = np.array([left[1] - right[1], right[0] - left[0]])
-    tangent_norm = float(np.hypot(*tangent))
-    if tangent_norm <= 1e-9 * extent:
-        tangent = chord
-    else:
-        tangent = tangent / tangent_norm * np.sign(np.dot(tangent, chord) or 1.0)
-    ray = LineString([last_trunk_point, last_trunk_point + tangent * 2.0 * extent])
-    hits = shapely.get_coordinates(shapely.intersection(ray, ring.exterior))
-    if len(hits) == 0:
-        return _nearest_boundary_points(ring.exterior, last_trunk_point[None])[0]
-    exit_point = hits[int(np.argmin(np.hypot(*(hits - last_trunk_point).T)))]
-    return _cap_middle(ring, left, right, exit_point)
+    chosen = [index for index, trunk in enumerate(trunks) if trunk is not None]
+    results = [None] * len(frames)
+    if not chosen:
+        return results
+    tips = _Tips([trunks[index] for index in chosen])
+    rings = _Rings(shapely.get_exterior_ring([frames[index].local for index in chosen]))
+    ends = _centred_ends(tips, rings).reshape(-1, 2, 2)
+    close = np.hypot(*(ends[:, 0] - ends[:, 1]).T) <= MIN_SEPARATION
+    if np.any(close):
+        ends[close, 1] = _opposite_points(rings.exteriors[close], rings.perimeters[close], ends[close, 0])
+    diameters = 2.0 * np.maximum.reduceat(tips.radii, tips.starts)[::2]
+    last = tips.starts[::2] + tips.lengths[::2] - 1
+    path_lengths = tips.along[last] + tips.radii[tips.starts[::2]] + tips.radii[last]
+    elongated = (diameters > 0.0) & (path_lengths >= ELONGATION_THRESHOLD * diameters)
+    for number, index in enumerate(chosen):
+        results[index] = _ends_result(frames[index], trunks[index], ends[number], bool(elongated[number]))
+    return results
 
 
-def _last_trunk_position(radii, along, junction):
-    """Return the arc length of the last trunk point ``T`` seen from the tip at ``along == 0``.
+def _ends_result(frame, trunk, ends, elongated):
+    """Return the :class:`EndsResult` of a frame from its two ends in its local frame (shape (2, 2))."""
+    origin, scale = frame.origin, frame.scale
+    ends = ends * scale + origin
+    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
+        ends = np.array([_on_ring(frame.polygon.exterior, xy, ON_RING * scale) for xy in ends])
+    if (ends[1, 0], ends[1, 1]) < (ends[0, 0], ends[0, 1]):
+        ends = ends[::-1]
+    points = trunk[0]
+    return EndsResult(
+        start=Point(ends[0]),
+        end=Point(ends[1]),
+        elongated=elongated,
+        trunk=LineString(points * scale + origin) if len(points) > 1 else None,
+        guided=trunk[4],
+    )
 
-    ``T`` is the widest junction of the skeleton (a triangle with no side on the boundary, where a corner
-    branch meets the trunk) within ``CAP_WINDOW`` radii of the tip; without one, the point where ``d`` first
-    exceeds ``CAP_REACH * r``.
 
-    Parameters
-    ----------
-    radii : ndarray of shape (k,)
-        Clearance of each trunk vertex, CRS units.
-    along : ndarray of shape (k,)
-        Arc length of each trunk vertex from the tip, CRS units.
-    junction : ndarray of shape (k,) of bool
-        Whether each trunk vertex is a junction of the skeleton.
+def _segment_sums(values, starts, lengths):
+    """Return the running sums of ``values`` within each segment (``lengths[i]`` items from ``starts[i]``).
 
-    Returns
-    -------
-    float
-        Arc length of ``T``, CRS units; at most half the path.
+    Each segment is summed on its own and in order, as ``np.cumsum`` of it alone would be (segments of
+    similar lengths are padded into one block per power of two), so a polygon's numbers do not depend on
+    the other polygons of its batch.
     """
-    travelled = radii[0] + along
-    half = along[-1] / 2.0
-    candidates = np.flatnonzero(junction & (travelled <= CAP_WINDOW * radii) & (along <= half))
-    if len(candidates):
-        return float(along[candidates[int(np.argmax(radii[candidates]))]])
-    excess = travelled - CAP_REACH * radii
-    beyond = np.flatnonzero((excess > 0.0) & (along <= half))
-    if len(beyond) == 0:
-        return half
-    index = int(beyond[0])
-    if index == 0:
-        return 0.0
-    before, after = excess[index - 1], excess[index]
-    return float(along[index - 1] + (along[index] - along[index - 1]) * (-before) / (after - before))
+    sums = np.zeros(len(values))
+    if len(values) == 0:
+        return sums
+    octave = np.ceil(np.log2(np.maximum(lengths, 1))).astype(np.int64)
+    for level in np.unique(octave):
+        rows = np.flatnonzero(octave == level)
+        rank = np.arange(int(lengths[rows].max()))
+        valid = rank < lengths[rows, None]
+        index = np.where(valid, starts[rows, None] + rank, 0)
+        block = np.cumsum(np.where(valid, values[index], 0.0), axis=1)
+        sums[index[valid]] = block[valid]
+    return sums
 
 
-class _Ring:
-    """A polygon's exterior ring and what the end caps need of it, computed once.
+def _group_starts(lengths):
+    """Return the index of the first item of each group of consecutive items, from the groups' sizes."""
+    return np.concatenate([[0], np.cumsum(lengths)[:-1]]).astype(np.int64)
+
+
+class _Tips:
+    """The trunks of a batch of polygons seen from each of their tips, as flat arrays.
+
+    End ``2 j`` walks polygon ``j``'s trunk forward, end ``2 j + 1`` backward; each end's items are
+    consecutive (``lengths[e]`` of them from ``starts[e]``).
 
     Attributes
     ----------
-    exterior : LinearRing
-        Counter-clockwise, CRS units.
-    perimeter : float
-        CRS units.
-    positions : ndarray of shape (m,)
-        Arc length of each vertex (without the closing one and zero-length segments), CRS units.
-    turn : ndarray of shape (m,)
-        Signed turn of the ring at each of those vertices, radians (positive to the left).
+    points : ndarray of shape (n, 2)
+        Trunk vertices, each polygon in its local frame.
+    radii : ndarray of shape (n,)
+        Clearance of each vertex, local units.
+    junction : ndarray of shape (n,) of bool
+        Whether each vertex is a skeleton junction.
+    along : ndarray of shape (n,)
+        Arc length from the end's tip, local units.
+    group : ndarray of shape (n,) of int
+        End of each item.
+    starts, lengths : ndarray of shape (2 p,) of int
+    step : ndarray of shape (2 p,)
+        Densification step of each end's polygon, local units.
     """
 
-    def __init__(self, exterior):
-        self.exterior = exterior
-        self.perimeter = exterior.length
-        ring = shapely.get_coordinates(exterior)
-        step = np.diff(ring, axis=0)
-        keep = np.hypot(*step.T) > 0.0
-        vertices = ring[:-1][keep]
-        self.positions = np.concatenate([[0.0], np.cumsum(np.hypot(*step.T))])[:-1][keep]
-        incoming = vertices - np.roll(vertices, 1, axis=0)
-        outgoing = np.roll(vertices, -1, axis=0) - vertices
+    def __init__(self, trunks):
+        sizes = np.array([len(trunk[0]) for trunk in trunks], dtype=np.int64)
+        firsts = _group_starts(sizes)
+        points = np.concatenate([trunk[0] for trunk in trunks])
+        fore = np.arange(len(points)) - np.repeat(firsts, sizes)
+        steps = np.hypot(*(points - points[np.maximum(np.arange(len(points)) - 1, 0)]).T)
+        along = _segment_sums(np.where(fore > 0, steps, 0.0), firsts, sizes)
+        self.lengths = np.repeat(sizes, 2)
+        self.starts = _group_starts(self.lengths)
+        self.group = np.repeat(np.arange(len(self.lengths)), self.lengths)
+        rank = np.arange(len(self.group)) - self.starts[self.group]
+        polygon = self.group // 2
+        backward = self.group % 2 == 1
+        source = firsts[polygon] + np.where(backward, sizes[polygon] - 1 - rank, rank)
+        self.points = points[source]
+        self.radii = np.concatenate([trunk[1] for trunk in trunks])[source]
+        self.junction = np.concatenate([trunk[2] for trunk in trunks])[source]
+        last_along = along[firsts + sizes - 1][polygon]
+        self.along = np.where(backward, last_along - along[source], along[source])
+        self.step = np.repeat(np.array([trunk[3] for trunk in trunks], dtype=float), 2)
+
+    def at(self, position, values):
+        """Return ``values`` (per item) interpolated at arc length ``position`` (per end) along each end."""
+        last = self.starts + self.lengths - 1
+        position = np.minimum(np.maximum(position, 0.0), self.along[last])
+        count = np.add.reduceat((self.along <= position[self.group]).astype(np.int64), self.starts)
+        index = self.starts + np.clip(count - 1, 0, np.maximum(self.lengths - 2, 0))
+        after = np.minimum(index + 1, last)
+        span = self.along[after] - self.along[index]
+        fraction = (position - self.along[index]) / np.where(span > 0.0, span, 1.0)
+        fraction = np.where(span > 0.0, fraction, 0.0)
+        if values.ndim == 2:
+            fraction = fraction[:, None]
+        return values[index] + fraction * (values[after] - values[index])
+
+
+class _Rings:
+    """The exterior rings of a batch of polygons and what the end caps need of them, computed once.
+
+    Attributes
+    ----------
+    exteriors : ndarray of LinearRing
+        Counter-clockwise, local units.
+    perimeters : ndarray of float
+    positions : ndarray of shape (m,)
+        Arc length of each vertex on its ring (without the closing one and zero-length segments).
+    turn : ndarray of shape (m,)
+        Signed turn of the ring at each of those vertices, radians (positive to the left).
+    starts, lengths : ndarray of int
+        The items of each ring.
+    """
+
+    def __init__(self, exteriors):
+        self.exteriors = exteriors
+        self.perimeters = shapely.length(exteriors)
+        coordinates, ring = shapely.get_coordinates(exteriors, return_index=True)
+        counts = np.bincount(ring, minlength=len(exteriors))
+        firsts = _group_starts(counts)
+        following = np.minimum(np.arange(len(ring)) + 1, len(ring) - 1)
+        closing = np.arange(len(ring)) == (firsts + counts - 1)[ring]
+        segment = np.where(closing, 0.0, np.hypot(*(coordinates[following] - coordinates).T))
+        before = np.where(np.arange(len(ring)) == firsts[ring], 0.0, segment[np.arange(len(ring)) - 1])
+        positions = _segment_sums(before, firsts, counts)
+        keep = ~closing & (segment > 0.0)
+        self.positions = positions[keep]
+        self.lengths = np.bincount(ring[keep], minlength=len(exteriors))
+        self.starts = _group_starts(self.lengths)
+        vertices = coordinates[keep]
+        owner = ring[keep]
+        rank = np.arange(len(owner)) - self.starts[owner]
+        size = np.maximum(self.lengths[owner], 1)
+        incoming = vertices - vertices[self.starts[owner] + (rank - 1) % size]
+        outgoing = vertices[self.starts[owner] + (rank + 1) % size] - vertices
         self.turn = np.arctan2(
             incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
             np.einsum("ij,ij->i", incoming, outgoing),
         )
 
 
-def _cap_middle(ring, left, right, exit_point):
-    """Return the middle of the end cap: the ring arc from ``right`` to ``left`` through the exit.
+def _last_trunk_positions(tips):
+    """Return the arc length of each end's last trunk point ``T`` (see the module docstring, step 3).
+
+    ``T`` is the widest skeleton junction within ``CAP_WINDOW`` radii of the tip (the first such on a tie);
+    without one, the point where ``d`` first exceeds ``CAP_REACH * r``; at most half the path.
+    """
+    along, radii = tips.along, tips.radii
+    travelled = radii[tips.starts][tips.group] + along
+    half = along[tips.starts + tips.lengths - 1] / 2.0
+    within = along <= half[tips.group]
+    candidate = tips.junction & (travelled <= CAP_WINDOW * radii) & within
+    index = np.arange(len(along))
+    widest = np.lexsort((index, -radii, ~candidate, tips.group))[tips.starts]
+    excess = travelled - CAP_REACH * radii
+    first = np.minimum.reduceat(np.where((excess > 0.0) & within, index, len(along)), tips.starts)
+    inside = np.minimum(first, len(along) - 1)
+    before = np.maximum(inside - 1, 0)
+    rise = excess[inside] - excess[before]
+    crossing = along[before] + (along[inside] - along[before]) * -excess[before] / np.where(rise != 0.0, rise, 1.0)
+    position = np.where(first == len(along), half, np.where(first == tips.starts, 0.0, crossing))
+    return np.where(candidate[widest], along[widest], position)
+
+
+def _centred_ends(tips, rings):
+    """Return each end centred in its end cap (see the module docstring, step 3), shape (2 p, 2), local units."""
+    owner = np.arange(len(tips.starts)) // 2
+    exteriors = rings.exteriors[owner]
+    position = _last_trunk_positions(tips)
+    radius = np.maximum(tips.at(position, tips.radii), tips.step)
+    point = tips.at(position, tips.points)
+    chord = point - tips.at(position + np.maximum(radius, 2.0 * tips.step), tips.points)
+    flat = ~np.any(chord, axis=1)
+    chord[flat] = (tips.points[tips.starts] - point)[flat]
+    stuck = ~np.any(chord, axis=1) | (tips.lengths < 2)
+    chord[stuck] = (1.0, 0.0)
+    chord = chord / np.hypot(*chord.T)[:, None]
+    normal = np.stack([-chord[:, 1], chord[:, 0]], axis=1)
+    left = _nearest_boundary_points(exteriors, point + radius[:, None] * normal)
+    right = _nearest_boundary_points(exteriors, point - radius[:, None] * normal)
+    tangent = np.stack([left[:, 1] - right[:, 1], right[:, 0] - left[:, 0]], axis=1)
+    tangent_norm = np.hypot(*tangent.T)
+    sign = np.sign(np.einsum("ij,ij->i", tangent, chord))
+    sign[sign == 0.0] = 1.0
+    tangent = tangent / np.where(tangent_norm > 0.0, tangent_norm, 1.0)[:, None] * sign[:, None]
+    tangent[tangent_norm <= 1e-9] = chord[tangent_norm <= 1e-9]
+    rays = shapely.linestrings(np.stack([point, point + tangent * 2.0], axis=1))
+    hits, ray = shapely.get_coordinates(shapely.intersection(rays, exteriors), return_index=True)
+    exit_points = point.copy()
+    found = np.zeros(len(point), dtype=bool)
+    if len(ray):
+        nearest = np.lexsort((np.hypot(*(hits - point[ray]).T), ray))
+        first = nearest[np.concatenate([[True], ray[nearest][1:] != ray[nearest][:-1]])]
+        exit_points[ray[first]] = hits[first]
+        found[ray[first]] = True
+    ends = _cap_middles(rings, owner, left, right, exit_points)
+    fallback = stuck | ~found
+    if np.any(fallback):
+        ends[fallback] = _nearest_boundary_points(exteriors[fallback], point[fallback])
+    return ends
+
+
+def _cap_middles(rings, owner, left, right, exit_points):
+    """Return the middle of each end cap: the ring arc from ``right`` to ``left`` through the exit point.
 
     Corners are the arc's vertices where a counter-clockwise ring turns left by ``CORNER_TURN`` or more.
     With two or more corners (a flat or oblique cut) the end is the arc-length midpoint between the first
     and the last corner; with one (a pointed end) it is that corner; with none (a rounded cap) it is the
-    arc-length midpoint of the whole arc.
+    arc-length midpoint of the whole arc; the exit point itself when the arc is more than half the ring.
 
     Parameters
     ----------
-    ring : _Ring
-        The polygon's exterior ring, counter-clockwise, CRS units.
-    left, right : ndarray of shape (2,)
-        Where the last trunk point's disk touches the two banks, CRS units.
-    exit_point : ndarray of shape (2,)
-        Where the trunk's continuation leaves the polygon, CRS units.
+    rings : _Rings
+    owner : ndarray of int
+        Ring of each end.
+    left, right, exit_points : ndarray of shape (k, 2)
+        Where each end's last trunk disk touches the two banks, and where the trunk's continuation leaves
+        the polygon, local units.
 
     Returns
     -------
-    ndarray of shape (2,)
-        The end, CRS units; ``exit_point`` itself when the arc is more than half the ring.
+    ndarray of shape (k, 2)
+        Local units.
     """
-    perimeter = ring.perimeter
-    at_left, at_right, at_exit = shapely.line_locate_point(
-        ring.exterior, shapely.points(np.array([left, right, exit_point]))
-    ).tolist()
+    exteriors, perimeter = rings.exteriors[owner], rings.perimeters[owner]
+    at_left, at_right, at_exit = (
+        shapely.line_locate_point(exteriors, shapely.points(xy)) for xy in (left, right, exit_points)
+    )
     forward = (at_left - at_right) % perimeter
-    if (at_exit - at_right) % perimeter <= forward:
-        start, length = at_right, forward
-    else:
-        start, length = at_left, perimeter - forward
-    if length > perimeter / 2.0:
-        return exit_point
-    offset = (ring.positions - start) % perimeter
-    corners = np.sort(offset[(offset > 0.0) & (offset < length) & (ring.turn >= CORNER_TURN)])
-    if len(corners) == 1:
-        target = corners[0]
-    elif len(corners) > 1:
-        target = (corners[0] + corners[-1]) / 2.0
-    else:
-        target = length / 2.0
-    return shapely.get_coordinates(shapely.line_interpolate_point(ring.exterior, (start + target) % perimeter))[0]
+    through = (at_exit - at_right) % perimeter <= forward
+    start = np.where(through, at_right, at_left)
+    length = np.where(through, forward, perimeter - forward)
+    counts = rings.lengths[owner]
+    end = np.repeat(np.arange(len(owner)), counts)
+    vertex = rings.starts[owner][end] + np.arange(len(end)) - _group_starts(counts)[end]
+    offset = (rings.positions[vertex] - start[end]) % perimeter[end]
+    corner = (offset > 0.0) & (offset < length[end]) & (rings.turn[vertex] >= CORNER_TURN)
+    corner_count = np.bincount(end[corner], minlength=len(owner))
+    low = np.full(len(owner), np.inf)
+    high = np.full(len(owner), -np.inf)
+    np.minimum.at(low, end[corner], offset[corner])
+    np.maximum.at(high, end[corner], offset[corner])
+    target = length / 2.0
+    target[corner_count == 1] = low[corner_count == 1]
+    several = corner_count > 1
+    target[several] = (low[several] + high[several]) / 2.0
+    middles = shapely.get_coordinates(shapely.line_interpolate_point(exteriors, (start + target) % perimeter))
+    too_long = length > perimeter / 2.0
+    middles[too_long] = exit_points[too_long]
+    return middles
 
 
-def _nearest_boundary_points(exterior, xy):
-    """Return the point of the ring ``exterior`` nearest to each of the points ``xy`` (shape (n, 2)), CRS units."""
-    return shapely.get_coordinates(shapely.shortest_line(shapely.points(xy), exterior))[1::2]
+def _opposite_points(exteriors, perimeters, xy):
+    """Return the points of the rings half their perimeter along from the points nearest to ``xy``."""
+    position = shapely.line_locate_point(exteriors, shapely.points(xy)) + perimeters / 2.0
+    return shapely.get_coordinates(shapely.line_interpolate_point(exteriors, position % perimeters))
+
+
+def _nearest_boundary_points(exteriors, xy):
+    """Return the point of each ring ``exteriors`` nearest to each of the points ``xy`` (shape (n, 2))."""
+    return shapely.get_coordinates(shapely.shortest_line(shapely.points(xy), exteriors))[1::2]
