@@ -61,7 +61,7 @@ from .chains import extent_of, validate_polygon
 from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
 from .polyline import typical_width
-from .skeleton import joint_dual_graph, triangulation
+from .skeleton import joint_dual_graph, triangulations
 
 #: Rules for the automatic ends (see the module docstring).
 END_RULES = ("main_stem", "longest_path")
@@ -258,8 +258,8 @@ class _Frame:
         The polygon in the local frame, counter-clockwise.
     guide : LineString or MultiLineString or None
         The guide in the local frame.
-    triangles : tuple
-        Its skeleton's triangulation (see :func:`.skeleton.triangulation`).
+    triangles : tuple or None
+        Its skeleton's triangulation (see :func:`.skeleton.triangulation`), once made.
     """
 
     polygon: object
@@ -287,7 +287,7 @@ def _framed(polygon, guide):
 
     local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
     local_guide = None if guide is None else to_local(guide)
-    return _Frame(polygon, origin, scale, local, local_guide, triangulation(local))
+    return _Frame(polygon, origin, scale, local, local_guide, None)
 
 
 def _as_outcome(error):
@@ -353,7 +353,14 @@ def _joint_trunks(frames, rule, outcomes, check):
     The skeletons of all frames are built, weighed and contracted together (see :func:`.paths.heaviest_paths`).
     A polygon whose skeleton has no edge gets :class:`InvalidGeometryError` in ``outcomes``.
     """
-    live = [index for index, frame in enumerate(frames) if frame is not None]
+    framed = [index for index, frame in enumerate(frames) if frame is not None]
+    live = []
+    for index, triangles in zip(framed, triangulations([frames[index].local for index in framed])):
+        if isinstance(triangles, Exception):
+            outcomes[index] = triangles
+        else:
+            frames[index].triangles = triangles
+            live.append(index)
     if not live:
         return [None] * len(frames)
     nodes, radii, spans, edges, owner = joint_dual_graph([frames[index].triangles for index in live])
