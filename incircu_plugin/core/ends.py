@@ -515,27 +515,29 @@ def _ends_of_trunks(frames, trunks):
     last = tips.starts[::2] + tips.lengths[::2] - 1
     path_lengths = tips.along[last] + tips.radii[tips.starts[::2]] + tips.radii[last]
     elongated = (diameters > 0.0) & (path_lengths >= ELONGATION_THRESHOLD * diameters)
-    for number, index in enumerate(chosen):
-        results[index] = _ends_result(frames[index], trunks[index], ends[number], bool(elongated[number]))
-    return results
-
-
-def _ends_result(frame, trunk, ends, elongated):
-    """Return the :class:`EndsResult` of a frame from its two ends in its local frame (shape (2, 2))."""
-    origin, scale = frame.origin, frame.scale
-    ends = ends * scale + origin
-    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
-        ends = np.array([_on_ring(frame.polygon.exterior, xy, ON_RING * scale) for xy in ends])
-    if (ends[1, 0], ends[1, 1]) < (ends[0, 0], ends[0, 1]):
-        ends = ends[::-1]
-    points = trunk[0]
-    return EndsResult(
-        start=Point(ends[0]),
-        end=Point(ends[1]),
-        elongated=elongated,
-        trunk=LineString(points * scale + origin) if len(points) > 1 else None,
-        guided=trunk[4],
+    backward = tips.group % 2 == 1
+    origins = np.array([frames[index].origin for index in chosen])
+    scales = np.array([frames[index].scale for index in chosen])
+    ends = ends * scales[:, None, None] + origins[:, None, :]
+    for number in np.flatnonzero(np.max(np.abs(origins), axis=1) * np.finfo(float).eps > ON_RING * scales):
+        exterior = frames[chosen[number]].polygon.exterior
+        ends[number] = [_on_ring(exterior, xy, ON_RING * scales[number]) for xy in ends[number]]
+    swap = (ends[:, 1, 0] < ends[:, 0, 0]) | ((ends[:, 1, 0] == ends[:, 0, 0]) & (ends[:, 1, 1] < ends[:, 0, 1]))
+    ends[swap] = ends[swap, ::-1]
+    points = shapely.points(ends)
+    lines = shapely.linestrings(
+        tips.points[~backward] * scales[tips.group[~backward] // 2, None] + origins[tips.group[~backward] // 2],
+        indices=tips.group[~backward] // 2,
     )
+    for number, index in enumerate(chosen):
+        results[index] = EndsResult(
+            start=points[number, 0],
+            end=points[number, 1],
+            elongated=bool(elongated[number]),
+            trunk=lines[number] if tips.lengths[2 * number] > 1 else None,
+            guided=trunks[index][4],
+        )
+    return results
 
 
 def _segment_sums(values, starts, lengths):

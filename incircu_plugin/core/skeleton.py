@@ -47,6 +47,10 @@ MAX_SAMPLES = 20_000
 #: :func:`_insertion_rotation`; off the axis so that straight banks are not exactly sorted).
 SWEEP_ANGLE = 0.1
 
+#: Offset along x between the lookup keys of two consecutive polygons of a batch (their samples lie within
+#: about 1 of the origin; see :func:`_corner_ids`).
+OWNER_SPACING = 4.0
+
 #: Size of the deterministic displacement of each sample before the triangulation, as a fraction of the
 #: step (far below ``SLIVER``, so straight banks stay slivers); a failing triangulation is retried with
 #: the larger values.
@@ -349,18 +353,20 @@ def _each_delaunay(multipoints):
 def _corner_ids(points, owner, corners, corner_owner):
     """Return the index in ``points`` of each corner: the point of the same polygon with the same coordinates.
 
-    Delaunay keeps the input coordinates exactly: points and corners are sorted together by polygon, then
-    x, then y, each corner after its equal points, and each corner takes the last point before it.
+    Delaunay keeps the input coordinates exactly: each point and corner gets the complex key
+    ``x + OWNER_SPACING * polygon + i y`` (the same operations on the same numbers, so equal points get equal
+    keys, and polygons of size about 1 get disjoint ranges); numpy orders complex numbers by real, then
+    imaginary part.
     """
-    flat = corners.reshape(-1, 2)
-    is_corner = np.repeat([False, True], [len(points), len(flat)])
-    both = np.concatenate([points, flat])
-    order = np.lexsort((is_corner, both[:, 1], both[:, 0], np.concatenate([owner, np.repeat(corner_owner, 3)])))
-    point_position = np.where(is_corner[order], -1, np.arange(len(order)))
-    latest = order[np.maximum.accumulate(np.maximum(point_position, 0) if len(order) else point_position)]
-    ids = np.empty(len(flat), dtype=np.int64)
-    ids[order[is_corner[order]] - len(points)] = latest[is_corner[order]]
-    return ids.reshape(-1, 3)
+    keys = _lookup_keys(points, owner)
+    order = np.argsort(keys)
+    position = np.searchsorted(keys[order], _lookup_keys(corners.reshape(-1, 2), np.repeat(corner_owner, 3)))
+    return order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
+
+
+def _lookup_keys(points, owner):
+    """Return the complex lookup key of each point of polygon ``owner`` (see :func:`_corner_ids`)."""
+    return (points[:, 0] + OWNER_SPACING * owner) + 1j * points[:, 1]
 
 
 def _insertion_rotations(samples, owner, count):
