@@ -320,8 +320,8 @@ def _delaunay_all(samples, owner, local, steps, count):
             break
         moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
         turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
-        polygons, compact = np.unique(owner[mask], return_inverse=True)
-        found = _each_delaunay(shapely.multipoints(turned, indices=compact))
+        polygons, sizes = _runs(owner[mask])
+        found = _each_delaunay(_multipoints(turned, sizes))
         success = np.zeros(count, dtype=bool)
         success[polygons] = [item is not None for item in found]
         triangles[polygons[success[polygons]]] = [item for item in found if item is not None]
@@ -334,6 +334,27 @@ def _delaunay_all(samples, owner, local, steps, count):
     triangle_owner = made[which[::4]]
     corner_ids = _corner_ids(turned_all, owner, coordinates.reshape(-1, 4, 2)[:, :3], triangle_owner)
     return moved_all[corner_ids], corner_ids, triangle_owner, waiting
+
+
+def _runs(values):
+    """Return the distinct values of a sorted array and the length of each one's run."""
+    starts = np.flatnonzero(np.insert(values[1:] != values[:-1], 0, True)) if len(values) else np.zeros(0, int)
+    return values[starts], np.diff(np.append(starts, len(values)))
+
+
+def _multipoints(points, sizes):
+    """Return one MultiPoint per run of ``sizes`` consecutive points, built through WKB (twice as fast as
+    from coordinates)."""
+    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xy", "<f8", (2,))])
+    body = np.zeros(len(points), dtype=record)
+    body["order"], body["kind"], body["xy"] = 1, 1, points
+    header = np.zeros(len(sizes), dtype=[("order", "u1"), ("kind", "<u4"), ("count", "<u4")])
+    header["order"], header["kind"], header["count"] = 1, 4, sizes
+    data, heads = body.tobytes(), header.tobytes()
+    bounds = (np.append(0, np.cumsum(sizes)) * record.itemsize).tolist()
+    size = header.itemsize
+    blobs = [heads[size * k : size * (k + 1)] + data[bounds[k] : bounds[k + 1]] for k in range(len(sizes))]
+    return shapely.from_wkb(np.array(blobs, dtype=object))
 
 
 def _each_delaunay(multipoints):
