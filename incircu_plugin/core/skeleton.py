@@ -133,26 +133,9 @@ def joint_dual_graph(triangulations):
 def triangulation(polygon):
     """Return the conforming Delaunay triangulation of a polygon's boundary samples, and their step.
 
-    Parameters
-    ----------
-    polygon : Polygon
-        Valid polygon, CRS units, scaled to a size about 1 near the origin (for accuracy).
-
-    Returns
-    -------
-    corners : ndarray of shape (t, 3, 2)
-        Triangle corners, CRS units.
-    corner_ids : ndarray of shape (t, 3) of int
-        Sample index of each corner.
-    following : ndarray of shape (n,) of int
-        Index of the next sample on the same ring, for each sample.
-    step : float
-        Densification step, CRS units.
-
-    Raises
-    ------
-    InvalidGeometryError
-        If no triangulation of the samples can be built.
+    The polygon and the errors are those of :func:`skeleton_graph`. Returns ``corners`` (shape (t, 3, 2),
+    CRS units), ``corner_ids`` (shape (t, 3): the sample index of each corner), ``following`` (shape (n,):
+    the index of the next sample on the same ring) and the densification ``step`` (CRS units).
     """
     (outcome,) = triangulations([polygon])
     if isinstance(outcome, Exception):
@@ -191,7 +174,7 @@ def triangulations(polygons):
         refine = np.bincount(owner[~present], minlength=len(polygons)) > 0
         refine &= ~failed & (refinement < MAX_REFINEMENTS - 1)
         done = np.flatnonzero((np.bincount(owner, minlength=len(polygons)) > 0) & ~refine)
-        _file(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps)
+        _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps)
         if not np.any(refine):
             break
         split = ~present & refine[owner]
@@ -205,7 +188,7 @@ def triangulations(polygons):
     ]
 
 
-def _file(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps):
+def _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps):
     """Store the triangulation of each polygon in ``done`` (numbered from its own first sample) in ``outcomes``."""
     sample_first = np.searchsorted(owner, np.arange(len(outcomes) + 1))
     triangle_first = np.searchsorted(triangle_owner, np.arange(len(outcomes) + 1))
