@@ -48,6 +48,14 @@ missed (they do not change the ends of an elongated shape).
 
 The *start* is the end with the smaller ``x`` (then smaller ``y``) coordinate, so the answer does not depend
 on where the ring starts or which way it turns.
+
+**Batches.** :func:`find_ends_together` finds the ends of many polygons with the same answers as
+:func:`find_ends` on each (which runs the same code on a batch of one): the triangulations (one GEOS call per
+refinement round for all), the skeletons, the chain contraction and the cap centring work on flat arrays
+of all polygons, each polygon numbered and summed on its own; only the sweeps of the contracted graphs and
+the results are Python per polygon. About 0.35 ms of CPU per 24-vertex rectangle in a batch of 1,000
+(2 ms alone), 2.3 ms per 290-vertex river (3.8 ms alone); GEOS's Delaunay triangulation alone costs about
+1.5 us per boundary sample.
 """
 
 from dataclasses import dataclass

@@ -7,7 +7,9 @@ where they need the axis points of a pair of chains; the driver sends the :class
 back. :func:`run_alone` answers each request at once (what ``polygon_centerline`` and the other plain
 functions do); :func:`run_together` advances many generators side by side and answers all their pending
 requests with one tracing (:func:`.adaptive.trace_together`), so a layer of small features pays the
-rounds' overhead once per batch instead of once per feature.
+rounds' overhead once per batch instead of once per feature. A polygon without split points first yields
+an :class:`EndsRequest` (its automatic ends, :func:`.ends.find_ends`); :func:`run_together` answers all
+those of a batch at once (:func:`.ends.find_ends_together`) before the tracing.
 """
 
 from dataclasses import dataclass
