@@ -10,6 +10,7 @@ import random
 import numpy as np
 import pytest
 import shapely
+import shapely.affinity
 from shapely.geometry import LineString, Polygon, box
 
 from benchmarks.rivers import river_layer
@@ -115,12 +116,16 @@ def test_guides_are_per_polygon():
     channel = LineString([(0.0, 0.0), (100.0, 0.0), (100.0, 80.0)]).buffer(6.0, cap_style="flat")
     arm = LineString([(100.0, 0.0), (180.0, 0.0)]).buffer(6.0, cap_style="flat")
     polygon = channel.union(arm)
-    guide = LineString([(0.0, 0.0), (100.0, 0.0), (180.0, 0.0)])
-    polygons = [polygon, box(0.0, 0.0, 100.0, 10.0), polygon]
-    together = find_ends_together(polygons, guides=[guide, None, None])
-    assert together[0].guided and not together[2].guided
+    guide = LineString([(0.0, 0.0), (100.0, 0.0), (100.0, 80.0)])
+    moved, moved_guide = (shapely.affinity.translate(item, 500.0, 300.0) for item in (polygon, guide))
+    polygons = [polygon, box(0.0, 0.0, 100.0, 10.0), polygon, moved]
+    together = find_ends_together(polygons, guides=[guide, None, None, moved_guide])
+    assert together[0].guided and not together[2].guided and together[3].guided
     assert_same_ends(polygon, together[0], find_ends(polygon, guide=guide))
     assert_same_ends(polygon, together[2], find_ends(polygon))
+    assert_same_ends(moved, together[3], find_ends(moved, guide=moved_guide))
+    # The guide up the arm changes the ends: a batch that dropped it would fail the line above.
+    assert together[0].end.distance(together[2].end) > 10.0 or together[0].start.distance(together[2].start) > 10.0
 
 
 def test_empty_batch_and_unknown_rule():

@@ -374,7 +374,9 @@ def _joint_trunks(frames, rule, outcomes, check):
     nodes, radii, spans, edges, owner = joint_dual_graph([frames[index].triangles for index in live])
     node_start = np.searchsorted(owner, np.arange(len(live) + 1))
     edge_owner = owner[edges[:, 0]]
-    edge_counts = np.bincount(edge_owner, minlength=len(live))
+    edge_order = np.argsort(edge_owner, kind="stable")
+    edge_start = np.searchsorted(edge_owner[edge_order], np.arange(len(live) + 1))
+    edge_counts = np.diff(edge_start)
     weights = _rule_weights(nodes, spans, edges, rule)
     trunks = [None] * len(frames)
     starts, trees, chosen = [], [], []
@@ -386,7 +388,13 @@ def _joint_trunks(frames, rule, outcomes, check):
             continue
         low, high = node_start[position], node_start[position + 1]
         guided = frames[index].guide is not None and _guide_weights(
-            frames[index], nodes[low:high], spans[low:high], edges, weights, low, edge_owner == position
+            frames[index],
+            nodes[low:high],
+            spans[low:high],
+            edges,
+            weights,
+            low,
+            edge_order[edge_start[position] : edge_start[position + 1]],
         )
         starts.append(low + int(np.argmax(radii[low:high])))
         trees.append(len(frames[index].local.interiors) == 0)
@@ -409,14 +417,16 @@ def _swept_area(lengths, spans, edges):
     return lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
 
 
-def _guide_weights(frame, nodes, spans, edges, weights, node_offset, mask):
-    """Set one polygon's edge weights (``mask``) from its guide when the guide counts; return whether it did.
+def _guide_weights(frame, nodes, spans, edges, weights, node_offset, own_edges):
+    """Set one polygon's edge weights (indices ``own_edges``) from its guide when the guide counts; return
+    whether it did.
 
     ``nodes`` and ``spans`` are that polygon's, whose first node is ``node_offset`` in ``edges``.
     """
-    own, guided = _edge_weights(frame.local, nodes, spans, edges[mask] - node_offset, "main_stem", frame.guide)
+    local_edges = edges[own_edges] - node_offset
+    own, guided = _edge_weights(frame.local, nodes, spans, local_edges, "main_stem", frame.guide)
     if guided:
-        weights[mask] = own
+        weights[own_edges] = own
     return guided
 
 
