@@ -723,8 +723,10 @@ def _centred_ends(tips, rings):
     chord[stuck] = (1.0, 0.0)
     chord = chord / np.hypot(*chord.T)[:, None]
     normal = np.stack([-chord[:, 1], chord[:, 0]], axis=1)
-    left = _nearest_boundary_points(exteriors, point + radius[:, None] * normal)
-    right = _nearest_boundary_points(exteriors, point - radius[:, None] * normal)
+    offset = radius[:, None] * normal
+    left, right = _nearest_boundary_points(
+        np.tile(exteriors, 2), np.concatenate([point + offset, point - offset])
+    ).reshape(2, -1, 2)
     tangent = np.stack([left[:, 1] - right[:, 1], right[:, 0] - left[:, 0]], axis=1)
     tangent_norm = np.hypot(*tangent.T)
     sign = np.sign(np.einsum("ij,ij->i", tangent, chord))
@@ -770,9 +772,10 @@ def _cap_middles(rings, owner, left, right, exit_points):
         Local units.
     """
     exteriors, perimeter = rings.exteriors[owner], rings.perimeters[owner]
-    at_left, at_right, at_exit = (
-        shapely.line_locate_point(exteriors, shapely.points(xy)) for xy in (left, right, exit_points)
+    located = shapely.line_locate_point(
+        np.tile(exteriors, 3), shapely.points(np.concatenate([left, right, exit_points]))
     )
+    at_left, at_right, at_exit = located.reshape(3, -1)
     forward = (at_left - at_right) % perimeter
     through = (at_exit - at_right) % perimeter <= forward
     start = np.where(through, at_right, at_left)
