@@ -1,6 +1,6 @@
 """Speed of the automatic ends (``find_ends``); prints a Markdown table.
 
-Usage: ``python benchmarks/bench_ends.py [--repeats 3]``
+Usage: ``python benchmarks/bench_ends.py [--repeats 3] [--batches-only]``
 
 Rows: boxes ``1 x h`` from ``h = 1e-1`` down to ``1e-6`` (4 vertices, the skeleton's sample count grows
 with the aspect ratio up to ``skeleton.MAX_SAMPLES``), the issue's meander with 2,333 to 100,000 boundary
@@ -10,6 +10,13 @@ densification), median wall and CPU time of ``--repeats`` runs (the CPU time doe
 core on a shared machine), and CPU microseconds per input vertex and per sample.
 
 Target (issue 14): thin boxes well under a second; <= 3 us per boundary vertex on large real-like outlines.
+
+A second table compares many small features one by one (``find_ends`` per polygon) with the same features
+together (``find_ends_together``, what a batch of ``centerlines_together`` uses): 1,000 rectangles
+``100 x (10 + i / 100)`` segmentized every 10 (24 vertices each) and the 400 rivers of
+``rivers.river_layer(count=400)`` (about 290 vertices each, some with islands). Columns: CPU microseconds per
+boundary vertex and per polygon, median of ``--repeats`` runs. Target (issue 9): <= 3 us per boundary vertex
+in batches.
 """
 
 import argparse
@@ -24,7 +31,9 @@ from shapely.geometry import box
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.rivers import river_layer
 from incircu_plugin.core import find_ends
+from incircu_plugin.core.ends import find_ends_together
 from incircu_plugin.core.skeleton import boundary_samples
 from tests.support import geometry_cases
 
@@ -45,14 +54,62 @@ def cases():
     yield "Gambia (NE 10m, UTM)", geometry_cases.gambia().polygon
 
 
+def batch_cases():
+    """Yield ``(name, polygons)`` pairs of many small features."""
+    yield (
+        "1,000 rectangles 100 x 10",
+        [box(0.0, 0.0, 100.0, 10.0 + index / 100.0).segmentize(10.0) for index in range(1000)],
+    )
+    yield "400 rivers (river_layer)", [river.polygon for river in river_layer(count=400)]
+
+
+def boundary_vertices(polygon):
+    """Return the number of distinct vertices of a polygon's rings."""
+    return int(shapely.get_num_coordinates(polygon)) - 1 - len(polygon.interiors)
+
+
+def median_cpu(function, repeats):
+    """Return the median CPU time of ``repeats`` calls of ``function()``, seconds."""
+    times = []
+    for _ in range(repeats):
+        start = time.process_time()
+        function()
+        times.append(time.process_time() - start)
+    return statistics.median(times)
+
+
+def batch_table(repeats):
+    """Print the one-by-one versus together table."""
+    print()
+    print(
+        "| features | polygons | vertices | one by one: CPU us / vertex | us / polygon "
+        "| together: CPU us / vertex | us / polygon | speed-up |"
+    )
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    for name, polygons in batch_cases():
+        vertices = sum(boundary_vertices(polygon) for polygon in polygons)
+        alone = median_cpu(lambda items=polygons: [find_ends(polygon) for polygon in items], repeats)
+        together = median_cpu(lambda items=polygons: find_ends_together(items), repeats)
+        print(
+            f"| {name} | {len(polygons):,} | {vertices:,} | {1e6 * alone / vertices:.1f} "
+            f"| {1e6 * alone / len(polygons):.0f} | {1e6 * together / vertices:.1f} "
+            f"| {1e6 * together / len(polygons):.0f} | {alone / together:.1f}x |",
+            flush=True,
+        )
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--batches-only", action="store_true", help="print only the one-by-one/together table")
     arguments = parser.parse_args()
+    if arguments.batches_only:
+        batch_table(arguments.repeats)
+        return
     print("| input | vertices | samples | wall (s) | CPU (s) | CPU us / vertex | CPU us / sample |")
     print("|---|---:|---:|---:|---:|---:|---:|")
     for name, polygon in cases():
-        vertices = int(shapely.get_num_coordinates(polygon)) - 1 - len(polygon.interiors)
+        vertices = boundary_vertices(polygon)
         samples = sample_count(polygon)
         walls, cpus = [], []
         for _ in range(arguments.repeats):
@@ -66,6 +123,7 @@ def main():
             f"| {1e6 * cpu / vertices:.1f} | {1e6 * cpu / samples:.1f} |",
             flush=True,
         )
+    batch_table(arguments.repeats)
 
 
 if __name__ == "__main__":

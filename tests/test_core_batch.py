@@ -215,7 +215,10 @@ def test_features_of_different_sizes_and_places_together_equal_each_alone():
 
 def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
     # What run_together does when a part's tracing fails: the part gets the error, the next part goes on.
-    generator = multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)]))
+    # Split points given, so the first request is the first part's tracing (not its automatic ends).
+    generator = multipolygon_centerline_steps(
+        MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)]), [(0, 2), (50, 2), (0, 12), (50, 12)]
+    )
     next(generator)
     request = generator.throw(CenterlineError("the tracing failed"))
     with pytest.raises(StopIteration) as stop:

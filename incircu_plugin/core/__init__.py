@@ -24,7 +24,7 @@ from .api import (
     polygon_centerline_steps,
 )
 from .chains import orient_bank_lines, split_polygon
-from .ends import END_RULES, EndsResult, find_ends
+from .ends import END_RULES, EndsResult, find_ends, find_ends_together
 from .engine import CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import (
     CenterlineError,
@@ -67,6 +67,7 @@ __all__ = [
     "default_spacing",
     "default_tolerance",
     "find_ends",
+    "find_ends_together",
     "incircle_polygons",
     "lines_centerline",
     "lines_centerline_steps",

@@ -16,11 +16,11 @@ from .chains import (
     split_polygon,
     validate_polygon,
 )
-from .ends import END_RULES, find_ends
+from .ends import END_RULES
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
-from .steps import run_alone, run_together
+from .steps import EndsRequest, run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Largest distance of a returned line's vertex outside its polygon, relative to the polygon's extent.
@@ -66,7 +66,7 @@ def polygon_centerline(
     polygon : Polygon
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of two Point or (x, y), optional
-        The ends of the centerline, on the exterior ring. None or empty: found by :func:`find_ends`.
+        The ends of the centerline, on the exterior ring. None or empty: found by :func:`.ends.find_ends`.
     spacing : float, optional
         Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
         adaptive sampling (the default; what a user wants unless reproducing the paper).
@@ -137,8 +137,9 @@ def polygon_centerline_steps(
     guide=None,
     progress=None,
 ):
-    """:func:`polygon_centerline` as steps (see :mod:`.steps`): a generator yielding the adaptive tracing's
-    :class:`.steps.TraceRequest` and returning the :class:`PolygonCenterlineResult`; raises as
+    """:func:`polygon_centerline` as steps (see :mod:`.steps`): a generator yielding an
+    :class:`.steps.EndsRequest` when it has no split points, then the adaptive tracing's
+    :class:`.steps.TraceRequest`, and returning the :class:`PolygonCenterlineResult`; raises as
     :func:`polygon_centerline` does. Run it with :func:`centerlines_together` or :func:`.steps.run_alone`.
     """
     validate_polygon(polygon)
@@ -151,7 +152,9 @@ def polygon_centerline_steps(
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     if ends_found:
-        ends = _automatic_ends(polygon, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes)
+        ends = yield from _automatic_ends(
+            polygon, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
+        )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = (ends.start, ends.end)
         ends_from = "guide" if ends.guided else "automatic"
@@ -171,14 +174,15 @@ def polygon_centerline_steps(
 
 
 def _automatic_ends(polygon, end_rule, guide, progress, notes):
-    """Find a polygon's ends with :func:`find_ends`; append what the user should know to ``notes``.
+    """Find a polygon's ends (a step yielding an :class:`.steps.EndsRequest`, answered by :func:`.ends.find_ends`
+    or, in a batch, by :func:`.ends.find_ends_together`); append what the user should know to ``notes``.
 
     Raises
     ------
     SplitPointError
         When the two ends coincide (the shape has no clear ends).
     """
-    ends = find_ends(polygon, rule=end_rule, guide=guide, progress=progress)
+    ends = yield EndsRequest(polygon, end_rule, guide, progress)
     if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
         raise SplitPointError(
             f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "

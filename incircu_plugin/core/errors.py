@@ -5,6 +5,10 @@ message is written for the person who owns the data: it says what is wrong and, 
 """
 
 
+class Cancelled(Exception):
+    """Raised when the progress callback asks the engine to stop (not an error of the input)."""
+
+
 class IncirCuError(ValueError):
     """Base class of every error the IncirCu core raises on bad input."""
 

@@ -44,23 +44,55 @@ def heaviest_path(count, edges, weights, start, acyclic, check=None):
     ndarray of int
         Node indices from one end of the path to the other (one node when ``start`` has no edge).
     """
+    return heaviest_paths(count, edges, weights, [start], [acyclic], check)[0]
+
+
+def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
+    """Return the heaviest path of each start's component: :func:`heaviest_path` for many components.
+
+    The chains of the whole graph are contracted at once; each sweep then visits only its component's
+    contracted nodes, so many small components (the skeletons of a batch of polygons) cost one contraction
+    and a few Python operations each.
+
+    Parameters
+    ----------
+    count, edges, weights, check
+        As for :func:`heaviest_path`.
+    starts : sequence of int
+        One node per path, each in a different component.
+    acyclic : sequence of bool
+        Per start, whether its component is a tree.
+
+    Returns
+    -------
+    list of ndarray of int
+        Per start, the node indices of its path.
+    """
     chains = _Chains(count, edges, weights)
     graph = chains.contracted()
-    first = chains.key_index[_farthest_key(chains, graph, start, acyclic, check)]
-    distance, predecessor = _sweep(graph, first, acyclic, check)
-    last = int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))
-    key_path = [last]
-    while key_path[-1] != first:
-        key_path.append(int(predecessor[key_path[-1]][0]))
-    via = [int(predecessor[node][1]) for node in key_path[:-1]]
-    return chains.expand(key_path[::-1], via[::-1])
+    paths = []
+    for start, tree in zip(starts, acyclic):
+        first = chains.key_index[_farthest_key(chains, graph, start, tree, check)]
+        distance, predecessor = _sweep(graph, first, tree, check)
+        last = _farthest(distance)
+        key_path = [last]
+        while key_path[-1] != first:
+            key_path.append(predecessor[key_path[-1]][0])
+        via = [predecessor[node][1] for node in key_path[:-1]]
+        paths.append(chains.expand(key_path[::-1], via[::-1]))
+    return paths
+
+
+def _farthest(distance):
+    """Return the node of largest distance in a ``{node: distance}`` map (the smallest such node on a tie)."""
+    return max(distance.items(), key=lambda item: (item[1], -item[0]))[0]
 
 
 def _farthest_key(chains, graph, start, acyclic, check):
     """Return the key node farthest from ``start`` (a key node of its component)."""
     source = chains.nearest_key(start)
-    distance, _ = _sweep(graph, chains.key_index[source], acyclic, check)
-    return chains.keys[int(np.argmax(np.where(np.isfinite(distance), distance, -1.0)))]
+    distance, _ = _sweep(graph, int(chains.key_index[source]), acyclic, check)
+    return chains.keys[_farthest(distance)]
 
 
 class _Chains:
@@ -98,6 +130,12 @@ class _Chains:
         self.following[through] = np.where(one == twin[through], other, one)
         weights = np.concatenate([weights, weights]).astype(float)
         (self.total, self.steps), self.last = _rank(self.following, (weights, np.ones(len(weights), np.int64)))
+        self.first_out = order[np.minimum(first_out[:-1], len(order) - 1)] if len(order) else first_out[:-1]
+        # Directed edges grouped by chain, each chain from its first edge to its last: a chain's edges from
+        # ``edge`` on are the ``steps[edge]`` entries from ``edge``'s position in ``chain_order``.
+        self.chain_order = np.lexsort((-self.steps, self.last))
+        self.chain_position = np.empty_like(self.chain_order)
+        self.chain_position[self.chain_order] = np.arange(len(self.chain_order))
 
     def contracted(self):
         """Return the contracted graph in compressed adjacency: ``(start, neighbour, weight, via)`` lists.
@@ -120,20 +158,14 @@ class _Chains:
         """Return a key node of ``node``'s component: ``node`` itself or the end of one of its chains."""
         if self.key[node]:
             return int(node)
-        outgoing = np.flatnonzero(self.tail == node)
-        return int(self.head[self.last[outgoing[0]]])
+        return int(self.head[self.last[self.first_out[node]]])
 
     def expand(self, key_path, via):
         """Return the skeleton nodes of a contracted path (its key nodes and the chains ``via`` between)."""
-        # Directed edges grouped by chain, each chain from its first edge to its last: a chain's edges from
-        # ``edge`` on are the ``steps[edge]`` entries from ``edge``'s position.
-        order = np.lexsort((-self.steps, self.last))
-        position = np.empty_like(order)
-        position[order] = np.arange(len(order))
         pieces = [self.keys[key_path[:1]]]
         for edge in via:
-            begin = position[edge]
-            pieces.append(self.head[order[begin : begin + self.steps[edge]]])
+            begin = self.chain_position[edge]
+            pieces.append(self.head[self.chain_order[begin : begin + self.steps[edge]]])
         return np.concatenate(pieces).astype(np.int64)
 
 
@@ -168,16 +200,14 @@ def _rank(following, weights):
 
 
 def _sweep(graph, source, acyclic, check):
-    """Return the distance from ``source`` to every contracted node and each one's ``(predecessor, via)``.
+    """Return the distance from ``source`` to each contracted node it reaches and each one's ``(predecessor, via)``.
 
-    A plain traversal on a forest (every reachable node has one path from the source), else Dijkstra.
-    Unreachable nodes get ``inf`` and ``(-1, -1)``.
+    A plain traversal on a forest (every reachable node has one path from the source), else Dijkstra. Both
+    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only.
     """
     start, neighbours, lengths, vias = graph
-    count = len(start) - 1
-    distance = [float("inf")] * count
-    predecessor = [(-1, -1)] * count
-    distance[source] = 0.0
+    distance = {source: 0.0}
+    predecessor = {}
     queue = [(0.0, source)]
     pops = 0
     while queue:
@@ -190,13 +220,13 @@ def _sweep(graph, source, acyclic, check):
         for k in range(start[node], start[node + 1]):
             neighbour = neighbours[k]
             candidate = reached + lengths[k]
-            if acyclic and (predecessor[neighbour][0] != -1 or neighbour == source):
+            if acyclic and (neighbour in predecessor or neighbour == source):
                 continue
-            if candidate < distance[neighbour]:
+            if candidate < distance.get(neighbour, float("inf")):
                 distance[neighbour] = candidate
                 predecessor[neighbour] = (node, vias[k])
                 if acyclic:
                     queue.append((candidate, neighbour))
                 else:
                     heapq.heappush(queue, (candidate, neighbour))
-    return np.asarray(distance), predecessor
+    return distance, predecessor

@@ -20,7 +20,6 @@ tight meander) still makes the sweep slower, about 0.3 s for 20,000 samples.
 
 import numpy as np
 import shapely
-from shapely.geometry import Polygon
 
 from .errors import InvalidGeometryError
 from .polyline import typical_width
@@ -47,6 +46,10 @@ MAX_SAMPLES = 20_000
 #: Angle between the samples' principal axis and the x axis during the triangulation, radians (see
 #: :func:`_insertion_rotation`; off the axis so that straight banks are not exactly sorted).
 SWEEP_ANGLE = 0.1
+
+#: Offset along x between the lookup keys of two consecutive polygons of a batch (their samples lie within
+#: about 1 of the origin; see :func:`_corner_ids`).
+OWNER_SPACING = 4.0
 
 #: Size of the deterministic displacement of each sample before the triangulation, as a fraction of the
 #: step (far below ``SLIVER``, so straight banks stay slivers); a failing triangulation is retried with
@@ -88,9 +91,143 @@ def skeleton_graph(polygon):
     InvalidGeometryError
         If no triangulation of the samples can be built.
     """
-    rings, step = boundary_samples(polygon)
-    corners, corner_ids, following = _conforming_triangulation(rings, step)
-    return _dual_graph(corners, corner_ids, following) + (step,)
+    triangles = triangulation(polygon)
+    return joint_dual_graph([triangles])[:4] + (triangles[3],)
+
+
+def joint_dual_graph(triangulations):
+    """Return the skeletons of several polygons at once: the dual graph of all their triangles.
+
+    The polygons' triangles are only concatenated (each in its own frame), so each polygon's skeleton is
+    exactly the one it gets alone; one pass of numpy calls serves them all.
+
+    Parameters
+    ----------
+    triangulations : list of tuple
+        Per polygon, what :func:`triangulation` returns.
+
+    Returns
+    -------
+    nodes, radii, spans : ndarray
+        As :func:`skeleton_graph` returns them, the polygons' nodes one polygon after the other; CRS units
+        of each polygon's frame.
+    edges : ndarray of shape (e, 2) of int
+        Node indices of each skeleton edge (into all the nodes).
+    owner : ndarray of shape (k,) of int
+        Index in ``triangulations`` of each node's polygon (non-decreasing).
+    """
+    sample_counts = [len(triangles[2]) for triangles in triangulations]
+    offsets = np.concatenate([[0], np.cumsum(sample_counts)[:-1]]).astype(np.int64)
+    corners = np.concatenate([np.empty((0, 3, 2))] + [triangles[0] for triangles in triangulations])
+    corner_ids = np.concatenate(
+        [np.empty((0, 3), np.int64)] + [triangles[1] + offset for triangles, offset in zip(triangulations, offsets)]
+    )
+    following = np.concatenate(
+        [np.empty(0, np.int64)] + [triangles[2] + offset for triangles, offset in zip(triangulations, offsets)]
+    )
+    triangle_owner = np.repeat(np.arange(len(triangulations)), [len(triangles[0]) for triangles in triangulations])
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following)
+    return nodes, radii, spans, edges, triangle_owner[inside]
+
+
+def triangulation(polygon):
+    """Return the conforming Delaunay triangulation of a polygon's boundary samples, and their step.
+
+    The polygon and the errors are those of :func:`skeleton_graph`. Returns ``corners`` (shape (t, 3, 2),
+    CRS units), ``corner_ids`` (shape (t, 3): the sample index of each corner), ``following`` (shape (n,):
+    the index of the next sample on the same ring) and the densification ``step`` (CRS units).
+    """
+    (outcome,) = triangulations([polygon])
+    if isinstance(outcome, Exception):
+        raise outcome
+    return outcome
+
+
+def triangulations(polygons):
+    """Return :func:`triangulation` of many polygons, computed together (one GEOS call per round for all).
+
+    Each polygon's samples, jitter, rotation and refinement are its own (numbered from its first sample),
+    so each gets exactly the triangulation it gets alone.
+
+    Parameters
+    ----------
+    polygons : sequence of Polygon
+        Valid polygons, each scaled to a size about 1 near the origin.
+
+    Returns
+    -------
+    list
+        Per polygon, what :func:`triangulation` returns, or the :class:`InvalidGeometryError` it raises.
+    """
+    if len(polygons) == 0:
+        return []
+    samples, ring, owner, steps = _boundary_sample_arrays(polygons)
+    outcomes = [None] * len(polygons)
+    for refinement in range(MAX_REFINEMENTS):
+        following = _following(ring)
+        local = np.arange(len(owner)) - np.searchsorted(owner, owner)
+        corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, len(polygons))
+        side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
+        present = np.zeros(len(samples), dtype=bool)
+        present[side_start[following[side_start] == side_end]] = True
+        present[side_end[following[side_end] == side_start]] = True
+        refine = np.bincount(owner[~present], minlength=len(polygons)) > 0
+        refine &= ~failed & (refinement < MAX_REFINEMENTS - 1)
+        done = np.flatnonzero((np.bincount(owner, minlength=len(polygons)) > 0) & ~refine)
+        _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps)
+        if not np.any(refine):
+            break
+        split = ~present & refine[owner]
+        keep = refine[owner]
+        samples, ring, owner = _split_samples(samples, ring, owner, following, split, keep)
+    return [
+        InvalidGeometryError("The polygon's outline could not be triangulated to find its ends automatically.")
+        if outcome is None
+        else outcome
+        for outcome in outcomes
+    ]
+
+
+def _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps):
+    """Store the triangulation of each polygon in ``done`` (numbered from its own first sample) in ``outcomes``."""
+    sample_first = np.searchsorted(owner, np.arange(len(outcomes) + 1))
+    triangle_first = np.searchsorted(triangle_owner, np.arange(len(outcomes) + 1))
+    for index in done.tolist():
+        if failed[index]:
+            continue
+        low, high = sample_first[index], sample_first[index + 1]
+        rows = slice(triangle_first[index], triangle_first[index + 1])
+        outcomes[index] = (corners[rows], corner_ids[rows] - low, following[low:high] - low, float(steps[index]))
+
+
+def _boundary_sample_arrays(polygons):
+    """Return the samples of :func:`boundary_samples` of many polygons as flat arrays.
+
+    Returns
+    -------
+    samples : ndarray of shape (n, 2)
+        Every ring's samples without its closing point, polygon after polygon, exterior (counter-clockwise)
+        then holes (clockwise), CRS units.
+    ring, owner : ndarray of shape (n,) of int
+        Ring (numbered over all polygons) and polygon of each sample.
+    steps : ndarray of shape (p,)
+        Densification step of each polygon, CRS units.
+    """
+    polygons = np.asarray(polygons, dtype=object)
+    widths = np.array(
+        [typical_width(area, length / 2.0) for area, length in zip(shapely.area(polygons), shapely.length(polygons))]
+    )
+    tolerance = SIMPLIFY_FRACTION * widths
+    simplified = shapely.simplify(polygons, tolerance, preserve_topology=False)
+    bad = (shapely.get_type_id(simplified) != 3) | ~shapely.is_valid(simplified)
+    if np.any(bad):
+        simplified[bad] = shapely.simplify(polygons[bad], tolerance[bad], preserve_topology=True)
+    simplified = shapely.orient_polygons(simplified)
+    steps = np.maximum(widths / SAMPLES_PER_WIDTH, shapely.length(simplified) / MAX_SAMPLES)
+    rings, ring_owner = shapely.get_rings(shapely.segmentize(simplified, steps), return_index=True)
+    coordinates, ring = shapely.get_coordinates(rings, return_index=True)
+    closing = np.append(ring[1:] != ring[:-1], True)[: len(ring)]
+    return coordinates[~closing], ring[~closing], ring_owner[ring[~closing]], steps
 
 
 def boundary_samples(polygon):
@@ -108,54 +245,165 @@ def boundary_samples(polygon):
     step : float
         Densification step, CRS units.
     """
-    width = typical_width(polygon.area, polygon.length / 2.0)
-    simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=False)
-    if not (isinstance(simplified, Polygon) and simplified.is_valid):
-        simplified = polygon.simplify(SIMPLIFY_FRACTION * width, preserve_topology=True)
-    simplified = shapely.geometry.polygon.orient(simplified, 1.0)
-    step = max(width / SAMPLES_PER_WIDTH, simplified.length / MAX_SAMPLES)
-    dense = shapely.segmentize(simplified, step)
-    return [shapely.get_coordinates(ring)[:-1] for ring in (dense.exterior, *dense.interiors)], step
+    samples, ring, _, steps = _boundary_sample_arrays([polygon])
+    return np.split(samples, np.flatnonzero(ring[1:] != ring[:-1]) + 1), float(steps[0])
 
 
-def _conforming_triangulation(rings, step):
-    """Return the Delaunay triangles of the ring samples once every ring segment is one of their sides.
+def _following(ring):
+    """Return the index of the next sample on the same ring, for each sample (rings are consecutive runs)."""
+    index = np.arange(len(ring))
+    last = np.append(ring[1:] != ring[:-1], True)
+    first = np.flatnonzero(np.insert(ring[1:] != ring[:-1], 0, True))
+    return np.where(last, first[np.cumsum(np.insert(ring[1:] != ring[:-1], 0, True)) - 1], index + 1)
+
+
+def _split_samples(samples, ring, owner, following, split, keep):
+    """Keep the samples flagged ``keep`` and insert the midpoint of every flagged segment after its start."""
+    where = np.flatnonzero(split)
+    middles = 0.5 * (samples[where] + samples[following[where]])
+    samples = np.insert(samples, where + 1, middles, axis=0)
+    ring = np.insert(ring, where + 1, ring[where])
+    owner = np.insert(owner, where + 1, owner[where])
+    kept = np.insert(keep, where + 1, True)
+    return samples[kept], ring[kept], owner[kept]
+
+
+def _delaunay_all(samples, owner, local, steps, count):
+    """Return the Delaunay triangles of each polygon's (slightly displaced) samples, one GEOS call for all.
 
     Parameters
     ----------
-    rings : list of ndarray of shape (m, 2)
-        Exterior (counter-clockwise) and holes without their closing point, CRS units.
-    step : float
-        Sampling step, CRS units.
+    samples : ndarray of shape (n, 2)
+        Points, CRS units, polygon after polygon.
+    owner, local : ndarray of shape (n,) of int
+        Polygon of each sample, and its index among that polygon's samples (sets its jitter).
+    steps : ndarray of shape (count,)
+        Sampling step of each polygon, CRS units (scale of the displacement, see ``JITTER``).
+    count : int
+        Number of polygons.
 
     Returns
     -------
     corners : ndarray of shape (t, 3, 2)
+        Corners of each triangle (the displaced samples, in the samples' frame), polygon after polygon.
     corner_ids : ndarray of shape (t, 3) of int
-        Sample index of each corner, in the rings' concatenated order (after the splits).
-    following : ndarray of shape (n,) of int
-        Index of the next sample on the same ring, for each sample.
+        Index in ``samples`` of each corner (one of them for a repeated point).
+    triangle_owner : ndarray of shape (t,) of int
+    failed : ndarray of shape (count,) of bool
+        Polygons whose samples GEOS could not triangulate with any displacement.
     """
-    for _ in range(MAX_REFINEMENTS):
-        samples = np.concatenate(rings)
-        count = len(samples)
-        following = np.concatenate(
-            [offset + np.roll(np.arange(len(ring)), -1) for offset, ring in zip(_offsets(rings), rings)]
-        )
-        corners, corner_ids = _delaunay(samples, step)
-        side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
-        present = np.zeros(count, dtype=bool)
-        present[side_start[following[side_start] == side_end]] = True
-        present[side_end[following[side_end] == side_start]] = True
-        missing = ~present
-        if not np.any(missing):
+    pattern = _jitter_pattern(local)
+    cosine, sine = _insertion_rotations(samples, owner, count)
+    waiting = np.bincount(owner, minlength=count) > 0
+    triangles = np.full(count, None, dtype=object)
+    moved_all, turned_all = samples.copy(), samples.copy()
+    for jitter in JITTER:
+        mask = waiting[owner]
+        if not np.any(mask):
             break
-        rings = _split_segments(rings, missing)
-    return corners, corner_ids, following
+        moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
+        turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
+        polygons, sizes = _runs(owner[mask])
+        found = _each_delaunay(_multipoints(turned, sizes))
+        success = np.zeros(count, dtype=bool)
+        success[polygons] = [item is not None for item in found]
+        triangles[polygons[success[polygons]]] = [item for item in found if item is not None]
+        took = success[owner[mask]]
+        moved_all[np.flatnonzero(mask)[took]] = moved[took]
+        turned_all[np.flatnonzero(mask)[took]] = turned[took]
+        waiting &= ~success
+    made = np.flatnonzero(~shapely.is_missing(triangles))
+    coordinates, which = shapely.get_coordinates(triangles[made], return_index=True)
+    triangle_owner = made[which[::4]]
+    corner_ids = _corner_ids(turned_all, owner, coordinates.reshape(-1, 4, 2)[:, :3], triangle_owner)
+    return moved_all[corner_ids], corner_ids, triangle_owner, waiting
+
+
+def _runs(values):
+    """Return the distinct values of a sorted array and the length of each one's run."""
+    starts = np.flatnonzero(np.insert(values[1:] != values[:-1], 0, True)) if len(values) else np.zeros(0, int)
+    return values[starts], np.diff(np.append(starts, len(values)))
+
+
+def _multipoints(points, sizes):
+    """Return one MultiPoint per run of ``sizes`` consecutive points, built through WKB (twice as fast as
+    from coordinates)."""
+    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xy", "<f8", (2,))])
+    body = np.zeros(len(points), dtype=record)
+    body["order"], body["kind"], body["xy"] = 1, 1, points
+    header = np.zeros(len(sizes), dtype=[("order", "u1"), ("kind", "<u4"), ("count", "<u4")])
+    header["order"], header["kind"], header["count"] = 1, 4, sizes
+    data, heads = body.tobytes(), header.tobytes()
+    bounds = (np.append(0, np.cumsum(sizes)) * record.itemsize).tolist()
+    size = header.itemsize
+    blobs = [heads[size * k : size * (k + 1)] + data[bounds[k] : bounds[k + 1]] for k in range(len(sizes))]
+    return shapely.from_wkb(np.array(blobs, dtype=object))
+
+
+def _each_delaunay(multipoints):
+    """Return the Delaunay triangles of each multipoint: one GEOS call, or one each (None where GEOS fails)."""
+    try:
+        return list(shapely.delaunay_triangles(multipoints))
+    except shapely.errors.GEOSException:
+        found = []
+        for points in multipoints:
+            try:
+                found.append(shapely.delaunay_triangles(points))
+            except shapely.errors.GEOSException:
+                found.append(None)
+        return found
+
+
+def _corner_ids(points, owner, corners, corner_owner):
+    """Return the index in ``points`` of each corner: the point of the same polygon with the same coordinates.
+
+    Delaunay keeps the input coordinates exactly: each point and corner gets the complex key
+    ``x + OWNER_SPACING * polygon + i y`` (the same operations on the same numbers, so equal points get equal
+    keys, and polygons of size about 1 get disjoint ranges); numpy orders complex numbers by real, then
+    imaginary part.
+    """
+    keys = _lookup_keys(points, owner)
+    order = np.argsort(keys)
+    position = np.searchsorted(keys[order], _lookup_keys(corners.reshape(-1, 2), np.repeat(corner_owner, 3)))
+    return order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
+
+
+def _lookup_keys(points, owner):
+    """Return the complex lookup key of each point of polygon ``owner`` (see :func:`_corner_ids`)."""
+    return (points[:, 0] + OWNER_SPACING * owner) + 1j * points[:, 1]
+
+
+def _insertion_rotations(samples, owner, count):
+    """Return ``(cos, sin)`` per polygon of the rotation turning its samples' principal axis to ``SWEEP_ANGLE``.
+
+    GEOS inserts the points sorted by x; sweeping across a long reach (many points of about the same x)
+    is slow, up to quadratic on a thin strip across the x axis, while sweeping along the shape's principal
+    axis keeps the front short. The triangulation itself does not depend on the rotation.
+    """
+    sizes = np.maximum(np.bincount(owner, minlength=count), 1)
+    centred = samples - np.stack([np.bincount(owner, samples[:, k], count) / sizes for k in (0, 1)], axis=1)[owner]
+    x, y = centred.T
+    xx, yy, xy = (np.bincount(owner, product, count) for product in (x * x, y * y, x * y))
+    angle = SWEEP_ANGLE - 0.5 * np.arctan2(2.0 * xy, xx - yy)
+    return np.cos(angle), np.sin(angle)
+
+
+def _turned(points, cosine, sine):
+    """Return the points rotated by the angles of ``cosine`` and ``sine`` (one each)."""
+    return np.stack([cosine * points[:, 0] - sine * points[:, 1], sine * points[:, 0] + cosine * points[:, 1]], axis=1)
+
+
+def _jitter_pattern(index):
+    """Return a fixed pseudo-random pattern of offsets in ``[-0.5, 0.5)**2`` for sample numbers ``index``
+    (a Weyl sequence)."""
+    index = np.asarray(index, dtype=float)[:, None]
+    return np.modf(index * np.array([0.7548776662466927, 0.5698402909980532]) + 0.5)[0] - 0.5
 
 
 def _dual_graph(corners, corner_ids, following):
     """Return the nodes, radii, spans and edges of the dual graph of the triangles inside the rings.
+
+    Also returns the mask of the triangles kept (one node each, in order).
 
     Inside triangles are those whose counter-clockwise sides run along the boundary the way the (oriented)
     rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat triangles
@@ -197,10 +445,10 @@ def _dual_graph(corners, corner_ids, following):
     radii[beyond] = double_area[beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
     # Across a channel sampled coarser than its width, the circumcircle overestimates the width: the height
     # of the triangle over its longest boundary side is the distance to the other bank.
-    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1)
+    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1, initial=0.0)
     across = boundary_side > 0.0
     spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
-    return nodes, radii, spans, edges
+    return nodes, radii, spans, edges, inside
 
 
 def _shared_sides(side_start, side_end, count):
@@ -254,112 +502,11 @@ def connected_labels(count, first, second):
             label = jumped
 
 
-def _offsets(rings):
-    """Return the index of the first sample of each ring in their concatenation."""
-    return np.concatenate([[0], np.cumsum([len(ring) for ring in rings])[:-1]]).astype(np.int64)
-
-
 def _edge_keys(first, second, count):
     """Return one integer per undirected edge between sample indices ``first`` and ``second``."""
     low = np.minimum(first, second).astype(np.int64)
     high = np.maximum(first, second).astype(np.int64)
     return low * count + high
-
-
-def _jitter_pattern(count):
-    """Return a fixed pseudo-random pattern of ``count`` offsets in ``[-0.5, 0.5)**2`` (a Weyl sequence)."""
-    index = np.arange(count, dtype=float)[:, None]
-    return np.modf(index * np.array([0.7548776662466927, 0.5698402909980532]) + 0.5)[0] - 0.5
-
-
-def _delaunay(samples, step):
-    """Return the Delaunay triangles of the (slightly displaced) samples, as corners and as sample indices.
-
-    Parameters
-    ----------
-    samples : ndarray of shape (n, 2)
-        Points, CRS units.
-    step : float
-        Sampling step, CRS units (scale of the displacement, see ``JITTER``).
-
-    Returns
-    -------
-    corners : ndarray of shape (t, 3, 2)
-        Corners of each triangle (the displaced samples, in the samples' frame).
-    corner_ids : ndarray of shape (t, 3) of int
-        Index in ``samples`` of each corner (one of them for a repeated point).
-
-    Raises
-    ------
-    InvalidGeometryError
-        If GEOS fails on every displacement.
-    """
-    pattern = _jitter_pattern(len(samples))
-    rotation = _insertion_rotation(samples)
-    for jitter in JITTER:
-        moved = samples + jitter * step * pattern
-        turned = moved @ rotation.T
-        try:
-            triangles = shapely.delaunay_triangles(_multipoint(turned))
-        except shapely.errors.GEOSException:
-            continue
-        found = shapely.get_coordinates(triangles).reshape(-1, 4, 2)[:, :3]
-        # Delaunay keeps the input coordinates exactly: look each corner up among the samples, as complex
-        # keys (numpy orders complex numbers by real, then imaginary part).
-        keys = np.ascontiguousarray(turned).view(np.complex128).ravel()
-        order = np.argsort(keys)
-        flat = np.ascontiguousarray(found.reshape(-1, 2)).view(np.complex128).ravel()
-        position = np.searchsorted(keys[order], flat)
-        corner_ids = order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
-        return moved[corner_ids], corner_ids
-    raise InvalidGeometryError("The polygon's outline could not be triangulated to find its ends automatically.")
-
-
-def _insertion_rotation(samples):
-    """Return the rotation matrix that turns the samples' principal axis to ``SWEEP_ANGLE`` from the x axis.
-
-    GEOS inserts the points sorted by x; sweeping across a long reach (many points of about the same x)
-    is slow, up to quadratic on a thin strip across the x axis, while sweeping along the shape's principal
-    axis keeps the front short. The triangulation itself does not depend on the rotation.
-    """
-    centred = samples - samples.mean(axis=0)
-    covariance = centred.T @ centred
-    eigenvalues, eigenvectors = np.linalg.eigh(covariance)
-    axis = eigenvectors[:, int(np.argmax(eigenvalues))]
-    angle = SWEEP_ANGLE - np.arctan2(axis[1], axis[0])
-    return np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
-
-
-def _multipoint(points):
-    """Return a MultiPoint of the points, built through WKB (twice as fast as from point objects)."""
-    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xy", "<f8", (2,))])
-    header = np.array([(1, 4, len(points))], dtype=[("order", "u1"), ("kind", "<u4"), ("count", "<u4")])
-    body = np.zeros(len(points), dtype=record)
-    body["order"], body["kind"], body["xy"] = 1, 1, points
-    return shapely.from_wkb(header.tobytes() + body.tobytes())
-
-
-def _split_segments(rings, split):
-    """Insert the midpoint of every flagged segment of the rings.
-
-    Parameters
-    ----------
-    rings : list of ndarray of shape (m, 2)
-        Rings without their closing point, CRS units.
-    split : ndarray of bool
-        One flag per segment (from each sample to the next on its ring), in the rings' concatenated order.
-
-    Returns
-    -------
-    list of ndarray
-    """
-    refined = []
-    for offset, ring in zip(_offsets(rings), rings):
-        flags = split[offset : offset + len(ring)]
-        following = np.roll(ring, -1, axis=0)
-        where = np.flatnonzero(flags)
-        refined.append(np.insert(ring, where + 1, 0.5 * (ring[where] + following[where]), axis=0))
-    return refined
 
 
 def _circumcentres(corners):

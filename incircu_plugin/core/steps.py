@@ -7,7 +7,9 @@ where they need the axis points of a pair of chains; the driver sends the :class
 back. :func:`run_alone` answers each request at once (what ``polygon_centerline`` and the other plain
 functions do); :func:`run_together` advances many generators side by side and answers all their pending
 requests with one tracing (:func:`.adaptive.trace_together`), so a layer of small features pays the
-rounds' overhead once per batch instead of once per feature.
+rounds' overhead once per batch instead of once per feature. A polygon without split points first yields
+an :class:`EndsRequest` (its automatic ends, :func:`.ends.find_ends`); :func:`run_together` answers all
+those of a batch at once (:func:`.ends.find_ends_together`) before the tracing.
 
 Both drivers pause Python's cyclic garbage collector while they run (:func:`collector_paused`).
 """
@@ -22,10 +24,11 @@ from typing import Callable
 import numpy as np
 
 from .adaptive import trace_one, trace_together
+from .ends import find_ends, find_ends_together
+from .errors import Cancelled
 
-
-class Cancelled(Exception):
-    """Raised when the progress callback asks the engine to stop."""
+#: Share of a batch's progress taken by its round of automatic ends (the tracing takes the rest).
+ENDS_SHARE = 0.2
 
 
 @dataclass
@@ -101,6 +104,35 @@ def collector_paused():
                 gc.enable()
 
 
+@dataclass
+class EndsRequest:
+    """What a polygon without split points asks of the automatic ends (see :func:`.ends.find_ends`).
+
+    Attributes
+    ----------
+    polygon : Polygon
+        CRS units.
+    rule : {"main_stem", "longest_path"}
+    guide : LineString or MultiLineString or None
+        CRS units.
+    progress : callable or None
+        ``progress(fraction)`` for this request alone; returning False stops with :class:`Cancelled`.
+    """
+
+    polygon: object
+    rule: str
+    guide: object
+    progress: Callable[[float], object] = None
+
+
+def answer_alone(request):
+    """The answer to one request: the :class:`.ends.EndsResult` of an :class:`EndsRequest`, else the axis
+    points of a :class:`TraceRequest`."""
+    if isinstance(request, EndsRequest):
+        return find_ends(request.polygon, rule=request.rule, guide=request.guide, progress=request.progress)
+    return trace_alone(request)
+
+
 def trace_alone(request):
     """The axis points of one request (:class:`.contacts.AxisPoints`), reporting to its own ``report``."""
     return trace_one(request, request.report)
@@ -109,15 +141,15 @@ def trace_alone(request):
 def run_alone(steps):
     """Drive one step generator to its end, tracing each of its requests alone; returns its value.
 
-    A tracing that fails raises its exception inside the generator, at the request, as :func:`run_together`
-    does (a multipart feature then loses that part only).
+    A request that fails (a tracing, or automatic ends) raises its exception inside the generator, at the
+    request, as :func:`run_together` does (a multipart feature then loses that part only).
     """
     with collector_paused():
         try:
             request = next(steps)
             while True:
                 try:
-                    points = trace_alone(request)
+                    points = answer_alone(request)
                 except Cancelled:
                     raise
                 except Exception as error:  # noqa: BLE001 - the generator decides what a failed tracing means
@@ -134,7 +166,10 @@ def run_together(step_generators, progress=None):
     Parameters
     ----------
     step_generators : iterable of generator
-        Each yields :class:`TraceRequest` objects, receives their axis points and returns its result.
+        Each yields :class:`EndsRequest` and :class:`TraceRequest` objects, receives their answers (ends,
+        axis points) and returns its result. All pending ends requests are answered first, together
+        (:func:`.ends.find_ends_together`), so the generators' tracing requests that follow are traced
+        together too.
     progress : callable, optional
         Called with the fraction done (0 to 1); when it returns False, :class:`Cancelled` is raised.
 
@@ -160,20 +195,24 @@ def _run_together(generators, progress):
     for index, steps in enumerate(generators):
         _advance(steps, index, lambda s: next(s), pending, outcomes)
     report = reporter(progress)
-    done = 0.0
+    done, traced = 0.0, False
     while pending:
-        indices = list(pending)
+        ends = [index for index, request in pending.items() if isinstance(request, EndsRequest)]
+        indices = ends or list(pending)
         requests = [pending.pop(index) for index in indices]
-        # Each round of requests (a multipart feature asks once per part) takes half of what is left.
-        share = 0.5 * (1.0 - done) if done else 0.9
-        traced = _traced(requests, lambda fraction, begin=done, width=share: report(begin + width * fraction))
+        # The ends take ENDS_SHARE of what is left; the first round of tracing 0.9, each later round (a
+        # multipart feature asks once per part) half of what is left.
+        share = (ENDS_SHARE if ends else 0.5 if traced else 0.9) * (1.0 - done)
+        traced = traced or not ends
+        answer = _found_ends if ends else _traced
+        answers = answer(requests, lambda fraction, begin=done, width=share: report(begin + width * fraction))
         done += share
-        for index, points in zip(indices, traced):
+        for index, value in zip(indices, answers):
             steps = generators[index]
-            if isinstance(points, Exception):
-                _advance(steps, index, lambda s, e=points: s.throw(e), pending, outcomes)
+            if isinstance(value, Exception):
+                _advance(steps, index, lambda s, e=value: s.throw(e), pending, outcomes)
             else:
-                _advance(steps, index, lambda s, p=points: s.send(p), pending, outcomes)
+                _advance(steps, index, lambda s, v=value: s.send(v), pending, outcomes)
     report(1.0)
     return outcomes
 
@@ -189,6 +228,27 @@ def _advance(steps, index, step, pending, outcomes):
     except Exception as error:  # noqa: BLE001 - one feature's failure is its outcome, not the batch's
         error.__traceback__ = None
         outcomes[index] = error
+
+
+def _found_ends(requests, report):
+    """The ends of every :class:`EndsRequest` (or the exception :func:`.ends.find_ends` raises for it), found
+    together per rule; each request's own ``progress`` is told when its ends are known (it may cancel)."""
+    answers = [None] * len(requests)
+    rules = sorted({request.rule for request in requests})
+    for number, rule in enumerate(rules):
+        positions = [position for position, request in enumerate(requests) if request.rule == rule]
+        found = find_ends_together(
+            [requests[position].polygon for position in positions],
+            rule=rule,
+            guides=[requests[position].guide for position in positions],
+            progress=lambda fraction, begin=number: report((begin + fraction) / len(rules)),
+        )
+        for position, value in zip(positions, found):
+            answers[position] = value
+    for request in requests:
+        if request.progress is not None and request.progress(1.0) is False:
+            raise Cancelled()
+    return answers
 
 
 def _traced(requests, report):
