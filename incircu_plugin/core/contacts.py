@@ -40,6 +40,11 @@ TIE_TOLERANCE = 1e-10
 #: Samples solved together (bounds the memory of the candidate pairs).
 CHUNK = 16_384
 
+#: Samples whose rounds :func:`solve` runs together, block after block: the arrays of a block's (sample,
+#: segment) pairs (about ten per sample) stay in the processor's cache, which makes a solve about a fifth
+#: faster than one pass over a whole chunk. Each sample is solved on its own, so the blocks change no result.
+SOLVE_BLOCK = 2048
+
 #: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
 #: above the finest one for a chunk large enough.
 COARSE_STRIDE = 8
@@ -214,10 +219,18 @@ class Boundary:
 
     def within(self, segment, point, distance):
         """Whether each segment comes within ``distance`` (CRS units) of the matching ``point``."""
+        ux, uy = self.unit_x[segment], self.unit_y[segment]
         dx, dy = point[:, 0] - self.start_x[segment], point[:, 1] - self.start_y[segment]
-        along = np.clip(dx * self.unit_x[segment] + dy * self.unit_y[segment], 0.0, self.length[segment])
-        ex, ey = dx - along * self.unit_x[segment], dy - along * self.unit_y[segment]
-        return ex * ex + ey * ey <= distance * distance
+        along = dx * ux
+        along += dy * uy
+        np.minimum(np.maximum(along, 0.0, out=along), self.length[segment], out=along)
+        # The offset from the nearest point, in place: (dx - along*ux)**2 + (dy - along*uy)**2.
+        dx -= np.multiply(along, ux, out=ux)
+        dy -= np.multiply(along, uy, out=uy)
+        dx *= dx
+        dy *= dy
+        dx += dy
+        return dx <= distance * distance
 
     def _overlaps(self, segment, low, high):
         """Whether each segment's bounding box meets the matching box ``low..high``."""
@@ -308,7 +321,9 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     distance = side * height
     # 1 - side * b_across is |b - side * across|**2 / 2 for unit vectors: no cancellation when the disk's
     # direction nearly faces the segment's line (a nearly straight corner).
-    denominator = np.where(scale == 1.0, 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2), scale - side * b_across)
+    denominator = 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2)
+    corner = np.flatnonzero(scale != 1.0)
+    denominator[corner] = scale[corner] - side[corner] * b_across[corner]
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
         along = along_p + t_tangent * b_along
@@ -320,7 +335,7 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     t_vertex = np.minimum(t_start, t_end)
     t = np.where(tangent, t_tangent, t_vertex)
     at_start = t_vertex == t_start
-    along = np.where(tangent, np.clip(along, 0.0, length), np.where(at_start, 0.0, length))
+    along = np.where(tangent, np.minimum(np.maximum(along, 0.0), length), np.where(at_start, 0.0, length))
     site = np.where(tangent, segment, boundary.start_site[segment] + np.where(at_start, 0, 1))
     return t, along, site
 
@@ -330,13 +345,20 @@ def per_sample(value, chain):
     return np.full(len(chain), value, dtype=float) if np.ndim(value) == 0 else np.asarray(value)[chain]
 
 
-def group_minimum(group, values, size):
-    """Minimum of ``values`` per group id (``group`` sorted ascending); inf for empty groups."""
-    result = np.full(size, np.inf)
+def group_minima(group, size, *values):
+    """Minimum of each of ``values`` per group id (``group`` sorted ascending, ids below ``size``); inf for
+    empty groups. One array of ``size`` per array of ``values``."""
+    results = [np.full(size, np.inf) for _ in values]
     if len(group):
         starts = np.flatnonzero(np.concatenate([[True], group[1:] != group[:-1]]))
-        result[group[starts]] = np.minimum.reduceat(values, starts)
-    return result
+        for result, value in zip(results, values):
+            result[group[starts]] = np.minimum.reduceat(value, starts)
+    return results
+
+
+def _first_of_groups(rows, group):
+    """The rows ``rows`` (ascending) whose ``group`` differs from the previous row's: each group's first."""
+    return rows[np.diff(group[rows], prepend=-1) != 0]
 
 
 def solve(samples, index, boundary, trial, max_t, min_t):
@@ -352,80 +374,118 @@ def solve(samples, index, boundary, trial, max_t, min_t):
     the ``site`` of the contact (for skipped samples the nearest site of their own chain; -1 when none).
     """
     count = len(index)
-    point, direction = samples.point[index], samples.direction[index]
-    scale, slide = samples.scale[index], samples.slide[index]
-    max_t, min_t = per_sample(max_t, samples.chain[index]), per_sample(min_t, samples.chain[index])
+    chain = samples.chain[index]
+    max_t, min_t = per_sample(max_t, chain), per_sample(min_t, chain)
     radius = np.array(trial, dtype=float)
-    contact_t = np.full(count, np.inf)
-    status = np.full(count, SKIPPED, dtype=np.int8)
-    contact = np.zeros((count, 2))
-    position = np.zeros(count)
-    site = np.full(count, -1)
-    active = np.arange(count)
-    while len(active):
-        centre = point[active] + radius[active, None] * direction[active]
-        # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
-        # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
-        reach = radius[active, None] * (1.0 + 1e-9)
-        query, segment = boundary.candidates(centre - reach, centre + reach)
-        if boundary.several_pairs:
-            mine = boundary.chain_id[segment] >> 1 == samples.chain[index[active[query]]] >> 1
-            query, segment = query[mine], segment[mine]
-        near = boundary.within(segment, centre[query], reach[query, 0])
-        query, segment = query[near], segment[near]
-        pair = active[query]
-        sample = index[pair]
-        t, along, touched = first_contacts(
-            point[pair, 0],
-            point[pair, 1],
-            direction[pair, 0],
-            direction[pair, 1],
-            scale[pair],
-            slide[pair],
-            boundary,
-            segment,
-        )
-        own_segment = (segment >= samples.first_own[sample]) & (segment <= samples.last_own[sample])
-        # The own segments' end vertices too (the next segment answers for the last one's end).
-        own_vertex = (touched >= boundary.start_site[samples.first_own[sample]]) & (
-            touched <= boundary.start_site[samples.last_own[sample]] + 1
-        )
-        t[own_segment | own_vertex | (t <= min_t[pair])] = np.inf
-        on_own = boundary.chain_id[segment] == samples.chain[sample]
-        t_own = np.where(on_own, t, np.inf)
-        t_other = np.where(on_own, np.inf, t)
+    solution = _Solution(
+        np.full(count, np.inf),
+        np.full(count, SKIPPED, dtype=np.int8),
+        np.zeros((count, 2)),
+        np.zeros(count),
+        np.full(count, -1),
+    )
+    for begin in range(0, count, SOLVE_BLOCK):
+        active = np.arange(begin, min(begin + SOLVE_BLOCK, count))
+        while len(active):
+            best = _solve_round(samples, index[active], boundary, radius[active], min_t[active], active, solution)
+            settled = best <= radius[active]
+            pending = active[~settled]
+            best = best[~settled]
+            radius[pending] = np.minimum(best, 2.0 * radius[pending])
+            active = pending[radius[pending] <= max_t[pending]]
+    return solution.contact_t, solution.status, solution.contact, solution.position, solution.site
 
-        best_own = group_minimum(pair, t_own, count)
-        best_other = group_minimum(pair, t_other, count)
-        best = np.minimum(best_own[active], best_other[active])
-        settled = best <= radius[active]
-        contact_t[active[settled]] = best[settled]
-        own_winner = np.flatnonzero(np.isfinite(t_own) & (t_own == best_own[pair]))
-        own_winner = own_winner[np.diff(pair[own_winner], prepend=-1) != 0]
-        site[pair[own_winner]] = touched[own_winner]
 
-        winner = np.isfinite(t_other) & (t_other == best_other[pair])
-        winner &= t_other <= best_own[pair] * (1.0 + TIE_TOLERANCE)
-        winner &= settled[np.searchsorted(active, pair)]
-        winner_pair = np.flatnonzero(winner)
-        # Pairs are sorted by sample: keep each sample's first winning pair.
-        chosen = winner_pair[np.diff(pair[winner_pair], prepend=-1) != 0]
-        chosen_sample, chosen_segment = pair[chosen], segment[chosen]
-        status[chosen_sample] = np.where(t[chosen] * (1.0 + TIE_TOLERANCE) < best_own[chosen_sample], CLEAR, TIED)
-        contact_t[chosen_sample] = t[chosen]
-        site[chosen_sample] = touched[chosen]
-        contact[chosen_sample] = boundary.start[chosen_segment] + along[chosen, None] * boundary.unit[chosen_segment]
-        position[chosen_sample] = np.where(
-            along[chosen] >= boundary.length[chosen_segment],
-            boundary.segment_end_position[chosen_segment],
-            boundary.segment_position[chosen_segment] + along[chosen],
-        )
+@dataclass(frozen=True)
+class _Solution:
+    """The arrays that :func:`solve` returns, filled in round by round (one row per sample)."""
 
-        pending = active[~settled]
-        best = best[~settled]
-        radius[pending] = np.minimum(best, 2.0 * radius[pending])
-        active = pending[radius[pending] <= max_t[pending]]
-    return contact_t, status, contact, position, site
+    contact_t: np.ndarray
+    status: np.ndarray
+    contact: np.ndarray
+    position: np.ndarray
+    site: np.ndarray
+
+
+def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
+    """One round of :func:`solve`: the samples ``sample`` (rows ``row`` of ``solution``) with trial parameters
+    ``radius`` and smallest contacts ``min_t``. Fills in the rows settled (first contact within the trial) and
+    the own-chain site of every row; returns each sample's first contact found (inf when none).
+
+    Per-sample quantities are taken once per sample and then gathered per (sample, segment) pair.
+    """
+    point, direction = samples.point[sample], samples.direction[sample]
+    chain = samples.chain[sample]
+    centre = point + radius[:, None] * direction
+    # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
+    # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
+    reach = radius[:, None] * (1.0 + 1e-9)
+    query, segment = boundary.candidates(centre - reach, centre + reach)
+    if boundary.several_pairs:
+        mine = boundary.chain_id[segment] >> 1 == (chain >> 1)[query]
+        query, segment = query[mine], segment[mine]
+    near = boundary.within(segment, centre[query], reach[query, 0])
+    query, segment = query[near], segment[near]
+    del near, centre, reach
+    t, along, touched = first_contacts(
+        point[query, 0],
+        point[query, 1],
+        direction[query, 0],
+        direction[query, 1],
+        samples.scale[sample][query],
+        samples.slide[sample][query],
+        boundary,
+        segment,
+    )
+    first_own, last_own = samples.first_own[sample], samples.last_own[sample]
+    own_segment = (segment >= first_own[query]) & (segment <= last_own[query])
+    # The own segments' end vertices too (the next segment answers for the last one's end).
+    own_segment |= (touched >= boundary.start_site[first_own][query]) & (
+        touched <= (boundary.start_site[last_own] + 1)[query]
+    )
+    own_segment |= t <= min_t[query]
+    t[own_segment] = np.inf
+    on_own = boundary.chain_id[segment] == chain[query]
+    t_own = np.where(on_own, t, np.inf)
+    t_other = np.where(on_own, np.inf, t)
+    del own_segment, on_own
+    best_own, best_other = group_minima(query, len(sample), t_own, t_other)
+    best = np.minimum(best_own, best_other)
+    settled = best <= radius
+    solution.contact_t[row[settled]] = best[settled]
+    best_own_pair = best_own[query]
+    own_winner = _first_of_groups(np.flatnonzero(np.isfinite(t_own) & (t_own == best_own_pair)), query)
+    solution.site[row[query[own_winner]]] = touched[own_winner]
+    winner = np.isfinite(t_other) & (t_other == best_other[query])
+    winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
+    winner &= settled[query]
+    # Pairs are sorted by sample: keep each sample's first winning pair.
+    chosen = _first_of_groups(np.flatnonzero(winner), query)
+    _record_winners(
+        solution,
+        row[query[chosen]],
+        t[chosen],
+        along[chosen],
+        touched[chosen],
+        segment[chosen],
+        best_own[query[chosen]],
+        boundary,
+    )
+    return best
+
+
+def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
+    """Record the first contacts ``t`` on the other chain of the rows ``row`` of ``solution``: ``along``
+    (CRS units) the segment ``segment`` (site ``site``); ``best_own`` is each row's first own-chain contact."""
+    solution.status[row] = np.where(t * (1.0 + TIE_TOLERANCE) < best_own, CLEAR, TIED)
+    solution.contact_t[row] = t
+    solution.site[row] = site
+    solution.contact[row] = boundary.start[segment] + along[:, None] * boundary.unit[segment]
+    solution.position[row] = np.where(
+        along >= boundary.length[segment],
+        boundary.segment_end_position[segment],
+        boundary.segment_position[segment] + along,
+    )
 
 
 def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
