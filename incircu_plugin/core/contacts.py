@@ -157,7 +157,6 @@ class Boundary:
         run_start = np.arange(0, count, self.index_run)
         self.run_low = np.minimum.reduceat(self.low, run_start)
         self.run_high = np.maximum.reduceat(self.high, run_start)
-        self.run_size = np.diff(np.append(run_start, count)).astype(np.int32)
         self._tree = None
 
     def end(self, segment):
@@ -196,9 +195,13 @@ class Boundary:
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
         group, run = self.tree.query(_diagonals(group_low, group_high))
-        pair, offset = ranges(self.run_size[run])
-        group, segment = group[pair], run[pair] * self.index_run + offset
-        keep = self._overlaps(segment, group_low[group], group_high[group])
+        # Every run hit, segment by segment (only the last run may be short: its missing segments dropped).
+        segment = (run[:, None] * self.index_run + np.arange(self.index_run)).ravel()
+        group = np.repeat(group, self.index_run)
+        if len(segment) and segment.max() >= self.segment_count:
+            real = segment < self.segment_count
+            group, segment = group[real], segment[real]
+        keep = self._overlaps(segment, group, group_low, group_high)
         group, segment = group[keep], segment[keep]
 
         hits_per_group = np.bincount(group, minlength=len(starts))
@@ -206,7 +209,7 @@ class Boundary:
         box_group = np.arange(count) // QUERY_GROUP
         box, offset = ranges(hits_per_group[box_group])
         segment = segment[first_hit[box_group[box]] + offset]
-        keep = self._overlaps(segment, low[box], high[box])
+        keep = self._overlaps(segment, box, low, high)
         return box[keep], segment[keep]
 
     def _query_each(self, low, high):
@@ -232,12 +235,13 @@ class Boundary:
         dx += dy
         return dx <= distance * distance
 
-    def _overlaps(self, segment, low, high):
-        """Whether each segment's bounding box meets the matching box ``low..high``."""
-        keep = self.low_x[segment] <= high[:, 0]
-        keep &= self.high_x[segment] >= low[:, 0]
-        keep &= self.low_y[segment] <= high[:, 1]
-        keep &= self.high_y[segment] >= low[:, 1]
+    def _overlaps(self, segment, box, low, high):
+        """Whether each segment's bounding box meets the box ``low[box]..high[box]`` (gathered column by column:
+        much cheaper than rows of a two-column array)."""
+        keep = self.low_x[segment] <= high[:, 0][box]
+        keep &= self.high_x[segment] >= low[:, 0][box]
+        keep &= self.low_y[segment] <= high[:, 1][box]
+        keep &= self.high_y[segment] >= low[:, 1][box]
         return keep
 
 
