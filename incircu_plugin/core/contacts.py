@@ -220,10 +220,11 @@ class Boundary:
             box, segment = box[order], segment[order]
         return box, segment
 
-    def within(self, segment, point, distance):
-        """Whether each segment comes within ``distance`` (CRS units) of the matching ``point``."""
+    def within(self, segment, box, point, distance):
+        """Whether each segment comes within ``distance[box]`` (CRS units) of ``point[box]``."""
         ux, uy = self.unit_x[segment], self.unit_y[segment]
-        dx, dy = point[:, 0] - self.start_x[segment], point[:, 1] - self.start_y[segment]
+        dx, dy = point[:, 0][box] - self.start_x[segment], point[:, 1][box] - self.start_y[segment]
+        distance = distance[box]
         along = dx * ux
         along += dy * uy
         np.minimum(np.maximum(along, 0.0, out=along), self.length[segment], out=along)
@@ -428,14 +429,14 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     if boundary.several_pairs:
         mine = boundary.chain_id[segment] >> 1 == (chain >> 1)[query]
         query, segment = query[mine], segment[mine]
-    near = boundary.within(segment, centre[query], reach[query, 0])
+    near = boundary.within(segment, query, centre, reach[:, 0])
     query, segment = query[near], segment[near]
     del near, centre, reach
     t, along, touched = first_contacts(
-        point[query, 0],
-        point[query, 1],
-        direction[query, 0],
-        direction[query, 1],
+        point[:, 0][query],
+        point[:, 1][query],
+        direction[:, 0][query],
+        direction[:, 1][query],
         samples.scale[sample][query],
         samples.slide[sample][query],
         boundary,
