@@ -62,6 +62,7 @@ from .contacts import (
     Samples,
     left_normal,
     ranges,
+    rows,
     solve,
     solve_in_chunks,
 )
@@ -122,12 +123,12 @@ class _Spans:
         edge each point lies (CRS units; 0 on a fan)."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
-        point = self.point[span]
-        point += along[:, None] * self.unit[span]
-        direction = self.normal[span]
+        point = rows(self.point, span)
+        point += along[:, None] * rows(self.unit, span)
+        direction = rows(self.normal, span)
         on_fan = np.flatnonzero(~edge)
         angle, fan = u[on_fan, None], span[on_fan]
-        direction[on_fan] = np.cos(angle) * self.unit[fan] + np.sin(angle) * direction[on_fan]
+        direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
         return point, direction, along
 
     def position_at(self, span, u):
@@ -288,13 +289,13 @@ class _Sites:
         on_vertex = site >= b.segment_count
         row = np.flatnonzero(on_vertex)
         vertex = site[row] - b.segment_count
-        foot[row], position[row] = b.vertex[vertex], b.vertex_position[vertex]
+        foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
         row = np.flatnonzero(~on_vertex)
         del on_vertex, vertex
         segment = np.maximum(site[row], 0)
-        start, unit = b.start[segment], b.unit[segment]
+        start, unit = rows(b.start, segment), rows(b.unit, segment)
         run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre[row] - start, unit), 0.0, run_length)
+        along = np.clip(np.einsum("ij,ij->i", rows(centre, row) - start, unit), 0.0, run_length)
         foot[row] = start + along[:, None] * unit
         position[row] = b.segment_position[segment] + along
         return foot, position
@@ -314,13 +315,13 @@ class _Sites:
         is_segment = site < b.segment_count
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        point, unit, normal = spans.point[span], spans.unit[span], spans.normal[span]
-        across = left_normal(b.unit[segment])
-        height = np.einsum("ij,ij->i", point - b.start[segment], across)
+        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        across = left_normal(rows(b.unit, segment))
+        height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
         slope = np.einsum("ij,ij->i", unit, across)
         edge = spans.kind[span] == EDGE
         side = np.where(height + np.where(edge, u_ref * slope, 0.0) < 0, -1.0, 1.0)
-        offset = b.vertex[vertex] - point
+        offset = rows(b.vertex, vertex) - point
         with np.errstate(divide="ignore", invalid="ignore"):
             # Edge, vertex site: offset a along and h across the edge.
             a = np.einsum("ij,ij->i", offset, unit)
@@ -509,7 +510,7 @@ class _Tracer:
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.store["centre"][index]
+        return rows(self.store["centre"], index)
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
@@ -893,17 +894,15 @@ class _Tracer:
         on_fan = spans.kind[span] == FAN
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        focus = np.where(on_fan[:, None], spans.point[span], b.vertex[vertex])
-        anchor = np.where(on_fan[:, None], b.start[segment], spans.point[span])
-        unit = np.where(on_fan[:, None], b.unit[segment], spans.unit[span])
+        point = rows(spans.point, span)
+        focus = np.where(on_fan[:, None], point, rows(b.vertex, vertex))
+        anchor = np.where(on_fan[:, None], rows(b.start, segment), point)
+        unit = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
         ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
         owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals))
-        offset = centre - spans.point[span[owner]]
-        angle = np.arctan2(
-            np.einsum("ij,ij->i", offset, spans.normal[span[owner]]),
-            np.einsum("ij,ij->i", offset, spans.unit[span[owner]]),
-        )
-        along = np.einsum("ij,ij->i", offset, spans.unit[span[owner]])
+        offset = centre - rows(spans.point, span[owner])
+        along = np.einsum("ij,ij->i", offset, rows(spans.unit, span[owner]))
+        angle = np.arctan2(np.einsum("ij,ij->i", offset, rows(spans.normal, span[owner])), along)
         u = np.clip(np.where(on_fan[owner], angle, along), intervals.u0[owner], intervals.u1[owner])
         return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
 

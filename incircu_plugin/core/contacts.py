@@ -74,7 +74,9 @@ class ArrayRecord:
     """Mixin for a dataclass whose fields are arrays with one row per item (samples, points, intervals)."""
 
     def subset(self, index):
-        """The items ``index`` (an index array or mask)."""
+        """The items ``index`` (an index array, a mask or a slice)."""
+        if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
+            return type(self)(*(rows(getattr(self, field.name), index) for field in fields(self)))
         return type(self)(*(getattr(self, field.name)[index] for field in fields(self)))
 
     @classmethod
@@ -135,11 +137,11 @@ class Boundary:
         self.first_of_chain = np.zeros(count, dtype=bool)
         self.first_of_chain[self.offset] = True
         start_vertex = np.arange(count, dtype=np.int32) + self.chain_id
-        self.start = self.vertex[start_vertex]
+        self.start = rows(self.vertex, start_vertex)
         self.segment_position = self.vertex_position[start_vertex]
         self.segment_end_position = self.vertex_position[start_vertex + 1]
         self.start_site = start_vertex + np.int32(count)
-        end = self.vertex[start_vertex + 1]
+        end = rows(self.vertex, start_vertex + 1)
         del start_vertex
         self.low, self.high = np.minimum(self.start, end), np.maximum(self.start, end)
         end -= self.start
@@ -161,7 +163,7 @@ class Boundary:
 
     def end(self, segment):
         """End points of the segments ``segment`` (global indices)."""
-        return self.vertex[segment + self.chain_id[segment] + 1]
+        return rows(self.vertex, segment + self.chain_id[segment] + 1)
 
     @property
     def tree(self):
@@ -250,6 +252,12 @@ def _diagonals(low, high):
     """Two-point lines from the corners ``low`` to ``high`` of boxes: their envelopes are the boxes (all an
     ``STRtree`` query without a predicate compares) and they are about twice as cheap to build as polygons."""
     return shapely.linestrings(np.stack([low, high], axis=1))
+
+
+def rows(array, index):
+    """``array[index]`` for an integer array ``index``, gathered with :func:`numpy.take` (numpy's indexing
+    copies the rows of a two-column array several times slower)."""
+    return np.take(array, index, axis=0)
 
 
 def ranges(counts):
@@ -419,7 +427,7 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
 
     Per-sample quantities are taken once per sample and then gathered per (sample, segment) pair.
     """
-    point, direction = samples.point[sample], samples.direction[sample]
+    point, direction = rows(samples.point, sample), rows(samples.direction, sample)
     chain = samples.chain[sample]
     centre = point + radius[:, None] * direction
     # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
@@ -485,7 +493,7 @@ def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
     solution.status[row] = np.where(t * (1.0 + TIE_TOLERANCE) < best_own, CLEAR, TIED)
     solution.contact_t[row] = t
     solution.site[row] = site
-    solution.contact[row] = boundary.start[segment] + along[:, None] * boundary.unit[segment]
+    solution.contact[row] = rows(boundary.start, segment) + along[:, None] * rows(boundary.unit, segment)
     solution.position[row] = np.where(
         along >= boundary.length[segment],
         boundary.segment_end_position[segment],
