@@ -972,6 +972,20 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     return edge, site, status, split_vertex
 
 
+def _by_owner_then_u(owner, u):
+    """The permutation ``np.lexsort((u, owner))``: by owner, then by ``u``, ties in input order.
+
+    A stable sort of ``owner`` alone that leaves every owner's ``u`` in order is that permutation (the order
+    sorted by both keys that keeps ties in input order is unique), and nodes mostly come so; otherwise (or
+    with a NaN) ``np.lexsort`` sorts them.
+    """
+    order = np.argsort(owner, kind="stable")
+    sorted_owner, sorted_u = owner[order], u[order]
+    if np.any((sorted_owner[1:] == sorted_owner[:-1]) & ~(sorted_u[1:] >= sorted_u[:-1])):
+        return np.lexsort((u, owner))
+    return order
+
+
 def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verified):
     """Every interval cut at its nodes (samples ``index`` at parameters ``u`` of interval ``owner``).
 
@@ -979,22 +993,26 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
     marked ``verified`` (the stations of a parabola) or not.
     """
-    order = np.lexsort((u, owner))
+    order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
     nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
-    node_owner, rank = ranges(nodes)
-    first, last = rank == 0, rank == nodes[node_owner] - 1
-    inner = ~first & ~last
-    node_u, node_index = np.empty(len(rank)), np.empty(len(rank), dtype=int)
-    node_before, node_after = np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
+    total = int(nodes.sum())
+    last = np.cumsum(nodes) - 1
+    first = last - nodes + 1
+    # Sorted by owner, inner node k of interval i follows the 2 i end nodes and k inner nodes before it.
+    inner = 2 * owner + 1 + np.arange(len(owner))
+    node_u, node_index = np.empty(total), np.empty(total, dtype=int)
+    node_before, node_after = np.empty(total, dtype=int), np.empty(total, dtype=int)
     node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
     node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
     node_u[inner], node_index[inner] = u, index
     node_before[inner], node_after[inner] = site_before, site_after
-    a = np.flatnonzero(~last)
+    starts_piece = np.ones(total, dtype=bool)
+    starts_piece[last] = False
+    a = np.flatnonzero(starts_piece)
     return _Intervals(
-        intervals.span[node_owner[a]],
+        np.repeat(intervals.span, nodes - 1),
         node_u[a],
         node_u[a + 1],
         node_index[a],
