@@ -291,8 +291,13 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     its contact ``t`` is not touched (it lies on the tangent line up to rounding).
     """
     x = b_along * offset - b_across * height
-    y = np.abs(b_along * height + b_across * offset)
     squared = offset * offset + height * height
+    if not np.any(slide) and np.all(scale == 1.0):
+        # No convex corner's disk (the samples of an edge or a fan): both factors are x, exactly.
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = squared / (np.sqrt(x * x) + x)
+        return np.where((x > 0) & (squared > (NEAR_VERTEX * t) ** 2), t, np.inf)
+    y = np.abs(b_along * height + b_across * offset)
     near = x * scale - y * slide
     far = x * scale + y * slide
     near = np.where((near < 0) & (near >= -GRAZING_TOLERANCE * np.sqrt(squared)), 0.0, near)
