@@ -42,7 +42,9 @@ CHUNK = 16_384
 
 #: Samples whose rounds :func:`solve` runs together, block after block: the arrays of a block's (sample,
 #: segment) pairs (about ten per sample) stay in the processor's cache, which makes a solve about a fifth
-#: faster than one pass over a whole chunk. Each sample is solved on its own, so the blocks change no result.
+#: faster than one pass over a whole chunk. Each sample is solved from its own candidate pairs, so the blocks
+#: change no result (a block of a boundary of at most 16 segments may get its pairs from testing them all
+#: instead of the index: the same pairs in another order, as between the rounds of one solve already).
 SOLVE_BLOCK = 2048
 
 #: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
@@ -374,9 +376,9 @@ def group_minima(group, size, *values):
     return results
 
 
-def _first_of_groups(rows, group):
-    """The rows ``rows`` (ascending) whose ``group`` differs from the previous row's: each group's first."""
-    return rows[np.diff(group[rows], prepend=-1) != 0]
+def _first_of_groups(picked, group):
+    """The rows ``picked`` (ascending) whose ``group`` differs from the previous one's: each group's first."""
+    return picked[np.diff(group[picked], prepend=-1) != 0]
 
 
 def solve(samples, index, boundary, trial, max_t, min_t):
