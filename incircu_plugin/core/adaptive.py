@@ -196,7 +196,7 @@ def _geometry(boundary, sides):
     unit = boundary.unit
     normal = side[:, None] * left_normal(unit)
     joint = np.flatnonzero(~boundary.last_of_chain)
-    before, after = unit[joint], unit[joint + 1]
+    before, after = rows(unit, joint), rows(unit, joint + 1)
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
     signed = side[joint] * turn
     kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
@@ -213,16 +213,16 @@ def _build_spans(boundary, geometry, traced):
     joint &= traced[boundary.chain_id[geometry.joint]]
     reflex = geometry.joint[joint]
     turn = geometry.turn[joint]
-    first_normal = geometry.normal[reflex]
+    first_normal = rows(geometry.normal, reflex)
     start, end = boundary.segment_position[edge], boundary.segment_end_position[edge]
     return _Spans(
         kind=np.concatenate([np.full(len(edge), EDGE, dtype=np.int8), np.full(len(reflex), FAN, dtype=np.int8)]),
         chain=boundary.chain_id[np.concatenate([edge, reflex])],
         segment=np.concatenate([edge, reflex]).astype(boundary.chain_id.dtype),
         length=np.concatenate([end - start, np.abs(turn)]),
-        point=np.concatenate([boundary.start[edge], boundary.end(reflex)]),
-        unit=np.concatenate([boundary.unit[edge], first_normal]),
-        normal=np.concatenate([geometry.normal[edge], np.sign(turn)[:, None] * left_normal(first_normal)]),
+        point=np.concatenate([rows(boundary.start, edge), boundary.end(reflex)]),
+        unit=np.concatenate([rows(boundary.unit, edge), first_normal]),
+        normal=np.concatenate([rows(geometry.normal, edge), np.sign(turn)[:, None] * left_normal(first_normal)]),
         position=np.concatenate([start, boundary.segment_end_position[reflex]]),
     )
 
@@ -638,15 +638,16 @@ class _Tracer:
         ``span - 1`` is the edge before it; the disks touch both segments ``slide * t`` from the corner, with
         radius ``scale * t``)."""
         spans, segment = self.spans, self.spans.segment[span]
-        bisector = spans.normal[span - 1] + spans.normal[span]
+        normal = rows(spans.normal, span)
+        bisector = rows(spans.normal, span - 1) + normal
         bisector /= np.hypot(*bisector.T)[:, None]
         return Samples(
             chain=spans.chain[span],
-            point=spans.point[span],
+            point=rows(spans.point, span),
             direction=bisector,
-            scale=np.einsum("ij,ij->i", bisector, spans.normal[span]),
+            scale=np.einsum("ij,ij->i", bisector, normal),
             position=spans.position[span],
-            slide=np.abs(np.einsum("ij,ij->i", bisector, spans.unit[span])),
+            slide=np.abs(np.einsum("ij,ij->i", bisector, rows(spans.unit, span))),
             first_own=segment - 1,
             last_own=segment,
         )
@@ -961,7 +962,7 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
         own_rank = np.searchsorted(edge, own)
-        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own_rank])
+        turn = np.einsum("ij,ij->i", outward * rows(boundary.unit, other), rows(spans.normal, own_rank))
         convex = turn > STRAIGHT_TURN
         site[2 * own_rank[convex] + which] = other[convex]
         status[2 * own_rank[convex] + which] = CLEAR
@@ -1126,12 +1127,12 @@ def _trace_group(requests, report):
     order = np.argsort(feature, kind="stable")
     feature = feature[order]
     # Every point shifted back at once; then each feature's points are a slice of the sorted arrays.
-    shift = offsets[feature]
+    shift = rows(offsets, feature)
     points = AxisPoints(
-        points.centre[order] - shift,
+        rows(points.centre, order) - shift,
         points.radius[order],
-        points.foot_a[order] - shift,
-        points.foot_b[order] - shift,
+        rows(points.foot_a, order) - shift,
+        rows(points.foot_b, order) - shift,
         points.position_a[order],
         points.position_b[order],
     )
