@@ -62,6 +62,7 @@ from .contacts import (
     Samples,
     left_normal,
     ranges,
+    rows,
     solve,
     solve_in_chunks,
 )
@@ -122,12 +123,12 @@ class _Spans:
         edge each point lies (CRS units; 0 on a fan)."""
         edge = self.kind[span] == EDGE
         along = np.where(edge, u, 0.0)
-        point = self.point[span]
-        point += along[:, None] * self.unit[span]
-        direction = self.normal[span]
+        point = rows(self.point, span)
+        point += along[:, None] * rows(self.unit, span)
+        direction = rows(self.normal, span)
         on_fan = np.flatnonzero(~edge)
         angle, fan = u[on_fan, None], span[on_fan]
-        direction[on_fan] = np.cos(angle) * self.unit[fan] + np.sin(angle) * direction[on_fan]
+        direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
         return point, direction, along
 
     def position_at(self, span, u):
@@ -195,7 +196,7 @@ def _geometry(boundary, sides):
     unit = boundary.unit
     normal = side[:, None] * left_normal(unit)
     joint = np.flatnonzero(~boundary.last_of_chain)
-    before, after = unit[joint], unit[joint + 1]
+    before, after = rows(unit, joint), rows(unit, joint + 1)
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
     signed = side[joint] * turn
     kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
@@ -212,16 +213,16 @@ def _build_spans(boundary, geometry, traced):
     joint &= traced[boundary.chain_id[geometry.joint]]
     reflex = geometry.joint[joint]
     turn = geometry.turn[joint]
-    first_normal = geometry.normal[reflex]
+    first_normal = rows(geometry.normal, reflex)
     start, end = boundary.segment_position[edge], boundary.segment_end_position[edge]
     return _Spans(
         kind=np.concatenate([np.full(len(edge), EDGE, dtype=np.int8), np.full(len(reflex), FAN, dtype=np.int8)]),
         chain=boundary.chain_id[np.concatenate([edge, reflex])],
         segment=np.concatenate([edge, reflex]).astype(boundary.chain_id.dtype),
         length=np.concatenate([end - start, np.abs(turn)]),
-        point=np.concatenate([boundary.start[edge], boundary.end(reflex)]),
-        unit=np.concatenate([boundary.unit[edge], first_normal]),
-        normal=np.concatenate([geometry.normal[edge], np.sign(turn)[:, None] * left_normal(first_normal)]),
+        point=np.concatenate([rows(boundary.start, edge), boundary.end(reflex)]),
+        unit=np.concatenate([rows(boundary.unit, edge), first_normal]),
+        normal=np.concatenate([rows(geometry.normal, edge), np.sign(turn)[:, None] * left_normal(first_normal)]),
         position=np.concatenate([start, boundary.segment_end_position[reflex]]),
     )
 
@@ -288,13 +289,13 @@ class _Sites:
         on_vertex = site >= b.segment_count
         row = np.flatnonzero(on_vertex)
         vertex = site[row] - b.segment_count
-        foot[row], position[row] = b.vertex[vertex], b.vertex_position[vertex]
+        foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
         row = np.flatnonzero(~on_vertex)
         del on_vertex, vertex
         segment = np.maximum(site[row], 0)
-        start, unit = b.start[segment], b.unit[segment]
+        start, unit = rows(b.start, segment), rows(b.unit, segment)
         run_length = self.run_end_position[segment] - b.segment_position[segment]
-        along = np.clip(np.einsum("ij,ij->i", centre[row] - start, unit), 0.0, run_length)
+        along = np.clip(np.einsum("ij,ij->i", rows(centre, row) - start, unit), 0.0, run_length)
         foot[row] = start + along[:, None] * unit
         position[row] = b.segment_position[segment] + along
         return foot, position
@@ -314,13 +315,13 @@ class _Sites:
         is_segment = site < b.segment_count
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        point, unit, normal = spans.point[span], spans.unit[span], spans.normal[span]
-        across = left_normal(b.unit[segment])
-        height = np.einsum("ij,ij->i", point - b.start[segment], across)
+        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        across = left_normal(rows(b.unit, segment))
+        height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
         slope = np.einsum("ij,ij->i", unit, across)
         edge = spans.kind[span] == EDGE
         side = np.where(height + np.where(edge, u_ref * slope, 0.0) < 0, -1.0, 1.0)
-        offset = b.vertex[vertex] - point
+        offset = rows(b.vertex, vertex) - point
         with np.errstate(divide="ignore", invalid="ignore"):
             # Edge, vertex site: offset a along and h across the edge.
             a = np.einsum("ij,ij->i", offset, unit)
@@ -509,7 +510,7 @@ class _Tracer:
 
     def centres(self, index):
         """Centres of the disks of samples ``index``."""
-        return self.store["centre"][index]
+        return rows(self.store["centre"], index)
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
@@ -637,15 +638,16 @@ class _Tracer:
         ``span - 1`` is the edge before it; the disks touch both segments ``slide * t`` from the corner, with
         radius ``scale * t``)."""
         spans, segment = self.spans, self.spans.segment[span]
-        bisector = spans.normal[span - 1] + spans.normal[span]
+        normal = rows(spans.normal, span)
+        bisector = rows(spans.normal, span - 1) + normal
         bisector /= np.hypot(*bisector.T)[:, None]
         return Samples(
             chain=spans.chain[span],
-            point=spans.point[span],
+            point=rows(spans.point, span),
             direction=bisector,
-            scale=np.einsum("ij,ij->i", bisector, spans.normal[span]),
+            scale=np.einsum("ij,ij->i", bisector, normal),
             position=spans.position[span],
-            slide=np.abs(np.einsum("ij,ij->i", bisector, spans.unit[span])),
+            slide=np.abs(np.einsum("ij,ij->i", bisector, rows(spans.unit, span))),
             first_own=segment - 1,
             last_own=segment,
         )
@@ -893,17 +895,15 @@ class _Tracer:
         on_fan = spans.kind[span] == FAN
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        focus = np.where(on_fan[:, None], spans.point[span], b.vertex[vertex])
-        anchor = np.where(on_fan[:, None], b.start[segment], spans.point[span])
-        unit = np.where(on_fan[:, None], b.unit[segment], spans.unit[span])
+        point = rows(spans.point, span)
+        focus = np.where(on_fan[:, None], point, rows(b.vertex, vertex))
+        anchor = np.where(on_fan[:, None], rows(b.start, segment), point)
+        unit = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
         ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
         owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals))
-        offset = centre - spans.point[span[owner]]
-        angle = np.arctan2(
-            np.einsum("ij,ij->i", offset, spans.normal[span[owner]]),
-            np.einsum("ij,ij->i", offset, spans.unit[span[owner]]),
-        )
-        along = np.einsum("ij,ij->i", offset, spans.unit[span[owner]])
+        offset = centre - rows(spans.point, span[owner])
+        along = np.einsum("ij,ij->i", offset, rows(spans.unit, span[owner]))
+        angle = np.arctan2(np.einsum("ij,ij->i", offset, rows(spans.normal, span[owner])), along)
         u = np.clip(np.where(on_fan[owner], angle, along), intervals.u0[owner], intervals.u1[owner])
         return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
 
@@ -962,7 +962,7 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
         own_rank = np.searchsorted(edge, own)
-        turn = np.einsum("ij,ij->i", outward * boundary.unit[other], spans.normal[own_rank])
+        turn = np.einsum("ij,ij->i", outward * rows(boundary.unit, other), rows(spans.normal, own_rank))
         convex = turn > STRAIGHT_TURN
         site[2 * own_rank[convex] + which] = other[convex]
         status[2 * own_rank[convex] + which] = CLEAR
@@ -973,6 +973,20 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     return edge, site, status, split_vertex
 
 
+def _by_owner_then_u(owner, u):
+    """The permutation ``np.lexsort((u, owner))``: by owner, then by ``u``, ties in input order.
+
+    A stable sort of ``owner`` alone that leaves every owner's ``u`` in order is that permutation (the order
+    sorted by both keys that keeps ties in input order is unique), and nodes mostly come so; otherwise (or
+    with a NaN) ``np.lexsort`` sorts them.
+    """
+    order = np.argsort(owner, kind="stable")
+    sorted_owner, sorted_u = owner[order], u[order]
+    if np.any((sorted_owner[1:] == sorted_owner[:-1]) & ~(sorted_u[1:] >= sorted_u[:-1])):
+        return np.lexsort((u, owner))
+    return order
+
+
 def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verified):
     """Every interval cut at its nodes (samples ``index`` at parameters ``u`` of interval ``owner``).
 
@@ -980,22 +994,26 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
     marked ``verified`` (the stations of a parabola) or not.
     """
-    order = np.lexsort((u, owner))
+    order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
     nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
-    node_owner, rank = ranges(nodes)
-    first, last = rank == 0, rank == nodes[node_owner] - 1
-    inner = ~first & ~last
-    node_u, node_index = np.empty(len(rank)), np.empty(len(rank), dtype=int)
-    node_before, node_after = np.empty(len(rank), dtype=int), np.empty(len(rank), dtype=int)
+    total = int(nodes.sum())
+    last = np.cumsum(nodes) - 1
+    first = last - nodes + 1
+    # Sorted by owner, inner node k of interval i follows the 2 i end nodes and k inner nodes before it.
+    inner = 2 * owner + 1 + np.arange(len(owner))
+    node_u, node_index = np.empty(total), np.empty(total, dtype=int)
+    node_before, node_after = np.empty(total, dtype=int), np.empty(total, dtype=int)
     node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
     node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
     node_u[inner], node_index[inner] = u, index
     node_before[inner], node_after[inner] = site_before, site_after
-    a = np.flatnonzero(~last)
+    starts_piece = np.ones(total, dtype=bool)
+    starts_piece[last] = False
+    a = np.flatnonzero(starts_piece)
     return _Intervals(
-        intervals.span[node_owner[a]],
+        np.repeat(intervals.span, nodes - 1),
         node_u[a],
         node_u[a + 1],
         node_index[a],
@@ -1109,12 +1127,12 @@ def _trace_group(requests, report):
     order = np.argsort(feature, kind="stable")
     feature = feature[order]
     # Every point shifted back at once; then each feature's points are a slice of the sorted arrays.
-    shift = offsets[feature]
+    shift = rows(offsets, feature)
     points = AxisPoints(
-        points.centre[order] - shift,
+        rows(points.centre, order) - shift,
         points.radius[order],
-        points.foot_a[order] - shift,
-        points.foot_b[order] - shift,
+        rows(points.foot_a, order) - shift,
+        rows(points.foot_b, order) - shift,
         points.position_a[order],
         points.position_b[order],
     )
