@@ -214,6 +214,13 @@ def find_ends_together(polygons, *, rule="main_stem", guides=None, progress=None
         If ``rule`` is unknown.
     Cancelled
         If ``progress`` returned False.
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> found = find_ends_together([box(0, 0, 10, 2), box(5, 5, 35, 9)])
+    >>> [[round(c, 6) for c in ends.start.coords[0] + ends.end.coords[0]] for ends in found]
+    [[0.0, 1.0, 10.0, 1.0], [5.0, 7.0, 35.0, 7.0]]
     """
     polygons = list(polygons)
     guides = [None] * len(polygons) if guides is None else list(guides)
