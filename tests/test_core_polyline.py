@@ -7,6 +7,8 @@ from shapely.geometry import LineString
 
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.polyline import (
+    CLUSTER_POINTS,
+    IndexedPolyline,
     as_coordinates,
     cumulative_lengths,
     local_origin,
@@ -60,6 +62,24 @@ def test_nearest_on_polyline_agrees_with_geos_on_a_random_zigzag():
     np.testing.assert_allclose(
         shapely.get_coordinates(shapely.line_interpolate_point(line, arc_length)), foot, atol=1e-9
     )
+
+
+@pytest.mark.parametrize("spread", [0.01, 1.0, 5.0])
+def test_a_cluster_of_points_gets_the_same_nearest_points_as_one_by_one(spread):
+    # Clusters are answered from the segments near them (one index query); the answer is GEOS's distance.
+    rng = np.random.default_rng(11)
+    path = np.cumsum(rng.normal(size=(400, 2)), axis=0)
+    polyline = IndexedPolyline(path)
+    line = LineString(path)
+    for centre in path[rng.integers(0, len(path), 8)] + rng.normal(size=(8, 2)):
+        points = centre + rng.normal(size=(4 * CLUSTER_POINTS, 2)) * spread
+        assert polyline._nearest_segments(points) is not None
+        distance, arc_length, foot = polyline.nearest(points)
+        expected = shapely.distance(shapely.points(points), line)
+        np.testing.assert_allclose(distance, expected, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(np.hypot(*(foot - points).T), distance, rtol=1e-12)
+        along = shapely.get_coordinates(shapely.line_interpolate_point(line, arc_length))
+        np.testing.assert_allclose(along, foot, atol=1e-9)
 
 
 def test_nearest_on_a_single_point():

@@ -141,6 +141,12 @@ def points_at(xy, cumulative, s):
     return points[0] if scalar else points
 
 
+#: Fewest points that :meth:`IndexedPolyline.nearest` answers as a cluster (one index query for all), and the
+#: most (point, segment) pairs it then tests at once.
+CLUSTER_POINTS = 32
+CLUSTER_PAIRS = 1 << 16
+
+
 class IndexedPolyline:
     """A polyline with a spatial index of its segments, for repeated nearest-point queries.
 
@@ -173,12 +179,19 @@ class IndexedPolyline:
         return self.tree.query_nearest(geometries, return_distance=True, all_matches=False)[1]
 
     def nearest(self, points):
-        """Return the nearest point of the polyline to each point; see :func:`nearest_on_polyline`."""
+        """Return the nearest point of the polyline to each point; see :func:`nearest_on_polyline`.
+
+        Many points close together (a cluster, such as the slit candidates around an island) are answered
+        from the few segments near them, found with one index query (:meth:`_nearest_segments`); otherwise
+        each point queries the index.
+        """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
-        segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
         if len(self.xy) == 1:
             foot = np.repeat(self.xy, len(points), axis=0)
             return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
+        segment = self._nearest_segments(points) if len(points) >= CLUSTER_POINTS else None
+        if segment is None:
+            segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
         start = self.xy[segment]
         direction = self.xy[segment + 1] - start
         squared = np.einsum("ij,ij->i", direction, direction)
@@ -186,6 +199,28 @@ class IndexedPolyline:
         along = np.clip(along, 0.0, 1.0)
         foot = start + along[:, None] * direction
         return np.hypot(*(points - foot).T), self.cumulative[segment] + along * np.sqrt(squared), foot
+
+    def _nearest_segments(self, points):
+        """The nearest segment of each point, from the segments near the points' bounding box; None when
+        that would pair more than ``CLUSTER_PAIRS`` (point, segment) pairs.
+
+        The first point's nearest distance ``d`` bounds every other point's by its distance to the first
+        point plus ``d``; a segment farther than that bound ``reach`` from all the points' box is nobody's
+        nearest, so the query box is the points' box widened by ``reach``. Equally near segments: the first.
+        """
+        first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
+        reach = float(np.hypot(*(points - points[0]).T).max()) + first
+        low, high = points.min(axis=0) - reach, points.max(axis=0) + reach
+        near = np.sort(self.tree.query(shapely.box(*low, *high)))
+        if len(near) * len(points) > CLUSTER_PAIRS:
+            return None
+        start = self.xy[near]
+        direction = self.xy[near + 1] - start
+        squared = np.einsum("ij,ij->i", direction, direction)
+        offset = points[:, None, :] - start[None]
+        along = np.clip(np.einsum("pki,ki->pk", offset, direction) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
+        away = offset - along[..., None] * direction[None]
+        return near[np.argmin(np.einsum("pki,pki->pk", away, away), axis=1)]
 
 
 def nearest_on_polyline(xy, points):
