@@ -209,7 +209,8 @@ class IndexedPolyline:
         nearest, so the query box is the points' box widened by ``reach``. Equally near segments: the first.
         """
         first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
-        reach = float(np.hypot(*(points - points[0]).T).max()) + first
+        # With a little slack, so rounding cannot leave out a segment at exactly that distance.
+        reach = (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9)
         low, high = points.min(axis=0) - reach, points.max(axis=0) + reach
         near = np.sort(self.tree.query(shapely.box(*low, *high)))
         if len(near) * len(points) > CLUSTER_PAIRS:
