@@ -211,16 +211,19 @@ def find_ends_together(polygons, *, rule="main_stem", guides=None, progress=None
     Raises
     ------
     IncirCuError
-        If ``rule`` is unknown.
+        If ``rule`` is unknown, or ``guides`` has not one entry per polygon.
     Cancelled
         If ``progress`` returned False.
 
     Examples
     --------
-    >>> from shapely.geometry import box
-    >>> found = find_ends_together([box(0, 0, 10, 2), box(5, 5, 35, 9)])
-    >>> [[round(c, 6) for c in ends.start.coords[0] + ends.end.coords[0]] for ends in found]
-    [[0.0, 1.0, 10.0, 1.0], [5.0, 7.0, 35.0, 7.0]]
+    A self-crossing polygon gets its error; the others their ends:
+
+    >>> from shapely.geometry import Polygon, box
+    >>> bow_tie = Polygon([(0, 0), (4, 4), (4, 0), (0, 4)])
+    >>> good, bad = find_ends_together([box(5, 5, 35, 9), bow_tie])
+    >>> [round(c, 6) for c in good.end.coords[0]], type(bad).__name__
+    ([35.0, 7.0], 'InvalidGeometryError')
     """
     polygons = list(polygons)
     guides = [None] * len(polygons) if guides is None else list(guides)
