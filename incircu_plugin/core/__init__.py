@@ -27,6 +27,7 @@ from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends, find_ends_together
 from .engine import CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
 from .errors import (
+    Cancelled,
     CenterlineError,
     ChainError,
     CrossingLinesError,
@@ -38,7 +39,6 @@ from .errors import (
 from .frames import centerlines
 from .geodesy import LocalProjection
 from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
-from .steps import Cancelled
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [

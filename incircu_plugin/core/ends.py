@@ -277,7 +277,7 @@ class _Frame:
     guide : LineString or MultiLineString or None
         The guide in the local frame.
     triangles : tuple or None
-        Its skeleton's triangulation (see :func:`.skeleton.triangulation`), once made.
+        Its skeleton's triangulation (see :func:`.skeleton.triangulations`), once made.
     """
 
     polygon: object
@@ -448,7 +448,7 @@ def _edge_weights(polygon, nodes, spans, edges, rule, guide):
     polygon : Polygon
         The polygon, CRS units.
     nodes, spans, edges
-        The skeleton (see :func:`.skeleton.skeleton_graph`).
+        The skeleton (see :func:`.skeleton.joint_dual_graph`).
     rule : {"main_stem", "longest_path"}
     guide : LineString or MultiLineString or None
         CRS units.

@@ -434,11 +434,12 @@ class _Frame:
         self.extent = extent_of(ring)
         self.coincidence = COINCIDENCE_TOLERANCE * self.extent
         self.origin = local_origin(ring)
-        ring = ring - self.origin
+        #: Both chains as one ring in the local frame (the region between them), CRS units.
+        self.ring = ring - self.origin
         first = len(chains[0])
-        self.chains = [ring[:first], np.ascontiguousarray(ring[first:][::-1])]
+        self.chains = [self.ring[:first], np.ascontiguousarray(self.ring[first:][::-1])]
         self.lengths = [float(cumulative_lengths(c)[-1]) for c in self.chains]
-        area = signed_area(ring)
+        area = signed_area(self.ring)
         width = typical_width(abs(area), 0.5 * sum(self.lengths))
         #: The width the defaults (spacing, tolerance) are fractions of, CRS units.
         self.default_width = _width_or_fallback(width, self.extent)
@@ -464,7 +465,7 @@ def _line_through(points, frame, simplification):
     ``simplification`` (CRS units, None: none) is the Douglas-Peucker tolerance.
     """
     if not frame.closed:
-        region = Polygon(np.concatenate([frame.chains[0], frame.chains[1][::-1]]))
+        region = Polygon(frame.ring)
         shapely.prepare(region)
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent

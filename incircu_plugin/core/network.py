@@ -47,10 +47,9 @@ from .chains import (
     validate_polygon,
 )
 from .engine import CenterlineResult, centerline_from_chains
-from .errors import IncirCuError, SplitPointError, format_point
+from .errors import Cancelled, IncirCuError, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
-from .steps import Cancelled
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9

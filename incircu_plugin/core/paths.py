@@ -21,8 +21,12 @@ from .skeleton import connected_labels
 CHECK_EVERY = 4096
 
 
-def heaviest_path(count, edges, weights, start, acyclic, check=None):
-    """Return the node indices of the heaviest path found by a double sweep from ``start``.
+def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
+    """Return the heaviest path of each start's component, found by a double sweep from the start.
+
+    The chains of the whole graph are contracted at once; each sweep then visits only its component's
+    contracted nodes, so many small components (the skeletons of a batch of polygons) cost one contraction
+    and a few Python operations each.
 
     Parameters
     ----------
@@ -32,41 +36,18 @@ def heaviest_path(count, edges, weights, start, acyclic, check=None):
         Node indices of each edge.
     weights : ndarray of shape (e,)
         Non-negative weight of each edge.
-    start : int
-        Node the first sweep starts from; the path lies in its connected component.
-    acyclic : bool
-        The graph is a forest: each sweep is a plain traversal, and the double sweep is exact.
+    starts : sequence of int
+        One node per path, each in a different component: the node its first sweep starts from.
+    acyclic : sequence of bool
+        Per start, whether its component is a tree (each sweep a plain traversal, the double sweep exact).
     check : callable, optional
         Called with no argument now and then; may raise to stop.
 
     Returns
     -------
-    ndarray of int
-        Node indices from one end of the path to the other (one node when ``start`` has no edge).
-    """
-    return heaviest_paths(count, edges, weights, [start], [acyclic], check)[0]
-
-
-def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
-    """Return the heaviest path of each start's component: :func:`heaviest_path` for many components.
-
-    The chains of the whole graph are contracted at once; each sweep then visits only its component's
-    contracted nodes, so many small components (the skeletons of a batch of polygons) cost one contraction
-    and a few Python operations each.
-
-    Parameters
-    ----------
-    count, edges, weights, check
-        As for :func:`heaviest_path`.
-    starts : sequence of int
-        One node per path, each in a different component.
-    acyclic : sequence of bool
-        Per start, whether its component is a tree.
-
-    Returns
-    -------
     list of ndarray of int
-        Per start, the node indices of its path.
+        Per start, the node indices of its path from one end to the other (one node when the start has no
+        edge).
     """
     chains = _Chains(count, edges, weights)
     graph = chains.contracted()

@@ -194,11 +194,10 @@ class IndexedPolyline:
             segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
         start = self.xy[segment]
         direction = self.xy[segment + 1] - start
-        squared = np.einsum("ij,ij->i", direction, direction)
-        along = np.einsum("ij,ij->i", points - start, direction) / np.where(squared > 0.0, squared, 1.0)
-        along = np.clip(along, 0.0, 1.0)
+        along = _projected(points - start, direction)
         foot = start + along[:, None] * direction
-        return np.hypot(*(points - foot).T), self.cumulative[segment] + along * np.sqrt(squared), foot
+        length = np.sqrt(np.einsum("ij,ij->i", direction, direction))
+        return np.hypot(*(points - foot).T), self.cumulative[segment] + along * length, foot
 
     def _nearest_segments(self, points):
         """The nearest segment of each point, from the segments near the points' bounding box; None when
@@ -217,11 +216,18 @@ class IndexedPolyline:
             return None
         start = self.xy[near]
         direction = self.xy[near + 1] - start
-        squared = np.einsum("ij,ij->i", direction, direction)
         offset = points[:, None, :] - start[None]
-        along = np.clip(np.einsum("pki,ki->pk", offset, direction) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
-        away = offset - along[..., None] * direction[None]
-        return near[np.argmin(np.einsum("pki,pki->pk", away, away), axis=1)]
+        away = offset - _projected(offset, direction)[..., None] * direction
+        return near[np.argmin(away[..., 0] ** 2 + away[..., 1] ** 2, axis=1)]
+
+
+def _projected(offset, direction):
+    """Where the foot of each ``offset`` (a point minus its segment's start) lies on its segment ``direction``,
+    as a fraction of the segment (0 to 1; 0 on a segment of length zero); arrays of shape (..., 2)."""
+    dx, dy = direction[..., 0], direction[..., 1]
+    squared = dx * dx + dy * dy
+    along = (offset[..., 0] * dx + offset[..., 1] * dy) / np.where(squared > 0.0, squared, 1.0)
+    return np.clip(along, 0.0, 1.0)
 
 
 def nearest_on_polyline(xy, points):

@@ -57,22 +57,23 @@ OWNER_SPACING = 4.0
 JITTER = (1e-9, 1e-7, 1e-5)
 
 
-def skeleton_graph(polygon):
-    """Return a skeleton of the polygon: the dual graph of a conforming Delaunay triangulation.
+def joint_dual_graph(triangulations):
+    """Return the skeletons of several polygons at once: the dual graph of all their triangles.
 
     Each inside triangle is a node placed at its circumcentre, or at its centroid when the circumcentre
     falls beyond its boundary side (outside the polygon); two nodes are linked when their triangles share
-    a side.
+    a side. The polygons' triangles are only concatenated (each in its own frame), so each polygon's
+    skeleton is exactly the one it gets alone; one pass of numpy calls serves them all.
 
     Parameters
     ----------
-    polygon : Polygon
-        Valid polygon, CRS units, scaled to a size about 1 near the origin (for accuracy).
+    triangulations : list of tuple
+        Per polygon, a triangulation of :func:`triangulations`.
 
     Returns
     -------
     nodes : ndarray of shape (k, 2)
-        Skeleton vertices, CRS units.
+        Skeleton vertices, the polygons' nodes one polygon after the other; CRS units of each polygon's frame.
     radii : ndarray of shape (k,)
         Clearance of each node: its triangle's circumradius (the radius of an empty disk touching the
         samples, within ``step**2 / (8 * r)`` of the distance to the boundary), or the exact distance to the
@@ -81,36 +82,6 @@ def skeleton_graph(polygon):
         Width of the channel across each node's triangle: its height over its longest boundary side (the
         distance between the banks, also where the sampling is coarser than the channel), at most its
         circumdiameter; CRS units.
-    edges : ndarray of shape (e, 2) of int
-        Node indices of each skeleton edge.
-    step : float
-        Densification step, CRS units.
-
-    Raises
-    ------
-    InvalidGeometryError
-        If no triangulation of the samples can be built.
-    """
-    triangles = triangulation(polygon)
-    return joint_dual_graph([triangles])[:4] + (triangles[3],)
-
-
-def joint_dual_graph(triangulations):
-    """Return the skeletons of several polygons at once: the dual graph of all their triangles.
-
-    The polygons' triangles are only concatenated (each in its own frame), so each polygon's skeleton is
-    exactly the one it gets alone; one pass of numpy calls serves them all.
-
-    Parameters
-    ----------
-    triangulations : list of tuple
-        Per polygon, what :func:`triangulation` returns.
-
-    Returns
-    -------
-    nodes, radii, spans : ndarray
-        As :func:`skeleton_graph` returns them, the polygons' nodes one polygon after the other; CRS units
-        of each polygon's frame.
     edges : ndarray of shape (e, 2) of int
         Node indices of each skeleton edge (into all the nodes).
     owner : ndarray of shape (k,) of int
@@ -130,21 +101,9 @@ def joint_dual_graph(triangulations):
     return nodes, radii, spans, edges, triangle_owner[inside]
 
 
-def triangulation(polygon):
-    """Return the conforming Delaunay triangulation of a polygon's boundary samples, and their step.
-
-    The polygon and the errors are those of :func:`skeleton_graph`. Returns ``corners`` (shape (t, 3, 2),
-    CRS units), ``corner_ids`` (shape (t, 3): the sample index of each corner), ``following`` (shape (n,):
-    the index of the next sample on the same ring) and the densification ``step`` (CRS units).
-    """
-    (outcome,) = triangulations([polygon])
-    if isinstance(outcome, Exception):
-        raise outcome
-    return outcome
-
-
 def triangulations(polygons):
-    """Return :func:`triangulation` of many polygons, computed together (one GEOS call per round for all).
+    """Return the conforming Delaunay triangulation of each polygon's boundary samples, computed together
+    (one GEOS call per refinement round for all).
 
     Each polygon's samples, jitter, rotation and refinement are its own (numbered from its first sample),
     so each gets exactly the triangulation it gets alone.
@@ -152,12 +111,15 @@ def triangulations(polygons):
     Parameters
     ----------
     polygons : sequence of Polygon
-        Valid polygons, each scaled to a size about 1 near the origin.
+        Valid polygons, each scaled to a size about 1 near the origin (for accuracy).
 
     Returns
     -------
     list
-        Per polygon, what :func:`triangulation` returns, or the :class:`InvalidGeometryError` it raises.
+        Per polygon, its triangulation: ``corners`` (shape (t, 3, 2), CRS units), ``corner_ids`` (shape
+        (t, 3): the sample index of each corner), ``following`` (shape (n,): the index of the next sample on
+        the same ring) and the densification ``step`` (CRS units); or the :class:`InvalidGeometryError`
+        raised when no triangulation of its samples can be built.
     """
     if len(polygons) == 0:
         return []
