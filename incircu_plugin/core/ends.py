@@ -66,10 +66,11 @@ import shapely
 from shapely.geometry import LineString, Point
 
 from .chains import extent_of, validate_polygon
+from .contacts import ranges
 from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
 from .polyline import typical_width
-from .skeleton import joint_dual_graph, triangulations
+from .skeleton import joint_skeletons
 
 #: Rules for the automatic ends (see the module docstring).
 END_RULES = ("main_stem", "longest_path")
@@ -276,8 +277,6 @@ class _Frame:
         The polygon in the local frame, counter-clockwise.
     guide : LineString or MultiLineString or None
         The guide in the local frame.
-    triangles : tuple or None
-        Its skeleton's triangulation (see :func:`.skeleton.triangulations`), once made.
     """
 
     polygon: object
@@ -285,7 +284,6 @@ class _Frame:
     scale: float
     local: object
     guide: object
-    triangles: tuple
 
 
 def _framed(polygon, guide):
@@ -305,7 +303,7 @@ def _framed(polygon, guide):
 
     local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
     local_guide = None if guide is None else to_local(guide)
-    return _Frame(polygon, origin, scale, local, local_guide, None)
+    return _Frame(polygon, origin, scale, local, local_guide)
 
 
 def _as_outcome(error):
@@ -369,102 +367,77 @@ def _joint_trunks(frames, rule, outcomes, check):
     """Return per frame its trunk ``(points, radii, junction, step, guided)``, None for a failed one.
 
     The skeletons of all frames are built, weighed and contracted together (see :func:`.paths.heaviest_paths`).
-    A polygon whose skeleton has no edge gets :class:`InvalidGeometryError` in ``outcomes``.
+    A polygon that cannot be triangulated, or whose skeleton has no edge, gets :class:`InvalidGeometryError`
+    in ``outcomes``.
     """
-    framed = [index for index, frame in enumerate(frames) if frame is not None]
-    live = []
-    for index, triangles in zip(framed, triangulations([frames[index].local for index in framed])):
-        if isinstance(triangles, Exception):
-            outcomes[index] = triangles
-        else:
-            frames[index].triangles = triangles
-            live.append(index)
-    if not live:
-        return [None] * len(frames)
-    nodes, radii, spans, edges, owner = joint_dual_graph([frames[index].triangles for index in live])
-    node_start = np.searchsorted(owner, np.arange(len(live) + 1))
-    edge_owner = owner[edges[:, 0]]
-    edge_order = np.argsort(edge_owner, kind="stable")
-    edge_start = np.searchsorted(edge_owner[edge_order], np.arange(len(live) + 1))
-    edge_counts = np.diff(edge_start)
-    weights = _rule_weights(nodes, spans, edges, rule)
     trunks = [None] * len(frames)
+    framed = [index for index, frame in enumerate(frames) if frame is not None]
+    if not framed:
+        return trunks
+    skeleton = joint_skeletons([frames[index].local for index in framed])
+    nodes, spans, edges = skeleton.nodes, skeleton.spans, skeleton.edges
+    node_start = np.searchsorted(skeleton.owner, np.arange(len(framed) + 1))
+    edge_owner = skeleton.owner[edges[:, 0]]
+    edge_order = np.argsort(edge_owner, kind="stable")
+    edge_start = np.searchsorted(edge_owner[edge_order], np.arange(len(framed) + 1))
+    weights = _rule_weights(nodes, spans, edges, rule)
     starts, trees, chosen = [], [], []
-    for position, index in enumerate(live):
-        if edge_counts[position] == 0:
-            outcomes[index] = InvalidGeometryError(
+    for position, index in enumerate(framed):
+        if skeleton.errors[position] is not None or edge_start[position + 1] == edge_start[position]:
+            outcomes[index] = skeleton.errors[position] or InvalidGeometryError(
                 "The polygon is too thin or too small to find its ends automatically."
             )
             continue
         low, high = node_start[position], node_start[position + 1]
+        own_edges = edge_order[edge_start[position] : edge_start[position + 1]]
+        own_nodes = slice(low, high)
         guided = frames[index].guide is not None and _guide_weights(
-            frames[index],
-            nodes[low:high],
-            spans[low:high],
-            edges,
-            weights,
-            low,
-            edge_order[edge_start[position] : edge_start[position + 1]],
+            frames[index], skeleton, weights, own_nodes, own_edges
         )
-        starts.append(low + int(np.argmax(radii[low:high])))
+        starts.append(low + int(np.argmax(skeleton.radii[low:high])))
         trees.append(len(frames[index].local.interiors) == 0)
-        chosen.append((index, guided))
+        chosen.append((index, position, guided))
     paths = heaviest_paths(len(nodes), edges, weights, starts, trees, check=lambda: check(0.6))
     junction = np.bincount(edges.ravel(), minlength=len(nodes)) >= 3
-    for (index, guided), path in zip(chosen, paths):
-        trunks[index] = (nodes[path], radii[path], junction[path], frames[index].triangles[3], guided)
+    for (index, position, guided), path in zip(chosen, paths):
+        step = float(skeleton.steps[position])
+        trunks[index] = (nodes[path], skeleton.radii[path], junction[path], step, guided)
     return trunks
 
 
 def _rule_weights(nodes, spans, edges, rule):
     """Return the weight of each skeleton edge under ``rule``: its swept area or its length, CRS units."""
     lengths = np.hypot(*(nodes[edges[:, 0]] - nodes[edges[:, 1]]).T)
-    return _swept_area(lengths, spans, edges) if rule == "main_stem" else lengths
+    return lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]]) if rule == "main_stem" else lengths
 
 
-def _swept_area(lengths, spans, edges):
-    """Return each edge's length times the mean width at its two nodes, CRS units squared."""
-    return lengths * 0.5 * (spans[edges[:, 0]] + spans[edges[:, 1]])
+def _guide_weights(frame, skeleton, weights, own_nodes, own_edges):
+    """Set one polygon's edge weights from its guide when the guide counts; return whether it did.
 
-
-def _guide_weights(frame, nodes, spans, edges, weights, node_offset, own_edges):
-    """Set one polygon's edge weights (indices ``own_edges``) from its guide when the guide counts; return
-    whether it did.
-
-    ``nodes`` and ``spans`` are that polygon's, whose first node is ``node_offset`` in ``edges``.
-    """
-    local_edges = edges[own_edges] - node_offset
-    own, guided = _edge_weights(frame.local, nodes, spans, local_edges, "main_stem", frame.guide)
-    if guided:
-        weights[own_edges] = own
-    return guided
-
-
-def _edge_weights(polygon, nodes, spans, edges, rule, guide):
-    """Return the weight of each skeleton edge under ``rule`` and ``guide``, and whether the guide counted.
+    Each edge then weighs half the guide earnings of its two nodes (see :func:`_guide_earnings`) plus
+    ``GUIDE_TIE`` times its swept area.
 
     Parameters
     ----------
-    polygon : Polygon
-        The polygon, CRS units.
-    nodes, spans, edges
-        The skeleton (see :func:`.skeleton.joint_dual_graph`).
-    rule : {"main_stem", "longest_path"}
-    guide : LineString or MultiLineString or None
-        CRS units.
-
-    Returns
-    -------
+    frame : _Frame
+        The polygon and its guide, in its local frame.
+    skeleton : Skeletons
+        The batch's skeletons.
     weights : ndarray of shape (e,)
-    guided : bool
+        The batch's edge weights, changed in place.
+    own_nodes : slice
+        The polygon's nodes in ``skeleton``.
+    own_edges : ndarray of int
+        The polygon's edges in ``skeleton``.
     """
-    weights = _rule_weights(nodes, spans, edges, rule)
-    area = _rule_weights(nodes, spans, edges, "main_stem")
-    earnings = None if guide is None else _guide_earnings(polygon, nodes, spans, guide)
+    nodes, spans = skeleton.nodes[own_nodes], skeleton.spans[own_nodes]
+    earnings = _guide_earnings(frame.local, nodes, spans, frame.guide)
     if earnings is None or not np.any(earnings > 0.0):
-        return weights, False
-    earned = 0.5 * (earnings[edges[:, 0]] + earnings[edges[:, 1]])
-    return earned + GUIDE_TIE * area, True
+        return False
+    edges = skeleton.edges[own_edges] - own_nodes.start
+    area = _rule_weights(nodes, spans, edges, "main_stem")
+    weights[own_edges] = 0.5 * (earnings[edges[:, 0]] + earnings[edges[:, 1]]) + GUIDE_TIE * area
+    return True
 
 
 def _guide_earnings(polygon, nodes, spans, guide):
@@ -486,8 +459,7 @@ def _guide_earnings(polygon, nodes, spans, guide):
         return None
     spacing = width / 8.0
     counts = np.ceil(shapely.length(parts) / spacing).astype(np.int64)
-    owner = np.repeat(np.arange(len(parts)), counts)
-    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    owner, rank = ranges(counts)
     piece = shapely.length(parts)[owner] / counts[owner]
     samples = shapely.line_interpolate_point(parts[owner], (rank + 0.5) * piece)
     shapely.prepare(polygon)

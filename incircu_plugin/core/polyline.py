@@ -346,15 +346,15 @@ def typical_width(area, length):
 
     Parameters
     ----------
-    area : float
+    area : float or ndarray
         Area of the region, square CRS units.
-    length : float
+    length : float or ndarray
         Its length along the channel, CRS units.
 
     Returns
     -------
-    float
-        CRS units; 0 when ``length`` is not positive.
+    float or ndarray
+        CRS units (an array for arrays, one width per region); 0 where ``length`` is not positive.
 
     Examples
     --------
@@ -364,5 +364,10 @@ def typical_width(area, length):
     >>> rectangle = box(0, 0, 90, 10)
     >>> typical_width(rectangle.area, rectangle.length / 2.0)
     9.0
+    >>> typical_width(np.array([1000.0, 5.0]), np.array([100.0, 0.0]))
+    array([10.,  0.])
     """
+    if np.ndim(area) or np.ndim(length):
+        area, length = np.broadcast_arrays(np.asarray(area, dtype=float), np.asarray(length, dtype=float))
+        return np.divide(area, length, out=np.zeros(area.shape), where=length > 0)
     return float(area) / float(length) if length > 0 else 0.0

@@ -18,9 +18,12 @@ at most ``MAX_SAMPLES`` samples. Limit: a thin channel whose long reaches run ac
 tight meander) still makes the sweep slower, about 0.3 s for 20,000 samples.
 """
 
+from dataclasses import dataclass
+
 import numpy as np
 import shapely
 
+from .contacts import ranges
 from .errors import InvalidGeometryError
 from .polyline import typical_width
 
@@ -57,23 +60,14 @@ OWNER_SPACING = 4.0
 JITTER = (1e-9, 1e-7, 1e-5)
 
 
-def joint_dual_graph(triangulations):
-    """Return the skeletons of several polygons at once: the dual graph of all their triangles.
+@dataclass
+class Skeletons:
+    """The skeletons of a batch of polygons, as flat arrays (see :func:`joint_skeletons`).
 
-    Each inside triangle is a node placed at its circumcentre, or at its centroid when the circumcentre
-    falls beyond its boundary side (outside the polygon); two nodes are linked when their triangles share
-    a side. The polygons' triangles are only concatenated (each in its own frame), so each polygon's
-    skeleton is exactly the one it gets alone; one pass of numpy calls serves them all.
-
-    Parameters
+    Attributes
     ----------
-    triangulations : list of tuple
-        Per polygon, a triangulation of :func:`triangulations`.
-
-    Returns
-    -------
     nodes : ndarray of shape (k, 2)
-        Skeleton vertices, the polygons' nodes one polygon after the other; CRS units of each polygon's frame.
+        Skeleton vertices, polygon after polygon, each in its polygon's frame, CRS units.
     radii : ndarray of shape (k,)
         Clearance of each node: its triangle's circumradius (the radius of an empty disk touching the
         samples, within ``step**2 / (8 * r)`` of the distance to the boundary), or the exact distance to the
@@ -85,28 +79,31 @@ def joint_dual_graph(triangulations):
     edges : ndarray of shape (e, 2) of int
         Node indices of each skeleton edge (into all the nodes).
     owner : ndarray of shape (k,) of int
-        Index in ``triangulations`` of each node's polygon (non-decreasing).
+        Polygon of each node (non-decreasing).
+    steps : ndarray of shape (p,)
+        Densification step of each polygon's boundary, CRS units.
+    errors : list
+        Per polygon, None, or the :class:`InvalidGeometryError` raised when no triangulation of its samples
+        can be built (it has no node).
     """
-    sample_counts = [len(triangles[2]) for triangles in triangulations]
-    offsets = np.concatenate([[0], np.cumsum(sample_counts)[:-1]]).astype(np.int64)
-    corners = np.concatenate([np.empty((0, 3, 2))] + [triangles[0] for triangles in triangulations])
-    corner_ids = np.concatenate(
-        [np.empty((0, 3), np.int64)] + [triangles[1] + offset for triangles, offset in zip(triangulations, offsets)]
-    )
-    following = np.concatenate(
-        [np.empty(0, np.int64)] + [triangles[2] + offset for triangles, offset in zip(triangulations, offsets)]
-    )
-    triangle_owner = np.repeat(np.arange(len(triangulations)), [len(triangles[0]) for triangles in triangulations])
-    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following)
-    return nodes, radii, spans, edges, triangle_owner[inside]
+
+    nodes: np.ndarray
+    radii: np.ndarray
+    spans: np.ndarray
+    edges: np.ndarray
+    owner: np.ndarray
+    steps: np.ndarray
+    errors: list
 
 
-def triangulations(polygons):
-    """Return the conforming Delaunay triangulation of each polygon's boundary samples, computed together
-    (one GEOS call per refinement round for all).
+def joint_skeletons(polygons):
+    """Return the skeletons of several polygons at once: the dual graphs of their triangulations.
 
-    Each polygon's samples, jitter, rotation and refinement are its own (numbered from its first sample),
-    so each gets exactly the triangulation it gets alone.
+    Each polygon's boundary samples are triangulated (conforming Delaunay, one GEOS call per refinement
+    round for all polygons). Each inside triangle is a node placed at its circumcentre, or at its centroid
+    when the circumcentre falls beyond its boundary side (outside the polygon); two nodes are linked when
+    their triangles share a side. Each polygon's samples, jitter, rotation and refinement are its own, so
+    each gets exactly the skeleton it gets alone; one pass of numpy calls serves them all.
 
     Parameters
     ----------
@@ -115,51 +112,98 @@ def triangulations(polygons):
 
     Returns
     -------
-    list
-        Per polygon, its triangulation: ``corners`` (shape (t, 3, 2), CRS units), ``corner_ids`` (shape
-        (t, 3): the sample index of each corner), ``following`` (shape (n,): the index of the next sample on
-        the same ring) and the densification ``step`` (CRS units); or the :class:`InvalidGeometryError`
-        raised when no triangulation of its samples can be built.
+    Skeletons
     """
     if len(polygons) == 0:
-        return []
+        nothing = np.empty(0)
+        return Skeletons(
+            np.empty((0, 2)), nothing, nothing, np.empty((0, 2), np.int64), np.empty(0, np.int64), nothing, []
+        )
+    corners, corner_ids, following, triangle_owner, steps, made = _triangulations(polygons)
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following)
+    errors = [
+        None
+        if triangulated
+        else InvalidGeometryError("The polygon's outline could not be triangulated to find its ends automatically.")
+        for triangulated in made.tolist()
+    ]
+    return Skeletons(nodes, radii, spans, edges, triangle_owner[inside], steps, errors)
+
+
+def _triangulations(polygons):
+    """Return the conforming Delaunay triangulations of the polygons' boundary samples, as flat arrays.
+
+    Returns
+    -------
+    corners : ndarray of shape (t, 3, 2)
+        Corners of each triangle, polygon after polygon, CRS units.
+    corner_ids : ndarray of shape (t, 3) of int
+        Sample index of each corner (samples numbered polygon after polygon, over the triangulated ones).
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring.
+    triangle_owner : ndarray of shape (t,) of int
+        Polygon of each triangle (non-decreasing).
+    steps : ndarray of shape (p,)
+        Densification step of each polygon, CRS units.
+    made : ndarray of shape (p,) of bool
+        Whether each polygon was triangulated.
+    """
+    count = len(polygons)
     samples, ring, owner, steps = _boundary_sample_arrays(polygons)
-    outcomes = [None] * len(polygons)
+    made = np.zeros(count, dtype=bool)
+    stored = []
     for refinement in range(MAX_REFINEMENTS):
         following = _following(ring)
-        local = np.arange(len(owner)) - np.searchsorted(owner, owner)
-        corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, len(polygons))
+        local = ranges(np.bincount(owner, minlength=count))[1]
+        corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
         side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
         present = np.zeros(len(samples), dtype=bool)
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
-        refine = np.bincount(owner[~present], minlength=len(polygons)) > 0
+        refine = np.bincount(owner[~present], minlength=count) > 0
         refine &= ~failed & (refinement < MAX_REFINEMENTS - 1)
-        done = np.flatnonzero((np.bincount(owner, minlength=len(polygons)) > 0) & ~refine)
-        _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps)
+        done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
+        made |= done
+        kept_samples, kept_triangles = done[owner], done[triangle_owner]
+        renumbered = np.cumsum(kept_samples) - 1
+        stored.append(
+            (
+                corners[kept_triangles],
+                renumbered[corner_ids[kept_triangles]],
+                renumbered[following[kept_samples]],
+                owner[kept_samples],
+                triangle_owner[kept_triangles],
+            )
+        )
         if not np.any(refine):
             break
         split = ~present & refine[owner]
         keep = refine[owner]
         samples, ring, owner = _split_samples(samples, ring, owner, following, split, keep)
-    return [
-        InvalidGeometryError("The polygon's outline could not be triangulated to find its ends automatically.")
-        if outcome is None
-        else outcome
-        for outcome in outcomes
-    ]
+    return (*_polygon_order(stored), steps, made)
 
 
-def _store(outcomes, done, failed, corners, corner_ids, triangle_owner, following, owner, steps):
-    """Store the triangulation of each polygon in ``done`` (numbered from its own first sample) in ``outcomes``."""
-    sample_first = np.searchsorted(owner, np.arange(len(outcomes) + 1))
-    triangle_first = np.searchsorted(triangle_owner, np.arange(len(outcomes) + 1))
-    for index in done.tolist():
-        if failed[index]:
-            continue
-        low, high = sample_first[index], sample_first[index + 1]
-        rows = slice(triangle_first[index], triangle_first[index + 1])
-        outcomes[index] = (corners[rows], corner_ids[rows] - low, following[low:high] - low, float(steps[index]))
+def _polygon_order(stored):
+    """Return the triangulations stored round by round (each round's samples numbered from 0) as one set,
+    polygon after polygon: ``corners, corner_ids, following, triangle_owner``.
+
+    Within a polygon the order of its samples and triangles is kept (a polygon is triangulated in one round).
+    """
+    sample_counts = [len(part[2]) for part in stored]
+    first_sample = np.cumsum([0] + sample_counts[:-1])
+    corner_ids = np.concatenate([part[1] + first for part, first in zip(stored, first_sample)])
+    following = np.concatenate([part[2] + first for part, first in zip(stored, first_sample)])
+    corners, sample_owner, triangle_owner = (np.concatenate([part[k] for part in stored]) for k in (0, 3, 4))
+    sample_order = np.argsort(sample_owner, kind="stable")
+    position = np.empty_like(sample_order)
+    position[sample_order] = np.arange(len(sample_order))
+    triangle_order = np.argsort(triangle_owner, kind="stable")
+    return (
+        corners[triangle_order],
+        position[corner_ids[triangle_order]],
+        position[following[sample_order]],
+        triangle_owner[triangle_order],
+    )
 
 
 def _boundary_sample_arrays(polygons):
@@ -176,9 +220,7 @@ def _boundary_sample_arrays(polygons):
         Densification step of each polygon, CRS units.
     """
     polygons = np.asarray(polygons, dtype=object)
-    widths = np.array(
-        [typical_width(area, length / 2.0) for area, length in zip(shapely.area(polygons), shapely.length(polygons))]
-    )
+    widths = typical_width(shapely.area(polygons), shapely.length(polygons) / 2.0)
     tolerance = SIMPLIFY_FRACTION * widths
     simplified = shapely.simplify(polygons, tolerance, preserve_topology=False)
     bad = (shapely.get_type_id(simplified) != 3) | ~shapely.is_valid(simplified)
