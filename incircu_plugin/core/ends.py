@@ -593,13 +593,12 @@ class _Tips:
         sizes = np.array([len(trunk[0]) for trunk in trunks], dtype=np.int64)
         firsts = _group_starts(sizes)
         points = np.concatenate([trunk[0] for trunk in trunks])
-        fore = np.arange(len(points)) - np.repeat(firsts, sizes)
+        fore = ranges(sizes)[1]
         steps = np.hypot(*(points - points[np.maximum(np.arange(len(points)) - 1, 0)]).T)
         along = _segment_sums(np.where(fore > 0, steps, 0.0), firsts, sizes)
         self.lengths = np.repeat(sizes, 2)
         self.starts = _group_starts(self.lengths)
-        self.group = np.repeat(np.arange(len(self.lengths)), self.lengths)
-        rank = np.arange(len(self.group)) - self.starts[self.group]
+        self.group, rank = ranges(self.lengths)
         polygon = self.group // 2
         backward = self.group % 2 == 1
         source = firsts[polygon] + np.where(backward, sizes[polygon] - 1 - rank, rank)
@@ -657,8 +656,7 @@ class _Rings:
         self.lengths = np.bincount(ring[keep], minlength=len(exteriors))
         self.starts = _group_starts(self.lengths)
         vertices = coordinates[keep]
-        owner = ring[keep]
-        rank = np.arange(len(owner)) - self.starts[owner]
+        owner, rank = ranges(self.lengths)
         size = np.maximum(self.lengths[owner], 1)
         incoming = vertices - vertices[self.starts[owner] + (rank - 1) % size]
         outgoing = vertices[self.starts[owner] + (rank + 1) % size] - vertices
@@ -763,8 +761,8 @@ def _cap_middles(rings, owner, left, right, exit_points):
     start = np.where(through, at_right, at_left)
     length = np.where(through, forward, perimeter - forward)
     counts = rings.lengths[owner]
-    end = np.repeat(np.arange(len(owner)), counts)
-    vertex = rings.starts[owner][end] + np.arange(len(end)) - _group_starts(counts)[end]
+    end, rank = ranges(counts)
+    vertex = rings.starts[owner][end] + rank
     offset = (rings.positions[vertex] - start[end]) % perimeter[end]
     corner = (offset > 0.0) & (offset < length[end]) & (rings.turn[vertex] >= CORNER_TURN)
     corner_count = np.bincount(end[corner], minlength=len(owner))
