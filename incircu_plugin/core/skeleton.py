@@ -50,10 +50,6 @@ MAX_SAMPLES = 20_000
 #: :func:`_insertion_rotation`; off the axis so that straight banks are not exactly sorted).
 SWEEP_ANGLE = 0.1
 
-#: Offset along x between the lookup keys of two consecutive polygons of a batch (their samples lie within
-#: about 1 of the origin; see :func:`_corner_ids`).
-OWNER_SPACING = 4.0
-
 #: Size of the deterministic displacement of each sample before the triangulation, as a fraction of the
 #: step (far below ``SLIVER``, so straight banks stay slivers); a failing triangulation is retried with
 #: the larger values.
@@ -291,7 +287,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     corners : ndarray of shape (t, 3, 2)
         Corners of each triangle (the displaced samples, in the samples' frame), polygon after polygon.
     corner_ids : ndarray of shape (t, 3) of int
-        Index in ``samples`` of each corner (one of them for a repeated point).
+        Index in ``samples`` of each corner (read from its z; one of them for a repeated point).
     triangle_owner : ndarray of shape (t,) of int
     failed : ndarray of shape (count,) of bool
         Polygons whose samples GEOS could not triangulate with any displacement.
@@ -300,7 +296,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     cosine, sine = _insertion_rotations(samples, owner, count)
     waiting = np.bincount(owner, minlength=count) > 0
     triangles = np.full(count, None, dtype=object)
-    moved_all, turned_all = samples.copy(), samples.copy()
+    moved_all = samples.copy()
     for jitter in JITTER:
         mask = waiting[owner]
         if not np.any(mask):
@@ -308,18 +304,17 @@ def _delaunay_all(samples, owner, local, steps, count):
         moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
         turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
         polygons, sizes = _runs(owner[mask])
-        found = _each_delaunay(_multipoints(turned, sizes))
+        found = _each_delaunay(_multipoints(turned, np.flatnonzero(mask), sizes))
         success = np.zeros(count, dtype=bool)
         success[polygons] = [item is not None for item in found]
         triangles[polygons[success[polygons]]] = [item for item in found if item is not None]
         took = success[owner[mask]]
         moved_all[np.flatnonzero(mask)[took]] = moved[took]
-        turned_all[np.flatnonzero(mask)[took]] = turned[took]
         waiting &= ~success
     made = np.flatnonzero(~shapely.is_missing(triangles))
-    coordinates, which = shapely.get_coordinates(triangles[made], return_index=True)
+    coordinates, which = shapely.get_coordinates(triangles[made], include_z=True, return_index=True)
     triangle_owner = made[which[::4]]
-    corner_ids = _corner_ids(turned_all, owner, coordinates.reshape(-1, 4, 2)[:, :3], triangle_owner)
+    corner_ids = coordinates[:, 2].reshape(-1, 4)[:, :3].astype(np.int64)
     return moved_all[corner_ids], corner_ids, triangle_owner, waiting
 
 
@@ -329,14 +324,19 @@ def _runs(values):
     return values[starts], np.diff(np.append(starts, len(values)))
 
 
-def _multipoints(points, sizes):
-    """Return one MultiPoint per run of ``sizes`` consecutive points, built through WKB (twice as fast as
-    from coordinates)."""
-    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xy", "<f8", (2,))])
+def _multipoints(points, ids, sizes):
+    """Return one MultiPoint per run of ``sizes`` consecutive points, each point carrying its id as its z.
+
+    GEOS's Delaunay triangulation keeps each input coordinate, z included, so a triangle's corners tell
+    which points they are without a lookup. Built through WKB (ISO types with z), twice as fast as from
+    coordinates.
+    """
+    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xyz", "<f8", (3,))])
     body = np.zeros(len(points), dtype=record)
-    body["order"], body["kind"], body["xy"] = 1, 1, points
+    body["order"], body["kind"] = 1, 1001
+    body["xyz"][:, :2], body["xyz"][:, 2] = points, ids
     header = np.zeros(len(sizes), dtype=[("order", "u1"), ("kind", "<u4"), ("count", "<u4")])
-    header["order"], header["kind"], header["count"] = 1, 4, sizes
+    header["order"], header["kind"], header["count"] = 1, 1004, sizes
     data, heads = body.tobytes(), header.tobytes()
     bounds = (np.append(0, np.cumsum(sizes)) * record.itemsize).tolist()
     size = header.itemsize
@@ -356,25 +356,6 @@ def _each_delaunay(multipoints):
             except shapely.errors.GEOSException:
                 found.append(None)
         return found
-
-
-def _corner_ids(points, owner, corners, corner_owner):
-    """Return the index in ``points`` of each corner: the point of the same polygon with the same coordinates.
-
-    Delaunay keeps the input coordinates exactly: each point and corner gets the complex key
-    ``x + OWNER_SPACING * polygon + i y`` (the same operations on the same numbers, so equal points get equal
-    keys, and polygons of size about 1 get disjoint ranges); numpy orders complex numbers by real, then
-    imaginary part.
-    """
-    keys = _lookup_keys(points, owner)
-    order = np.argsort(keys)
-    position = np.searchsorted(keys[order], _lookup_keys(corners.reshape(-1, 2), np.repeat(corner_owner, 3)))
-    return order[np.minimum(position, len(order) - 1)].reshape(-1, 3)
-
-
-def _lookup_keys(points, owner):
-    """Return the complex lookup key of each point of polygon ``owner`` (see :func:`_corner_ids`)."""
-    return (points[:, 0] + OWNER_SPACING * owner) + 1j * points[:, 1]
 
 
 def _insertion_rotations(samples, owner, count):
