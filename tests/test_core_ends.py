@@ -179,6 +179,28 @@ def test_result_does_not_depend_on_ring_start_or_orientation(name):
         assert pair_error(found, reference) <= FLAT_CAP_TOLERANCE * case.width
 
 
+@pytest.mark.parametrize("origin", [(0.0, 0.0), (0.3, -3.3), (12345.678, 1e5)])
+@pytest.mark.parametrize("height", [10.0, 37.5, 1000.0])
+def test_a_north_south_box_starts_at_its_south_end_whatever_its_ring(origin, height):
+    """Both ends of a north-south box have the same x up to rounding: the start is the south one, for every
+    ring start and orientation (rounding alone used to decide the order)."""
+    x, y = origin
+    corners = np.asarray(box(x, y, x + 1.0, y + height).exterior.coords)[:-1]
+    for shift in range(4):
+        for ring in (np.roll(corners, shift, axis=0), np.roll(corners[::-1], shift, axis=0)):
+            ends = find_ends(Polygon(ring))
+            assert ends.start.y < ends.end.y
+            assert math.dist(ends.start.coords[0], (x + 0.5, y)) <= FLAT_CAP_TOLERANCE
+
+
+def test_an_end_slightly_west_of_the_other_is_the_start():
+    """Beyond rounding, the smaller x decides even when the y order is the other way."""
+    tilted = shapely.affinity.rotate(box(0.0, 0.0, 1.0, 100.0), 0.01, origin=(0.5, 50.0))
+    ends = find_ends(tilted)
+    assert ends.start.x < ends.end.x
+    assert ends.start.y > ends.end.y
+
+
 def test_same_input_gives_the_same_answer():
     polygon = channel([(0.0, 0.0), (40.0, 30.0), (90.0, 10.0)], 8.0)
     first, _ = found_pair(polygon)

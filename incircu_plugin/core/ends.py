@@ -46,7 +46,8 @@ Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at
 skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
 missed (they do not change the ends of an elongated shape).
 
-The *start* is the end with the smaller ``x`` (then smaller ``y``) coordinate, so the answer does not depend
+The *start* is the end with the smaller ``x`` coordinate (the smaller ``y`` when their ``x`` differ by at most
+``SAME_X`` of the extent, as the two ends of a north-south box do up to rounding), so the answer does not depend
 on where the ring starts or which way it turns.
 
 **Batches.** :func:`find_ends_together` finds the ends of many polygons with the same answers as
@@ -104,6 +105,10 @@ MIN_SEPARATION = 1e-5
 #: the default snap tolerance of the split points).
 ON_RING = 1e-7
 
+#: Two ends whose x differ by at most this fraction of the bounding-box diagonal have the same x for the
+#: start rule (the rounding of the cap centring is about 1e-15 of it).
+SAME_X = 1e-9
+
 #: Largest and smallest bounding-box diagonal, CRS units, that the computation handles.
 LARGEST_EXTENT = 1e300
 SMALLEST_EXTENT = 1e-300
@@ -121,7 +126,8 @@ class EndsResult:
     Attributes
     ----------
     start : Point
-        First end, on the exterior ring (the one with the smaller x, then y), CRS units.
+        First end, on the exterior ring (the one with the smaller x, or y when both have the same x up to
+        ``SAME_X`` of the extent), CRS units.
     end : Point
         Second end, on the exterior ring, CRS units.
     elongated : bool
@@ -522,7 +528,9 @@ def _ends_of_trunks(frames, trunks):
     for number in np.flatnonzero(np.max(np.abs(origins), axis=1) * np.finfo(float).eps > ON_RING * scales):
         exterior = frames[chosen[number]].polygon.exterior
         ends[number] = [_on_ring(exterior, xy, ON_RING * scales[number]) for xy in ends[number]]
-    swap = (ends[:, 1, 0] < ends[:, 0, 0]) | ((ends[:, 1, 0] == ends[:, 0, 0]) & (ends[:, 1, 1] < ends[:, 0, 1]))
+    east = ends[:, 1, 0] - ends[:, 0, 0]
+    same_x = np.abs(east) <= SAME_X * scales
+    swap = np.where(same_x, ends[:, 1, 1] < ends[:, 0, 1], east < 0.0)
     ends[swap] = ends[swap, ::-1]
     points = shapely.points(ends)
     lines = shapely.linestrings(
