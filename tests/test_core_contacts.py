@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
-from incircu_plugin.core.contacts import AxisPoints, Boundary, first_contacts
+from incircu_plugin.core.contacts import AxisPoints, Boundary, first_contacts, vertex_contact
 from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
 
 
@@ -75,6 +75,34 @@ def test_a_vertex_a_hair_from_the_sample_point_is_not_touched():
     # at x = 0, outside the segment.
     t, _, _, _ = contacts_of((0.0, 0.0), (0.0, 1.0), [[(1e-9, 1e-18), (1.0, 1e-18)], [(-5, -10), (5, -10)]])
     assert t[0] == np.inf
+
+
+def test_a_segment_starts_at_its_start_vertex_on_every_chain():
+    # Chains of 3, 1 and 4 segments: segment g of chain c is the (g - offset[c])-th edge of that chain.
+    chains = [np.array([(0, 0), (1, 0), (2, 1), (3, 3)]), np.array([(5, 5), (6, 5)]), np.arange(10.0).reshape(5, 2)]
+    boundary = Boundary([chain.astype(float) for chain in chains])
+    segment = np.arange(boundary.segment_count)
+    expected_start = np.concatenate([chain[:-1] for chain in chains])
+    expected_end = np.concatenate([chain[1:] for chain in chains])
+    assert np.array_equal(boundary.vertex[boundary.start_vertex(segment)], expected_start)
+    assert np.array_equal(boundary.start, expected_start)
+    assert np.array_equal(boundary.end(segment), expected_end)
+
+
+def test_the_corner_free_vertex_contact_equals_the_general_formula():
+    # Without a convex corner (scale 1, slide 0) both factors of the discriminant are x, so t = |d|**2 / (2 x);
+    # the general branch (forced by one corner sample) computes |d|**2 / (sqrt(x * x) + x): the same float.
+    rng = np.random.default_rng(7)
+    count = 2000
+    offset, height = rng.normal(scale=50.0, size=(2, count))
+    angle = rng.uniform(0.0, 2.0 * math.pi, count)
+    b_along, b_across = np.cos(angle), np.sin(angle)
+    fast = vertex_contact(offset, height, b_along, b_across, np.ones(count), np.zeros(count))
+    scale, slide = np.ones(count + 1), np.zeros(count + 1)
+    scale[-1], slide[-1] = math.sin(0.5), math.cos(0.5)
+    general = vertex_contact(*(np.append(x, 1.0) for x in (offset, height, b_along, b_across)), scale, slide)
+    assert np.isfinite(fast).sum() > count // 4
+    assert np.array_equal(fast, general[:-1])
 
 
 def crossing(kind, u0, u1, terms0, terms1):

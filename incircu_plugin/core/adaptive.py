@@ -118,18 +118,21 @@ class _Spans:
     normal: np.ndarray
     position: np.ndarray
 
-    def frame(self, span, u):
-        """Point and direction of the samples at parameters ``u`` of spans ``span``, and how far along its
-        edge each point lies (CRS units; 0 on a fan)."""
-        edge = self.kind[span] == EDGE
-        along = np.where(edge, u, 0.0)
+    def points(self, span, u):
+        """Points of the samples at parameters ``u`` of spans ``span``, and how far along its edge each lies
+        (CRS units; 0 on a fan)."""
+        along = np.where(self.kind[span] == EDGE, u, 0.0)
         point = rows(self.point, span)
         point += along[:, None] * rows(self.unit, span)
+        return point, along
+
+    def directions(self, span, u):
+        """Unit directions of the disk families of the samples at parameters ``u`` of spans ``span``."""
         direction = rows(self.normal, span)
-        on_fan = np.flatnonzero(~edge)
+        on_fan = np.flatnonzero(self.kind[span] != EDGE)
         angle, fan = u[on_fan, None], span[on_fan]
         direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
-        return point, direction, along
+        return direction
 
     def position_at(self, span, u):
         """Arc length along its chain of the samples at parameters ``u`` of spans ``span``, CRS units."""
@@ -138,7 +141,8 @@ class _Spans:
     def samples(self, span, u, boundary):
         """The samples at parameters ``u`` of spans ``span``."""
         edge = self.kind[span] == EDGE
-        point, direction, along = self.frame(span, u)
+        point, along = self.points(span, u)
+        direction = self.directions(span, u)
         segment = self.segment[span]
         # At an edge's end the neighbouring edge passes through the sample point: it is own chain too.
         at_start = edge & (u <= 0.0) & ~boundary.first_of_chain[segment]
@@ -201,7 +205,7 @@ def _geometry(boundary, sides):
     signed = side[joint] * turn
     kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
-    vertex_kind[joint + boundary.chain_id[joint] + 1] = kind
+    vertex_kind[boundary.start_vertex(joint) + 1] = kind
     return _Geometry(normal, joint, turn, kind, vertex_kind)
 
 
@@ -230,9 +234,9 @@ def _build_spans(boundary, geometry, traced):
 def _straight_runs(kinds, boundary):
     """For each segment, the first segment of its run of segments on one line (the site it stands for), and
     the arc length at the run's end."""
-    # The vertex kinds, chain after chain; a segment's start vertex is ``g + chain``.
+    # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
     segment = np.arange(boundary.segment_count)
-    starts_run = boundary.first_of_chain | (kinds[segment + boundary.chain_id] != 0)
+    starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
     last = np.minimum.accumulate(np.where(ends_run, segment, boundary.segment_count)[::-1])[::-1]
@@ -488,7 +492,8 @@ class _Tracer:
         their indices. ``other_site`` gives the foot on the other chain.
 
         A sample is stored as its span, parameter and centre (its point and direction follow from span and
-        parameter, see :meth:`_Spans.frame`). The arrays grow by half, so a round costs its own samples only.
+        parameter, see :meth:`_Spans.points` and :meth:`_Spans.directions`). The arrays grow by half, so a
+        round costs its own samples only.
         """
         columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
@@ -662,7 +667,7 @@ class _Tracer:
         b, spans = self.boundary, self.spans
         after = np.flatnonzero((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE))
         segment = spans.segment[intervals.span[after]]
-        corner = self.sites.kinds[segment + b.chain_id[segment]] > 0
+        corner = self.sites.kinds[b.start_vertex(segment)] > 0
         corner &= ~b.first_of_chain[segment] & ~b.first_of_chain[segment - 1] & ~b.last_of_chain[segment]
         after = after[corner]
         # The interval ending at the end of edge span k has that edge's end sample, 2k + 1, at its right.
@@ -920,7 +925,7 @@ class _Tracer:
         position_a, position_b = np.empty(len(t)), np.empty(len(t))
         for begin in range(0, len(t), CHUNK):
             part = slice(begin, begin + CHUNK)
-            foot_a[part], _, along = self.spans.frame(span[part], u[part])
+            foot_a[part], along = self.spans.points(span[part], u[part])
             position_a[part] = self.spans.position[span[part]] + along
             foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
         return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
@@ -949,7 +954,7 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     rank = np.arange(len(edge))
     site = np.full(2 * len(edge), -1)
     status = np.full(2 * len(edge), SKIPPED, dtype=np.int8)
-    start_vertex = edge + boundary.chain_id[edge]
+    start_vertex = boundary.start_vertex(edge)
     corner_at_start = (sites.kinds[start_vertex] > 0) & ~boundary.first_of_chain[edge]
     corner_at_end = (sites.kinds[start_vertex + 1] > 0) & ~boundary.last_of_chain[edge]
     site[2 * rank[corner_at_start]] = edge[corner_at_start] - 1
@@ -1128,13 +1133,7 @@ def _trace_group(requests, report):
     feature = feature[order]
     # Every point shifted back at once; then each feature's points are a slice of the sorted arrays.
     shift = rows(offsets, feature)
-    points = AxisPoints(
-        rows(points.centre, order) - shift,
-        points.radius[order],
-        rows(points.foot_a, order) - shift,
-        rows(points.foot_b, order) - shift,
-        points.position_a[order],
-        points.position_b[order],
-    )
+    points = points.subset(order)
+    points = replace(points, centre=points.centre - shift, foot_a=points.foot_a - shift, foot_b=points.foot_b - shift)
     bounds = np.searchsorted(feature, np.arange(len(requests) + 1)).tolist()
     return [points.subset(slice(begin, end)) for begin, end in zip(bounds[:-1], bounds[1:])]

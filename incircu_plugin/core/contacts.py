@@ -112,9 +112,10 @@ class Boundary:
 
     A *site* is what a disk can touch: the interior of segment ``g`` (site ``g``) or a vertex (site
     ``segment_count + v``, with ``v`` the vertex's index in ``vertex``, the chains' vertices one chain after
-    the other). Segment ``g`` runs from vertex ``g + chain_id[g]`` to the next one. Per segment it holds
-    one copy of each quantity (the x and y columns are views of the coordinate arrays; end points are read
-    from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites in int32.
+    the other). Segment ``g`` runs from vertex ``g + chain_id[g]`` (:meth:`start_vertex`) to the next one.
+    Per segment it holds one copy of each quantity (the x and y columns are views of the coordinate arrays;
+    end points are read from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites
+    in int32.
     """
 
     def __init__(self, chains):
@@ -138,7 +139,7 @@ class Boundary:
         self.last_of_chain[np.cumsum(sizes) - 1] = True
         self.first_of_chain = np.zeros(count, dtype=bool)
         self.first_of_chain[self.offset] = True
-        start_vertex = np.arange(count, dtype=np.int32) + self.chain_id
+        start_vertex = self.start_vertex(np.arange(count, dtype=np.int32))
         self.start = rows(self.vertex, start_vertex)
         self.segment_position = self.vertex_position[start_vertex]
         self.segment_end_position = self.vertex_position[start_vertex + 1]
@@ -163,9 +164,13 @@ class Boundary:
         self.run_high = np.maximum.reduceat(self.high, run_start)
         self._tree = None
 
+    def start_vertex(self, segment):
+        """Index in ``vertex`` of the start vertex of the segments ``segment`` (global indices)."""
+        return segment + self.chain_id[segment]
+
     def end(self, segment):
         """End points of the segments ``segment`` (global indices)."""
-        return rows(self.vertex, segment + self.chain_id[segment] + 1)
+        return rows(self.vertex, self.start_vertex(segment) + 1)
 
     @property
     def tree(self):
@@ -295,9 +300,9 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     x = b_along * offset - b_across * height
     squared = offset * offset + height * height
     if not np.any(slide) and np.all(scale == 1.0):
-        # No convex corner's disk (the samples of an edge or a fan): both factors are x, exactly.
+        # No convex corner's disk (the samples of an edge or a fan): both factors are x, so t = |d|^2 / (2 x).
         with np.errstate(divide="ignore", invalid="ignore"):
-            t = squared / (np.sqrt(x * x) + x)
+            t = 0.5 * squared / x
         return np.where((x > 0) & (squared > (NEAR_VERTEX * t) ** 2), t, np.inf)
     y = np.abs(b_along * height + b_across * offset)
     near = x * scale - y * slide
