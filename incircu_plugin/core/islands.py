@@ -470,7 +470,9 @@ def _free_candidates(search, islands, starts, feet, lengths):
     whole = shapely.linestrings(np.stack([starts, feet], axis=1))
     whole[~long_enough] = shapely.points(feet[~long_enough])
     candidate, hit = islands.tree.query(whole, predicate="intersects")
-    other = ~np.isin(hit, list(search.excluded))
+    other = np.ones(len(hit), dtype=bool)
+    for excluded in search.excluded:
+        other &= hit != excluded
     blocked[candidate[other]] = True
     for wall in search.walls:
         blocked |= shapely.intersects(whole, wall)

@@ -194,7 +194,7 @@ class IndexedPolyline:
             segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
         start = self.xy[segment]
         direction = self.xy[segment + 1] - start
-        along = _projected(points - start, direction)
+        along = _projected(*(points - start).T, *direction.T)
         foot = start + along[:, None] * direction
         length = np.sqrt(np.einsum("ij,ij->i", direction, direction))
         return np.hypot(*(points - foot).T), self.cumulative[segment] + along * length, foot
@@ -214,19 +214,23 @@ class IndexedPolyline:
         near = np.sort(self.tree.query(shapely.box(*low, *high)))
         if len(near) * len(points) > CLUSTER_PAIRS:
             return None
-        start = self.xy[near]
-        direction = self.xy[near + 1] - start
-        offset = points[:, None, :] - start[None]
-        away = offset - _projected(offset, direction)[..., None] * direction
-        return near[np.argmin(away[..., 0] ** 2 + away[..., 1] ** 2, axis=1)]
+        # Per coordinate as (points, segments) arrays: contiguous, unlike the last axis of (m, k, 2) ones.
+        x, y = self.xy[:, 0], self.xy[:, 1]
+        start_x, start_y = x[near], y[near]
+        offset_x, offset_y = points[:, :1] - start_x, points[:, 1:] - start_y
+        direction_x, direction_y = x[near + 1] - start_x, y[near + 1] - start_y
+        along = _projected(offset_x, offset_y, direction_x, direction_y)
+        away_x = offset_x - along * direction_x
+        away_y = offset_y - along * direction_y
+        return near[np.argmin(away_x * away_x + away_y * away_y, axis=1)]
 
 
-def _projected(offset, direction):
-    """Where the foot of each ``offset`` (a point minus its segment's start) lies on its segment ``direction``,
-    as a fraction of the segment (0 to 1; 0 on a segment of length zero); arrays of shape (..., 2)."""
-    dx, dy = direction[..., 0], direction[..., 1]
+def _projected(offset_x, offset_y, dx, dy):
+    """Where the foot of each offset (a point minus its segment's start) lies on its segment (direction ``dx``,
+    ``dy``), as a fraction of the segment (0 to 1; 0 on a segment of length zero); coordinates as arrays that
+    broadcast together, CRS units."""
     squared = dx * dx + dy * dy
-    along = (offset[..., 0] * dx + offset[..., 1] * dy) / np.where(squared > 0.0, squared, 1.0)
+    along = (offset_x * dx + offset_y * dy) / np.where(squared > 0.0, squared, 1.0)
     return np.clip(along, 0.0, 1.0)
 
 
