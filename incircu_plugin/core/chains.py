@@ -210,9 +210,16 @@ def _insert_at(ring, positions, along, tolerance):
     new = np.abs(positions[None, :-1] - along[:, None]).min(axis=1) > tolerance
     if not new.any():
         return ring, positions
-    index = np.searchsorted(positions, along[new], side="right")
-    points = points_at(ring, positions, along[new])
-    return np.insert(ring, index, points, axis=0), np.insert(positions, index, along[new])
+    along = along[new]
+    index = np.searchsorted(positions, along, side="right").tolist()
+    points = points_at(ring, positions, along)
+    # np.insert's result, from slices (a handful of points: np.insert's set-up costs more than the copy).
+    bounds = [0, *index, len(ring)]
+    ring_pieces, position_pieces = [ring[: bounds[1]]], [positions[: bounds[1]]]
+    for number in range(len(index)):
+        ring_pieces += [points[number : number + 1], ring[bounds[number + 1] : bounds[number + 2]]]
+        position_pieces += [along[number : number + 1], positions[bounds[number + 1] : bounds[number + 2]]]
+    return np.concatenate(ring_pieces), np.concatenate(position_pieces)
 
 
 def counter_clockwise_exterior(polygon):

@@ -129,15 +129,21 @@ def points_at(xy, cumulative, s):
     xy = np.asarray(xy, dtype=float)
     cumulative = np.asarray(cumulative, dtype=float)
     scalar = np.ndim(s) == 0
-    s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), cumulative[0], cumulative[-1])
+    # np.minimum / np.maximum rather than np.clip (the same values): this runs on a few points at a time,
+    # where np.clip's Python layers cost more than the arithmetic.
+    s = np.minimum(np.maximum(np.atleast_1d(np.asarray(s, dtype=float)), cumulative[0]), cumulative[-1])
     if len(xy) == 1:
         points = np.repeat(xy, len(s), axis=0)
         return points[0] if scalar else points
-    segment = np.clip(np.searchsorted(cumulative, s, side="right") - 1, 0, len(xy) - 2)
-    span = cumulative[segment + 1] - cumulative[segment]
-    fraction = np.where(span > 0.0, (s - cumulative[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
-    fraction = np.clip(fraction, 0.0, 1.0)[:, None]
-    points = xy[segment] + fraction * (xy[segment + 1] - xy[segment])
+    # s >= cumulative[0], so the segment before the insertion point is never below 0.
+    segment = np.minimum(np.searchsorted(cumulative, s, side="right") - 1, len(xy) - 2)
+    before = cumulative[segment]
+    span = cumulative[segment + 1] - before
+    positive = span > 0.0
+    fraction = np.where(positive, (s - before) / np.where(positive, span, 1.0), 0.0)
+    fraction = np.minimum(np.maximum(fraction, 0.0), 1.0)[:, None]
+    start = xy[segment]
+    points = start + fraction * (xy[segment + 1] - start)
     return points[0] if scalar else points
 
 
