@@ -237,7 +237,7 @@ def _projected(offset_x, offset_y, dx, dy):
     broadcast together, CRS units."""
     squared = dx * dx + dy * dy
     along = (offset_x * dx + offset_y * dy) / np.where(squared > 0.0, squared, 1.0)
-    return np.clip(along, 0.0, 1.0)
+    return np.minimum(np.maximum(along, 0.0), 1.0)
 
 
 def nearest_on_polyline(xy, points):
