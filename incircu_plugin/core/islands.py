@@ -435,15 +435,17 @@ def _free_slit(search, islands):
     """
     outline = LinearRing(islands.rings[search.island])
     starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
+    # The shortest slit is usually free: find and test it alone first, then all the others at once.
+    shortest, length, position, foot = search.target.closest(starts)
+    if len(_free_candidates(search, islands, starts[shortest : shortest + 1], foot[None], np.array([length]))):
+        return _Slit(island_point=starts[shortest], foot=foot, position=position)
     lengths, positions, feet = search.target.nearest(starts)
-    order = np.argsort(lengths, kind="stable")
-    starts, feet, positions, lengths = starts[order], feet[order], positions[order], lengths[order]
-    # The shortest slit is usually free: test it alone first, then all the others at once.
-    for batch in (slice(0, 1), slice(1, None)):
-        free = _free_candidates(search, islands, starts[batch], feet[batch], lengths[batch])
-        if len(free):
-            chosen = batch.start + int(free[0])
-            return _Slit(island_point=starts[chosen], foot=feet[chosen], position=float(positions[chosen]))
+    # The others, shortest first (a stable sort: the same order as ties were broken in).
+    order = np.argsort(lengths, kind="stable")[1:]
+    free = _free_candidates(search, islands, starts[order], feet[order], lengths[order])
+    if len(free):
+        chosen = order[int(free[0])]
+        return _Slit(island_point=starts[chosen], foot=feet[chosen], position=float(positions[chosen]))
     return None
 
 

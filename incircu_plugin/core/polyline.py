@@ -152,6 +152,9 @@ def points_at(xy, cumulative, s):
 CLUSTER_POINTS = 32
 CLUSTER_PAIRS = 1 << 16
 
+#: :meth:`IndexedPolyline.closest` measures every this many points of a cluster first.
+PROBE_STEP = 8
+
 
 class IndexedPolyline:
     """A polyline with a spatial index of its segments, for repeated nearest-point queries.
@@ -188,16 +191,73 @@ class IndexedPolyline:
         """Return the nearest point of the polyline to each point; see :func:`nearest_on_polyline`.
 
         Many points close together (a cluster, such as the slit candidates around an island) are answered
-        from the few segments near them, found with one index query (:meth:`_nearest_segments`); otherwise
+        from the few segments near them, found with one index query (:meth:`_segments_near`); otherwise
         each point queries the index.
         """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         if len(self.xy) == 1:
             foot = np.repeat(self.xy, len(points), axis=0)
             return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
-        segment = self._nearest_segments(points) if len(points) >= CLUSTER_POINTS else None
-        if segment is None:
+        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS else None
+        if near is None:
             segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
+        else:
+            segment = self._nearest_of(points, near)
+        return self._feet(points, segment)
+
+    def closest(self, points):
+        """Return the first of the points nearest to the polyline, with what :meth:`nearest` gives for it.
+
+        The result is that of ``nearest(points)`` at its first smallest distance; a cluster of points is
+        answered measuring only the points that can be that one (:meth:`_may_be_closest`).
+
+        Parameters
+        ----------
+        points : ndarray of shape (m, 2)
+            CRS units; ``m >= 1``.
+
+        Returns
+        -------
+        index : int
+            The point's index (the smallest among equally near points).
+        distance, arc_length : float
+            Its distance to the polyline and its foot's arc length from the polyline's start, CRS units.
+        foot : ndarray of shape (2,)
+            CRS units.
+        """
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS and len(self.xy) > 1 else None
+        if near is None:
+            candidates = np.arange(len(points))
+            distance, arc_length, foot = self.nearest(points)
+        else:
+            candidates = self._may_be_closest(points, near)
+            distance, arc_length, foot = self._feet(points[candidates], self._nearest_of(points[candidates], near))
+        first = int(np.argmin(distance))
+        return int(candidates[first]), float(distance[first]), float(arc_length[first]), foot[first]
+
+    def _may_be_closest(self, points, near):
+        """Sorted indices of the points that may be the nearest to the polyline (``near``: the segments that
+        can be nearest to them, see :meth:`_segments_near`).
+
+        Every ``PROBE_STEP``-th point (in the given order, such as along an island's outline) is measured; a
+        point between two probes is at least a probe's distance minus its distance from that probe away, so
+        only the points this bound lets come as near as the nearest probe can be the nearest.
+        """
+        probes = np.arange(0, len(points), PROBE_STEP)
+        distance = self._feet(points[probes], self._nearest_of(points[probes], near))[0]
+        before = np.arange(len(points)) // PROBE_STEP
+        after = np.minimum(before + 1, len(probes) - 1)
+        to_before = np.hypot(*(points - points[probes[before]]).T)
+        to_after = np.hypot(*(points - points[probes[after]]).T)
+        bound = np.maximum(distance[before] - to_before, distance[after] - to_after)
+        # With a little slack, so rounding cannot leave out a point as near as the nearest probe.
+        nearest_probe = float(distance.min())
+        slack = 1e-9 * (nearest_probe + float(to_before.max()) + float(to_after.max()))
+        return np.flatnonzero(bound <= nearest_probe + slack)
+
+    def _feet(self, points, segment):
+        """Distance, foot's arc length and foot (CRS units) of each point on its ``segment`` (indices)."""
         start = self.xy[segment]
         direction = self.xy[segment + 1] - start
         along = _projected(*(points - start).T, *direction.T)
@@ -205,21 +265,24 @@ class IndexedPolyline:
         length = np.sqrt(np.einsum("ij,ij->i", direction, direction))
         return np.hypot(*(points - foot).T), self.cumulative[segment] + along * length, foot
 
-    def _nearest_segments(self, points):
-        """The nearest segment of each point, from the segments near the points' bounding box; None when
-        that would pair more than ``CLUSTER_PAIRS`` (point, segment) pairs.
+    def _segments_near(self, points):
+        """Sorted indices of the segments that can be nearest to some of the points; None when that would pair
+        more than ``CLUSTER_PAIRS`` (point, segment) pairs.
 
         The first point's nearest distance ``d`` bounds every other point's by its distance to the first
         point plus ``d``; a segment farther than that bound ``reach`` from all the points' box is nobody's
-        nearest, so the query box is the points' box widened by ``reach``. Equally near segments: the first.
+        nearest, so the query box is the points' box widened by ``reach``.
         """
         first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
         # With a little slack, so rounding cannot leave out a segment at exactly that distance.
         reach = (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9)
         low, high = points.min(axis=0) - reach, points.max(axis=0) + reach
         near = np.sort(self.tree.query(shapely.box(*low, *high)))
-        if len(near) * len(points) > CLUSTER_PAIRS:
-            return None
+        return None if len(near) * len(points) > CLUSTER_PAIRS else near
+
+    def _nearest_of(self, points, near):
+        """The nearest segment of each point among ``near`` (sorted segment indices that include it); equally
+        near segments: the first."""
         # Per coordinate as (points, segments) arrays: contiguous, unlike the last axis of (m, k, 2) ones.
         x, y = self.xy[:, 0], self.xy[:, 1]
         start_x, start_y = x[near], y[near]
