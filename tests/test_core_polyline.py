@@ -73,13 +73,31 @@ def test_a_cluster_of_points_gets_the_same_nearest_points_as_one_by_one(spread):
     line = LineString(path)
     for centre in path[rng.integers(0, len(path), 8)] + rng.normal(size=(8, 2)):
         points = centre + rng.normal(size=(4 * CLUSTER_POINTS, 2)) * spread
-        assert polyline._nearest_segments(points) is not None
+        assert polyline._segments_near(points) is not None
         distance, arc_length, foot = polyline.nearest(points)
         expected = shapely.distance(shapely.points(points), line)
         np.testing.assert_allclose(distance, expected, rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(np.hypot(*(foot - points).T), distance, rtol=1e-12)
         along = shapely.get_coordinates(shapely.line_interpolate_point(line, arc_length))
         np.testing.assert_allclose(along, foot, atol=1e-9)
+
+
+@pytest.mark.parametrize("spread", [0.01, 1.0, 5.0, 50.0])
+def test_closest_is_the_first_smallest_distance_of_nearest(spread):
+    # closest measures only the points a probe's bound lets come near; its answer must be nearest's, bit for bit.
+    rng = np.random.default_rng(5)
+    path = np.cumsum(rng.normal(size=(300, 2)), axis=0)
+    polyline = IndexedPolyline(path)
+    for count in (3, CLUSTER_POINTS, 5 * CLUSTER_POINTS + 3):
+        for centre in path[rng.integers(0, len(path), 6)] + rng.normal(size=(6, 2)):
+            # Points along a closed curve, as the slit candidates along an island's outline.
+            angle = np.sort(rng.uniform(0.0, 2.0 * np.pi, count))
+            points = centre + spread * np.column_stack([np.cos(angle), 0.4 * np.sin(angle)])
+            distance, arc_length, foot = polyline.nearest(points)
+            index, closest_distance, closest_arc_length, closest_foot = polyline.closest(points)
+            assert index == int(np.argmin(distance))
+            assert (closest_distance, closest_arc_length) == (distance[index], arc_length[index])
+            assert closest_foot.tolist() == foot[index].tolist()
 
 
 def test_nearest_on_a_single_point():

@@ -234,11 +234,16 @@ def _fewest_vertices(points, tolerance):
     """
     # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
     # keeps, so the kept ones are known without matching coordinates.
-    indexed = np.column_stack([points, np.arange(len(points), dtype=float)])
-    starts = np.arange(0, max(len(points) - 1, 1), SIMPLIFY_PIECE)
-    sizes = np.minimum(starts + SIMPLIFY_PIECE, len(points) - 1) - starts + 1
-    piece, rank = ranges(sizes)
-    pieces = shapely.linestrings(indexed[starts[piece] + rank], indices=piece)
+    indexed = np.empty((len(points), 3))
+    indexed[:, :2] = points
+    indexed[:, 2] = np.arange(len(points))
+    if len(points) <= SIMPLIFY_PIECE + 1:
+        pieces = shapely.linestrings(indexed)
+    else:
+        starts = np.arange(0, len(points) - 1, SIMPLIFY_PIECE)
+        sizes = np.minimum(starts + SIMPLIFY_PIECE, len(points) - 1) - starts + 1
+        piece, rank = ranges(sizes)
+        pieces = shapely.linestrings(indexed[starts[piece] + rank], indices=piece)
     kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
     keep[kept[:, 2].astype(np.intp)] = True

@@ -195,7 +195,8 @@ class _Joining:
     component : ndarray of shape (k + 2,)
         Chain (0 or 1) each host belongs to, -1 for islands not yet joined.
     targets : list of _Target or None
-        Per host, the polyline a slit to it may end on.
+        Per host, the polyline a slit to it may end on; for an island, None until :meth:`target` first needs it
+        (most islands host no other).
     slits : list of LineString
         Slits made so far.
     walks : list of ndarray or None
@@ -210,6 +211,12 @@ class _Joining:
     slits: list = field(default_factory=list)
     walks: list = field(default_factory=list)
     joins: list = field(default_factory=list)
+
+    def target(self, host):
+        """The polyline a slit to ``host`` may end on (:class:`_Target`), an island's built on first use."""
+        if self.targets[host] is None:
+            self.targets[host] = _Target(self.walks[host - 2])
+        return self.targets[host]
 
 
 @dataclass(frozen=True)
@@ -270,7 +277,6 @@ def _join_all(chains, islands):
         component[2 + island] = component[host]
         clockwise = region_on_left if component[host] == 0 else not region_on_left
         joining.walks[island] = _around(islands.rings[island], slit.island_point, clockwise, islands.coincidence)
-        targets[2 + island] = _Target(joining.walks[island])
         joining.joins[host].append((slit.position, island, slit.foot))
         polygon = islands.polygons[island]
         near = islands.tree.query(polygon, predicate="dwithin", distance=reach)
@@ -343,7 +349,7 @@ def _next_join(joining, islands):
         _, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
         search = _SlitSearch(
             island=island,
-            target=joining.targets[host],
+            target=joining.target(host),
             inside=islands.polygons[host - 2] if host >= 2 else None,
             excluded=frozenset({island, host - 2}),
             walls=[joining.targets[side].line for side in (0, 1) if side != host],
@@ -429,15 +435,17 @@ def _free_slit(search, islands):
     """
     outline = LinearRing(islands.rings[search.island])
     starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
+    # The shortest slit is usually free: find and test it alone first, then all the others at once.
+    shortest, length, position, foot = search.target.closest(starts)
+    if len(_free_candidates(search, islands, starts[shortest : shortest + 1], foot[None], np.array([length]))):
+        return _Slit(island_point=starts[shortest], foot=foot, position=position)
     lengths, positions, feet = search.target.nearest(starts)
-    order = np.argsort(lengths, kind="stable")
-    starts, feet, positions, lengths = starts[order], feet[order], positions[order], lengths[order]
-    # The shortest slit is usually free: test it alone first, then all the others at once.
-    for batch in (slice(0, 1), slice(1, None)):
-        free = _free_candidates(search, islands, starts[batch], feet[batch], lengths[batch])
-        if len(free):
-            chosen = batch.start + int(free[0])
-            return _Slit(island_point=starts[chosen], foot=feet[chosen], position=float(positions[chosen]))
+    # The others, shortest first (a stable sort: the same order as ties were broken in).
+    order = np.argsort(lengths, kind="stable")[1:]
+    free = _free_candidates(search, islands, starts[order], feet[order], lengths[order])
+    if len(free):
+        chosen = order[int(free[0])]
+        return _Slit(island_point=starts[chosen], foot=feet[chosen], position=float(positions[chosen]))
     return None
 
 
@@ -470,7 +478,9 @@ def _free_candidates(search, islands, starts, feet, lengths):
     whole = shapely.linestrings(np.stack([starts, feet], axis=1))
     whole[~long_enough] = shapely.points(feet[~long_enough])
     candidate, hit = islands.tree.query(whole, predicate="intersects")
-    other = ~np.isin(hit, list(search.excluded))
+    other = np.ones(len(hit), dtype=bool)
+    for excluded in search.excluded:
+        other &= hit != excluded
     blocked[candidate[other]] = True
     for wall in search.walls:
         blocked |= shapely.intersects(whole, wall)

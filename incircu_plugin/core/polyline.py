@@ -129,15 +129,21 @@ def points_at(xy, cumulative, s):
     xy = np.asarray(xy, dtype=float)
     cumulative = np.asarray(cumulative, dtype=float)
     scalar = np.ndim(s) == 0
-    s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), cumulative[0], cumulative[-1])
+    # np.minimum / np.maximum rather than np.clip (the same values): this runs on a few points at a time,
+    # where np.clip's Python layers cost more than the arithmetic.
+    s = np.minimum(np.maximum(np.atleast_1d(np.asarray(s, dtype=float)), cumulative[0]), cumulative[-1])
     if len(xy) == 1:
         points = np.repeat(xy, len(s), axis=0)
         return points[0] if scalar else points
-    segment = np.clip(np.searchsorted(cumulative, s, side="right") - 1, 0, len(xy) - 2)
-    span = cumulative[segment + 1] - cumulative[segment]
-    fraction = np.where(span > 0.0, (s - cumulative[segment]) / np.where(span > 0.0, span, 1.0), 0.0)
-    fraction = np.clip(fraction, 0.0, 1.0)[:, None]
-    points = xy[segment] + fraction * (xy[segment + 1] - xy[segment])
+    # s >= cumulative[0], so the segment before the insertion point is never below 0.
+    segment = np.minimum(np.searchsorted(cumulative, s, side="right") - 1, len(xy) - 2)
+    before = cumulative[segment]
+    span = cumulative[segment + 1] - before
+    positive = span > 0.0
+    fraction = np.where(positive, (s - before) / np.where(positive, span, 1.0), 0.0)
+    fraction = np.minimum(np.maximum(fraction, 0.0), 1.0)[:, None]
+    start = xy[segment]
+    points = start + fraction * (xy[segment + 1] - start)
     return points[0] if scalar else points
 
 
@@ -145,6 +151,9 @@ def points_at(xy, cumulative, s):
 #: most (point, segment) pairs it then tests at once.
 CLUSTER_POINTS = 32
 CLUSTER_PAIRS = 1 << 16
+
+#: :meth:`IndexedPolyline.closest` measures every this many points of a cluster first.
+PROBE_STEP = 8
 
 
 class IndexedPolyline:
@@ -182,52 +191,116 @@ class IndexedPolyline:
         """Return the nearest point of the polyline to each point; see :func:`nearest_on_polyline`.
 
         Many points close together (a cluster, such as the slit candidates around an island) are answered
-        from the few segments near them, found with one index query (:meth:`_nearest_segments`); otherwise
+        from the few segments near them, found with one index query (:meth:`_segments_near`); otherwise
         each point queries the index.
         """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         if len(self.xy) == 1:
             foot = np.repeat(self.xy, len(points), axis=0)
             return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
-        segment = self._nearest_segments(points) if len(points) >= CLUSTER_POINTS else None
-        if segment is None:
+        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS else None
+        if near is None:
             segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
+        else:
+            segment = self._nearest_of(points, near)
+        return self._feet(points, segment)
+
+    def closest(self, points):
+        """Return the first of the points nearest to the polyline, with what :meth:`nearest` gives for it.
+
+        The result is that of ``nearest(points)`` at its first smallest distance; a cluster of points is
+        answered measuring only the points that can be that one (:meth:`_may_be_closest`).
+
+        Parameters
+        ----------
+        points : ndarray of shape (m, 2)
+            CRS units; ``m >= 1``.
+
+        Returns
+        -------
+        index : int
+            The point's index (the smallest among equally near points).
+        distance, arc_length : float
+            Its distance to the polyline and its foot's arc length from the polyline's start, CRS units.
+        foot : ndarray of shape (2,)
+            CRS units.
+        """
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS and len(self.xy) > 1 else None
+        if near is None:
+            candidates = np.arange(len(points))
+            distance, arc_length, foot = self.nearest(points)
+        else:
+            candidates = self._may_be_closest(points, near)
+            distance, arc_length, foot = self._feet(points[candidates], self._nearest_of(points[candidates], near))
+        first = int(np.argmin(distance))
+        return int(candidates[first]), float(distance[first]), float(arc_length[first]), foot[first]
+
+    def _may_be_closest(self, points, near):
+        """Sorted indices of the points that may be the nearest to the polyline (``near``: the segments that
+        can be nearest to them, see :meth:`_segments_near`).
+
+        Every ``PROBE_STEP``-th point (in the given order, such as along an island's outline) is measured; a
+        point between two probes is at least a probe's distance minus its distance from that probe away, so
+        only the points this bound lets come as near as the nearest probe can be the nearest.
+        """
+        probes = np.arange(0, len(points), PROBE_STEP)
+        distance = self._feet(points[probes], self._nearest_of(points[probes], near))[0]
+        before = np.arange(len(points)) // PROBE_STEP
+        after = np.minimum(before + 1, len(probes) - 1)
+        to_before = np.hypot(*(points - points[probes[before]]).T)
+        to_after = np.hypot(*(points - points[probes[after]]).T)
+        bound = np.maximum(distance[before] - to_before, distance[after] - to_after)
+        # With a little slack, so rounding cannot leave out a point as near as the nearest probe.
+        nearest_probe = float(distance.min())
+        slack = 1e-9 * (nearest_probe + float(to_before.max()) + float(to_after.max()))
+        return np.flatnonzero(bound <= nearest_probe + slack)
+
+    def _feet(self, points, segment):
+        """Distance, foot's arc length and foot (CRS units) of each point on its ``segment`` (indices)."""
         start = self.xy[segment]
         direction = self.xy[segment + 1] - start
-        along = _projected(points - start, direction)
+        along = _projected(*(points - start).T, *direction.T)
         foot = start + along[:, None] * direction
         length = np.sqrt(np.einsum("ij,ij->i", direction, direction))
         return np.hypot(*(points - foot).T), self.cumulative[segment] + along * length, foot
 
-    def _nearest_segments(self, points):
-        """The nearest segment of each point, from the segments near the points' bounding box; None when
-        that would pair more than ``CLUSTER_PAIRS`` (point, segment) pairs.
+    def _segments_near(self, points):
+        """Sorted indices of the segments that can be nearest to some of the points; None when that would pair
+        more than ``CLUSTER_PAIRS`` (point, segment) pairs.
 
         The first point's nearest distance ``d`` bounds every other point's by its distance to the first
         point plus ``d``; a segment farther than that bound ``reach`` from all the points' box is nobody's
-        nearest, so the query box is the points' box widened by ``reach``. Equally near segments: the first.
+        nearest, so the query box is the points' box widened by ``reach``.
         """
         first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
         # With a little slack, so rounding cannot leave out a segment at exactly that distance.
         reach = (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9)
         low, high = points.min(axis=0) - reach, points.max(axis=0) + reach
         near = np.sort(self.tree.query(shapely.box(*low, *high)))
-        if len(near) * len(points) > CLUSTER_PAIRS:
-            return None
-        start = self.xy[near]
-        direction = self.xy[near + 1] - start
-        offset = points[:, None, :] - start[None]
-        away = offset - _projected(offset, direction)[..., None] * direction
-        return near[np.argmin(away[..., 0] ** 2 + away[..., 1] ** 2, axis=1)]
+        return None if len(near) * len(points) > CLUSTER_PAIRS else near
+
+    def _nearest_of(self, points, near):
+        """The nearest segment of each point among ``near`` (sorted segment indices that include it); equally
+        near segments: the first."""
+        # Per coordinate as (points, segments) arrays: contiguous, unlike the last axis of (m, k, 2) ones.
+        x, y = self.xy[:, 0], self.xy[:, 1]
+        start_x, start_y = x[near], y[near]
+        offset_x, offset_y = points[:, :1] - start_x, points[:, 1:] - start_y
+        direction_x, direction_y = x[near + 1] - start_x, y[near + 1] - start_y
+        along = _projected(offset_x, offset_y, direction_x, direction_y)
+        away_x = offset_x - along * direction_x
+        away_y = offset_y - along * direction_y
+        return near[np.argmin(away_x * away_x + away_y * away_y, axis=1)]
 
 
-def _projected(offset, direction):
-    """Where the foot of each ``offset`` (a point minus its segment's start) lies on its segment ``direction``,
-    as a fraction of the segment (0 to 1; 0 on a segment of length zero); arrays of shape (..., 2)."""
-    dx, dy = direction[..., 0], direction[..., 1]
+def _projected(offset_x, offset_y, dx, dy):
+    """Where the foot of each offset (a point minus its segment's start) lies on its segment (direction ``dx``,
+    ``dy``), as a fraction of the segment (0 to 1; 0 on a segment of length zero); coordinates as arrays that
+    broadcast together, CRS units."""
     squared = dx * dx + dy * dy
-    along = (offset[..., 0] * dx + offset[..., 1] * dy) / np.where(squared > 0.0, squared, 1.0)
-    return np.clip(along, 0.0, 1.0)
+    along = (offset_x * dx + offset_y * dy) / np.where(squared > 0.0, squared, 1.0)
+    return np.minimum(np.maximum(along, 0.0), 1.0)
 
 
 def nearest_on_polyline(xy, points):
