@@ -375,3 +375,30 @@ def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monk
     polygon = Polygon(bottom + [(40.0, 10.0), (0.0, 10.0)])
     assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
     assert corners["count"] > 0
+
+
+def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
+    from incircu_plugin.core.adaptive import _Intervals, _split_at_nodes
+
+    # Three intervals; the third gets two nodes given out of order, the second none.
+    intervals = _Intervals(
+        span=[0, 1, 2],
+        u0=np.zeros(3),
+        u1=np.array([1.0, 2.0, 3.0]),
+        left=[0, 2, 4],
+        right=[1, 3, 5],
+        site0=[10, 11, 12],
+        site1=[20, 21, 22],
+        verified=np.zeros(3, dtype=bool),
+    )
+    owner, u, index = np.array([2, 0, 2]), np.array([2.0, 0.5, 1.0]), np.array([6, 7, 8])
+    pieces = _split_at_nodes(intervals, owner, u, index, np.array([30, 31, 32]), np.array([40, 41, 42]), True)
+    assert pieces.span.tolist() == [0, 0, 1, 2, 2, 2]
+    assert pieces.u0.tolist() == [0.0, 0.5, 0.0, 0.0, 1.0, 2.0]
+    assert pieces.u1.tolist() == [0.5, 1.0, 2.0, 1.0, 2.0, 3.0]
+    assert pieces.left.tolist() == [0, 7, 2, 4, 8, 6]
+    assert pieces.right.tolist() == [7, 1, 3, 8, 6, 5]
+    # A node's site before it ends the piece on its left, its site after starts the piece on its right.
+    assert pieces.site0.tolist() == [10, 41, 11, 12, 42, 40]
+    assert pieces.site1.tolist() == [31, 20, 21, 32, 30, 22]
+    assert pieces.verified.all() and pieces.left.dtype == np.int32

@@ -1002,31 +1002,26 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
-    nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
-    total = int(nodes.sum())
-    last = np.cumsum(nodes) - 1
-    first = last - nodes + 1
-    # Sorted by owner, inner node k of interval i follows the 2 i end nodes and k inner nodes before it.
-    inner = 2 * owner + 1 + np.arange(len(owner))
-    node_u, node_index = np.empty(total), np.empty(total, dtype=int)
-    node_before, node_after = np.empty(total, dtype=int), np.empty(total, dtype=int)
-    node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
-    node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
-    node_u[inner], node_index[inner] = u, index
-    node_before[inner], node_after[inner] = site_before, site_after
-    starts_piece = np.ones(total, dtype=bool)
-    starts_piece[last] = False
-    a = np.flatnonzero(starts_piece)
-    return _Intervals(
-        np.repeat(intervals.span, nodes - 1),
-        node_u[a],
-        node_u[a + 1],
-        node_index[a],
-        node_index[a + 1],
-        node_after[a],
-        node_before[a + 1],
-        np.full(len(a), verified),
+    # Interval i becomes the pieces first[i] .. first[i] + (its node count): the k-th node (sorted) of all
+    # ends piece owner + k and starts the next one; the interval's ends start its first piece and end its last.
+    nodes = np.bincount(owner, minlength=len(intervals.span))
+    first = np.arange(len(nodes)) + np.cumsum(nodes) - nodes
+    last = first + nodes
+    inner = owner + np.arange(len(owner))
+    total = len(nodes) + len(owner)
+    pieces = _Intervals(
+        np.repeat(intervals.span, nodes + 1),
+        *(np.empty(total) for _ in range(2)),
+        *(np.empty(total, dtype=np.int32) for _ in range(4)),
+        np.full(total, verified),
     )
+    pieces.u0[first], pieces.u0[inner + 1] = intervals.u0, u
+    pieces.u1[last], pieces.u1[inner] = intervals.u1, u
+    pieces.left[first], pieces.left[inner + 1] = intervals.left, index
+    pieces.right[last], pieces.right[inner] = intervals.right, index
+    pieces.site0[first], pieces.site0[inner + 1] = intervals.site0, site_after
+    pieces.site1[last], pieces.site1[inner] = intervals.site1, site_before
+    return pieces
 
 
 def _split_vertices(boundary, closed):
