@@ -313,40 +313,57 @@ class _Sites:
 
         On an edge ``r(u) = a2 u**2 + a1 u + a0`` (a vertex: the parabola's height over the edge; a segment's
         line: linear). On a fan ``1 / r(u) = a0 + a1 cos(u) + a2 sin(u)``. Returns ``(a0, a1, a2)``. A segment's
-        line is touched from the side of it where the sample at ``u_ref`` lies.
+        line is touched from the side of it where the sample at ``u_ref`` lies. Each row depends on its own
+        values only: the four kinds (edge or fan, segment or vertex) are computed apart.
         """
         b = self.boundary
+        edge = spans.kind[span] == EDGE
         is_segment = site < b.segment_count
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        terms = tuple(np.empty(len(span)) for _ in range(3))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for on_edge in (True, False):
+                for of_segment in (True, False):
+                    row = np.flatnonzero((edge == on_edge) & (is_segment == of_segment))
+                    if of_segment:
+                        values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
+                    else:
+                        values = self._vertex_terms(spans, span[row], vertex[row], on_edge)
+                    for term, value in zip(terms, values):
+                        term[row] = value
+        return terms
+
+    def _segment_terms(self, spans, span, segment, u_ref, on_edge):
+        """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
+        b = self.boundary
         point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
         across = left_normal(rows(b.unit, segment))
         height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
-        slope = np.einsum("ij,ij->i", unit, across)
-        edge = spans.kind[span] == EDGE
-        side = np.where(height + np.where(edge, u_ref * slope, 0.0) < 0, -1.0, 1.0)
-        offset = rows(b.vertex, vertex) - point
-        with np.errstate(divide="ignore", invalid="ignore"):
-            # Edge, vertex site: offset a along and h across the edge.
+        if on_edge:
+            # The signed height over the site's line changes by `slope` per unit of u.
+            slope = np.einsum("ij,ij->i", unit, across)
+            side = np.where(height + u_ref * slope < 0, -1.0, 1.0)
+            gap = normal - side[:, None] * across
+            closing = 0.5 * np.einsum("ij,ij->i", gap, gap)
+            return side * height / closing, side * slope / closing, np.zeros(len(span))
+        # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
+        side = np.where(height < 0, -1.0, 1.0)
+        distance = side * height
+        k = -(side / distance)[:, None] * across
+        return 1.0 / distance, np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
+
+    def _vertex_terms(self, spans, span, vertex, on_edge):
+        """:meth:`radius_terms` of vertex sites seen from edge spans or from fan spans."""
+        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        offset = rows(self.boundary.vertex, vertex) - point
+        if on_edge:
+            # The vertex lies a along and h across the edge.
             a = np.einsum("ij,ij->i", offset, unit)
             h = np.einsum("ij,ij->i", offset, normal)
-            # Edge, segment site: the signed height over the site's line changes by `slope` per unit of u.
-            closing = 0.5 * np.einsum("ij,ij->i", normal - side[:, None] * across, normal - side[:, None] * across)
-            edge_terms = (
-                np.where(is_segment, side * height / closing, (a * a + h * h) / (2.0 * h)),
-                np.where(is_segment, side * slope / closing, -a / h),
-                np.where(is_segment, 0.0, 1.0 / (2.0 * h)),
-            )
-            # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
-            squared = np.einsum("ij,ij->i", offset, offset)
-            distance = side * height
-            k = np.where(is_segment[:, None], -(side / distance)[:, None] * across, 2.0 * offset / squared[:, None])
-            fan_terms = (
-                np.where(is_segment, 1.0 / distance, 0.0),
-                np.einsum("ij,ij->i", k, unit),
-                np.einsum("ij,ij->i", k, normal),
-            )
-        return tuple(np.where(edge, e, f) for e, f in zip(edge_terms, fan_terms))
+            return (a * a + h * h) / (2.0 * h), -a / h, 1.0 / (2.0 * h)
+        k = 2.0 * offset / np.einsum("ij,ij->i", offset, offset)[:, None]
+        return np.zeros(len(span)), np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
 
 
 def _radius_at(spans, span, terms, u):
