@@ -735,8 +735,10 @@ class _Tracer:
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
-        finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        radius = np.fmax(self.t[intervals.left], self.t[intervals.right])
+        t_left, t_right = self.t[intervals.left], self.t[intervals.right]
+        finite = np.isfinite(t_left) & np.isfinite(t_right)
+        radius = np.fmax(t_left, t_right)
+        del t_left, t_right
         move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
         tolerance = self.of(self.tolerance, intervals)
         wide = move > SMALLEST_MOVE * tolerance

@@ -426,7 +426,10 @@ def group_minima(group, size, *values):
 
 def _first_of_groups(picked, group):
     """The rows ``picked`` (ascending) whose ``group`` differs from the previous one's: each group's first."""
-    return picked[np.diff(group[picked], prepend=-1) != 0]
+    group = group[picked]
+    first = np.ones(len(group), dtype=bool)
+    np.not_equal(group[1:], group[:-1], out=first[1:])
+    return picked[first]
 
 
 def solve(samples, index, boundary, trial, max_t, min_t):
