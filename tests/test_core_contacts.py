@@ -12,7 +12,15 @@ import numpy as np
 import pytest
 
 from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
-from incircu_plugin.core.contacts import SINGLE_INDEX, AxisPoints, Boundary, first_contacts, vertex_contact
+from incircu_plugin.core.contacts import (
+    QUERY_GROUP,
+    SINGLE_INDEX,
+    AxisPoints,
+    Boundary,
+    _group_starts,
+    first_contacts,
+    vertex_contact,
+)
 from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
 
 
@@ -115,6 +123,15 @@ def test_grouped_candidates_are_each_boxs_own_hits_in_the_order_of_its_own_query
         alone = boundary.candidates(low[index : index + 1], high[index : index + 1])[1]
         assert np.array_equal(np.sort(alone), np.flatnonzero(meets))
         assert np.array_equal(segment[box == index], alone)
+
+
+def test_query_groups_are_runs_of_meeting_boxes_cut_every_query_group_boxes():
+    # Ten unit boxes a half apart (each meets the one before), one far away, then three meeting again.
+    x = np.concatenate([0.5 * np.arange(10), [100.0], 200.0 + 0.5 * np.arange(3)])
+    low = np.stack([x, np.zeros(len(x))], axis=1)
+    starts = _group_starts(low, low + 1.0)
+    expected = sorted({*range(0, 10, QUERY_GROUP), 10, 11})
+    assert starts.tolist() == expected
 
 
 def test_the_corner_free_vertex_contact_equals_the_general_formula():

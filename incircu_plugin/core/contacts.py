@@ -232,7 +232,9 @@ class Boundary:
         low_x, low_y = self.low_x[segment], self.low_y[segment]
         high_x, high_y = self.high_x[segment], self.high_y[segment]
         box_low_x, box_low_y, box_high_x, box_high_y = np.concatenate([low, high], axis=1).T.copy()
-        sizes = np.diff(starts, append=count)
+        sizes = np.empty_like(starts)
+        np.subtract(starts[1:], starts[:-1], out=sizes[:-1])
+        sizes[-1] = count - starts[-1]
         first_box, size = starts[group], sizes[group]
         boxes, kept = [], []
         for first in range(int(sizes.max())):
@@ -287,15 +289,15 @@ class Boundary:
 
 def _group_starts(low, high):
     """First box of each group of consecutive boxes queried together: at most ``QUERY_GROUP`` boxes, each
-    meeting the one before it."""
-    count = len(low)
-    apart = np.any(low[1:] > high[:-1], axis=1) | np.any(high[1:] < low[:-1], axis=1)
-    starts = np.flatnonzero(np.concatenate([[True], apart]))
-    sizes = np.diff(starts, append=count)
-    if sizes.max() <= QUERY_GROUP:
-        return starts
-    owner, rank = ranges(-(-sizes // QUERY_GROUP))
-    return starts[owner] + QUERY_GROUP * rank
+    meeting the one before it (a run of boxes that meet is cut every ``QUERY_GROUP`` boxes)."""
+    apart = np.ones(len(low), dtype=bool)
+    apart[1:] = low[1:, 0] > high[:-1, 0]
+    apart[1:] |= low[1:, 1] > high[:-1, 1]
+    apart[1:] |= high[1:, 0] < low[:-1, 0]
+    apart[1:] |= high[1:, 1] < low[:-1, 1]
+    box = np.arange(len(low))
+    run_start = np.maximum.accumulate(np.where(apart, box, 0))
+    return np.flatnonzero((box - run_start) % QUERY_GROUP == 0)
 
 
 def _diagonals(low, high):
