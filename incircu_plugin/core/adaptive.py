@@ -273,6 +273,8 @@ class _Sites:
         self.kinds = kinds
         self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
         self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
+        #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
+        self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
 
     def canonical(self, site):
         """Segment sites replaced by the first segment of their straight run (one line, one site)."""
@@ -281,10 +283,7 @@ class _Sites:
 
     def chain(self, site):
         """Chain of each site (-1 for no site)."""
-        b = self.boundary
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        return np.where(site < 0, -1, np.where(site < b.segment_count, b.chain_id[segment], b.vertex_chain[vertex]))
+        return self.site_chain[np.maximum(site, -1)]
 
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
@@ -298,10 +297,14 @@ class _Sites:
         del on_vertex, vertex
         segment = np.maximum(site[row], 0)
         start, unit = rows(b.start, segment), rows(b.unit, segment)
-        run_length = self.run_end_position[segment] - b.segment_position[segment]
+        segment_position = b.segment_position[segment]
+        run_length = self.run_end_position[segment] - segment_position
         along = np.clip(np.einsum("ij,ij->i", rows(centre, row) - start, unit), 0.0, run_length)
-        foot[row] = start + along[:, None] * unit
-        position[row] = b.segment_position[segment] + along
+        # start + along * unit, in place.
+        unit *= along[:, None]
+        unit += start
+        foot[row] = unit
+        position[row] = segment_position + along
         return foot, position
 
     def distance(self, site, centre):
