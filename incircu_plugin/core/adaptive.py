@@ -504,7 +504,11 @@ class _Tracer:
         self.store = {}
 
     def of(self, values, intervals):
-        """Per-chain ``values`` for each interval (the chain of its span)."""
+        """Per-chain ``values`` for each interval (the chain of its span): spans lie on traced chains only, so
+        one value when those all share it (a single feature)."""
+        traced = values[self.traced]
+        if np.all(traced == traced[0]):
+            return np.full(len(intervals.span), traced[0])
         return values[self.spans.chain[intervals.span]]
 
     def add(self, span, u, t, centre, emit, other_site):
