@@ -445,7 +445,7 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     towards_focus = np.where(height < 0, -1.0, 1.0)[:, None] * across
     height = np.abs(height)
     s = np.einsum("ijk,ik->ij", ends - anchor[:, None, :], unit) - apex_along[:, None]
-    low, high = s.min(axis=1), s.max(axis=1)
+    low, high = np.minimum(s[:, 0], s[:, 1]), np.maximum(s[:, 0], s[:, 1])
     step_z = np.sqrt(np.sqrt(2.0) * tolerance)
     owners, offsets = [], []
     for sign, near, far in (
@@ -462,7 +462,8 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     owner = np.concatenate(owners + [apex])
     s = np.concatenate(offsets + [np.zeros(len(apex))])
     radius = (s * s + height[owner] ** 2) / (2.0 * height[owner])
-    centre = anchor[owner] + (apex_along[owner] + s)[:, None] * unit[owner] + radius[:, None] * towards_focus[owner]
+    centre = rows(anchor, owner) + (apex_along[owner] + s)[:, None] * rows(unit, owner)
+    centre += radius[:, None] * rows(towards_focus, owner)
     return owner, centre, radius
 
 
