@@ -385,31 +385,43 @@ def _crossing(spans, intervals, terms0, terms1):
     one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        # Edge: d2 u^2 + d1 u + d0 = 0, the stable pair of roots.
-        # A vertex at the end of a segment's line touches it: their radii meet in a double root, which
-        # rounding may push to a slightly negative discriminant (or a cosine slightly beyond 1 on a fan).
-        discriminant = d1 * d1 - 4.0 * d2 * d0
-        root = np.sqrt(np.where(discriminant > -DOUBLE_ROOT * d1 * d1, np.maximum(discriminant, 0.0), discriminant))
-        q = -0.5 * (d1 + np.where(d1 < 0, -root, root))
-        edge_roots = (q / d2, d0 / q)
-        # Fan: d0 + d1 cos(u) + d2 sin(u) = 0, i.e. R cos(u - psi) = -d0.
-        psi = np.arctan2(d2, d1)
-        cosine = -d0 / np.hypot(d1, d2)
-        swing = np.arccos(np.where(np.abs(cosine) < 1.0 + DOUBLE_ROOT, np.clip(cosine, -1.0, 1.0), cosine))
-        middle = 0.5 * (u0 + u1)
-        fan_roots = tuple(
-            middle + np.remainder(psi + sign * swing - middle + np.pi, 2.0 * np.pi) - np.pi for sign in (1, -1)
-        )
+    middle = 0.5 * (u0 + u1)
+    # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
+    roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
+    for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
+        for root, value in zip(roots, values):
+            root[rows_of] = value
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
-    for candidate in (np.where(edge, e, f) for e, f in zip(edge_roots, fan_roots)):
+    for candidate in roots:
         inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
         chosen[inside], found[inside] = candidate[inside], True
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
     return np.where(found, chosen, middle), found, at_end
+
+
+def _edge_roots(d0, d1, d2, _middle):
+    """Roots of d2 u^2 + d1 u + d0 = 0 (on an edge), the stable pair.
+
+    A vertex at the end of a segment's line touches it: their radii meet in a double root, which rounding may
+    push to a slightly negative discriminant."""
+    discriminant = d1 * d1 - 4.0 * d2 * d0
+    root = np.sqrt(np.where(discriminant > -DOUBLE_ROOT * d1 * d1, np.maximum(discriminant, 0.0), discriminant))
+    q = -0.5 * (d1 + np.where(d1 < 0, -root, root))
+    return q / d2, d0 / q
+
+
+def _fan_roots(d0, d1, d2, middle):
+    """Roots of d0 + d1 cos(u) + d2 sin(u) = 0 (on a fan), i.e. R cos(u - psi) = -d0, each the one within pi
+    of ``middle``; a cosine that rounding pushed slightly beyond 1 is a double root."""
+    psi = np.arctan2(d2, d1)
+    cosine = -d0 / np.hypot(d1, d2)
+    swing = np.arccos(np.where(np.abs(cosine) < 1.0 + DOUBLE_ROOT, np.clip(cosine, -1.0, 1.0), cosine))
+    return tuple(middle + np.remainder(psi + sign * swing - middle + np.pi, 2.0 * np.pi) - np.pi for sign in (1, -1))
 
 
 def _parabola_stations(focus, anchor, unit, ends, tolerance):
