@@ -876,13 +876,16 @@ class _Tracer:
 
         Returns the mask of those intervals, whose sites are made equal in place.
         """
-        end = np.where(at_end == 0, intervals.left, intervals.right)
+        settled = at_end >= 0
+        # Only the intervals whose crossing lies at an end are looked at.
+        row = np.flatnonzero(settled)
+        end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])
         centre = self.centres(end)
-        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)
+        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
         with np.errstate(invalid="ignore"):
-            touching = np.abs(self.sites.distance(intervals.site0, centre) - self.t[end]) <= slack
-            touching &= np.abs(self.sites.distance(intervals.site1, centre) - self.t[end]) <= slack
-        settled = (at_end >= 0) & touching
+            touching = np.abs(self.sites.distance(intervals.site0[row], centre) - self.t[end]) <= slack
+            touching &= np.abs(self.sites.distance(intervals.site1[row], centre) - self.t[end]) <= slack
+        settled[row] = touching
         intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
