@@ -122,8 +122,10 @@ class _Spans:
         """Points of the samples at parameters ``u`` of spans ``span``, and how far along its edge each lies
         (CRS units; 0 on a fan)."""
         along = np.where(self.kind[span] == EDGE, u, 0.0)
-        point = rows(self.point, span)
-        point += along[:, None] * rows(self.unit, span)
+        # point + along * unit, in place (about twice as fast as with a temporary).
+        point = rows(self.unit, span)
+        point *= along[:, None]
+        point += rows(self.point, span)
         return point, along
 
     def directions(self, span, u):
