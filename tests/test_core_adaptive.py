@@ -375,3 +375,58 @@ def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monk
     polygon = Polygon(bottom + [(40.0, 10.0), (0.0, 10.0)])
     assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
     assert corners["count"] > 0
+
+
+def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
+    from incircu_plugin.core.adaptive import _Intervals, _split_at_nodes
+
+    # Three intervals; the third gets two nodes given out of order, the second none.
+    intervals = _Intervals(
+        span=[0, 1, 2],
+        u0=np.zeros(3),
+        u1=np.array([1.0, 2.0, 3.0]),
+        left=[0, 2, 4],
+        right=[1, 3, 5],
+        site0=[10, 11, 12],
+        site1=[20, 21, 22],
+        verified=np.zeros(3, dtype=bool),
+    )
+    owner, u, index = np.array([2, 0, 2]), np.array([2.0, 0.5, 1.0]), np.array([6, 7, 8])
+    pieces = _split_at_nodes(intervals, owner, u, index, np.array([30, 31, 32]), np.array([40, 41, 42]), True)
+    assert pieces.span.tolist() == [0, 0, 1, 2, 2, 2]
+    assert pieces.u0.tolist() == [0.0, 0.5, 0.0, 0.0, 1.0, 2.0]
+    assert pieces.u1.tolist() == [0.5, 1.0, 2.0, 1.0, 2.0, 3.0]
+    assert pieces.left.tolist() == [0, 7, 2, 4, 8, 6]
+    assert pieces.right.tolist() == [7, 1, 3, 8, 6, 5]
+    # A node's site before it ends the piece on its left, its site after starts the piece on its right.
+    assert pieces.site0.tolist() == [10, 41, 11, 12, 42, 40]
+    assert pieces.site1.tolist() == [31, 20, 21, 32, 30, 22]
+    assert pieces.verified.all() and pieces.left.dtype == np.int32
+
+
+def test_radius_terms_give_disks_that_touch_their_site():
+    from incircu_plugin.core.adaptive import _radius_at, _Tracer
+    from incircu_plugin.core.contacts import Boundary
+
+    # A zigzag bank (its reflex vertices are fans) under a bank with vertices and segments of every slope.
+    bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
+    bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
+    tracer = _Tracer([1, 1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    spans, boundary = tracer.spans, tracer.boundary
+    other = np.arange(4, 8)
+    site = np.concatenate([other, boundary.segment_count + 5 + np.arange(5)])
+    span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
+    u = 0.37 * spans.length[span]
+    assert np.any(spans.kind == 1) and np.any(spans.kind == 0)
+    radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site, u), u)
+    point, _ = spans.points(span, u)
+    centre = point + radius[:, None] * spans.directions(span, u)
+    on_segment = site < boundary.segment_count
+    segment = np.minimum(site, boundary.segment_count - 1)
+    across = np.stack([-boundary.unit[segment, 1], boundary.unit[segment, 0]], axis=1)
+    line_distance = np.abs(np.einsum("ij,ij->i", centre - boundary.start[segment], across))
+    vertex = boundary.vertex[np.maximum(site - boundary.segment_count, 0)]
+    distance = np.where(on_segment, line_distance, np.hypot(*(centre - vertex).T))
+    touched = np.isfinite(radius)
+    assert touched.mean() > 0.5 and touched[spans.kind[span] == 1].any()
+    assert np.allclose(distance[touched], radius[touched], rtol=1e-9, atol=1e-9)

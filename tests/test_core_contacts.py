@@ -12,7 +12,15 @@ import numpy as np
 import pytest
 
 from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
-from incircu_plugin.core.contacts import AxisPoints, Boundary, first_contacts, vertex_contact
+from incircu_plugin.core.contacts import (
+    QUERY_GROUP,
+    SINGLE_INDEX,
+    AxisPoints,
+    Boundary,
+    _group_starts,
+    first_contacts,
+    vertex_contact,
+)
 from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
 
 
@@ -87,6 +95,43 @@ def test_a_segment_starts_at_its_start_vertex_on_every_chain():
     assert np.array_equal(boundary.vertex[boundary.start_vertex(segment)], expected_start)
     assert np.array_equal(boundary.start, expected_start)
     assert np.array_equal(boundary.end(segment), expected_end)
+
+
+def test_grouped_candidates_are_each_boxs_own_hits_in_the_order_of_its_own_query():
+    # Two zigzag chains of more than SINGLE_INDEX segments in all, the second running backwards (the index
+    # holds runs of segments, queried with groups of consecutive boxes, and reports its hits in its own order): every box gets exactly the segments whose bounding box meets it,
+    # boxes in order, each box's segments in the order a query with that box alone reports them.
+    rng = np.random.default_rng(7)
+    size = SINGLE_INDEX // 2 + 1001
+    x = np.arange(size, dtype=float)
+    chains = [
+        np.stack([x, rng.uniform(0.0, 3.0, size)], axis=1),
+        np.stack([x[::-1], rng.uniform(6.0, 9.0, size)], axis=1),
+    ]
+    boundary = Boundary(chains)
+    assert boundary.index_run > 1
+    # Overlapping boxes along the chains, then boxes far apart, then overlapping ones again (odd count).
+    centre = np.concatenate([np.linspace(100.0, 130.0, 23), rng.uniform(0.0, size, 9), np.linspace(5000.0, 5040.0, 17)])
+    centre = np.stack([centre, rng.uniform(0.0, 9.0, len(centre))], axis=1)
+    reach = rng.uniform(2.0, 8.0, len(centre))[:, None]
+    low, high = centre - reach, centre + reach
+    box, segment = boundary.candidates(low, high)
+    assert np.all(np.diff(box) >= 0)
+    for index in range(len(centre)):
+        meets = (boundary.low_x <= high[index, 0]) & (boundary.high_x >= low[index, 0])
+        meets &= (boundary.low_y <= high[index, 1]) & (boundary.high_y >= low[index, 1])
+        alone = boundary.candidates(low[index : index + 1], high[index : index + 1])[1]
+        assert np.array_equal(np.sort(alone), np.flatnonzero(meets))
+        assert np.array_equal(segment[box == index], alone)
+
+
+def test_query_groups_are_runs_of_meeting_boxes_cut_every_query_group_boxes():
+    # Ten unit boxes a half apart (each meets the one before), one far away, then three meeting again.
+    x = np.concatenate([0.5 * np.arange(10), [100.0], 200.0 + 0.5 * np.arange(3)])
+    low = np.stack([x, np.zeros(len(x))], axis=1)
+    starts = _group_starts(low, low + 1.0)
+    expected = sorted({*range(0, 10, QUERY_GROUP), 10, 11})
+    assert starts.tolist() == expected
 
 
 def test_the_corner_free_vertex_contact_equals_the_general_formula():

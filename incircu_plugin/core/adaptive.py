@@ -122,8 +122,10 @@ class _Spans:
         """Points of the samples at parameters ``u`` of spans ``span``, and how far along its edge each lies
         (CRS units; 0 on a fan)."""
         along = np.where(self.kind[span] == EDGE, u, 0.0)
-        point = rows(self.point, span)
-        point += along[:, None] * rows(self.unit, span)
+        # point + along * unit, in place (about twice as fast as with a temporary).
+        point = rows(self.unit, span)
+        point *= along[:, None]
+        point += rows(self.point, span)
         return point, along
 
     def directions(self, span, u):
@@ -273,6 +275,8 @@ class _Sites:
         self.kinds = kinds
         self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
         self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
+        #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
+        self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
 
     def canonical(self, site):
         """Segment sites replaced by the first segment of their straight run (one line, one site)."""
@@ -281,10 +285,7 @@ class _Sites:
 
     def chain(self, site):
         """Chain of each site (-1 for no site)."""
-        b = self.boundary
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        return np.where(site < 0, -1, np.where(site < b.segment_count, b.chain_id[segment], b.vertex_chain[vertex]))
+        return self.site_chain[np.maximum(site, -1)]
 
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
@@ -298,10 +299,14 @@ class _Sites:
         del on_vertex, vertex
         segment = np.maximum(site[row], 0)
         start, unit = rows(b.start, segment), rows(b.unit, segment)
-        run_length = self.run_end_position[segment] - b.segment_position[segment]
+        segment_position = b.segment_position[segment]
+        run_length = self.run_end_position[segment] - segment_position
         along = np.clip(np.einsum("ij,ij->i", rows(centre, row) - start, unit), 0.0, run_length)
-        foot[row] = start + along[:, None] * unit
-        position[row] = b.segment_position[segment] + along
+        # start + along * unit, in place.
+        unit *= along[:, None]
+        unit += start
+        foot[row] = unit
+        position[row] = segment_position + along
         return foot, position
 
     def distance(self, site, centre):
@@ -313,40 +318,57 @@ class _Sites:
 
         On an edge ``r(u) = a2 u**2 + a1 u + a0`` (a vertex: the parabola's height over the edge; a segment's
         line: linear). On a fan ``1 / r(u) = a0 + a1 cos(u) + a2 sin(u)``. Returns ``(a0, a1, a2)``. A segment's
-        line is touched from the side of it where the sample at ``u_ref`` lies.
+        line is touched from the side of it where the sample at ``u_ref`` lies. Each row depends on its own
+        values only: the four kinds (edge or fan, segment or vertex) are computed apart.
         """
         b = self.boundary
+        edge = spans.kind[span] == EDGE
         is_segment = site < b.segment_count
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        terms = tuple(np.empty(len(span)) for _ in range(3))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for on_edge in (True, False):
+                for of_segment in (True, False):
+                    row = np.flatnonzero((edge == on_edge) & (is_segment == of_segment))
+                    if of_segment:
+                        values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
+                    else:
+                        values = self._vertex_terms(spans, span[row], vertex[row], on_edge)
+                    for term, value in zip(terms, values):
+                        term[row] = value
+        return terms
+
+    def _segment_terms(self, spans, span, segment, u_ref, on_edge):
+        """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
+        b = self.boundary
         point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
         across = left_normal(rows(b.unit, segment))
         height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
-        slope = np.einsum("ij,ij->i", unit, across)
-        edge = spans.kind[span] == EDGE
-        side = np.where(height + np.where(edge, u_ref * slope, 0.0) < 0, -1.0, 1.0)
-        offset = rows(b.vertex, vertex) - point
-        with np.errstate(divide="ignore", invalid="ignore"):
-            # Edge, vertex site: offset a along and h across the edge.
+        if on_edge:
+            # The signed height over the site's line changes by `slope` per unit of u.
+            slope = np.einsum("ij,ij->i", unit, across)
+            side = np.where(height + u_ref * slope < 0, -1.0, 1.0)
+            gap = normal - side[:, None] * across
+            closing = 0.5 * np.einsum("ij,ij->i", gap, gap)
+            return side * height / closing, side * slope / closing, np.zeros(len(span))
+        # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
+        side = np.where(height < 0, -1.0, 1.0)
+        distance = side * height
+        k = -(side / distance)[:, None] * across
+        return 1.0 / distance, np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
+
+    def _vertex_terms(self, spans, span, vertex, on_edge):
+        """:meth:`radius_terms` of vertex sites seen from edge spans or from fan spans."""
+        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        offset = rows(self.boundary.vertex, vertex) - point
+        if on_edge:
+            # The vertex lies a along and h across the edge.
             a = np.einsum("ij,ij->i", offset, unit)
             h = np.einsum("ij,ij->i", offset, normal)
-            # Edge, segment site: the signed height over the site's line changes by `slope` per unit of u.
-            closing = 0.5 * np.einsum("ij,ij->i", normal - side[:, None] * across, normal - side[:, None] * across)
-            edge_terms = (
-                np.where(is_segment, side * height / closing, (a * a + h * h) / (2.0 * h)),
-                np.where(is_segment, side * slope / closing, -a / h),
-                np.where(is_segment, 0.0, 1.0 / (2.0 * h)),
-            )
-            # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
-            squared = np.einsum("ij,ij->i", offset, offset)
-            distance = side * height
-            k = np.where(is_segment[:, None], -(side / distance)[:, None] * across, 2.0 * offset / squared[:, None])
-            fan_terms = (
-                np.where(is_segment, 1.0 / distance, 0.0),
-                np.einsum("ij,ij->i", k, unit),
-                np.einsum("ij,ij->i", k, normal),
-            )
-        return tuple(np.where(edge, e, f) for e, f in zip(edge_terms, fan_terms))
+            return (a * a + h * h) / (2.0 * h), -a / h, 1.0 / (2.0 * h)
+        k = 2.0 * offset / np.einsum("ij,ij->i", offset, offset)[:, None]
+        return np.zeros(len(span)), np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
 
 
 def _radius_at(spans, span, terms, u):
@@ -365,31 +387,43 @@ def _crossing(spans, intervals, terms0, terms1):
     one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        # Edge: d2 u^2 + d1 u + d0 = 0, the stable pair of roots.
-        # A vertex at the end of a segment's line touches it: their radii meet in a double root, which
-        # rounding may push to a slightly negative discriminant (or a cosine slightly beyond 1 on a fan).
-        discriminant = d1 * d1 - 4.0 * d2 * d0
-        root = np.sqrt(np.where(discriminant > -DOUBLE_ROOT * d1 * d1, np.maximum(discriminant, 0.0), discriminant))
-        q = -0.5 * (d1 + np.where(d1 < 0, -root, root))
-        edge_roots = (q / d2, d0 / q)
-        # Fan: d0 + d1 cos(u) + d2 sin(u) = 0, i.e. R cos(u - psi) = -d0.
-        psi = np.arctan2(d2, d1)
-        cosine = -d0 / np.hypot(d1, d2)
-        swing = np.arccos(np.where(np.abs(cosine) < 1.0 + DOUBLE_ROOT, np.clip(cosine, -1.0, 1.0), cosine))
-        middle = 0.5 * (u0 + u1)
-        fan_roots = tuple(
-            middle + np.remainder(psi + sign * swing - middle + np.pi, 2.0 * np.pi) - np.pi for sign in (1, -1)
-        )
+    middle = 0.5 * (u0 + u1)
+    # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
+    roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
+    for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
+        for root, value in zip(roots, values):
+            root[rows_of] = value
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
-    for candidate in (np.where(edge, e, f) for e, f in zip(edge_roots, fan_roots)):
+    for candidate in roots:
         inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
         chosen[inside], found[inside] = candidate[inside], True
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
     return np.where(found, chosen, middle), found, at_end
+
+
+def _edge_roots(d0, d1, d2, _middle):
+    """Roots of d2 u^2 + d1 u + d0 = 0 (on an edge), the stable pair.
+
+    A vertex at the end of a segment's line touches it: their radii meet in a double root, which rounding may
+    push to a slightly negative discriminant."""
+    discriminant = d1 * d1 - 4.0 * d2 * d0
+    root = np.sqrt(np.where(discriminant > -DOUBLE_ROOT * d1 * d1, np.maximum(discriminant, 0.0), discriminant))
+    q = -0.5 * (d1 + np.where(d1 < 0, -root, root))
+    return q / d2, d0 / q
+
+
+def _fan_roots(d0, d1, d2, middle):
+    """Roots of d0 + d1 cos(u) + d2 sin(u) = 0 (on a fan), i.e. R cos(u - psi) = -d0, each the one within pi
+    of ``middle``; a cosine that rounding pushed slightly beyond 1 is a double root."""
+    psi = np.arctan2(d2, d1)
+    cosine = -d0 / np.hypot(d1, d2)
+    swing = np.arccos(np.where(np.abs(cosine) < 1.0 + DOUBLE_ROOT, np.clip(cosine, -1.0, 1.0), cosine))
+    return tuple(middle + np.remainder(psi + sign * swing - middle + np.pi, 2.0 * np.pi) - np.pi for sign in (1, -1))
 
 
 def _parabola_stations(focus, anchor, unit, ends, tolerance):
@@ -425,7 +459,7 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     towards_focus = np.where(height < 0, -1.0, 1.0)[:, None] * across
     height = np.abs(height)
     s = np.einsum("ijk,ik->ij", ends - anchor[:, None, :], unit) - apex_along[:, None]
-    low, high = s.min(axis=1), s.max(axis=1)
+    low, high = np.minimum(s[:, 0], s[:, 1]), np.maximum(s[:, 0], s[:, 1])
     step_z = np.sqrt(np.sqrt(2.0) * tolerance)
     owners, offsets = [], []
     for sign, near, far in (
@@ -442,7 +476,8 @@ def _parabola_stations(focus, anchor, unit, ends, tolerance):
     owner = np.concatenate(owners + [apex])
     s = np.concatenate(offsets + [np.zeros(len(apex))])
     radius = (s * s + height[owner] ** 2) / (2.0 * height[owner])
-    centre = anchor[owner] + (apex_along[owner] + s)[:, None] * unit[owner] + radius[:, None] * towards_focus[owner]
+    centre = rows(anchor, owner) + (apex_along[owner] + s)[:, None] * rows(unit, owner)
+    centre += radius[:, None] * rows(towards_focus, owner)
     return owner, centre, radius
 
 
@@ -484,7 +519,11 @@ class _Tracer:
         self.store = {}
 
     def of(self, values, intervals):
-        """Per-chain ``values`` for each interval (the chain of its span)."""
+        """Per-chain ``values`` for each interval (the chain of its span): spans lie on traced chains only, so
+        one value when those all share it (a single feature)."""
+        traced = values[self.traced]
+        if np.all(traced == traced[0]):
+            return np.full(len(intervals.span), traced[0])
         return values[self.spans.chain[intervals.span]]
 
     def add(self, span, u, t, centre, emit, other_site):
@@ -718,8 +757,10 @@ class _Tracer:
 
     def _is_open(self, intervals):
         """Intervals whose two ends touch different sites and that are still wide enough to split."""
-        finite = np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        radius = np.fmax(self.t[intervals.left], self.t[intervals.right])
+        t_left, t_right = self.t[intervals.left], self.t[intervals.right]
+        finite = np.isfinite(t_left) & np.isfinite(t_right)
+        radius = np.fmax(t_left, t_right)
+        del t_left, t_right
         move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
         tolerance = self.of(self.tolerance, intervals)
         wide = move > SMALLEST_MOVE * tolerance
@@ -837,13 +878,16 @@ class _Tracer:
 
         Returns the mask of those intervals, whose sites are made equal in place.
         """
-        end = np.where(at_end == 0, intervals.left, intervals.right)
+        settled = at_end >= 0
+        # Only the intervals whose crossing lies at an end are looked at.
+        row = np.flatnonzero(settled)
+        end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])
         centre = self.centres(end)
-        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)
+        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
         with np.errstate(invalid="ignore"):
-            touching = np.abs(self.sites.distance(intervals.site0, centre) - self.t[end]) <= slack
-            touching &= np.abs(self.sites.distance(intervals.site1, centre) - self.t[end]) <= slack
-        settled = (at_end >= 0) & touching
+            touching = np.abs(self.sites.distance(intervals.site0[row], centre) - self.t[end]) <= slack
+            touching &= np.abs(self.sites.distance(intervals.site1[row], centre) - self.t[end]) <= slack
+        settled[row] = touching
         intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
@@ -1002,31 +1046,26 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
-    nodes = np.bincount(owner, minlength=len(intervals.span)) + 2
-    total = int(nodes.sum())
-    last = np.cumsum(nodes) - 1
-    first = last - nodes + 1
-    # Sorted by owner, inner node k of interval i follows the 2 i end nodes and k inner nodes before it.
-    inner = 2 * owner + 1 + np.arange(len(owner))
-    node_u, node_index = np.empty(total), np.empty(total, dtype=int)
-    node_before, node_after = np.empty(total, dtype=int), np.empty(total, dtype=int)
-    node_u[first], node_index[first], node_after[first] = intervals.u0, intervals.left, intervals.site0
-    node_u[last], node_index[last], node_before[last] = intervals.u1, intervals.right, intervals.site1
-    node_u[inner], node_index[inner] = u, index
-    node_before[inner], node_after[inner] = site_before, site_after
-    starts_piece = np.ones(total, dtype=bool)
-    starts_piece[last] = False
-    a = np.flatnonzero(starts_piece)
-    return _Intervals(
-        np.repeat(intervals.span, nodes - 1),
-        node_u[a],
-        node_u[a + 1],
-        node_index[a],
-        node_index[a + 1],
-        node_after[a],
-        node_before[a + 1],
-        np.full(len(a), verified),
+    # Interval i becomes the pieces first[i] .. first[i] + (its node count): the k-th node (sorted) of all
+    # ends piece owner + k and starts the next one; the interval's ends start its first piece and end its last.
+    nodes = np.bincount(owner, minlength=len(intervals.span))
+    first = np.arange(len(nodes)) + np.cumsum(nodes) - nodes
+    last = first + nodes
+    inner = owner + np.arange(len(owner))
+    total = len(nodes) + len(owner)
+    pieces = _Intervals(
+        np.repeat(intervals.span, nodes + 1),
+        *(np.empty(total) for _ in range(2)),
+        *(np.empty(total, dtype=np.int32) for _ in range(4)),
+        np.full(total, verified),
     )
+    pieces.u0[first], pieces.u0[inner + 1] = intervals.u0, u
+    pieces.u1[last], pieces.u1[inner] = intervals.u1, u
+    pieces.left[first], pieces.left[inner + 1] = intervals.left, index
+    pieces.right[last], pieces.right[inner] = intervals.right, index
+    pieces.site0[first], pieces.site0[inner + 1] = intervals.site0, site_after
+    pieces.site1[last], pieces.site1[inner] = intervals.site1, site_before
+    return pieces
 
 
 def _split_vertices(boundary, closed):

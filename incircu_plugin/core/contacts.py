@@ -55,8 +55,12 @@ COARSE_LEVELS = 2
 #: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
 SMALLEST_TRIAL = 1.0 / 16.0
 
-#: Consecutive samples whose candidate boxes share one spatial-index query.
-QUERY_GROUP = 2
+#: Most consecutive samples whose candidate boxes share one spatial-index query. The grouping changes no pair
+#: nor its order: the index reports the hits of any query in one fixed order (its depth-first order), so each
+#: box's segments come in that order whatever group it was queried in. 4 instead of 2, and no box grouped
+#: with one it does not meet, cut the time of the queries at 10^6 vertices by about 30 %; 8 is about as fast
+#: but raised the peak memory by 40 MiB.
+QUERY_GROUP = 4
 
 #: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
 #: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
@@ -188,10 +192,11 @@ class Boundary:
 
         With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
-        per ``QUERY_GROUP`` consecutive boxes (their union), which is much cheaper than one query per box when
-        consecutive boxes overlap, as they do along a chain; the hits are then filtered segment by segment
-        and box by box. An index of single segments is queried with every box at once. All give the same
-        pairs.
+        per group of up to ``QUERY_GROUP`` consecutive boxes that each meet the one before (their union,
+        :func:`_group_starts`), which is much cheaper than one query per box where consecutive boxes overlap,
+        as they do along a chain; the hits are then filtered segment by segment against their group's box,
+        then against each of its boxes (:meth:`_split_groups`). An index of single segments is queried with
+        every box at once. All give the same pairs, in the same order.
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
@@ -200,26 +205,53 @@ class Boundary:
             return np.nonzero(meets)
         if self.index_run == 1:
             return self._query_each(low, high)
-        starts = np.arange(0, count, QUERY_GROUP)
+        starts = _group_starts(low, high)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
         group, run = self.tree.query(_diagonals(group_low, group_high))
-        # Every run hit, segment by segment (only the last run may be short: its missing segments dropped).
-        segment = (run[:, None] * self.index_run + np.arange(self.index_run)).ravel()
-        group = np.repeat(group, self.index_run)
-        if len(segment) and segment.max() >= self.segment_count:
+        # Every run hit, segment by segment: a row per hit (only the last run may be short: its missing
+        # segments are the last one again, never kept).
+        segment = run[:, None] * self.index_run + np.arange(self.index_run)
+        real = None
+        if len(run) and (run.max() + 1) * self.index_run > self.segment_count:
             real = segment < self.segment_count
-            group, segment = group[real], segment[real]
-        keep = self._overlaps(segment, group, group_low, group_high)
-        group, segment = group[keep], segment[keep]
+            np.minimum(segment, self.segment_count - 1, out=segment)
+        keep = self._overlaps(segment, group[:, None], group_low, group_high)
+        if real is not None:
+            keep &= real
+        group = np.broadcast_to(group[:, None], keep.shape)[keep]
+        segment = segment[keep]
+        return self._split_groups(group, segment, starts, low, high)
 
-        hits_per_group = np.bincount(group, minlength=len(starts))
-        first_hit = np.cumsum(hits_per_group) - hits_per_group
-        box_group = np.arange(count) // QUERY_GROUP
-        box, offset = ranges(hits_per_group[box_group])
-        segment = segment[first_hit[box_group[box]] + offset]
-        keep = self._overlaps(segment, box, low, high)
-        return box[keep], segment[keep]
+    def _split_groups(self, group, segment, starts, low, high):
+        """Pairs (box index, segment index), sorted by box, from the pairs (group index, segment index) of
+        the boxes' groups (sorted by group; group ``g`` holds boxes ``starts[g]`` up to the next group's
+        first): each group's segments tested against each of its boxes in turn, in their order."""
+        count = len(low)
+        # Segment columns gathered once for all boxes of a group, box columns made contiguous.
+        low_x, low_y = self.low_x[segment], self.low_y[segment]
+        high_x, high_y = self.high_x[segment], self.high_y[segment]
+        box_low_x, box_low_y, box_high_x, box_high_y = np.concatenate([low, high], axis=1).T.copy()
+        sizes = np.empty_like(starts)
+        np.subtract(starts[1:], starts[:-1], out=sizes[:-1])
+        sizes[-1] = count - starts[-1]
+        first_box, size = starts[group], sizes[group]
+        boxes, kept = [], []
+        for first in range(int(sizes.max())):
+            box = first_box + first
+            np.minimum(box, count - 1, out=box)
+            keep = low_x <= box_high_x[box]
+            keep &= high_x >= box_low_x[box]
+            keep &= low_y <= box_high_y[box]
+            keep &= high_y >= box_low_y[box]
+            if first:
+                keep &= size > first
+            boxes.append(box[keep])
+            kept.append(segment[keep])
+        box = np.concatenate(boxes)
+        # Each part is sorted by box: a stable sort merges them, each box's segments in their order.
+        order = np.argsort(box, kind="stable")
+        return box[order], np.concatenate(kept)[order]
 
     def _query_each(self, low, high):
         """Pairs (box index, segment index), sorted by box, from an index of single segments."""
@@ -253,6 +285,19 @@ class Boundary:
         keep &= self.low_y[segment] <= high[:, 1][box]
         keep &= self.high_y[segment] >= low[:, 1][box]
         return keep
+
+
+def _group_starts(low, high):
+    """First box of each group of consecutive boxes queried together: at most ``QUERY_GROUP`` boxes, each
+    meeting the one before it (a run of boxes that meet is cut every ``QUERY_GROUP`` boxes)."""
+    apart = np.ones(len(low), dtype=bool)
+    apart[1:] = low[1:, 0] > high[:-1, 0]
+    apart[1:] |= low[1:, 1] > high[:-1, 1]
+    apart[1:] |= high[1:, 0] < low[:-1, 0]
+    apart[1:] |= high[1:, 1] < low[:-1, 1]
+    box = np.arange(len(low))
+    run_start = np.maximum.accumulate(np.where(apart, box, 0))
+    return np.flatnonzero((box - run_start) % QUERY_GROUP == 0)
 
 
 def _diagonals(low, high):
@@ -383,7 +428,10 @@ def group_minima(group, size, *values):
 
 def _first_of_groups(picked, group):
     """The rows ``picked`` (ascending) whose ``group`` differs from the previous one's: each group's first."""
-    return picked[np.diff(group[picked], prepend=-1) != 0]
+    group = group[picked]
+    first = np.ones(len(group), dtype=bool)
+    np.not_equal(group[1:], group[:-1], out=first[1:])
+    return picked[first]
 
 
 def solve(samples, index, boundary, trial, max_t, min_t):
