@@ -179,18 +179,28 @@ def test_result_does_not_depend_on_ring_start_or_orientation(name):
         assert pair_error(found, reference) <= FLAT_CAP_TOLERANCE * case.width
 
 
-@pytest.mark.parametrize("origin", [(0.0, 0.0), (0.3, -3.3), (12345.678, 1e5)])
-@pytest.mark.parametrize("height", [10.0, 37.5, 1000.0])
-def test_a_north_south_box_starts_at_its_south_end_whatever_its_ring(origin, height):
+@pytest.mark.parametrize(
+    ("origin", "width", "height"),
+    [
+        ((0.0, 0.0), 1.0, 10.0),
+        ((0.3, -3.3), 1.0, 37.5),
+        ((12345.678, 1e5), 1.0, 1000.0),
+        # Boxes of centimetres to metres far from the origin: adding the origin rounds x by more than SAME_X of
+        # their size.
+        ((8892296.71, 16766275.72), 0.0129, 0.072),
+        ((17290681.26, 1638125.93), 0.7305, 3.09),
+    ],
+)
+def test_a_north_south_box_starts_at_its_south_end_whatever_its_ring(origin, width, height):
     """Both ends of a north-south box have the same x up to rounding: the start is the south one, for every
     ring start and orientation (rounding alone used to decide the order)."""
     x, y = origin
-    corners = np.asarray(box(x, y, x + 1.0, y + height).exterior.coords)[:-1]
+    corners = np.asarray(box(x, y, x + width, y + height).exterior.coords)[:-1]
     for shift in range(4):
         for ring in (np.roll(corners, shift, axis=0), np.roll(corners[::-1], shift, axis=0)):
             ends = find_ends(Polygon(ring))
             assert ends.start.y < ends.end.y
-            assert math.dist(ends.start.coords[0], (x + 0.5, y)) <= FLAT_CAP_TOLERANCE
+            assert math.dist(ends.start.coords[0], (x + width / 2.0, y)) <= FLAT_CAP_TOLERANCE * width
 
 
 def test_an_end_slightly_west_of_the_other_is_the_start():

@@ -522,15 +522,15 @@ def _ends_of_trunks(frames, trunks):
     path_lengths = tips.along[last] + tips.radii[tips.starts[::2]] + tips.radii[last]
     elongated = (diameters > 0.0) & (path_lengths >= ELONGATION_THRESHOLD * diameters)
     backward = tips.group % 2 == 1
+    # The start rule is decided in the local frame (unit diagonal), before the origin's rounding.
+    east = ends[:, 1, 0] - ends[:, 0, 0]
+    swap = np.where(np.abs(east) <= SAME_X, ends[:, 1, 1] < ends[:, 0, 1], east < 0.0)
     origins = np.array([frames[index].origin for index in chosen])
     scales = np.array([frames[index].scale for index in chosen])
     ends = ends * scales[:, None, None] + origins[:, None, :]
     for number in np.flatnonzero(np.max(np.abs(origins), axis=1) * np.finfo(float).eps > ON_RING * scales):
         exterior = frames[chosen[number]].polygon.exterior
         ends[number] = [_on_ring(exterior, xy, ON_RING * scales[number]) for xy in ends[number]]
-    east = ends[:, 1, 0] - ends[:, 0, 0]
-    same_x = np.abs(east) <= SAME_X * scales
-    swap = np.where(same_x, ends[:, 1, 1] < ends[:, 0, 1], east < 0.0)
     ends[swap] = ends[swap, ::-1]
     points = shapely.points(ends)
     lines = shapely.linestrings(
