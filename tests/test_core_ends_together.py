@@ -15,6 +15,7 @@ from shapely.geometry import LineString, Polygon, box
 
 from benchmarks.rivers import river_layer
 from incircu_plugin.core import Cancelled, centerlines_together, find_ends, polygon_centerline, polygon_centerline_steps
+from incircu_plugin.core import ends as ends_module
 from incircu_plugin.core.ends import find_ends_together
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
 from tests.support import geometry_cases
@@ -22,6 +23,31 @@ from tests.support import geometry_cases
 #: Largest distance between a batched end and the lone one, as a fraction of the polygon's bounding-box
 #: diagonal (rounding only: both run the same operations on the same numbers).
 SAME_END = 1e-9
+
+
+@pytest.fixture(autouse=True)
+def joint_path_only(monkeypatch):
+    """Fail a test whose batch fell back to one polygon at a time.
+
+    ``_ends_together`` answers a batch whose joint computation raised by computing each polygon alone, which
+    would hide any fault of the joint path from every comparison with ``find_ends`` below.
+    """
+    computing = []
+    fallbacks = []
+    joint = ends_module._ends_together
+
+    def watched(polygons, *arguments):
+        if computing:
+            fallbacks.append(len(polygons))
+        computing.append(True)
+        try:
+            return joint(polygons, *arguments)
+        finally:
+            computing.pop()
+
+    monkeypatch.setattr(ends_module, "_ends_together", watched)
+    yield
+    assert not fallbacks, "a batch fell back to one polygon at a time"
 
 
 def extent(polygon):

@@ -19,6 +19,7 @@ tight meander) still makes the sweep slower, about 0.3 s for 20,000 samples.
 """
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import shapely
@@ -163,7 +164,7 @@ def _triangulations(polygons):
         kept_samples, kept_triangles = done[owner], done[triangle_owner]
         renumbered = np.cumsum(kept_samples) - 1
         stored.append(
-            (
+            _Round(
                 corners[kept_triangles],
                 renumbered[corner_ids[kept_triangles]],
                 renumbered[following[kept_samples]],
@@ -176,20 +177,31 @@ def _triangulations(polygons):
         split = ~present & refine[owner]
         keep = refine[owner]
         samples, ring, owner = _split_samples(samples, ring, owner, following, split, keep)
-    return (*_polygon_order(stored), steps, made)
+    return (*_merged_by_polygon(stored), steps, made)
 
 
-def _polygon_order(stored):
-    """Return the triangulations stored round by round (each round's samples numbered from 0) as one set,
-    polygon after polygon: ``corners, corner_ids, following, triangle_owner``.
+class _Round(NamedTuple):
+    """The triangulations of the polygons finished in one refinement round, samples numbered from 0."""
+
+    corners: np.ndarray
+    corner_ids: np.ndarray
+    following: np.ndarray
+    sample_owner: np.ndarray
+    triangle_owner: np.ndarray
+
+
+def _merged_by_polygon(rounds):
+    """Return the triangulations of all rounds as one set, polygon after polygon: ``corners, corner_ids,
+    following, triangle_owner``.
 
     Within a polygon the order of its samples and triangles is kept (a polygon is triangulated in one round).
     """
-    sample_counts = [len(part[2]) for part in stored]
-    first_sample = np.cumsum([0] + sample_counts[:-1])
-    corner_ids = np.concatenate([part[1] + first for part, first in zip(stored, first_sample)])
-    following = np.concatenate([part[2] + first for part, first in zip(stored, first_sample)])
-    corners, sample_owner, triangle_owner = (np.concatenate([part[k] for part in stored]) for k in (0, 3, 4))
+    first_sample = np.cumsum([0] + [len(part.following) for part in rounds[:-1]])
+    corner_ids = np.concatenate([part.corner_ids + first for part, first in zip(rounds, first_sample)])
+    following = np.concatenate([part.following + first for part, first in zip(rounds, first_sample)])
+    corners = np.concatenate([part.corners for part in rounds])
+    sample_owner = np.concatenate([part.sample_owner for part in rounds])
+    triangle_owner = np.concatenate([part.triangle_owner for part in rounds])
     sample_order = np.argsort(sample_owner, kind="stable")
     position = np.empty_like(sample_order)
     position[sample_order] = np.arange(len(sample_order))

@@ -1,0 +1,49 @@
+"""Skeleton of the automatic ends (``incircu_plugin.core.skeleton``): what it takes from GEOS.
+
+The triangle corners are identified by the sample index each point carries as z through GEOS's Delaunay
+triangulation; these tests fail if a GEOS version drops or mixes up the z values.
+"""
+
+import numpy as np
+import shapely
+
+from incircu_plugin.core.contacts import ranges
+from incircu_plugin.core.skeleton import _delaunay_all, joint_skeletons
+
+
+def triangle_areas(corners):
+    """Areas of triangles given as corners of shape (t, 3, 2)."""
+    first, second = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    return 0.5 * np.abs(first[:, 0] * second[:, 1] - first[:, 1] * second[:, 0])
+
+
+def test_triangle_corners_are_identified_by_the_ids_carried_through_geos():
+    """Each polygon's triangles, read through their corner ids, tile exactly its points' convex hull and use
+    every one of its points (random points: general position)."""
+    rng = np.random.default_rng(3)
+    samples = np.concatenate([rng.random((150, 2)), rng.random((120, 2)) * (2.0, 0.5) + (3.0, 0.0)])
+    owner = np.repeat([0, 1], [150, 120])
+    local = ranges(np.bincount(owner))[1]
+    corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, np.array([1e-3, 1e-3]), 2)
+    assert not np.any(failed)
+    for polygon in (0, 1):
+        own = triangle_owner == polygon
+        points = np.flatnonzero(owner == polygon)
+        assert np.all(owner[corner_ids[own]] == polygon)
+        assert set(corner_ids[own].ravel().tolist()) == set(points.tolist())
+        hull = shapely.MultiPoint(samples[points]).convex_hull.area
+        assert abs(triangle_areas(corners[own]).sum() - hull) <= 1e-6 * hull
+
+
+def test_joint_skeletons_keep_each_polygons_nodes_and_edges_to_itself():
+    """Nodes come polygon after polygon, lie in their own polygon, and edges never join two polygons (the
+    boxes overlap in x, so a mixed-up sample numbering would link them)."""
+    polygons = [shapely.box(0.0, 0.0, 1.0, 0.1), shapely.box(-0.5, 0.2, 0.5, 0.3), shapely.box(0.2, -0.4, 0.3, 0.4)]
+    skeleton = joint_skeletons(polygons)
+    assert skeleton.errors == [None, None, None]
+    assert np.all(np.diff(skeleton.owner) >= 0)
+    for index, polygon in enumerate(polygons):
+        nodes = skeleton.nodes[skeleton.owner == index]
+        assert len(nodes) > 0
+        assert np.all(shapely.covers(polygon.buffer(1e-9), shapely.points(nodes)))
+    assert np.all(skeleton.owner[skeleton.edges[:, 0]] == skeleton.owner[skeleton.edges[:, 1]])
