@@ -278,3 +278,35 @@ def test_automatic_ends_and_islands_together():
     assert result.line.is_simple
     for island in islands:
         assert not result.line.intersects(island.buffer(-TOLERANCE))
+
+
+def test_a_blocked_shortest_slit_gives_way_to_the_next_shortest(monkeypatch):
+    """When the shortest slit, tried alone first, is blocked, the next shortest free candidate is taken.
+
+    A round island (radius 2 around (100, 6)) has one shortest slit, straight down to the bank (length 4); it
+    is refused here, so the slit must start one candidate step beside it: longer than 4 by less than the
+    sagitta of that step.
+    """
+    free_candidates = islands_module._free_candidates
+    refused = []
+
+    def refuse_the_first_tried_alone(search, islands, starts, feet, lengths):
+        if len(starts) == 1 and not refused:
+            refused.append(float(lengths[0]))
+            return np.zeros(0, dtype=np.int64)
+        return free_candidates(search, islands, starts, feet, lengths)
+
+    monkeypatch.setattr(islands_module, "_free_candidates", refuse_the_first_tried_alone)
+    radius, centre = 2.0, (100.0, 6.0)
+    island = Point(centre).buffer(radius, quad_segs=64)
+    polygon = channel_with(island)
+    c1, c2 = split_polygon(polygon, SPLIT_POINTS)
+    bridged_a, _ = bridge_islands(c1, c2, [island])
+    assert refused == [pytest.approx(centre[1] - radius, abs=1e-9)]
+    leaves = np.flatnonzero((bridged_a[:-1, 1] == 0.0) & (bridged_a[1:, 1] > 0.0))
+    foot, top = bridged_a[leaves[0]], bridged_a[leaves[0] + 1]
+    step = 2.0 * np.pi / islands_module.SLIT_CANDIDATES
+    slit = float(np.hypot(*(top - foot)))
+    assert refused[0] < slit <= refused[0] + radius * (1.0 - np.cos(step)) + 1e-9
+    assert 0.0 < abs(foot[0] - centre[0]) <= radius * np.sin(step) + 1e-6
+    assert not LineString(bridged_a).intersects(island.buffer(-TOLERANCE))

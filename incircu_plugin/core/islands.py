@@ -441,7 +441,8 @@ def _free_slit(search, islands):
         return _Slit(island_point=starts[shortest], foot=foot, position=position)
     lengths, positions, feet = search.target.nearest(starts)
     # The others, shortest first (a stable sort: the same order as ties were broken in).
-    order = np.argsort(lengths, kind="stable")[1:]
+    order = np.argsort(lengths, kind="stable")
+    order = order[order != shortest]
     free = _free_candidates(search, islands, starts[order], feet[order], lengths[order])
     if len(free):
         chosen = order[int(free[0])]
