@@ -569,7 +569,7 @@ def _segment_sums(values, starts, lengths):
     return sums
 
 
-def _group_starts(lengths):
+def _first_items(lengths):
     """Return the index of the first item of each group of consecutive items, from the groups' sizes."""
     return np.concatenate([[0], np.cumsum(lengths)[:-1]]).astype(np.int64)
 
@@ -599,13 +599,13 @@ class _Tips:
 
     def __init__(self, trunks):
         sizes = np.array([len(trunk[0]) for trunk in trunks], dtype=np.int64)
-        firsts = _group_starts(sizes)
+        firsts = _first_items(sizes)
         points = np.concatenate([trunk[0] for trunk in trunks])
         fore = ranges(sizes)[1]
         steps = np.hypot(*(points - points[np.maximum(np.arange(len(points)) - 1, 0)]).T)
         along = _segment_sums(np.where(fore > 0, steps, 0.0), firsts, sizes)
         self.lengths = np.repeat(sizes, 2)
-        self.starts = _group_starts(self.lengths)
+        self.starts = _first_items(self.lengths)
         self.group, rank = ranges(self.lengths)
         polygon = self.group // 2
         backward = self.group % 2 == 1
@@ -653,7 +653,7 @@ class _Rings:
         self.perimeters = shapely.length(exteriors)
         coordinates, ring = shapely.get_coordinates(exteriors, return_index=True)
         counts = np.bincount(ring, minlength=len(exteriors))
-        firsts = _group_starts(counts)
+        firsts = _first_items(counts)
         following = np.minimum(np.arange(len(ring)) + 1, len(ring) - 1)
         closing = np.arange(len(ring)) == (firsts + counts - 1)[ring]
         segment = np.where(closing, 0.0, np.hypot(*(coordinates[following] - coordinates).T))
@@ -662,7 +662,7 @@ class _Rings:
         keep = ~closing & (segment > 0.0)
         self.positions = positions[keep]
         self.lengths = np.bincount(ring[keep], minlength=len(exteriors))
-        self.starts = _group_starts(self.lengths)
+        self.starts = _first_items(self.lengths)
         vertices = coordinates[keep]
         owner, rank = ranges(self.lengths)
         size = np.maximum(self.lengths[owner], 1)
