@@ -5,9 +5,13 @@ triangulation; these tests fail if a GEOS version drops or mixes up the z values
 """
 
 import numpy as np
+import pytest
 import shapely
 
+from incircu_plugin.core import find_ends
+from incircu_plugin.core import skeleton as skeleton_module
 from incircu_plugin.core.contacts import ranges
+from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.skeleton import _delaunay_all, joint_skeletons
 
 
@@ -47,3 +51,23 @@ def test_joint_skeletons_keep_each_polygons_nodes_and_edges_to_itself():
         assert len(nodes) > 0
         assert np.all(shapely.covers(polygon.buffer(1e-9), shapely.points(nodes)))
     assert np.all(skeleton.owner[skeleton.edges[:, 0]] == skeleton.owner[skeleton.edges[:, 1]])
+
+
+def test_a_needle_is_too_thin_after_one_triangulation(monkeypatch):
+    """A triangle whose long sides meet at 1e-11 radians has only slivers: it is not refined (splitting its
+    sides would not converge; GEOS 3.11 took 48 s over the twelve rounds) and gets the "too thin" error, while a
+    needle a thousand times wider still gets its ends."""
+    calls = []
+
+    def counted(*arguments):
+        calls.append(len(arguments[0]))
+        return _delaunay_all(*arguments)
+
+    monkeypatch.setattr(skeleton_module, "_delaunay_all", counted)
+    needle = shapely.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1e-11)])
+    with pytest.raises(InvalidGeometryError, match="too thin"):
+        find_ends(needle)
+    assert len(calls) == 1
+    wider = shapely.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1e-8)])
+    ends = find_ends(wider)
+    assert ends.start.x == pytest.approx(0.0, abs=1e-3) and ends.end.x == pytest.approx(1.0, abs=1e-3)

@@ -4,7 +4,8 @@ The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` (Dougla
 topology-preserving variant only when that gives an invalid polygon) and densified to
 ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (a coarser step when that would add
 more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
-segments that are not edges of it), so no triangle crosses the boundary. The triangles inside the polygon
+segments that are not edges of it; a polygon whose first triangulation has only slivers, thinner than its
+samples can resolve, is not refined and gets no skeleton), so no triangle crosses the boundary. The triangles inside the polygon
 are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle
 placed at its circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the
 skeleton: every path in it stays in the region and goes around the islands.
@@ -158,7 +159,11 @@ def _triangulations(polygons):
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
         refine = np.bincount(owner[~present], minlength=count) > 0
-        refine &= ~failed & (refinement < MAX_REFINEMENTS - 1)
+        if refinement == 0:
+            # Only slivers: the polygon is thinner than its samples can resolve (a needle whose sides meet at
+            # an angle of 1e-11). Splitting would not converge and only ends in "too thin"; it is not tried.
+            flat = np.bincount(triangle_owner[_triangle_shapes(corners)[2]], minlength=count) == 0
+        refine &= ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
         kept_samples, kept_triangles = done[owner], done[triangle_owner]
@@ -406,17 +411,16 @@ def _dual_graph(corners, corner_ids, following):
     rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat triangles
     of nearly collinear samples, whose orientation means nothing) take no part.
     """
-    first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
-    signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
+    signed, side_lengths, solid = _triangle_shapes(corners)
     clockwise = signed < 0.0
     corners[clockwise] = corners[clockwise][:, ::-1]
     corner_ids[clockwise] = corner_ids[clockwise][:, ::-1]
+    # Reversed corners (c2, c1, c0) have the sides c2-c1, c1-c0, c0-c2: the old second, first and third.
+    side_lengths[clockwise] = side_lengths[clockwise][:, [1, 0, 2]]
     double_area = np.abs(signed)
     side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
     forward = following[side_start] == side_end
     on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
-    side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
-    solid = double_area > SLIVER * np.max(side_lengths, axis=1) ** 2
     shared_side, first, second = _shared_sides(side_start, side_end, len(following))
     linking = ~on_boundary.ravel()[shared_side] & solid[first] & solid[second]
     region = connected_labels(len(corners), first[linking], second[linking])
@@ -446,6 +450,16 @@ def _dual_graph(corners, corner_ids, following):
     across = boundary_side > 0.0
     spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
     return nodes, radii, spans, edges, inside
+
+
+def _triangle_shapes(corners):
+    """Return each triangle's signed double area (positive counter-clockwise, CRS units squared), its side
+    lengths (shape (t, 3), from corner k to corner k + 1, CRS units) and whether it is solid: not a sliver of
+    nearly collinear samples (twice its area above ``SLIVER`` times its longest side squared)."""
+    first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
+    side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
+    return signed, side_lengths, np.abs(signed) > SLIVER * np.max(side_lengths, axis=1) ** 2
 
 
 def _shared_sides(side_start, side_end, count):
