@@ -5,8 +5,8 @@ topology-preserving variant only when that gives an invalid polygon) and densifi
 ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (a coarser step when that would add
 more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
 segments that are not edges of it; a polygon whose first triangulation has only slivers, thinner than its
-samples can resolve, is not refined and gets no skeleton), so no triangle crosses the boundary. The triangles inside the polygon
-are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle
+samples can resolve, is not refined and gets no skeleton), so no triangle crosses the boundary. The triangles
+inside the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle
 placed at its circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the
 skeleton: every path in it stays in the region and goes around the islands.
 
