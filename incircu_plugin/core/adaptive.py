@@ -293,10 +293,14 @@ class _Sites:
         foot, position = np.empty((len(site), 2)), np.empty(len(site))
         on_vertex = site >= b.segment_count
         row = np.flatnonzero(on_vertex)
-        vertex = site[row] - b.segment_count
-        foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
+        if len(row):
+            vertex = site[row] - b.segment_count
+            foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
+            del vertex
         row = np.flatnonzero(~on_vertex)
-        del on_vertex, vertex
+        del on_vertex
+        if len(row) == 0:
+            return foot, position
         segment = np.maximum(site[row], 0)
         start, unit = rows(b.start, segment), rows(b.unit, segment)
         segment_position = b.segment_position[segment]
@@ -331,6 +335,8 @@ class _Sites:
             for on_edge in (True, False):
                 for of_segment in (True, False):
                     row = np.flatnonzero((edge == on_edge) & (is_segment == of_segment))
+                    if len(row) == 0:
+                        continue
                     if of_segment:
                         values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
                     else:
@@ -392,6 +398,8 @@ def _crossing(spans, intervals, terms0, terms1):
     roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
     for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
+        if len(rows_of) == 0:
+            continue
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
         for root, value in zip(roots, values):
@@ -571,10 +579,10 @@ class _Tracer:
             event_u, event_trial, found, at_end = self._event_candidates(events)
             settled = self._settle_at_ends(events, at_end)
             carried = events.subset(settled)
-            events = events.subset(~settled)
-            owner, event_u, event_trial, found, pairs = self._event_nodes(
-                events, event_u[~settled], event_trial[~settled], found[~settled]
-            )
+            if len(carried.span):
+                events = events.subset(~settled)
+                event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
+            owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
             station_owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([pairs.span, curves.span[station_owner]])
             u = np.concatenate([event_u, station_u])
@@ -730,6 +738,8 @@ class _Tracer:
         """
         b = self.boundary
         after, before = self._beside_corners(intervals)
+        if len(after) == 0:
+            return intervals
         corners = self._corner_samples(intervals.span[after])
         t, status, _, _, site = _solve_all(
             corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
@@ -842,6 +852,9 @@ class _Tracer:
         """
         first, last, events = self._walks(intervals)
         predicted = (events >= 2) & (events <= MAX_PREDICTED)
+        if not predicted.any():
+            # Every interval probes its one event candidate.
+            return np.arange(len(predicted)), event_u, event_trial, found, intervals
         counts = np.where(predicted, events + 1, 0)
         owner, index = ranges(counts)
         site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
@@ -881,6 +894,8 @@ class _Tracer:
         settled = at_end >= 0
         # Only the intervals whose crossing lies at an end are looked at.
         row = np.flatnonzero(settled)
+        if len(row) == 0:
+            return settled
         end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])
         centre = self.centres(end)
         slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
@@ -939,6 +954,8 @@ class _Tracer:
 
     def _stations(self, intervals):
         """Stations of the parabola of each curved interval: owner, span parameter, trial radius."""
+        if len(intervals.span) == 0:
+            return np.empty(0, dtype=int), np.empty(0), np.empty(0)
         spans, b = self.spans, self.boundary
         span, site = intervals.span, intervals.site0
         on_fan = spans.kind[span] == FAN
@@ -1043,6 +1060,8 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
     marked ``verified`` (the stations of a parabola) or not.
     """
+    if len(owner) == 0:
+        return replace(intervals, verified=np.full(len(intervals.span), verified))
     order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
