@@ -313,9 +313,15 @@ class _Sites:
         position[row] = segment_position + along
         return foot, position
 
-    def distance(self, site, centre):
-        """Distance from ``centre`` to each site (inf for no site), CRS units."""
-        return np.where(site >= 0, np.hypot(*(centre - self.feet(site, centre)[0]).T), np.inf)
+    def pair_feet(self, site0, site1, centre):
+        """:meth:`feet` of both sites of each pair (``site0``, ``site1``) seen from its ``centre``, in one call
+        (each row is computed from its own values only: the same floats as two calls), and the distances
+        from ``centre`` to them (inf for no site), CRS units."""
+        foot = self.feet(np.concatenate([site0, site1]), np.concatenate([centre, centre]))[0]
+        foot0, foot1 = foot[: len(site0)], foot[len(site0) :]
+        distance0 = np.where(site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
+        distance1 = np.where(site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
+        return foot0, foot1, distance0, distance1
 
     def radius_terms(self, spans, span, site, u_ref):
         """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
@@ -807,8 +813,14 @@ class _Tracer:
         """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
         span = intervals.span
         middle = 0.5 * (intervals.u0 + intervals.u1)
-        terms0 = self.sites.radius_terms(self.spans, span, intervals.site0, middle)
-        terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
+        # Both sites' terms in one call (each row depends on its own values only: the same floats).
+        terms = self.sites.radius_terms(
+            self.spans,
+            np.concatenate([span, span]),
+            np.concatenate([intervals.site0, intervals.site1]),
+            np.concatenate([middle, middle]),
+        )
+        terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
         u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
         return u, self._trial(intervals, radius, found), found, at_end
@@ -900,8 +912,9 @@ class _Tracer:
         centre = self.centres(end)
         slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
         with np.errstate(invalid="ignore"):
-            touching = np.abs(self.sites.distance(intervals.site0[row], centre) - self.t[end]) <= slack
-            touching &= np.abs(self.sites.distance(intervals.site1[row], centre) - self.t[end]) <= slack
+            _, _, distance0, distance1 = self.sites.pair_feet(intervals.site0[row], intervals.site1[row], centre)
+            touching = np.abs(distance0 - self.t[end]) <= slack
+            touching &= np.abs(distance1 - self.t[end]) <= slack
         settled[row] = touching
         intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
@@ -920,9 +933,7 @@ class _Tracer:
         nearly collinear segments meeting at a split point). ``centre``: the probes' disk centres.
         """
         with np.errstate(invalid="ignore", divide="ignore"):
-            foot0, foot1 = self.sites.feet(intervals.site0, centre)[0], self.sites.feet(intervals.site1, centre)[0]
-            distance0 = np.where(intervals.site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
-            distance1 = np.where(intervals.site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
+            foot0, foot1, distance0, distance1 = self.sites.pair_feet(intervals.site0, intervals.site1, centre)
             parting = np.hypot(*((centre - foot0) / distance0[:, None] - (centre - foot1) / distance1[:, None]).T)
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
