@@ -531,13 +531,19 @@ class _Tracer:
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
+        #: Per per-chain array given to :meth:`of` (by id: they are the tracer's own), its one value when all
+        #: traced chains share it, else None.
+        self._uniform = {}
 
     def of(self, values, intervals):
         """Per-chain ``values`` for each interval (the chain of its span): spans lie on traced chains only, so
         one value when those all share it (a single feature)."""
-        traced = values[self.traced]
-        if np.all(traced == traced[0]):
-            return np.full(len(intervals.span), traced[0])
+        uniform = self._uniform.get(id(values), False)
+        if uniform is False:
+            traced = values[self.traced]
+            uniform = self._uniform[id(values)] = traced[0] if np.all(traced == traced[0]) else None
+        if uniform is not None:
+            return np.full(len(intervals.span), uniform)
         return values[self.spans.chain[intervals.span]]
 
     def add(self, span, u, t, centre, emit, other_site):

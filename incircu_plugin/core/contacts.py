@@ -384,9 +384,10 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
     t_end = np.full(len(segment), np.inf)
     last = np.flatnonzero(boundary.last_of_chain[segment])
-    t_end[last] = vertex_contact(
-        length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
-    )
+    if len(last):
+        t_end[last] = vertex_contact(
+            length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
+        )
 
     side = np.where(height < 0, -1.0, 1.0)
     distance = side * height
@@ -394,7 +395,8 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     # direction nearly faces the segment's line (a nearly straight corner).
     denominator = 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2)
     corner = np.flatnonzero(scale != 1.0)
-    denominator[corner] = scale[corner] - side[corner] * b_across[corner]
+    if len(corner):
+        denominator[corner] = scale[corner] - side[corner] * b_across[corner]
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
         along = along_p + t_tangent * b_along
@@ -535,16 +537,17 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     winner &= settled[query]
     # Pairs are sorted by sample: keep each sample's first winning pair.
     chosen = _first_of_groups(np.flatnonzero(winner), query)
-    _record_winners(
-        solution,
-        row[query[chosen]],
-        t[chosen],
-        along[chosen],
-        touched[chosen],
-        segment[chosen],
-        best_own[query[chosen]],
-        boundary,
-    )
+    if len(chosen):
+        _record_winners(
+            solution,
+            row[query[chosen]],
+            t[chosen],
+            along[chosen],
+            touched[chosen],
+            segment[chosen],
+            best_own[query[chosen]],
+            boundary,
+        )
     return best
 
 
