@@ -611,11 +611,10 @@ class _Tracer:
             station_index = self.add(span[count:], u[count:], t[count:], centre[count:], accepted, site[count:])
             # At an event the pieces on either side keep its two sites; elsewhere both take the probe's site.
             before, after = np.where(event, pairs.site0, site[:count]), np.where(event, pairs.site1, site[:count])
-            station_site = site[count:]
             intervals = _Intervals.concatenate(
                 [
                     _split_at_nodes(events, owner, event_u, event_index, before, after, False),
-                    _split_at_nodes(curves, station_owner, station_u, station_index, station_site, station_site, True),
+                    _unsettled_pieces(curves, station_owner, station_u, station_index, site[count:]),
                     carried,
                 ]
             )
@@ -1102,6 +1101,20 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     pieces.site0[first], pieces.site0[inner + 1] = intervals.site0, site_after
     pieces.site1[last], pieces.site1[inner] = intervals.site1, site_before
     return pieces
+
+
+def _unsettled_pieces(curves, owner, u, index, site):
+    """The pieces of the curved intervals cut at their stations (samples ``index`` at parameters ``u`` of curve
+    ``owner``, first touching ``site``) that may still hold an event: those whose ends touch different sites.
+
+    The pieces are verified, so one whose ends touch the same site is neither open nor curved: the next round
+    would drop it (and keeps the others in this order), so it is dropped here, and a curve whose stations all
+    touch its own site is not cut at all.
+    """
+    if not np.any(site != curves.site0[owner]):
+        return curves.subset(np.zeros(len(curves.span), dtype=bool))
+    pieces = _split_at_nodes(curves, owner, u, index, site, site, True)
+    return pieces.subset(pieces.site0 != pieces.site1)
 
 
 def _split_vertices(boundary, closed):
