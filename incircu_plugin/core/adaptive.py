@@ -403,13 +403,13 @@ def _crossing(spans, intervals, terms0, terms1):
     # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
     roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
-    for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
-        if len(rows_of) == 0:
-            continue
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
+            if len(rows_of) == 0:
+                continue
             values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
-        for root, value in zip(roots, values):
-            root[rows_of] = value
+            for root, value in zip(roots, values):
+                root[rows_of] = value
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
     for candidate in roots:
