@@ -177,8 +177,11 @@ class _Intervals(ArrayRecord):
 
     def __post_init__(self):
         """The index columns as int32 (see :class:`.contacts.Boundary`)."""
-        for name in ("span", "left", "right", "site0", "site1"):
-            setattr(self, name, np.asarray(getattr(self, name), dtype=np.int32))
+        # Plain assignments (no getattr/setattr loop): the rounds build these records thousands of times.
+        index = np.int32
+        self.span, self.left = np.asarray(self.span, dtype=index), np.asarray(self.left, dtype=index)
+        self.right = np.asarray(self.right, dtype=index)
+        self.site0, self.site1 = np.asarray(self.site0, dtype=index), np.asarray(self.site1, dtype=index)
 
 
 @dataclass(frozen=True)
@@ -554,6 +557,8 @@ class _Tracer:
         parameter, see :meth:`_Spans.points` and :meth:`_Spans.directions`). The arrays grow by half, so a
         round costs its own samples only.
         """
+        if len(t) == 0 and self.store:
+            return np.arange(self.count, self.count)
         columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
         for name, values in columns.items():
