@@ -131,7 +131,7 @@ class _Spans:
     def directions(self, span, u):
         """Unit directions of the disk families of the samples at parameters ``u`` of spans ``span``."""
         direction = rows(self.normal, span)
-        on_fan = np.flatnonzero(self.kind[span] != EDGE)
+        on_fan = (self.kind[span] != EDGE).nonzero()[0]
         angle, fan = u[on_fan, None], span[on_fan]
         direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
         return direction
@@ -295,12 +295,12 @@ class _Sites:
         b = self.boundary
         foot, position = np.empty((len(site), 2)), np.empty(len(site))
         on_vertex = site >= b.segment_count
-        row = np.flatnonzero(on_vertex)
+        row = on_vertex.nonzero()[0]
         if len(row):
             vertex = site[row] - b.segment_count
             foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
             del vertex
-        row = np.flatnonzero(~on_vertex)
+        row = (~on_vertex).nonzero()[0]
         del on_vertex
         if len(row) == 0:
             return foot, position
@@ -343,7 +343,7 @@ class _Sites:
         with np.errstate(divide="ignore", invalid="ignore"):
             for on_edge in (True, False):
                 for of_segment in (True, False):
-                    row = np.flatnonzero((edge == on_edge) & (is_segment == of_segment))
+                    row = ((edge == on_edge) & (is_segment == of_segment)).nonzero()[0]
                     if len(row) == 0:
                         continue
                     if of_segment:
@@ -407,7 +407,7 @@ def _crossing(spans, intervals, terms0, terms1):
     roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
+        for rows_of, solve_roots in ((edge.nonzero()[0], _edge_roots), ((~edge).nonzero()[0], _fan_roots)):
             if len(rows_of) == 0:
                 continue
             values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
@@ -728,14 +728,14 @@ class _Tracer:
         foot the ordering cannot place on a side): those corners are left out.
         """
         b, spans = self.boundary, self.spans
-        after = np.flatnonzero((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE))
+        after = ((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE)).nonzero()[0]
         segment = spans.segment[intervals.span[after]]
         corner = self.sites.kinds[b.start_vertex(segment)] > 0
         corner &= ~b.first_of_chain[segment] & ~b.first_of_chain[segment - 1] & ~b.last_of_chain[segment]
         after = after[corner]
         # The interval ending at the end of edge span k has that edge's end sample, 2k + 1, at its right.
         before = np.full(len(spans.kind), -1)
-        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
+        ends = (intervals.right == 2 * intervals.span + 1).nonzero()[0]
         before[intervals.span[ends]] = ends
         before = before[intervals.span[after] - 1]
         after, before = after[before >= 0], before[before >= 0]
@@ -794,7 +794,7 @@ class _Tracer:
         open_ = (intervals.site0 != intervals.site1) & finite & wide & known
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
-        candidate = np.flatnonzero(open_)
+        candidate = open_.nonzero()[0]
         left, right = intervals.left[candidate], intervals.right[candidate]
         chord = np.hypot(*(self.centres(left) - self.centres(right)).T)
         open_[candidate] = chord > SETTLED_CHORD * tolerance[candidate]
@@ -883,15 +883,15 @@ class _Tracer:
         # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
-        pair = np.flatnonzero(index < counts[owner] - 1)
+        pair = (index < counts[owner] - 1).nonzero()[0]
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
         u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
         failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
-        keep = np.flatnonzero(~failed[pair_owner])
-        single = np.flatnonzero(~predicted | failed)
+        keep = (~failed[pair_owner]).nonzero()[0]
+        single = (~predicted | failed).nonzero()[0]
         pieces = pieces.subset(keep)
         node_owner = np.concatenate([single, pair_owner[keep]])
         probe_pairs = replace(
@@ -915,7 +915,7 @@ class _Tracer:
         """
         settled = at_end >= 0
         # Only the intervals whose crossing lies at an end are looked at.
-        row = np.flatnonzero(settled)
+        row = settled.nonzero()[0]
         if len(row) == 0:
             return settled
         end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])

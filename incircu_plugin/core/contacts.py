@@ -395,7 +395,7 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
 
     t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
     t_end = np.full(len(segment), np.inf)
-    last = np.flatnonzero(boundary.last_of_chain[segment])
+    last = boundary.last_of_chain[segment].nonzero()[0]
     if len(last):
         t_end[last] = vertex_contact(
             length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
@@ -406,7 +406,7 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
     # 1 - side * b_across is |b - side * across|**2 / 2 for unit vectors: no cancellation when the disk's
     # direction nearly faces the segment's line (a nearly straight corner).
     denominator = 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2)
-    corner = np.flatnonzero(scale != 1.0)
+    corner = (scale != 1.0).nonzero()[0]
     if len(corner):
         denominator[corner] = scale[corner] - side[corner] * b_across[corner]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -435,7 +435,7 @@ def group_minima(group, size, *values):
     empty groups. One array of ``size`` per array of ``values``."""
     results = [np.full(size, np.inf) for _ in values]
     if len(group):
-        starts = np.flatnonzero(np.concatenate([[True], group[1:] != group[:-1]]))
+        starts = np.concatenate([[True], group[1:] != group[:-1]]).nonzero()[0]
         for result, value in zip(results, values):
             result[group[starts]] = np.minimum.reduceat(value, starts)
     return results
@@ -542,13 +542,13 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     settled = best <= radius
     solution.contact_t[row[settled]] = best[settled]
     best_own_pair = best_own[query]
-    own_winner = _first_of_groups(np.flatnonzero(np.isfinite(t_own) & (t_own == best_own_pair)), query)
+    own_winner = _first_of_groups((np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0], query)
     solution.site[row[query[own_winner]]] = touched[own_winner]
     winner = np.isfinite(t_other) & (t_other == best_other[query])
     winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
     winner &= settled[query]
     # Pairs are sorted by sample: keep each sample's first winning pair.
-    chosen = _first_of_groups(np.flatnonzero(winner), query)
+    chosen = _first_of_groups(winner.nonzero()[0], query)
     if len(chosen):
         _record_winners(
             solution,
