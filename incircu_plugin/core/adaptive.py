@@ -595,8 +595,9 @@ class _Tracer:
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
             event_u, event_trial, found, at_end = self._event_candidates(events)
             settled = self._settle_at_ends(events, at_end)
-            carried = events.subset(settled)
-            if len(carried.span):
+            carried = []
+            if settled.any():
+                carried = [events.subset(settled)]
                 events = events.subset(~settled)
                 event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
             owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
@@ -620,7 +621,7 @@ class _Tracer:
                 [
                     _split_at_nodes(events, owner, event_u, event_index, before, after, False),
                     _unsettled_pieces(curves, station_owner, station_u, station_index, site[count:]),
-                    carried,
+                    *carried,
                 ]
             )
         return self._points()
