@@ -131,7 +131,7 @@ class _Spans:
     def directions(self, span, u):
         """Unit directions of the disk families of the samples at parameters ``u`` of spans ``span``."""
         direction = rows(self.normal, span)
-        on_fan = np.flatnonzero(self.kind[span] != EDGE)
+        on_fan = (self.kind[span] != EDGE).nonzero()[0]
         angle, fan = u[on_fan, None], span[on_fan]
         direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
         return direction
@@ -177,8 +177,11 @@ class _Intervals(ArrayRecord):
 
     def __post_init__(self):
         """The index columns as int32 (see :class:`.contacts.Boundary`)."""
-        for name in ("span", "left", "right", "site0", "site1"):
-            setattr(self, name, np.asarray(getattr(self, name), dtype=np.int32))
+        # Plain assignments (no getattr/setattr loop): the rounds build these records thousands of times.
+        index = np.int32
+        self.span, self.left = np.asarray(self.span, dtype=index), np.asarray(self.left, dtype=index)
+        self.right = np.asarray(self.right, dtype=index)
+        self.site0, self.site1 = np.asarray(self.site0, dtype=index), np.asarray(self.site1, dtype=index)
 
 
 @dataclass(frozen=True)
@@ -292,11 +295,15 @@ class _Sites:
         b = self.boundary
         foot, position = np.empty((len(site), 2)), np.empty(len(site))
         on_vertex = site >= b.segment_count
-        row = np.flatnonzero(on_vertex)
-        vertex = site[row] - b.segment_count
-        foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
-        row = np.flatnonzero(~on_vertex)
-        del on_vertex, vertex
+        row = on_vertex.nonzero()[0]
+        if len(row):
+            vertex = site[row] - b.segment_count
+            foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
+            del vertex
+        row = (~on_vertex).nonzero()[0]
+        del on_vertex
+        if len(row) == 0:
+            return foot, position
         segment = np.maximum(site[row], 0)
         start, unit = rows(b.start, segment), rows(b.unit, segment)
         segment_position = b.segment_position[segment]
@@ -309,9 +316,15 @@ class _Sites:
         position[row] = segment_position + along
         return foot, position
 
-    def distance(self, site, centre):
-        """Distance from ``centre`` to each site (inf for no site), CRS units."""
-        return np.where(site >= 0, np.hypot(*(centre - self.feet(site, centre)[0]).T), np.inf)
+    def pair_feet(self, site0, site1, centre):
+        """:meth:`feet` of both sites of each pair (``site0``, ``site1``) seen from its ``centre``, in one call
+        (each row is computed from its own values only: the same floats as two calls), and the distances
+        from ``centre`` to them (inf for no site), CRS units."""
+        foot = self.feet(np.concatenate([site0, site1]), np.concatenate([centre, centre]))[0]
+        foot0, foot1 = foot[: len(site0)], foot[len(site0) :]
+        distance0 = np.where(site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
+        distance1 = np.where(site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
+        return foot0, foot1, distance0, distance1
 
     def radius_terms(self, spans, span, site, u_ref):
         """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
@@ -330,7 +343,9 @@ class _Sites:
         with np.errstate(divide="ignore", invalid="ignore"):
             for on_edge in (True, False):
                 for of_segment in (True, False):
-                    row = np.flatnonzero((edge == on_edge) & (is_segment == of_segment))
+                    row = ((edge == on_edge) & (is_segment == of_segment)).nonzero()[0]
+                    if len(row) == 0:
+                        continue
                     if of_segment:
                         values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
                     else:
@@ -391,11 +406,13 @@ def _crossing(spans, intervals, terms0, terms1):
     # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
     roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
-    for rows_of, solve_roots in ((np.flatnonzero(edge), _edge_roots), (np.flatnonzero(~edge), _fan_roots)):
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for rows_of, solve_roots in ((edge.nonzero()[0], _edge_roots), ((~edge).nonzero()[0], _fan_roots)):
+            if len(rows_of) == 0:
+                continue
             values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
-        for root, value in zip(roots, values):
-            root[rows_of] = value
+            for root, value in zip(roots, values):
+                root[rows_of] = value
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
     for candidate in roots:
@@ -517,13 +534,19 @@ class _Tracer:
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
+        #: Per per-chain array given to :meth:`of` (by id: they are the tracer's own), its one value when all
+        #: traced chains share it, else None.
+        self._uniform = {}
 
     def of(self, values, intervals):
         """Per-chain ``values`` for each interval (the chain of its span): spans lie on traced chains only, so
         one value when those all share it (a single feature)."""
-        traced = values[self.traced]
-        if np.all(traced == traced[0]):
-            return np.full(len(intervals.span), traced[0])
+        uniform = self._uniform.get(id(values), False)
+        if uniform is False:
+            traced = values[self.traced]
+            uniform = self._uniform[id(values)] = traced[0] if np.all(traced == traced[0]) else None
+        if uniform is not None:
+            return np.full(len(intervals.span), uniform)
         return values[self.spans.chain[intervals.span]]
 
     def add(self, span, u, t, centre, emit, other_site):
@@ -534,6 +557,8 @@ class _Tracer:
         parameter, see :meth:`_Spans.points` and :meth:`_Spans.directions`). The arrays grow by half, so a
         round costs its own samples only.
         """
+        if len(t) == 0 and self.store:
+            return np.arange(self.count, self.count)
         columns = {"span": span, "u": u, "t": t, "centre": centre, "emit": emit, "other_site": other_site}
         start, self.count = self.count, self.count + len(t)
         for name, values in columns.items():
@@ -570,11 +595,12 @@ class _Tracer:
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
             event_u, event_trial, found, at_end = self._event_candidates(events)
             settled = self._settle_at_ends(events, at_end)
-            carried = events.subset(settled)
-            events = events.subset(~settled)
-            owner, event_u, event_trial, found, pairs = self._event_nodes(
-                events, event_u[~settled], event_trial[~settled], found[~settled]
-            )
+            carried = []
+            if settled.any():
+                carried = [events.subset(settled)]
+                events = events.subset(~settled)
+                event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
+            owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
             station_owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([pairs.span, curves.span[station_owner]])
             u = np.concatenate([event_u, station_u])
@@ -591,12 +617,11 @@ class _Tracer:
             station_index = self.add(span[count:], u[count:], t[count:], centre[count:], accepted, site[count:])
             # At an event the pieces on either side keep its two sites; elsewhere both take the probe's site.
             before, after = np.where(event, pairs.site0, site[:count]), np.where(event, pairs.site1, site[:count])
-            station_site = site[count:]
             intervals = _Intervals.concatenate(
                 [
                     _split_at_nodes(events, owner, event_u, event_index, before, after, False),
-                    _split_at_nodes(curves, station_owner, station_u, station_index, station_site, station_site, True),
-                    carried,
+                    _unsettled_pieces(curves, station_owner, station_u, station_index, site[count:]),
+                    *carried,
                 ]
             )
         return self._points()
@@ -704,14 +729,14 @@ class _Tracer:
         foot the ordering cannot place on a side): those corners are left out.
         """
         b, spans = self.boundary, self.spans
-        after = np.flatnonzero((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE))
+        after = ((intervals.u0 == 0.0) & (spans.kind[intervals.span] == EDGE)).nonzero()[0]
         segment = spans.segment[intervals.span[after]]
         corner = self.sites.kinds[b.start_vertex(segment)] > 0
         corner &= ~b.first_of_chain[segment] & ~b.first_of_chain[segment - 1] & ~b.last_of_chain[segment]
         after = after[corner]
         # The interval ending at the end of edge span k has that edge's end sample, 2k + 1, at its right.
         before = np.full(len(spans.kind), -1)
-        ends = np.flatnonzero(intervals.right == 2 * intervals.span + 1)
+        ends = (intervals.right == 2 * intervals.span + 1).nonzero()[0]
         before[intervals.span[ends]] = ends
         before = before[intervals.span[after] - 1]
         after, before = after[before >= 0], before[before >= 0]
@@ -730,6 +755,8 @@ class _Tracer:
         """
         b = self.boundary
         after, before = self._beside_corners(intervals)
+        if len(after) == 0:
+            return intervals
         corners = self._corner_samples(intervals.span[after])
         t, status, _, _, site = _solve_all(
             corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
@@ -768,7 +795,7 @@ class _Tracer:
         open_ = (intervals.site0 != intervals.site1) & finite & wide & known
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
-        candidate = np.flatnonzero(open_)
+        candidate = open_.nonzero()[0]
         left, right = intervals.left[candidate], intervals.right[candidate]
         chord = np.hypot(*(self.centres(left) - self.centres(right)).T)
         open_[candidate] = chord > SETTLED_CHORD * tolerance[candidate]
@@ -797,8 +824,14 @@ class _Tracer:
         """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
         span = intervals.span
         middle = 0.5 * (intervals.u0 + intervals.u1)
-        terms0 = self.sites.radius_terms(self.spans, span, intervals.site0, middle)
-        terms1 = self.sites.radius_terms(self.spans, span, intervals.site1, middle)
+        # Both sites' terms in one call (each row depends on its own values only: the same floats).
+        terms = self.sites.radius_terms(
+            self.spans,
+            np.concatenate([span, span]),
+            np.concatenate([intervals.site0, intervals.site1]),
+            np.concatenate([middle, middle]),
+        )
+        terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
         u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
         radius = _radius_at(self.spans, span, terms0, u)
         return u, self._trial(intervals, radius, found), found, at_end
@@ -842,21 +875,24 @@ class _Tracer:
         """
         first, last, events = self._walks(intervals)
         predicted = (events >= 2) & (events <= MAX_PREDICTED)
+        if not predicted.any():
+            # Every interval probes its one event candidate.
+            return np.arange(len(predicted)), event_u, event_trial, found, intervals
         counts = np.where(predicted, events + 1, 0)
         owner, index = ranges(counts)
         site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
         # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
-        pair = np.flatnonzero(index < counts[owner] - 1)
+        pair = (index < counts[owner] - 1).nonzero()[0]
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
         u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
         failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
-        keep = np.flatnonzero(~failed[pair_owner])
-        single = np.flatnonzero(~predicted | failed)
+        keep = (~failed[pair_owner]).nonzero()[0]
+        single = (~predicted | failed).nonzero()[0]
         pieces = pieces.subset(keep)
         node_owner = np.concatenate([single, pair_owner[keep]])
         probe_pairs = replace(
@@ -880,13 +916,16 @@ class _Tracer:
         """
         settled = at_end >= 0
         # Only the intervals whose crossing lies at an end are looked at.
-        row = np.flatnonzero(settled)
+        row = settled.nonzero()[0]
+        if len(row) == 0:
+            return settled
         end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])
         centre = self.centres(end)
         slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
         with np.errstate(invalid="ignore"):
-            touching = np.abs(self.sites.distance(intervals.site0[row], centre) - self.t[end]) <= slack
-            touching &= np.abs(self.sites.distance(intervals.site1[row], centre) - self.t[end]) <= slack
+            _, _, distance0, distance1 = self.sites.pair_feet(intervals.site0[row], intervals.site1[row], centre)
+            touching = np.abs(distance0 - self.t[end]) <= slack
+            touching &= np.abs(distance1 - self.t[end]) <= slack
         settled[row] = touching
         intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
@@ -905,9 +944,7 @@ class _Tracer:
         nearly collinear segments meeting at a split point). ``centre``: the probes' disk centres.
         """
         with np.errstate(invalid="ignore", divide="ignore"):
-            foot0, foot1 = self.sites.feet(intervals.site0, centre)[0], self.sites.feet(intervals.site1, centre)[0]
-            distance0 = np.where(intervals.site0 >= 0, np.hypot(*(centre - foot0).T), np.inf)
-            distance1 = np.where(intervals.site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
+            foot0, foot1, distance0, distance1 = self.sites.pair_feet(intervals.site0, intervals.site1, centre)
             parting = np.hypot(*((centre - foot0) / distance0[:, None] - (centre - foot1) / distance1[:, None]).T)
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
@@ -939,6 +976,8 @@ class _Tracer:
 
     def _stations(self, intervals):
         """Stations of the parabola of each curved interval: owner, span parameter, trial radius."""
+        if len(intervals.span) == 0:
+            return np.empty(0, dtype=int), np.empty(0), np.empty(0)
         spans, b = self.spans, self.boundary
         span, site = intervals.span, intervals.site0
         on_fan = spans.kind[span] == FAN
@@ -1043,6 +1082,8 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     the left end of the piece after it (an event's two sites, else twice its first contact); the pieces are
     marked ``verified`` (the stations of a parabola) or not.
     """
+    if len(owner) == 0:
+        return replace(intervals, verified=np.full(len(intervals.span), verified))
     order = _by_owner_then_u(owner, u)
     owner, u, index = owner[order], u[order], index[order]
     site_before, site_after = site_before[order], site_after[order]
@@ -1066,6 +1107,20 @@ def _split_at_nodes(intervals, owner, u, index, site_before, site_after, verifie
     pieces.site0[first], pieces.site0[inner + 1] = intervals.site0, site_after
     pieces.site1[last], pieces.site1[inner] = intervals.site1, site_before
     return pieces
+
+
+def _unsettled_pieces(curves, owner, u, index, site):
+    """The pieces of the curved intervals cut at their stations (samples ``index`` at parameters ``u`` of curve
+    ``owner``, first touching ``site``) that may still hold an event: those whose ends touch different sites.
+
+    The pieces are verified, so one whose ends touch the same site is neither open nor curved: the next round
+    would drop it (and keeps the others in this order), so it is dropped here, and a curve whose stations all
+    touch its own site is not cut at all.
+    """
+    if not np.any(site != curves.site0[owner]):
+        return curves.subset(np.zeros(len(curves.span), dtype=bool))
+    pieces = _split_at_nodes(curves, owner, u, index, site, site, True)
+    return pieces.subset(pieces.site0 != pieces.site1)
 
 
 def _split_vertices(boundary, closed):

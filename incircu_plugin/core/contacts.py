@@ -13,7 +13,7 @@ doubles, up to the best contact found so far.
 """
 
 from dataclasses import dataclass, fields
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 import shapely
@@ -81,14 +81,22 @@ class ArrayRecord:
 
     def subset(self, index):
         """The items ``index`` (an index array, a mask or a slice)."""
+        columns = (getattr(self, name) for name in _field_names(type(self)))
         if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
-            return type(self)(*(rows(getattr(self, field.name), index) for field in fields(self)))
-        return type(self)(*(getattr(self, field.name)[index] for field in fields(self)))
+            return type(self)(*(rows(column, index) for column in columns))
+        return type(self)(*(column[index] for column in columns))
 
     @classmethod
     def concatenate(cls, parts):
         """All items of ``parts``, one after the other."""
-        return cls(*(np.concatenate([getattr(part, field.name) for part in parts]) for field in fields(cls)))
+        return cls(*(np.concatenate([getattr(part, name) for part in parts]) for name in _field_names(cls)))
+
+
+@cache
+def _field_names(record_type):
+    """The names of the fields of a dataclass, in their order (looked up once per class: the tracer's rounds
+    take subsets of small records thousands of times)."""
+    return tuple(field.name for field in fields(record_type))
 
 
 @dataclass(frozen=True)
@@ -307,9 +315,10 @@ def _diagonals(low, high):
 
 
 def rows(array, index):
-    """``array[index]`` for an integer array ``index``, gathered with :func:`numpy.take` (numpy's indexing
-    copies the rows of a two-column array several times slower)."""
-    return np.take(array, index, axis=0)
+    """``array[index]`` for an integer array ``index``, gathered with :meth:`numpy.ndarray.take` (numpy's
+    indexing copies the rows of a two-column array several times slower; the method skips the Python layers
+    of :func:`numpy.take`, which small inputs, gathering a few rows thousands of times, feel)."""
+    return array.take(index, axis=0)
 
 
 def ranges(counts):
@@ -321,7 +330,11 @@ def ranges(counts):
 
 def left_normal(vectors):
     """The vectors turned a quarter turn counter-clockwise."""
-    return np.stack([-vectors[:, 1], vectors[:, 0]], axis=1)
+    # Filled column by column: the same values as stacking the two columns, with fewer Python layers.
+    turned = np.empty(vectors.shape)
+    np.negative(vectors[:, 1], out=turned[:, 0])
+    turned[:, 1] = vectors[:, 0]
+    return turned
 
 
 def rotate(vectors, angles):
@@ -382,18 +395,20 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
 
     t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
     t_end = np.full(len(segment), np.inf)
-    last = np.flatnonzero(boundary.last_of_chain[segment])
-    t_end[last] = vertex_contact(
-        length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
-    )
+    last = boundary.last_of_chain[segment].nonzero()[0]
+    if len(last):
+        t_end[last] = vertex_contact(
+            length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
+        )
 
     side = np.where(height < 0, -1.0, 1.0)
     distance = side * height
     # 1 - side * b_across is |b - side * across|**2 / 2 for unit vectors: no cancellation when the disk's
     # direction nearly faces the segment's line (a nearly straight corner).
     denominator = 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2)
-    corner = np.flatnonzero(scale != 1.0)
-    denominator[corner] = scale[corner] - side[corner] * b_across[corner]
+    corner = (scale != 1.0).nonzero()[0]
+    if len(corner):
+        denominator[corner] = scale[corner] - side[corner] * b_across[corner]
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
         along = along_p + t_tangent * b_along
@@ -420,7 +435,7 @@ def group_minima(group, size, *values):
     empty groups. One array of ``size`` per array of ``values``."""
     results = [np.full(size, np.inf) for _ in values]
     if len(group):
-        starts = np.flatnonzero(np.concatenate([[True], group[1:] != group[:-1]]))
+        starts = np.concatenate([[True], group[1:] != group[:-1]]).nonzero()[0]
         for result, value in zip(results, values):
             result[group[starts]] = np.minimum.reduceat(value, starts)
     return results
@@ -527,23 +542,24 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     settled = best <= radius
     solution.contact_t[row[settled]] = best[settled]
     best_own_pair = best_own[query]
-    own_winner = _first_of_groups(np.flatnonzero(np.isfinite(t_own) & (t_own == best_own_pair)), query)
+    own_winner = _first_of_groups((np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0], query)
     solution.site[row[query[own_winner]]] = touched[own_winner]
     winner = np.isfinite(t_other) & (t_other == best_other[query])
     winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
     winner &= settled[query]
     # Pairs are sorted by sample: keep each sample's first winning pair.
-    chosen = _first_of_groups(np.flatnonzero(winner), query)
-    _record_winners(
-        solution,
-        row[query[chosen]],
-        t[chosen],
-        along[chosen],
-        touched[chosen],
-        segment[chosen],
-        best_own[query[chosen]],
-        boundary,
-    )
+    chosen = _first_of_groups(winner.nonzero()[0], query)
+    if len(chosen):
+        _record_winners(
+            solution,
+            row[query[chosen]],
+            t[chosen],
+            along[chosen],
+            touched[chosen],
+            segment[chosen],
+            best_own[query[chosen]],
+            boundary,
+        )
     return best
 
 
