@@ -404,14 +404,20 @@ def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
     assert pieces.verified.all() and pieces.left.dtype == np.int32
 
 
-def test_radius_terms_give_disks_that_touch_their_site():
+@pytest.mark.parametrize("same_direction", [False, True])
+def test_radius_terms_give_disks_that_touch_their_site(same_direction):
+    """Disks of the closed-form radii touch their site, with the upper bank running either way: running like
+    the lower one (as chains do), the samples lie on the negative side of its segments' lines."""
     from incircu_plugin.core.adaptive import _radius_at, _Tracer
     from incircu_plugin.core.contacts import Boundary
 
     # A zigzag bank (its reflex vertices are fans) under a bank with vertices and segments of every slope.
     bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
     bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
-    tracer = _Tracer([1, 1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    sides = [1, 1]
+    if same_direction:
+        bank_b, sides = bank_b[::-1], [1, -1]
+    tracer = _Tracer(sides, Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
     spans, boundary = tracer.spans, tracer.boundary
     other = np.arange(4, 8)
     site = np.concatenate([other, boundary.segment_count + 5 + np.arange(5)])
@@ -430,3 +436,7 @@ def test_radius_terms_give_disks_that_touch_their_site():
     touched = np.isfinite(radius)
     assert touched.mean() > 0.5 and touched[spans.kind[span] == 1].any()
     assert np.allclose(distance[touched], radius[touched], rtol=1e-9, atol=1e-9)
+    height = np.einsum("ij,ij->i", point - boundary.start[segment], across)
+    assert np.all((height[on_segment] < 0.0) == same_direction)
+    # Every segment's line is touched from the samples' side (a wrong side leaves the disks untouched: inf).
+    assert np.all(np.isfinite(radius[on_segment]) & (radius[on_segment] > 0.0))
