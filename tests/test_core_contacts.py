@@ -99,8 +99,9 @@ def test_a_segment_starts_at_its_start_vertex_on_every_chain():
 
 def test_grouped_candidates_are_each_boxs_own_hits_in_the_order_of_its_own_query():
     # Two zigzag chains of more than SINGLE_INDEX segments in all, the second running backwards (the index
-    # holds runs of segments, queried with groups of consecutive boxes, and reports its hits in its own order): every box gets exactly the segments whose bounding box meets it,
-    # boxes in order, each box's segments in the order a query with that box alone reports them.
+    # holds runs of segments, queried with groups of consecutive boxes, and reports its hits in its own
+    # order): every box gets exactly the segments whose bounding box meets it, boxes in order, each box's
+    # segments in the order a query with that box alone reports them.
     rng = np.random.default_rng(7)
     size = SINGLE_INDEX // 2 + 1001
     x = np.arange(size, dtype=float)

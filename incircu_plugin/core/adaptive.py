@@ -287,7 +287,8 @@ class _Sites:
         return np.where((site >= 0) & (site < count), self.line_of[np.clip(site, 0, count - 1)], site)
 
     def chain(self, site):
-        """Chain of each site (-1 for no site)."""
+        """Chain of each site (-1 for no site); ``site`` is -1 or a segment or vertex index (below
+        ``segment_count + len(vertex)``)."""
         return self.site_chain[np.maximum(site, -1)]
 
     def feet(self, site, centre):

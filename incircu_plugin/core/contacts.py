@@ -204,7 +204,9 @@ class Boundary:
         :func:`_group_starts`), which is much cheaper than one query per box where consecutive boxes overlap,
         as they do along a chain; the hits are then filtered segment by segment against their group's box,
         then against each of its boxes (:meth:`_split_groups`). An index of single segments is queried with
-        every box at once. All give the same pairs, in the same order.
+        every box at once. All give the same pairs; the index paths list each box's segments in the index's
+        own order (the same whatever the group), the all-pairs test in segment order, so a tie between
+        equally near segments may be broken differently on the two paths.
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
