@@ -408,10 +408,11 @@ def _crossing(spans, intervals, terms0, terms1):
     roots = (np.empty(len(u0)), np.empty(len(u0)))
     edge = spans.kind[intervals.span] == EDGE
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for rows_of, solve_roots in ((edge.nonzero()[0], _edge_roots), ((~edge).nonzero()[0], _fan_roots)):
+        for rows_of, on_fan in ((edge.nonzero()[0], False), ((~edge).nonzero()[0], True)):
             if len(rows_of) == 0:
                 continue
-            values = solve_roots(d0[rows_of], d1[rows_of], d2[rows_of], middle[rows_of])
+            terms = d0[rows_of], d1[rows_of], d2[rows_of]
+            values = _fan_roots(*terms, middle[rows_of]) if on_fan else _edge_roots(*terms)
             for root, value in zip(roots, values):
                 root[rows_of] = value
     slack = 1e-9 * (u1 - u0)
@@ -424,7 +425,7 @@ def _crossing(spans, intervals, terms0, terms1):
     return np.where(found, chosen, middle), found, at_end
 
 
-def _edge_roots(d0, d1, d2, _middle):
+def _edge_roots(d0, d1, d2):
     """Roots of d2 u^2 + d1 u + d0 = 0 (on an edge), the stable pair.
 
     A vertex at the end of a segment's line touches it: their radii meet in a double root, which rounding may
