@@ -5,6 +5,7 @@ import pytest
 import shapely
 from shapely.geometry import LineString
 
+from incircu_plugin.core import polyline as polyline_module
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.polyline import (
     CLUSTER_POINTS,
@@ -98,6 +99,28 @@ def test_closest_is_the_first_smallest_distance_of_nearest(spread):
             assert index == int(np.argmin(distance))
             assert (closest_distance, closest_arc_length) == (distance[index], arc_length[index])
             assert closest_foot.tolist() == foot[index].tolist()
+
+
+def test_closest_without_a_cluster_and_on_one_vertex(monkeypatch):
+    # Too many (point, segment) pairs for a cluster: every point is measured through the index.
+    monkeypatch.setattr(polyline_module, "CLUSTER_PAIRS", 1)
+    rng = np.random.default_rng(8)
+    polyline = IndexedPolyline(np.cumsum(rng.normal(size=(50, 2)), axis=0))
+    points = rng.normal(size=(2 * CLUSTER_POINTS, 2)) * 5.0
+    assert polyline._segments_near(points) is None
+    distance, arc_length, foot = polyline.nearest(points)
+    index, closest_distance, closest_arc_length, closest_foot = polyline.closest(points)
+    assert (index, closest_distance, closest_arc_length) == (
+        int(np.argmin(distance)),
+        distance.min(),
+        arc_length[index],
+    )
+    assert closest_foot.tolist() == foot[index].tolist()
+    # A polyline of one vertex: its vertex is every point's foot.
+    point_line = IndexedPolyline(np.array([[1.0, 2.0]]))
+    index, closest_distance, closest_arc_length, closest_foot = point_line.closest(points)
+    assert index == int(np.argmin(np.hypot(*(points - [1.0, 2.0]).T)))
+    assert closest_arc_length == 0.0 and closest_foot.tolist() == [1.0, 2.0]
 
 
 def test_nearest_on_a_single_point():

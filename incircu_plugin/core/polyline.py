@@ -195,15 +195,7 @@ class IndexedPolyline:
         each point queries the index.
         """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
-        if len(self.xy) == 1:
-            foot = np.repeat(self.xy, len(points), axis=0)
-            return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
-        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS else None
-        if near is None:
-            segment = self.tree.query_nearest(shapely.points(points), all_matches=False)[1]
-        else:
-            segment = self._nearest_of(points, near)
-        return self._feet(points, segment)
+        return self._measured(points, self._segments_near(points))
 
     def closest(self, points):
         """Return the first of the points nearest to the polyline, with what :meth:`nearest` gives for it.
@@ -226,15 +218,21 @@ class IndexedPolyline:
             CRS units.
         """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
-        near = self._segments_near(points) if len(points) >= CLUSTER_POINTS and len(self.xy) > 1 else None
-        if near is None:
-            candidates = np.arange(len(points))
-            distance, arc_length, foot = self.nearest(points)
-        else:
-            candidates = self._may_be_closest(points, near)
-            distance, arc_length, foot = self._feet(points[candidates], self._nearest_of(points[candidates], near))
+        near = self._segments_near(points)
+        candidates = np.arange(len(points)) if near is None else self._may_be_closest(points, near)
+        distance, arc_length, foot = self._measured(points[candidates], near)
         first = int(np.argmin(distance))
         return int(candidates[first]), float(distance[first]), float(arc_length[first]), foot[first]
+
+    def _measured(self, points, near):
+        """Distance, foot's arc length and foot (CRS units) of each point on the polyline: from the segments
+        ``near`` them (see :meth:`_segments_near`), or from the index when ``near`` is None."""
+        if len(self.xy) == 1:
+            foot = np.repeat(self.xy, len(points), axis=0)
+            return np.hypot(*(points - foot).T), np.zeros(len(points)), foot
+        if near is None:
+            return self._feet(points, self.tree.query_nearest(shapely.points(points), all_matches=False)[1])
+        return self._feet(points, self._nearest_of(points, near))
 
     def _may_be_closest(self, points, near):
         """Sorted indices of the points that may be the nearest to the polyline (``near``: the segments that
@@ -266,13 +264,16 @@ class IndexedPolyline:
         return np.hypot(*(points - foot).T), self.cumulative[segment] + along * length, foot
 
     def _segments_near(self, points):
-        """Sorted indices of the segments that can be nearest to some of the points; None when that would pair
-        more than ``CLUSTER_PAIRS`` (point, segment) pairs.
+        """Sorted indices of the segments that can be nearest to some of the points; None when the points are
+        no cluster (fewer than ``CLUSTER_POINTS``, or more than ``CLUSTER_PAIRS`` (point, segment) pairs) or the
+        polyline is one vertex.
 
         The first point's nearest distance ``d`` bounds every other point's by its distance to the first
         point plus ``d``; a segment farther than that bound ``reach`` from all the points' box is nobody's
         nearest, so the query box is the points' box widened by ``reach``.
         """
+        if len(points) < CLUSTER_POINTS or len(self.xy) == 1:
+            return None
         first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
         # With a little slack, so rounding cannot leave out a segment at exactly that distance.
         reach = (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9)
