@@ -515,6 +515,9 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
         mine = boundary.chain_id[segment] >> 1 == (chain >> 1)[query]
         query, segment = query[mine], segment[mine]
     near = boundary.within(segment, query, centre, reach[:, 0])
+    # The own segments never count (their first contact is the sample itself): dropped before solving.
+    first_own, last_own = samples.first_own[sample], samples.last_own[sample]
+    near &= (segment < first_own[query]) | (segment > last_own[query])
     query, segment = query[near], segment[near]
     del near, centre, reach
     t, along, touched = first_contacts(
@@ -527,10 +530,8 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
         boundary,
         segment,
     )
-    first_own, last_own = samples.first_own[sample], samples.last_own[sample]
-    own_segment = (segment >= first_own[query]) & (segment <= last_own[query])
-    # The own segments' end vertices too (the next segment answers for the last one's end).
-    own_segment |= (touched >= boundary.start_site[first_own][query]) & (
+    # The own segments' end vertices do not count either (the next segment answers for the last one's end).
+    own_segment = (touched >= boundary.start_site[first_own][query]) & (
         touched <= (boundary.start_site[last_own] + 1)[query]
     )
     own_segment |= t <= min_t[query]
