@@ -229,8 +229,9 @@ class Boundary:
         keep = self._overlaps(segment, group[:, None], group_low, group_high)
         if real is not None:
             keep &= real
-        group = np.broadcast_to(group[:, None], keep.shape)[keep]
-        segment = segment[keep]
+        hit, rank = keep.nonzero()
+        group = group.take(hit)
+        segment = run.take(hit) * self.index_run + rank
         return self._split_groups(group, segment, starts, low, high)
 
     def _split_groups(self, group, segment, starts, low, high):
@@ -250,18 +251,20 @@ class Boundary:
         for first in range(int(sizes.max())):
             box = first_box + first
             np.minimum(box, count - 1, out=box)
-            keep = low_x <= box_high_x[box]
-            keep &= high_x >= box_low_x[box]
-            keep &= low_y <= box_high_y[box]
-            keep &= high_y >= box_low_y[box]
+            keep = low_x <= box_high_x.take(box)
+            keep &= high_x >= box_low_x.take(box)
+            keep &= low_y <= box_high_y.take(box)
+            keep &= high_y >= box_low_y.take(box)
             if first:
                 keep &= size > first
-            boxes.append(box[keep])
-            kept.append(segment[keep])
+            # The kept rows' indices once, then gathers: cheaper than a boolean mask applied to two arrays.
+            keep = keep.nonzero()[0]
+            boxes.append(box.take(keep))
+            kept.append(segment.take(keep))
         box = np.concatenate(boxes)
         # Each part is sorted by box: a stable sort merges them, each box's segments in their order.
         order = np.argsort(box, kind="stable")
-        return box[order], np.concatenate(kept)[order]
+        return box.take(order), np.concatenate(kept).take(order)
 
     def _query_each(self, low, high):
         """Pairs (box index, segment index), sorted by box, from an index of single segments."""
@@ -518,7 +521,8 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     # The own segments never count (their first contact is the sample itself): dropped before solving.
     first_own, last_own = samples.first_own[sample], samples.last_own[sample]
     near &= (segment < first_own[query]) | (segment > last_own[query])
-    query, segment = query[near], segment[near]
+    near = near.nonzero()[0]
+    query, segment = query.take(near), segment.take(near)
     del near, centre, reach
     t, along, touched = first_contacts(
         point[:, 0][query],
