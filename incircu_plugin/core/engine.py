@@ -27,7 +27,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
-from .contacts import Boundary, ranges
+from .contacts import Boundary
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
@@ -234,24 +234,32 @@ def _fewest_vertices(points, tolerance):
     """
     # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
     # keeps, so the kept ones are known without matching coordinates.
-    indexed = np.empty((len(points), 3))
-    indexed[:, :2] = points
-    indexed[:, 2] = np.arange(len(points))
     if len(points) <= SIMPLIFY_PIECE + 1:
-        pieces = shapely.linestrings(indexed)
+        pieces = shapely.linestrings(_with_index(points, np.arange(len(points))))
     else:
         starts = np.arange(0, len(points) - 1, SIMPLIFY_PIECE)
         sizes = np.minimum(starts + SIMPLIFY_PIECE, len(points) - 1) - starts + 1
-        piece, rank = ranges(sizes)
-        pieces = shapely.linestrings(indexed[starts[piece] + rank], indices=piece)
+        piece = np.repeat(np.arange(len(starts)), sizes)
+        # Each piece after the first starts again at the point the one before it ends at.
+        index = np.arange(len(piece)) - piece
+        pieces = shapely.linestrings(_with_index(points[index], index), indices=piece)
     kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
     keep[kept[:, 2].astype(np.intp)] = True
     if not shapely.is_simple(shapely.linestrings(points[keep])):
+        indexed = _with_index(points, np.arange(len(points)))
         line = shapely.simplify(shapely.linestrings(indexed), tolerance, preserve_topology=True)
         keep[:] = False
         keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
     return keep
+
+
+def _with_index(points, index):
+    """The points (an ``(n, 2)`` array, CRS units) with ``index`` (their indices) as a third column."""
+    indexed = np.empty((len(points), 3))
+    indexed[:, :2] = points
+    indexed[:, 2] = index
+    return indexed
 
 
 def _ordered(points, side, lengths, coincidence):
