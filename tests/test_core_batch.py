@@ -16,6 +16,7 @@ import pytest
 import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon, box
 
+from benchmarks.rivers import river_layer
 from incircu_plugin.core import (
     Cancelled,
     CenterlineError,
@@ -24,8 +25,10 @@ from incircu_plugin.core import (
     OptionError,
     PartOutcome,
     SplitPointError,
+    adaptive,
     api,
     centerlines_together,
+    contacts,
     default_tolerance,
     lines_centerline_steps,
     multipolygon_centerline_steps,
@@ -329,3 +332,44 @@ def test_overlapping_pauses_restore_the_collector_when_the_last_ends():
     assert not gc.isenabled()
     second.__exit__(None, None, None)
     assert gc.isenabled()
+
+
+def tie_cases():
+    """(name, polygon, split points or None) of shapes whose disks often touch two sites at exactly the same
+    parameter: straight sides cut into collinear segments, rivers at their events."""
+    rectangle = geometry_cases.rectangle(length=100.0, width=10.0, n=21)
+    collinear = shapely.segmentize(box(0.0, 0.0, 120.0, 10.0), 7.5)
+    cases = [
+        ("rectangle", rectangle.polygon, rectangle.split_points),
+        ("collinear box", collinear, [(0.0, 5.0), (120.0, 5.0)]),
+    ]
+    for river in river_layer(3, seed=0):
+        cases += [
+            (f"river {river.index}", river.polygon, river.ends),
+            (f"river {river.index} auto", river.polygon, None),
+        ]
+    return cases
+
+
+def exactly(result):
+    """Every bit of a result's line, radii and feet."""
+    return shapely.to_wkb(result.line), result.radii.tobytes(), result.foot_a.tobytes(), result.foot_b.tobytes()
+
+
+def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_batch(monkeypatch):
+    # Contacts tie exactly at many events; which foot wins must not depend on the order in which the spatial
+    # index, the all-pairs test or a batch's larger index list the candidates. The batch is traced in one
+    # frame without shifts (features overlap, contacts stay within each feature), so every bit must agree.
+    cases = tie_cases()
+    expected = [exactly(polygon_centerline(polygon, ends)) for _, polygon, ends in cases]
+    for all_pairs, single_index in ((1 << 62, contacts.SINGLE_INDEX), (0, contacts.SINGLE_INDEX), (0, 0)):
+        monkeypatch.setattr(contacts, "ALL_PAIRS", all_pairs)
+        monkeypatch.setattr(contacts, "SINGLE_INDEX", single_index)
+        for (name, polygon, ends), bits in zip(cases, expected, strict=True):
+            assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, single_index)
+    monkeypatch.undo()
+    monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
+    order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)
+    together = centerlines_together([polygon_centerline_steps(*cases[i][1:]) for i in order])
+    for i, outcome in zip(order, together, strict=True):
+        assert exactly(outcome) == expected[i], cases[i][0]

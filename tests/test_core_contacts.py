@@ -11,14 +11,18 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from incircu_plugin.core import contacts
 from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
 from incircu_plugin.core.contacts import (
+    CLEAR,
     QUERY_GROUP,
     SINGLE_INDEX,
     AxisPoints,
     Boundary,
+    Samples,
     _group_starts,
     first_contacts,
+    solve,
     vertex_contact,
 )
 from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
@@ -241,3 +245,56 @@ def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
     growing = np.where(raw < 1.0, radius, -radius)
     assert order.tolist() == np.lexsort((growing, crossing, along)).tolist()
     assert sorted(order.tolist()) == list(range(count))
+
+
+def solved_on_straight_banks():
+    """:func:`solve` of samples every half unit along a straight bank, facing a parallel bank 4 units away that
+    runs backwards in unit segments; each disk touches the far bank at ``t = 2`` above its sample, at an
+    integer x exactly where two segments meet (both report the same ``t``: an exact tie)."""
+    x = np.arange(41.0)
+    chains = [np.stack([x, np.zeros(41)], axis=1), np.stack([x[::-1], np.full(41, 4.0)], axis=1)]
+    along = np.arange(1.0, 79.0) / 2.0
+    count = len(along)
+    # A sample at a vertex has both its segments as its own.
+    last_own = np.minimum(np.floor(along), 39).astype(int)
+    first_own = np.where(along == np.floor(along), last_own - 1, last_own)
+    samples = Samples(
+        np.zeros(count, dtype=int),
+        np.stack([along, np.zeros(count)], axis=1),
+        np.tile([0.0, 1.0], (count, 1)),
+        np.ones(count),
+        along,
+        np.zeros(count),
+        first_own,
+        last_own,
+    )
+    return along, solve(samples, np.arange(count), Boundary(chains), np.ones(count), 10.0, 1e-9)
+
+
+def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeypatch):
+    along, expected = solved_on_straight_banks()
+    contact_t, status, contact, position, site = expected
+    assert np.all(contact_t == 2.0) and np.all(status == CLEAR)
+    assert np.array_equal(contact, np.stack([along, np.full(len(along), 4.0)], axis=1))
+    assert np.array_equal(position, 40.0 - along)
+    # Far segment k (site 40 + k) runs from x = 40 - k to 39 - k: the lower of two sites at a tie.
+    assert np.array_equal(site, 79 - np.floor(along).astype(int))
+    listed = Boundary.candidates
+
+    def reversed_candidates(boundary, low, high):
+        box, segment = listed(boundary, low, high)
+        order = np.lexsort((-np.arange(len(box)), box))
+        return box[order], segment[order]
+
+    # The index of single segments, the index of runs, every pair tested, and each box's pairs reversed.
+    for all_pairs, single_index, listing in (
+        (0, SINGLE_INDEX, listed),
+        (0, 0, listed),
+        (1 << 62, SINGLE_INDEX, listed),
+        (1 << 62, SINGLE_INDEX, reversed_candidates),
+    ):
+        monkeypatch.setattr(contacts, "ALL_PAIRS", all_pairs)
+        monkeypatch.setattr(contacts, "SINGLE_INDEX", single_index)
+        monkeypatch.setattr(Boundary, "candidates", listing)
+        for result, wanted in zip(solved_on_straight_banks()[1], expected, strict=True):
+            assert result.tobytes() == wanted.tobytes(), (all_pairs, single_index, listing.__name__)

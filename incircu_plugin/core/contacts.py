@@ -66,8 +66,8 @@ QUERY_GROUP = 8
 
 #: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
 #: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
-#: of 8 would save about 33 MiB at 10^6 segments for the same time, but they change the order of the
-#: candidates, hence which of two equally near feet an event on the other chain reports.
+#: of 8 would save about 33 MiB at 10^6 segments for the same time (they change only the order of the
+#: candidates, which changes no result since :func:`solve` breaks ties by site).
 INDEX_RUN = 4
 SINGLE_INDEX = 1 << 17
 
@@ -207,8 +207,8 @@ class Boundary:
         as they do along a chain; the hits are then filtered segment by segment against their group's box,
         then against each of its boxes (:meth:`_split_groups`). An index of single segments is queried with
         every box at once. All give the same pairs; the index paths list each box's segments in the index's
-        own order (the same whatever the group), the all-pairs test in segment order, so a tie between
-        equally near segments may be broken differently on the two paths.
+        own order (the same whatever the group), the all-pairs test in segment order (which changes no
+        result: :func:`solve` breaks ties by site).
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
@@ -448,12 +448,22 @@ def group_minima(group, size, *values):
     return results
 
 
-def _first_of_groups(picked, group):
-    """The rows ``picked`` (ascending) whose ``group`` differs from the previous one's: each group's first."""
+def _lowest_site_of_groups(picked, group, site):
+    """Of the rows ``picked`` (ascending, ``group`` sorted ascending), each group's row of the lowest ``site``.
+
+    The tie rule of :func:`solve`: ``picked`` are the pairs touched at a sample's first contact, and a site
+    occurs at most once per sample (a segment answers for its own interior and start vertex, the last one of
+    a chain for its end too), so each group keeps one row, whatever order its rows are listed in.
+    """
     group = group[picked]
     first = np.ones(len(group), dtype=bool)
     np.not_equal(group[1:], group[:-1], out=first[1:])
-    return picked[first]
+    starts = first.nonzero()[0]
+    if len(starts) == len(group):
+        return picked
+    site = site[picked]
+    lowest = np.minimum.reduceat(site, starts)
+    return picked[site == lowest[np.cumsum(first) - 1]]
 
 
 def solve(samples, index, boundary, trial, max_t, min_t):
@@ -467,6 +477,13 @@ def solve(samples, index, boundary, trial, max_t, min_t):
     chain and, within ``TIE_TOLERANCE``, on the sample's own chain too; ``CLEAR``: on the other chain only),
     for accepted samples the ``contact`` point and its arc-length ``position`` along the other chain, and
     the ``site`` of the contact (for skipped samples the nearest site of their own chain; -1 when none).
+
+    Sites touched at exactly the same first ``t`` (a disk touching two places of a chain, as at an event) are
+    all true contacts; the lowest site wins: a segment's interior before any vertex, and among segments or
+    among vertices the first along the chains. The rule depends on the sites only, never on the order in
+    which the candidate pairs are listed: the index and the all-pairs paths of :meth:`Boundary.candidates`
+    give the same winners, and a feature traced with others (its sites keep their order) those it gets alone
+    wherever its parameters come out the same (a joint tracing shifts coordinates: rounding may tip a tie).
     """
     count = len(index)
     chain = samples.chain[index]
@@ -505,7 +522,8 @@ class _Solution:
 def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     """One round of :func:`solve`: the samples ``sample`` (rows ``row`` of ``solution``) with trial parameters
     ``radius`` and smallest contacts ``min_t``. Fills in the rows settled (first contact within the trial) and
-    the own-chain site of every row; returns each sample's first contact found (inf when none).
+    the own-chain site of every row, ties broken as :func:`solve` says; returns each sample's first contact
+    found (inf when none).
 
     Per-sample quantities are taken once per sample and then gathered per (sample, segment) pair.
     """
@@ -551,13 +569,12 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     settled = best <= radius
     solution.contact_t[row[settled]] = best[settled]
     best_own_pair = best_own[query]
-    own_winner = _first_of_groups((np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0], query)
+    own_winner = _lowest_site_of_groups((np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0], query, touched)
     solution.site[row[query[own_winner]]] = touched[own_winner]
     winner = np.isfinite(t_other) & (t_other == best_other[query])
     winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
     winner &= settled[query]
-    # Pairs are sorted by sample: keep each sample's first winning pair.
-    chosen = _first_of_groups(winner.nonzero()[0], query)
+    chosen = _lowest_site_of_groups(winner.nonzero()[0], query, touched)
     if len(chosen):
         _record_winners(
             solution,
