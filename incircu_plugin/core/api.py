@@ -467,8 +467,9 @@ def centerlines_together(step_generators, progress=None):
     """Run many ``*_steps`` generators with one joint adaptive tracing: a layer of small features at once.
 
     The results are those of the plain functions (:func:`polygon_centerline` and the others) up to
-    floating-point rounding; tracing small features together pays the tracer's per-round overhead once per
-    batch instead of once per feature. Give batches of bounded size (see :func:`batches`).
+    floating-point rounding (where an incircle touches a chain at two places equally, rounding may make the
+    other true contact its foot); tracing small features together pays the tracer's per-round overhead once
+    per batch instead of once per feature. Give batches of bounded size (see :func:`batches`).
 
     Parameters
     ----------
