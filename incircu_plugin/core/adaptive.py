@@ -336,24 +336,19 @@ class _Sites:
         values only: the four kinds (edge or fan, segment or vertex) are computed apart.
         """
         b = self.boundary
-        edge = spans.kind[span] == EDGE
-        is_segment = site < b.segment_count
+        # Kinds 0, 1: a segment, a vertex seen from an edge; 2, 3: from a fan.
+        kind = 2 * spans.kind[span] + (site >= b.segment_count)
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        terms = tuple(np.empty(len(span)) for _ in range(3))
+
+        def terms(of_kind, row):
+            on_edge = of_kind < 2
+            if of_kind % 2 == 0:
+                return self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
+            return self._vertex_terms(spans, span[row], vertex[row], on_edge)
+
         with np.errstate(divide="ignore", invalid="ignore"):
-            for on_edge in (True, False):
-                for of_segment in (True, False):
-                    row = ((edge == on_edge) & (is_segment == of_segment)).nonzero()[0]
-                    if len(row) == 0:
-                        continue
-                    if of_segment:
-                        values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
-                    else:
-                        values = self._vertex_terms(spans, span[row], vertex[row], on_edge)
-                    for term, value in zip(terms, values):
-                        term[row] = value
-        return terms
+            return _by_kind(kind, range(4), terms, 3)
 
     def _segment_terms(self, spans, span, segment, u_ref, on_edge):
         """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
@@ -404,17 +399,14 @@ def _crossing(spans, intervals, terms0, terms1):
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     middle = 0.5 * (u0 + u1)
-    # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
-    roots = (np.empty(len(u0)), np.empty(len(u0)))
-    edge = spans.kind[intervals.span] == EDGE
+
+    def roots_of(kind, row):
+        terms = d0[row], d1[row], d2[row]
+        return _edge_roots(*terms) if kind == EDGE else _fan_roots(*terms, middle[row])
+
+    # The two candidate roots of each row, from its edge's or its fan's equation.
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for rows_of, on_fan in ((edge.nonzero()[0], False), ((~edge).nonzero()[0], True)):
-            if len(rows_of) == 0:
-                continue
-            terms = d0[rows_of], d1[rows_of], d2[rows_of]
-            values = _fan_roots(*terms, middle[rows_of]) if on_fan else _edge_roots(*terms)
-            for root, value in zip(roots, values):
-                root[rows_of] = value
+        roots = _by_kind(spans.kind[intervals.span], (EDGE, FAN), roots_of, 2)
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
     for candidate in roots:
@@ -423,6 +415,20 @@ def _crossing(spans, intervals, terms0, terms1):
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
     return np.where(found, chosen, middle), found, at_end
+
+
+def _by_kind(kind, kinds, compute, columns):
+    """Outputs with one row per item computed kind by kind: ``compute(value, row)`` gives the ``columns``
+    outputs' values on the rows ``row`` whose ``kind`` is ``value`` (for each of ``kinds``; a kind without
+    rows is not computed). Each row depends on its own values only, so computing the kinds apart gives the
+    same floats as any grouping. Returns a tuple of ``columns`` float arrays."""
+    outputs = tuple(np.empty(len(kind)) for _ in range(columns))
+    for value in kinds:
+        row = (kind == value).nonzero()[0]
+        if len(row):
+            for output, values in zip(outputs, compute(value, row)):
+                output[row] = values
+    return outputs
 
 
 def _edge_roots(d0, d1, d2):
@@ -587,11 +593,9 @@ class _Tracer:
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
         intervals = self._corner_junctions(self._initial(report))
         for round_index in range(MAX_ROUNDS):
-            open_ = self._is_open(intervals)
-            curved = ~open_ & self._is_curved(intervals)
-            events, curves = intervals.subset(open_), intervals.subset(curved)
+            events, curves = self._open_and_curved(intervals)
             # Only the open and curved intervals go on: the others are released before the round's output is built.
-            intervals = open_ = curved = None
+            intervals = None
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
@@ -599,9 +603,10 @@ class _Tracer:
             settled = self._settle_at_ends(events, at_end)
             carried = []
             if settled.any():
-                carried = [events.subset(settled)]
-                events = events.subset(~settled)
-                event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
+                carried = [events.subset(settled.nonzero()[0])]
+                unsettled = (~settled).nonzero()[0]
+                events = events.subset(unsettled)
+                event_u, event_trial, found = event_u[unsettled], event_trial[unsettled], found[unsettled]
             owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
             station_owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([pairs.span, curves.span[station_owner]])
@@ -782,19 +787,30 @@ class _Tracer:
         pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
         uncut = np.ones(len(intervals.span), dtype=bool)
         uncut[cut] = False
-        return _Intervals.concatenate([pieces, intervals.subset(uncut)])
+        return _Intervals.concatenate([pieces, intervals.subset(uncut.nonzero()[0])])
+
+    def _open_and_curved(self, intervals):
+        """The open intervals (:meth:`_is_open`) and the curved ones (:meth:`_is_curved`), each judged on the
+        intervals that may be one only: both ends solved, and two known sites that differ (open) or one site
+        whose stations are not yet placed (curved). Subsets are taken by index (a mask would be scanned again
+        for every column of the record)."""
+        t = self.t
+        finite = np.isfinite(t[intervals.left]) & np.isfinite(t[intervals.right])
+        site0, site1 = intervals.site0, intervals.site1
+        differ = site0 != site1
+        events = intervals.subset((differ & finite & (site0 >= 0) & (site1 >= 0)).nonzero()[0])
+        curves = intervals.subset((~differ & finite & (site0 >= 0) & ~intervals.verified).nonzero()[0])
+        return events.subset(self._is_open(events).nonzero()[0]), curves.subset(self._is_curved(curves).nonzero()[0])
 
     def _is_open(self, intervals):
-        """Intervals whose two ends touch different sites and that are still wide enough to split."""
+        """Which intervals (both ends solved, touching two known different sites) are still wide enough to
+        split."""
         t_left, t_right = self.t[intervals.left], self.t[intervals.right]
-        finite = np.isfinite(t_left) & np.isfinite(t_right)
         radius = np.fmax(t_left, t_right)
         del t_left, t_right
         move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
         tolerance = self.of(self.tolerance, intervals)
-        wide = move > SMALLEST_MOVE * tolerance
-        known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
-        open_ = (intervals.site0 != intervals.site1) & finite & wide & known
+        open_ = move > SMALLEST_MOVE * tolerance
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
         candidate = open_.nonzero()[0]
@@ -804,7 +820,8 @@ class _Tracer:
         return open_
 
     def _is_curved(self, intervals):
-        """Intervals between samples touching one site of the other chain where the axis is a parabola.
+        """Which intervals (both ends solved, touching one site, stations not yet placed) lie between samples
+        touching one site of the other chain where the axis is a parabola.
 
         A fan touching a segment traces the parabola of its vertex and that segment's line; an edge touching
         a vertex with no fan (a chain's end) traces the parabola of that vertex and the edge's line. (An edge
@@ -813,9 +830,7 @@ class _Tracer:
         """
         spans, sites, b = self.spans, self.sites, self.boundary
         span, site = intervals.span, intervals.site0
-        curved = (site == intervals.site1) & (site >= 0) & ~intervals.verified
-        curved &= np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        curved &= sites.chain(site) == spans.chain[span] ^ 1
+        curved = sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
         untraced_fan = ~self.traced[b.vertex_chain[vertex]]
@@ -1122,7 +1137,7 @@ def _unsettled_pieces(curves, owner, u, index, site):
     if not np.any(site != curves.site0[owner]):
         return curves.subset(np.zeros(len(curves.span), dtype=bool))
     pieces = _split_at_nodes(curves, owner, u, index, site, site, True)
-    return pieces.subset(pieces.site0 != pieces.site1)
+    return pieces.subset((pieces.site0 != pieces.site1).nonzero()[0])
 
 
 def _split_vertices(boundary, closed):
