@@ -765,9 +765,14 @@ class _Tracer:
         if len(after) == 0:
             return intervals
         corners = self._corner_samples(intervals.span[after])
-        t, status, _, _, site = _solve_all(
-            corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
-        )
+        # Trial: a little above the radius of the solved samples at the far ends of the corner's two intervals.
+        known = np.fmax(self.t[intervals.right[after]], self.t[intervals.left[before]])
+        width = self.of(self.width, intervals.subset(after))
+        trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known / corners.scale, 0.625 * width)
+        t, status, site = (np.empty(len(after)), np.empty(len(after), dtype=np.int8), np.empty(len(after), dtype=int))
+        for begin in range(0, len(after), CHUNK):
+            chunk = np.arange(begin, min(begin + CHUNK, len(after)))
+            t[chunk], status[chunk], _, _, site[chunk] = solve(corners, chunk, b, trial[chunk], self.max_t, self.min_t)
         site = self.sites.canonical(site)
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
