@@ -25,7 +25,9 @@ the interval's one event is, as above). Each probe is judged exactly like the si
 first contact. A walk along the own chain is only predicted when it does not pass the span's own sites (the
 solver never reports those). Either way every piece is labelled with sites that its end samples really touch
 first, and a piece is settled only when both its ends touch the same site, so the argument below is unchanged:
-a wrong prediction costs probes, never a site.
+a wrong prediction costs probes, never a site. An interval whose two sites lie on different chains, and whose
+event is not found between them in closed form, is predicted the same way (:meth:`_Tracer._approaches`): the own
+chain's contact walks on, away from the span, to the site where the other chain's site takes over.
 
 A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
 and the event where that line and the other chain are equally far is the junction of the corner's branch with
@@ -887,6 +889,97 @@ class _Tracer:
         apart = other | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
         return first, last, np.where((chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart, high - low, 0)
 
+    def _walk_sites(self, intervals, found):
+        """The sites of the predicted walks, from ``u0`` to ``u1``: per site its interval (ascending, at least
+        three sites per walk) and the site. :meth:`_walks` along one chain, and :meth:`_approaches` into an
+        interval whose two sites lie on different chains and whose event candidate was not ``found``."""
+        first, last, events = self._walks(intervals)
+        counts = np.where((events >= 2) & (events <= MAX_PREDICTED), events + 1, 0)
+        owner, index = ranges(counts)
+        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+        approach_owner, approach_site = self._approaches(intervals, found)
+        if len(approach_owner) == 0:
+            return owner, site
+        # A walk along one chain and an approach never share an interval: merged by interval, each in order.
+        order = np.argsort(np.concatenate([owner, approach_owner]), kind="stable")
+        return np.concatenate([owner, approach_owner])[order], np.concatenate([site, approach_site])[order]
+
+    def _approaches(self, intervals, found):
+        """Predicted walks of the intervals whose sites lie on different chains and whose event candidate was not
+        found inside (the two sites' radii cross outside, or at an end whose sample does not touch both).
+
+        The own chain's contact there walks on, away from the span's own sites, to a site ``S_k`` (``k``
+        sequence steps beyond the interval's own-chain site ``S_0``) before the other chain's site ``A`` takes
+        over: ``A`` is first touched at one end, so moving away from that end its radius first meets the own
+        sites' lower envelope at the event of ``A`` and ``S_k``. Of ``S_0`` .. ``S_{MAX_PREDICTED - 1}`` the one
+        whose crossing with ``A`` lies inside the interval and nearest ``A``'s end is taken; the walk is ``A``,
+        ``S_k`` .. ``S_0`` (reversed when ``A`` is at ``u1``). Like any prediction it is probed (a wrong one
+        costs probes, never a site). Returns per site its interval (ascending) and the site; ``k = 0`` predicts
+        nothing (the interval's own event candidate is probed).
+        """
+        sites, spans = self.sites, self.spans
+        chain = spans.chain[intervals.span]
+        chain0, chain1 = sites.chain(intervals.site0), sites.chain(intervals.site1)
+        other_first = chain0 == chain ^ 1
+        own_site = np.where(other_first, intervals.site1, intervals.site0)
+        rank = sites.rank[own_site]
+        span = intervals.span
+        step = np.where(rank > self.own_ranks[1][span], 1, np.where(rank < self.own_ranks[0][span], -1, 0))
+        mixed = np.where(other_first, chain1 == chain, (chain0 == chain) & (chain1 == chain ^ 1))
+        row = (mixed & ~found & (rank >= 0) & (step != 0)).nonzero()[0]
+        if len(row) == 0:
+            return np.empty(0, dtype=int), np.empty(0, dtype=int)
+        owner, k = ranges(np.full(len(row), MAX_PREDICTED))
+        owner = row[owner]
+        candidate_rank = rank[owner] + step[owner] * k
+        valid = (candidate_rank >= 0) & (candidate_rank < len(sites.sequence))
+        candidate = sites.sequence[np.clip(candidate_rank, 0, len(sites.sequence) - 1)]
+        valid &= sites.chain(candidate) == chain[owner]
+        other_site = np.where(other_first, intervals.site0, intervals.site1)[owner]
+        middle = 0.5 * (intervals.u0 + intervals.u1)[owner]
+        terms = self.sites.radius_terms(
+            spans, np.tile(span[owner], 2), np.concatenate([other_site, candidate]), np.tile(middle, 2)
+        )
+        count = len(owner)
+        u, radius, inside = self._pair_events(
+            intervals.subset(owner), [x[:count] for x in terms], [x[count:] for x in terms]
+        )
+        inside &= self._on_run(span[owner], u, radius, candidate)
+        # Nearest ``A``'s end: the smallest u when ``A`` is at u0, the largest when at u1.
+        key = np.where(inside & valid, np.where(other_first[owner], u, -u), np.inf)
+        best = np.full(len(intervals.span), np.inf)
+        np.minimum.at(best, owner, key)
+        chosen = ((key == best[owner]) & np.isfinite(key)).nonzero()[0]
+        # One per interval (the nearest step on a tie): the first of its interval's rows.
+        first = np.ones(len(chosen), dtype=bool)
+        first[1:] = owner[chosen][1:] != owner[chosen][:-1]
+        chosen = chosen[first]
+        chosen_owner, chosen_k = owner[chosen], k[chosen]
+        take = chosen_k >= 1
+        chosen_owner, chosen_k = chosen_owner[take], chosen_k[take]
+        # The walk from u0 to u1: A, S_k .. S_0 when A is at u0; S_0 .. S_k, A when at u1.
+        walk_owner, index = ranges(chosen_k + 2)
+        reach = chosen_k[walk_owner]
+        walk_row = chosen_owner[walk_owner]
+        at_start = other_first[walk_row]
+        own_step = np.where(at_start, reach + 1 - index, index)
+        walk_site = sites.sequence[np.clip(rank[walk_row] + step[walk_row] * own_step, 0, len(sites.sequence) - 1)]
+        is_other = np.where(at_start, index == 0, index == reach + 1)
+        walk_site = np.where(is_other, np.where(other_first, intervals.site0, intervals.site1)[walk_row], walk_site)
+        return walk_row, walk_site
+
+    def _on_run(self, span, u, radius, site):
+        """Whether the disk of ``radius`` at parameter ``u`` of ``span`` has its foot on ``site``'s straight run
+        (not only on its line; always for a vertex site)."""
+        b = self.boundary
+        point, _ = self.spans.points(span, u)
+        centre = point + radius[:, None] * self.spans.directions(span, u)
+        segment = np.clip(site, 0, b.segment_count - 1)
+        along = np.einsum("ij,ij->i", centre - rows(b.start, segment), rows(b.unit, segment))
+        run_length = self.sites.run_end_position[segment] - b.segment_position[segment]
+        with np.errstate(invalid="ignore"):
+            return (site >= b.segment_count) | ((along >= 0.0) & (along <= run_length))
+
     def _event_nodes(self, intervals, event_u, event_trial, found):
         """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
         form (:meth:`_walks`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
@@ -895,24 +988,21 @@ class _Tracer:
         Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
         interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
         """
-        first, last, events = self._walks(intervals)
-        predicted = (events >= 2) & (events <= MAX_PREDICTED)
-        if not predicted.any():
+        owner, site = self._walk_sites(intervals, found)
+        if len(owner) == 0:
             # Every interval probes its one event candidate.
-            return np.arange(len(predicted)), event_u, event_trial, found, intervals
-        counts = np.where(predicted, events + 1, 0)
-        owner, index = ranges(counts)
-        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+            return np.arange(len(intervals.span)), event_u, event_trial, found, intervals
+        predicted = np.bincount(owner, minlength=len(intervals.span)) > 0
         # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
-        pair = (index < counts[owner] - 1).nonzero()[0]
+        pair = (owner[1:] == owner[:-1]).nonzero()[0]
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
         u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
-        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
+        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(predicted)) > 0
         keep = (~failed[pair_owner]).nonzero()[0]
         single = (~predicted | failed).nonzero()[0]
         pieces = pieces.subset(keep)
