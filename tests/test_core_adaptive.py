@@ -356,6 +356,37 @@ def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(predicted_
     assert predicted_events["events"] > 0
 
 
+@pytest.fixture
+def approach_sites(monkeypatch):
+    """Counts the sites of the walks predicted into intervals whose two sites lie on different chains."""
+    from incircu_plugin.core import adaptive
+
+    counted = {"sites": 0}
+    original = adaptive._Tracer._approaches
+
+    def counting(self, intervals, found):
+        owner, site = original(self, intervals, found)
+        counted["sites"] += len(site)
+        return owner, site
+
+    monkeypatch.setattr(adaptive._Tracer, "_approaches", counting)
+    return counted
+
+
+@pytest.mark.parametrize("widths", [None, 1.0 / 2000.0], ids=["default", "tight"])
+def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays_on_the_axis(approach_sites, widths):
+    # Near the sector's split points an interval's disks first touch the other chain at one end and the own
+    # chain's arc at the other; its two sites' radii do not cross inside it: the own contact walks on along
+    # the arc first (predicted and probed in one round).
+    case = next(c for c in ANALYTIC if c.name == "annulus sector r=40..60 span=3.142 n=61 unit")
+    tolerance = None if widths is None else widths * case.width
+    result = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
+    check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
+    tolerance = default_tolerance(case.chain_a, case.chain_b) if tolerance is None else tolerance
+    assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
+    assert approach_sites["sites"] > 0
+
+
 def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monkeypatch):
     # A bottom bank bulging out of the region (convex corners), its edges alternately long and very short: a
     # corner's bisector disk touches the short edge beyond its end (left to the rounds), a long one inside it.

@@ -25,7 +25,9 @@ the interval's one event is, as above). Each probe is judged exactly like the si
 first contact. A walk along the own chain is only predicted when it does not pass the span's own sites (the
 solver never reports those). Either way every piece is labelled with sites that its end samples really touch
 first, and a piece is settled only when both its ends touch the same site, so the argument below is unchanged:
-a wrong prediction costs probes, never a site.
+a wrong prediction costs probes, never a site. An interval whose two sites lie on different chains, and whose
+event is not found between them in closed form, is predicted the same way (:meth:`_Tracer._approaches`): the own
+chain's contact walks on, away from the span, to the site where the other chain's site takes over.
 
 A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
 and the event where that line and the other chain are equally far is the junction of the corner's branch with
@@ -336,24 +338,19 @@ class _Sites:
         values only: the four kinds (edge or fan, segment or vertex) are computed apart.
         """
         b = self.boundary
-        edge = spans.kind[span] == EDGE
-        is_segment = site < b.segment_count
+        # Kinds 0, 1: a segment, a vertex seen from an edge; 2, 3: from a fan.
+        kind = 2 * spans.kind[span] + (site >= b.segment_count)
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        terms = tuple(np.empty(len(span)) for _ in range(3))
+
+        def terms(of_kind, row):
+            on_edge = of_kind < 2
+            if of_kind % 2 == 0:
+                return self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
+            return self._vertex_terms(spans, span[row], vertex[row], on_edge)
+
         with np.errstate(divide="ignore", invalid="ignore"):
-            for on_edge in (True, False):
-                for of_segment in (True, False):
-                    row = ((edge == on_edge) & (is_segment == of_segment)).nonzero()[0]
-                    if len(row) == 0:
-                        continue
-                    if of_segment:
-                        values = self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
-                    else:
-                        values = self._vertex_terms(spans, span[row], vertex[row], on_edge)
-                    for term, value in zip(terms, values):
-                        term[row] = value
-        return terms
+            return _by_kind(kind, range(4), terms, 3)
 
     def _segment_terms(self, spans, span, segment, u_ref, on_edge):
         """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
@@ -404,17 +401,14 @@ def _crossing(spans, intervals, terms0, terms1):
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     middle = 0.5 * (u0 + u1)
-    # The two candidate roots of each row, from its edge's or its fan's equation (rows apart: the same floats).
-    roots = (np.empty(len(u0)), np.empty(len(u0)))
-    edge = spans.kind[intervals.span] == EDGE
+
+    def roots_of(kind, row):
+        terms = d0[row], d1[row], d2[row]
+        return _edge_roots(*terms) if kind == EDGE else _fan_roots(*terms, middle[row])
+
+    # The two candidate roots of each row, from its edge's or its fan's equation.
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for rows_of, on_fan in ((edge.nonzero()[0], False), ((~edge).nonzero()[0], True)):
-            if len(rows_of) == 0:
-                continue
-            terms = d0[rows_of], d1[rows_of], d2[rows_of]
-            values = _fan_roots(*terms, middle[rows_of]) if on_fan else _edge_roots(*terms)
-            for root, value in zip(roots, values):
-                root[rows_of] = value
+        roots = _by_kind(spans.kind[intervals.span], (EDGE, FAN), roots_of, 2)
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
     for candidate in roots:
@@ -423,6 +417,20 @@ def _crossing(spans, intervals, terms0, terms1):
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
     return np.where(found, chosen, middle), found, at_end
+
+
+def _by_kind(kind, kinds, compute, columns):
+    """Outputs with one row per item computed kind by kind: ``compute(value, row)`` gives the ``columns``
+    outputs' values on the rows ``row`` whose ``kind`` is ``value`` (for each of ``kinds``; a kind without
+    rows is not computed). Each row depends on its own values only, so computing the kinds apart gives the
+    same floats as any grouping. Returns a tuple of ``columns`` float arrays."""
+    outputs = tuple(np.empty(len(kind)) for _ in range(columns))
+    for value in kinds:
+        row = (kind == value).nonzero()[0]
+        if len(row):
+            for output, values in zip(outputs, compute(value, row)):
+                output[row] = values
+    return outputs
 
 
 def _edge_roots(d0, d1, d2):
@@ -587,11 +595,9 @@ class _Tracer:
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
         intervals = self._corner_junctions(self._initial(report))
         for round_index in range(MAX_ROUNDS):
-            open_ = self._is_open(intervals)
-            curved = ~open_ & self._is_curved(intervals)
-            events, curves = intervals.subset(open_), intervals.subset(curved)
+            events, curves = self._open_and_curved(intervals)
             # Only the open and curved intervals go on: the others are released before the round's output is built.
-            intervals = open_ = curved = None
+            intervals = None
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
@@ -599,9 +605,10 @@ class _Tracer:
             settled = self._settle_at_ends(events, at_end)
             carried = []
             if settled.any():
-                carried = [events.subset(settled)]
-                events = events.subset(~settled)
-                event_u, event_trial, found = event_u[~settled], event_trial[~settled], found[~settled]
+                carried = [events.subset(settled.nonzero()[0])]
+                unsettled = (~settled).nonzero()[0]
+                events = events.subset(unsettled)
+                event_u, event_trial, found = event_u[unsettled], event_trial[unsettled], found[unsettled]
             owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
             station_owner, station_u, station_trial = self._stations(curves)
             span = np.concatenate([pairs.span, curves.span[station_owner]])
@@ -760,9 +767,14 @@ class _Tracer:
         if len(after) == 0:
             return intervals
         corners = self._corner_samples(intervals.span[after])
-        t, status, _, _, site = _solve_all(
-            corners, np.arange(len(after)), b, 0.625 * self.width, self.max_t, self.min_t, lambda done: None
-        )
+        # Trial: a little above the radius of the solved samples at the far ends of the corner's two intervals.
+        known = np.fmax(self.t[intervals.right[after]], self.t[intervals.left[before]])
+        width = self.of(self.width, intervals.subset(after))
+        trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known / corners.scale, 0.625 * width)
+        t, status, site = (np.empty(len(after)), np.empty(len(after), dtype=np.int8), np.empty(len(after), dtype=int))
+        for begin in range(0, len(after), CHUNK):
+            chunk = np.arange(begin, min(begin + CHUNK, len(after)))
+            t[chunk], status[chunk], _, _, site[chunk] = solve(corners, chunk, b, trial[chunk], self.max_t, self.min_t)
         site = self.sites.canonical(site)
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
@@ -782,19 +794,30 @@ class _Tracer:
         pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
         uncut = np.ones(len(intervals.span), dtype=bool)
         uncut[cut] = False
-        return _Intervals.concatenate([pieces, intervals.subset(uncut)])
+        return _Intervals.concatenate([pieces, intervals.subset(uncut.nonzero()[0])])
+
+    def _open_and_curved(self, intervals):
+        """The open intervals (:meth:`_is_open`) and the curved ones (:meth:`_is_curved`), each judged on the
+        intervals that may be one only: both ends solved, and two known sites that differ (open) or one site
+        whose stations are not yet placed (curved). Subsets are taken by index (a mask would be scanned again
+        for every column of the record)."""
+        t = self.t
+        finite = np.isfinite(t[intervals.left]) & np.isfinite(t[intervals.right])
+        site0, site1 = intervals.site0, intervals.site1
+        differ = site0 != site1
+        events = intervals.subset((differ & finite & (site0 >= 0) & (site1 >= 0)).nonzero()[0])
+        curves = intervals.subset((~differ & finite & (site0 >= 0) & ~intervals.verified).nonzero()[0])
+        return events.subset(self._is_open(events).nonzero()[0]), curves.subset(self._is_curved(curves).nonzero()[0])
 
     def _is_open(self, intervals):
-        """Intervals whose two ends touch different sites and that are still wide enough to split."""
+        """Which intervals (both ends solved, touching two known different sites) are still wide enough to
+        split."""
         t_left, t_right = self.t[intervals.left], self.t[intervals.right]
-        finite = np.isfinite(t_left) & np.isfinite(t_right)
         radius = np.fmax(t_left, t_right)
         del t_left, t_right
         move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
         tolerance = self.of(self.tolerance, intervals)
-        wide = move > SMALLEST_MOVE * tolerance
-        known = (intervals.site0 >= 0) & (intervals.site1 >= 0)
-        open_ = (intervals.site0 != intervals.site1) & finite & wide & known
+        open_ = move > SMALLEST_MOVE * tolerance
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
         candidate = open_.nonzero()[0]
@@ -804,7 +827,8 @@ class _Tracer:
         return open_
 
     def _is_curved(self, intervals):
-        """Intervals between samples touching one site of the other chain where the axis is a parabola.
+        """Which intervals (both ends solved, touching one site, stations not yet placed) lie between samples
+        touching one site of the other chain where the axis is a parabola.
 
         A fan touching a segment traces the parabola of its vertex and that segment's line; an edge touching
         a vertex with no fan (a chain's end) traces the parabola of that vertex and the edge's line. (An edge
@@ -813,9 +837,7 @@ class _Tracer:
         """
         spans, sites, b = self.spans, self.sites, self.boundary
         span, site = intervals.span, intervals.site0
-        curved = (site == intervals.site1) & (site >= 0) & ~intervals.verified
-        curved &= np.isfinite(self.t[intervals.left]) & np.isfinite(self.t[intervals.right])
-        curved &= sites.chain(site) == spans.chain[span] ^ 1
+        curved = sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
         untraced_fan = ~self.traced[b.vertex_chain[vertex]]
@@ -867,6 +889,97 @@ class _Tracer:
         apart = other | (high < self.own_ranks[0][span]) | (low > self.own_ranks[1][span])
         return first, last, np.where((chain0 == chain1) & (chain0 >= 0) & (low >= 0) & apart, high - low, 0)
 
+    def _walk_sites(self, intervals, found):
+        """The sites of the predicted walks, from ``u0`` to ``u1``: per site its interval (ascending, at least
+        three sites per walk) and the site. :meth:`_walks` along one chain, and :meth:`_approaches` into an
+        interval whose two sites lie on different chains and whose event candidate was not ``found``."""
+        first, last, events = self._walks(intervals)
+        counts = np.where((events >= 2) & (events <= MAX_PREDICTED), events + 1, 0)
+        owner, index = ranges(counts)
+        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+        approach_owner, approach_site = self._approaches(intervals, found)
+        if len(approach_owner) == 0:
+            return owner, site
+        # A walk along one chain and an approach never share an interval: merged by interval, each in order.
+        order = np.argsort(np.concatenate([owner, approach_owner]), kind="stable")
+        return np.concatenate([owner, approach_owner])[order], np.concatenate([site, approach_site])[order]
+
+    def _approaches(self, intervals, found):
+        """Predicted walks of the intervals whose sites lie on different chains and whose event candidate was not
+        found inside (the two sites' radii cross outside, or at an end whose sample does not touch both).
+
+        The own chain's contact there walks on, away from the span's own sites, to a site ``S_k`` (``k``
+        sequence steps beyond the interval's own-chain site ``S_0``) before the other chain's site ``A`` takes
+        over: ``A`` is first touched at one end, so moving away from that end its radius first meets the own
+        sites' lower envelope at the event of ``A`` and ``S_k``. Of ``S_0`` .. ``S_{MAX_PREDICTED - 1}`` the one
+        whose crossing with ``A`` lies inside the interval and nearest ``A``'s end is taken; the walk is ``A``,
+        ``S_k`` .. ``S_0`` (reversed when ``A`` is at ``u1``). Like any prediction it is probed (a wrong one
+        costs probes, never a site). Returns per site its interval (ascending) and the site; ``k = 0`` predicts
+        nothing (the interval's own event candidate is probed).
+        """
+        sites, spans = self.sites, self.spans
+        chain = spans.chain[intervals.span]
+        chain0, chain1 = sites.chain(intervals.site0), sites.chain(intervals.site1)
+        other_first = chain0 == chain ^ 1
+        own_site = np.where(other_first, intervals.site1, intervals.site0)
+        rank = sites.rank[own_site]
+        span = intervals.span
+        step = np.where(rank > self.own_ranks[1][span], 1, np.where(rank < self.own_ranks[0][span], -1, 0))
+        mixed = np.where(other_first, chain1 == chain, (chain0 == chain) & (chain1 == chain ^ 1))
+        row = (mixed & ~found & (rank >= 0) & (step != 0)).nonzero()[0]
+        if len(row) == 0:
+            return np.empty(0, dtype=int), np.empty(0, dtype=int)
+        owner, k = ranges(np.full(len(row), MAX_PREDICTED))
+        owner = row[owner]
+        candidate_rank = rank[owner] + step[owner] * k
+        valid = (candidate_rank >= 0) & (candidate_rank < len(sites.sequence))
+        candidate = sites.sequence[np.clip(candidate_rank, 0, len(sites.sequence) - 1)]
+        valid &= sites.chain(candidate) == chain[owner]
+        other_site = np.where(other_first, intervals.site0, intervals.site1)[owner]
+        middle = 0.5 * (intervals.u0 + intervals.u1)[owner]
+        terms = self.sites.radius_terms(
+            spans, np.tile(span[owner], 2), np.concatenate([other_site, candidate]), np.tile(middle, 2)
+        )
+        count = len(owner)
+        u, radius, inside = self._pair_events(
+            intervals.subset(owner), [x[:count] for x in terms], [x[count:] for x in terms]
+        )
+        inside &= self._on_run(span[owner], u, radius, candidate)
+        # Nearest ``A``'s end: the smallest u when ``A`` is at u0, the largest when at u1.
+        key = np.where(inside & valid, np.where(other_first[owner], u, -u), np.inf)
+        best = np.full(len(intervals.span), np.inf)
+        np.minimum.at(best, owner, key)
+        chosen = ((key == best[owner]) & np.isfinite(key)).nonzero()[0]
+        # One per interval (the nearest step on a tie): the first of its interval's rows.
+        first = np.ones(len(chosen), dtype=bool)
+        first[1:] = owner[chosen][1:] != owner[chosen][:-1]
+        chosen = chosen[first]
+        chosen_owner, chosen_k = owner[chosen], k[chosen]
+        take = chosen_k >= 1
+        chosen_owner, chosen_k = chosen_owner[take], chosen_k[take]
+        # The walk from u0 to u1: A, S_k .. S_0 when A is at u0; S_0 .. S_k, A when at u1.
+        walk_owner, index = ranges(chosen_k + 2)
+        reach = chosen_k[walk_owner]
+        walk_row = chosen_owner[walk_owner]
+        at_start = other_first[walk_row]
+        own_step = np.where(at_start, reach + 1 - index, index)
+        walk_site = sites.sequence[np.clip(rank[walk_row] + step[walk_row] * own_step, 0, len(sites.sequence) - 1)]
+        is_other = np.where(at_start, index == 0, index == reach + 1)
+        walk_site = np.where(is_other, np.where(other_first, intervals.site0, intervals.site1)[walk_row], walk_site)
+        return walk_row, walk_site
+
+    def _on_run(self, span, u, radius, site):
+        """Whether the disk of ``radius`` at parameter ``u`` of ``span`` has its foot on ``site``'s straight run
+        (not only on its line; always for a vertex site)."""
+        b = self.boundary
+        point, _ = self.spans.points(span, u)
+        centre = point + radius[:, None] * self.spans.directions(span, u)
+        segment = np.clip(site, 0, b.segment_count - 1)
+        along = np.einsum("ij,ij->i", centre - rows(b.start, segment), rows(b.unit, segment))
+        run_length = self.sites.run_end_position[segment] - b.segment_position[segment]
+        with np.errstate(invalid="ignore"):
+            return (site >= b.segment_count) | ((along >= 0.0) & (along <= run_length))
+
     def _event_nodes(self, intervals, event_u, event_trial, found):
         """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
         form (:meth:`_walks`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
@@ -875,24 +988,21 @@ class _Tracer:
         Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its
         interval with the probe's two sites (the one before the event, the one after) as ``site0``, ``site1``.
         """
-        first, last, events = self._walks(intervals)
-        predicted = (events >= 2) & (events <= MAX_PREDICTED)
-        if not predicted.any():
+        owner, site = self._walk_sites(intervals, found)
+        if len(owner) == 0:
             # Every interval probes its one event candidate.
-            return np.arange(len(predicted)), event_u, event_trial, found, intervals
-        counts = np.where(predicted, events + 1, 0)
-        owner, index = ranges(counts)
-        site = self.sites.sequence[first[owner] + np.where(last >= first, 1, -1)[owner] * index]
+            return np.arange(len(intervals.span)), event_u, event_trial, found, intervals
+        predicted = np.bincount(owner, minlength=len(intervals.span)) > 0
         # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
-        pair = (index < counts[owner] - 1).nonzero()[0]
+        pair = (owner[1:] == owner[:-1]).nonzero()[0]
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
         u, radius, inside = self._pair_events(pieces, [x[pair] for x in terms], [x[pair + 1] for x in terms])
         in_order = np.ones(len(pair), dtype=bool)
         in_order[:-1] = (pair_owner[1:] != pair_owner[:-1]) | (u[1:] > u[:-1])
-        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(counts)) > 0
+        failed = np.bincount(pair_owner, weights=~(inside & in_order), minlength=len(predicted)) > 0
         keep = (~failed[pair_owner]).nonzero()[0]
         single = (~predicted | failed).nonzero()[0]
         pieces = pieces.subset(keep)
@@ -1122,7 +1232,7 @@ def _unsettled_pieces(curves, owner, u, index, site):
     if not np.any(site != curves.site0[owner]):
         return curves.subset(np.zeros(len(curves.span), dtype=bool))
     pieces = _split_at_nodes(curves, owner, u, index, site, site, True)
-    return pieces.subset(pieces.site0 != pieces.site1)
+    return pieces.subset((pieces.site0 != pieces.site1).nonzero()[0])
 
 
 def _split_vertices(boundary, closed):
