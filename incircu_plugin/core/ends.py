@@ -686,7 +686,12 @@ def _last_trunk_positions(tips):
     within = along <= half[tips.group]
     candidate = tips.junction & (travelled <= CAP_WINDOW * radii) & within
     index = np.arange(len(along))
-    widest = np.lexsort((index, -radii, ~candidate, tips.group))[tips.starts]
+    widest_radius = np.maximum.reduceat(np.where(candidate, radii, -np.inf), tips.starts)
+    widest = np.minimum.reduceat(
+        np.where(candidate & (radii == widest_radius[tips.group]), index, len(along)), tips.starts
+    )
+    has_junction = widest < len(along)
+    widest = np.minimum(widest, len(along) - 1)
     excess = travelled - CAP_REACH * radii
     first = np.minimum.reduceat(np.where((excess > 0.0) & within, index, len(along)), tips.starts)
     inside = np.minimum(first, len(along) - 1)
@@ -694,7 +699,7 @@ def _last_trunk_positions(tips):
     rise = excess[inside] - excess[before]
     crossing = along[before] + (along[inside] - along[before]) * -excess[before] / np.where(rise != 0.0, rise, 1.0)
     position = np.where(first == len(along), half, np.where(first == tips.starts, 0.0, crossing))
-    return np.where(candidate[widest], along[widest], position)
+    return np.where(has_junction, along[widest], position)
 
 
 def _centred_ends(tips, rings):

@@ -52,6 +52,10 @@ MAX_SAMPLES = 20_000
 #: :func:`_insertion_rotation`; off the axis so that straight banks are not exactly sorted).
 SWEEP_ANGLE = 0.1
 
+#: Rounds of spreading from the triangles along the boundary before the inside triangles are found by
+#: labelling the connected components instead (see :func:`reached_from`).
+SPREAD_ROUNDS = 16
+
 #: Size of the deterministic displacement of each sample before the triangulation, as a fraction of the
 #: step (far below ``SLIVER``, so straight banks stay slivers); a failing triangulation is retried with
 #: the larger values.
@@ -117,8 +121,8 @@ def joint_skeletons(polygons):
         return Skeletons(
             np.empty((0, 2)), nothing, nothing, np.empty((0, 2), np.int64), np.empty(0, np.int64), nothing, []
         )
-    corners, corner_ids, following, triangle_owner, steps, made = _triangulations(polygons)
-    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following)
+    corners, corner_ids, following, triangle_owner, shapes, steps, made = _triangulations(polygons)
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, shapes)
     errors = [
         None
         if triangulated
@@ -141,6 +145,8 @@ def _triangulations(polygons):
         Index of the next sample on the same ring.
     triangle_owner : ndarray of shape (t,) of int
         Polygon of each triangle (non-decreasing).
+    shapes : tuple
+        The :func:`_triangle_shapes` of the triangles.
     steps : ndarray of shape (p,)
         Densification step of each polygon, CRS units.
     made : ndarray of shape (p,) of bool
@@ -159,10 +165,11 @@ def _triangulations(polygons):
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
         refine = np.bincount(owner[~present], minlength=count) > 0
+        shapes = _triangle_shapes(corners)
         if refinement == 0:
             # Only slivers: the polygon is thinner than its samples can resolve (a needle whose sides meet at
             # an angle of 1e-11). Splitting would not converge and only ends in "too thin"; it is not tried.
-            flat = np.bincount(triangle_owner[_triangle_shapes(corners)[2]], minlength=count) == 0
+            flat = np.bincount(triangle_owner[shapes[2]], minlength=count) == 0
         refine &= ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
@@ -175,6 +182,7 @@ def _triangulations(polygons):
                 renumbered[following[kept_samples]],
                 owner[kept_samples],
                 triangle_owner[kept_triangles],
+                tuple(part[kept_triangles] for part in shapes),
             )
         )
         if not np.any(refine):
@@ -193,14 +201,18 @@ class _Round(NamedTuple):
     following: np.ndarray
     sample_owner: np.ndarray
     triangle_owner: np.ndarray
+    shapes: tuple
 
 
 def _merged_by_polygon(rounds):
     """Return the triangulations of all rounds as one set, polygon after polygon: ``corners, corner_ids,
-    following, triangle_owner``.
+    following, triangle_owner, shapes``.
 
     Within a polygon the order of its samples and triangles is kept (a polygon is triangulated in one round).
     """
+    if len(rounds) == 1:
+        (part,) = rounds
+        return part.corners, part.corner_ids, part.following, part.triangle_owner, part.shapes
     first_sample = np.cumsum([0] + [len(part.following) for part in rounds[:-1]])
     corner_ids = np.concatenate([part.corner_ids + first for part, first in zip(rounds, first_sample)])
     following = np.concatenate([part.following + first for part, first in zip(rounds, first_sample)])
@@ -216,6 +228,7 @@ def _merged_by_polygon(rounds):
         position[corner_ids[triangle_order]],
         position[following[sample_order]],
         triangle_owner[triangle_order],
+        tuple(np.concatenate(parts)[triangle_order] for parts in zip(*(part.shapes for part in rounds))),
     )
 
 
@@ -402,8 +415,10 @@ def _jitter_pattern(index):
     return np.modf(index * np.array([0.7548776662466927, 0.5698402909980532]) + 0.5)[0] - 0.5
 
 
-def _dual_graph(corners, corner_ids, following):
+def _dual_graph(corners, corner_ids, following, shapes):
     """Return the nodes, radii, spans and edges of the dual graph of the triangles inside the rings.
+
+    ``shapes`` are the triangles' :func:`_triangle_shapes` (changed in place, as the corners are).
 
     Also returns the mask of the triangles kept (one node each, in order).
 
@@ -411,7 +426,7 @@ def _dual_graph(corners, corner_ids, following):
     rings do, and every triangle reachable from them without crossing the boundary. Slivers (flat triangles
     of nearly collinear samples, whose orientation means nothing) take no part.
     """
-    signed, side_lengths, solid = _triangle_shapes(corners)
+    signed, side_lengths, solid = shapes
     clockwise = signed < 0.0
     corners[clockwise] = corners[clockwise][:, ::-1]
     corner_ids[clockwise] = corner_ids[clockwise][:, ::-1]
@@ -423,9 +438,8 @@ def _dual_graph(corners, corner_ids, following):
     on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
     shared_side, first, second = _shared_sides(side_start, side_end, len(following))
     linking = ~on_boundary.ravel()[shared_side] & solid[first] & solid[second]
-    region = connected_labels(len(corners), first[linking], second[linking])
     seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
-    inside = solid & np.isin(region, np.unique(region[seeds]))
+    inside = reached_from(seeds, first[linking], second[linking])
     renumbered = np.cumsum(inside) - 1
     both = linking & inside[first] & inside[second]
     edges = np.stack([renumbered[first[both]], renumbered[second[both]]], axis=1)
@@ -456,9 +470,10 @@ def _triangle_shapes(corners):
     """Return each triangle's signed double area (positive counter-clockwise, CRS units squared), its side
     lengths (shape (t, 3), from corner k to corner k + 1, CRS units) and whether it is solid: not a sliver of
     nearly collinear samples (twice its area above ``SLIVER`` times its longest side squared)."""
-    first_side, second_side = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
-    signed = first_side[:, 0] * second_side[:, 1] - first_side[:, 1] * second_side[:, 0]
-    side_lengths = np.hypot(*(np.roll(corners, -1, axis=1) - corners).transpose(2, 0, 1))
+    x, y = corners[:, :, 0], corners[:, :, 1]
+    side_x, side_y = x[:, [1, 2, 0]] - x, y[:, [1, 2, 0]] - y
+    signed = side_x[:, 0] * (y[:, 2] - y[:, 0]) - side_y[:, 0] * (x[:, 2] - x[:, 0])
+    side_lengths = np.hypot(side_x, side_y)
     return signed, side_lengths, np.abs(signed) > SLIVER * np.max(side_lengths, axis=1) ** 2
 
 
@@ -483,6 +498,33 @@ def _shared_sides(side_start, side_end, count):
     order = np.argsort(keys, kind="stable")
     shared = np.flatnonzero(keys[order][1:] == keys[order][:-1])
     return order[shared], order[shared] // 3, order[shared + 1] // 3
+
+
+def reached_from(seeds, first, second):
+    """Return which nodes of a graph a path joins to a seed: the union of the seeds' connected components.
+
+    The seeds spread one edge per round (two rounds for a river's triangles, each near a bank); a graph that
+    needs more than ``SPREAD_ROUNDS`` rounds is labelled by :func:`connected_labels` instead.
+
+    Parameters
+    ----------
+    seeds : ndarray of shape (count,) of bool
+    first, second : ndarray of int
+        End nodes of each edge.
+
+    Returns
+    -------
+    ndarray of shape (count,) of bool
+    """
+    reached = seeds.copy()
+    for _ in range(SPREAD_ROUNDS):
+        spreading = reached[first] != reached[second]
+        if not np.any(spreading):
+            return reached
+        reached[first[spreading]] = True
+        reached[second[spreading]] = True
+    labels = connected_labels(len(seeds), first, second)
+    return np.isin(labels, labels[seeds])
 
 
 def connected_labels(count, first, second):
