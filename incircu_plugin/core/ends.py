@@ -292,8 +292,9 @@ class _Frame:
     guide: object
 
 
-def _framed(polygon, guide):
-    """Return the :class:`_Frame` of a polygon after validating it and its guide; raise as :func:`find_ends`."""
+def _local_box(polygon, guide):
+    """Return the origin and scale of a polygon's local frame (see :class:`_Frame`) after validating it and its
+    guide; raise as :func:`find_ends`."""
     validate_polygon(polygon)
     _validate_guide(guide)
     bounds = np.asarray(polygon.bounds, dtype=float)
@@ -303,13 +304,40 @@ def _framed(polygon, guide):
         raise InvalidGeometryError(
             f"The polygon's size ({scale:.3g}) is absurd for its coordinates' units; reproject or rescale it."
         )
+    return origin, scale
 
-    def to_local(geometry):
-        return shapely.transform(geometry, lambda xy: (xy - origin) / scale)
 
-    local = shapely.geometry.polygon.orient(to_local(polygon), 1.0)
-    local_guide = None if guide is None else to_local(guide)
-    return _Frame(polygon, origin, scale, local, local_guide)
+def _moved(geometries, origin, scale):
+    """Return the geometries with each coordinate ``xy`` moved to ``(xy - origin) / scale`` (the origin and
+    scale of its frame, or one row of them per coordinate)."""
+    return shapely.transform(geometries, lambda xy: (xy - origin) / scale)
+
+
+def _frames(polygons, guides, boxes):
+    """Return the :class:`_Frame` of each polygon with a local box (None for the others), all moved at once.
+
+    Parameters
+    ----------
+    polygons, guides : list
+    boxes : list of tuple or None
+        Per polygon, the ``(origin, scale)`` of :func:`_local_box`, or None.
+    """
+    frames = [None] * len(polygons)
+    chosen = [index for index, box in enumerate(boxes) if box is not None]
+    if not chosen:
+        return frames
+    origins = np.array([boxes[index][0] for index in chosen])
+    scales = np.array([boxes[index][1] for index in chosen])
+    geometries = np.empty(len(chosen), dtype=object)
+    geometries[:] = [polygons[index] for index in chosen]
+    owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
+    local = shapely.orient_polygons(_moved(geometries, origins[owner], scales[owner, None]), exterior_cw=False)
+    for number, index in enumerate(chosen):
+        origin, scale = boxes[index]
+        guide = guides[index]
+        local_guide = None if guide is None else _moved(guide, origin, scale)
+        frames[index] = _Frame(polygons[index], origin, scale, local[number], local_guide)
+    return frames
 
 
 def _as_outcome(error):
@@ -349,9 +377,10 @@ def _ends_together(polygons, rule, guides, check):
     """Return each polygon's :class:`EndsResult` or exception (see :func:`find_ends_together`)."""
     check(0.0)
     outcomes = [None] * len(polygons)
-    frames = _each(polygons, lambda index, polygon: _framed(polygon, guides[index]), outcomes, check, 0.0, 0.5)
+    boxes = _each(polygons, lambda index, polygon: _local_box(polygon, guides[index]), outcomes, check, 0.0, 0.5)
     check(0.5)
     try:
+        frames = _frames(polygons, guides, boxes)
         trunks = _joint_trunks(frames, rule, outcomes, check)
         check(0.8)
         results = _ends_of_trunks(frames, trunks)

@@ -436,8 +436,8 @@ def _dual_graph(corners, corner_ids, following, shapes):
     side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
     forward = following[side_start] == side_end
     on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
-    shared_side, first, second = _shared_sides(side_start, side_end, len(following))
-    linking = ~on_boundary.ravel()[shared_side] & solid[first] & solid[second]
+    first, second = _shared_sides(np.flatnonzero(~on_boundary.ravel()), side_start, side_end, len(following))
+    linking = solid[first] & solid[second]
     seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
     inside = reached_from(seeds, first[linking], second[linking])
     renumbered = np.cumsum(inside) - 1
@@ -477,27 +477,28 @@ def _triangle_shapes(corners):
     return signed, side_lengths, np.abs(signed) > SLIVER * np.max(side_lengths, axis=1) ** 2
 
 
-def _shared_sides(side_start, side_end, count):
-    """Return the pairs of triangles sharing a side.
+def _shared_sides(sides, side_start, side_end, count):
+    """Return the pairs of triangles sharing one of the sides ``sides``, in the order of the sides' keys.
 
     Parameters
     ----------
+    sides : ndarray of int
+        Increasing indices of the sides to pair (``3 * triangle + k``): all sides with a given pair of
+        samples, or none of them.
     side_start, side_end : ndarray of int
-        Sample indices of the sides, three per triangle in order.
+        Sample indices of all sides, three per triangle in order.
     count : int
         Number of samples.
 
     Returns
     -------
-    side : ndarray of int
-        Index of the shared side in the first triangle's sides (``3 * triangle + k``).
     first, second : ndarray of int
-        The two triangles.
+        The two triangles (the first one's side comes first).
     """
-    keys = _edge_keys(side_start, side_end, count)
+    keys = _edge_keys(side_start[sides], side_end[sides], count)
     order = np.argsort(keys, kind="stable")
     shared = np.flatnonzero(keys[order][1:] == keys[order][:-1])
-    return order[shared], order[shared] // 3, order[shared + 1] // 3
+    return sides[order[shared]] // 3, sides[order[shared + 1]] // 3
 
 
 def reached_from(seeds, first, second):
