@@ -631,7 +631,7 @@ class _Tips:
         firsts = _first_items(sizes)
         points = np.concatenate([trunk[0] for trunk in trunks])
         fore = ranges(sizes)[1]
-        steps = np.hypot(*(points - points[np.maximum(np.arange(len(points)) - 1, 0)]).T)
+        steps = np.hypot(*(points - np.take(points, np.maximum(np.arange(len(points)) - 1, 0), axis=0)).T)
         along = _segment_sums(np.where(fore > 0, steps, 0.0), firsts, sizes)
         self.lengths = np.repeat(sizes, 2)
         self.starts = _first_items(self.lengths)
@@ -639,7 +639,7 @@ class _Tips:
         polygon = self.group // 2
         backward = self.group % 2 == 1
         source = firsts[polygon] + np.where(backward, sizes[polygon] - 1 - rank, rank)
-        self.points = points[source]
+        self.points = np.take(points, source, axis=0)
         self.radii = np.concatenate([trunk[1] for trunk in trunks])[source]
         self.junction = np.concatenate([trunk[2] for trunk in trunks])[source]
         last_along = along[firsts + sizes - 1][polygon]
@@ -685,7 +685,7 @@ class _Rings:
         firsts = _first_items(counts)
         following = np.minimum(np.arange(len(ring)) + 1, len(ring) - 1)
         closing = np.arange(len(ring)) == (firsts + counts - 1)[ring]
-        segment = np.where(closing, 0.0, np.hypot(*(coordinates[following] - coordinates).T))
+        segment = np.where(closing, 0.0, np.hypot(*(np.take(coordinates, following, axis=0) - coordinates).T))
         before = np.where(np.arange(len(ring)) == firsts[ring], 0.0, segment[np.arange(len(ring)) - 1])
         positions = _segment_sums(before, firsts, counts)
         keep = ~closing & (segment > 0.0)
@@ -695,8 +695,8 @@ class _Rings:
         vertices = coordinates[keep]
         owner, rank = ranges(self.lengths)
         size = np.maximum(self.lengths[owner], 1)
-        incoming = vertices - vertices[self.starts[owner] + (rank - 1) % size]
-        outgoing = vertices[self.starts[owner] + (rank + 1) % size] - vertices
+        incoming = vertices - np.take(vertices, self.starts[owner] + (rank - 1) % size, axis=0)
+        outgoing = np.take(vertices, self.starts[owner] + (rank + 1) % size, axis=0) - vertices
         self.turn = np.arctan2(
             incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
             np.einsum("ij,ij->i", incoming, outgoing),

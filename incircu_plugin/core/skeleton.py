@@ -173,28 +173,17 @@ def _triangulations(polygons):
         refine &= ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
-        kept_samples, kept_triangles = done[owner], done[triangle_owner]
-        renumbered = np.cumsum(kept_samples) - 1
-        stored.append(
-            _Round(
-                corners[kept_triangles],
-                renumbered[corner_ids[kept_triangles]],
-                renumbered[following[kept_samples]],
-                owner[kept_samples],
-                triangle_owner[kept_triangles],
-                tuple(part[kept_triangles] for part in shapes),
-            )
-        )
+        stored.append(_Round(corners, corner_ids, following, owner, triangle_owner, shapes, done))
         if not np.any(refine):
             break
         split = ~present & refine[owner]
         keep = refine[owner]
         samples, ring, owner = _split_samples(samples, ring, owner, following, split, keep)
-    return (*_merged_by_polygon(stored), steps, made)
+    return (*_merged_by_polygon(stored, count), steps, made)
 
 
 class _Round(NamedTuple):
-    """The triangulations of the polygons finished in one refinement round, samples numbered from 0."""
+    """The triangulations of one refinement round (samples numbered from 0) and the polygons it finished."""
 
     corners: np.ndarray
     corner_ids: np.ndarray
@@ -202,34 +191,61 @@ class _Round(NamedTuple):
     sample_owner: np.ndarray
     triangle_owner: np.ndarray
     shapes: tuple
+    done: np.ndarray
 
 
-def _merged_by_polygon(rounds):
-    """Return the triangulations of all rounds as one set, polygon after polygon: ``corners, corner_ids,
-    following, triangle_owner, shapes``.
+def _merged_by_polygon(rounds, count):
+    """Return the triangulations of the polygons each round finished as one set, polygon after polygon:
+    ``corners, corner_ids, following, triangle_owner, shapes``.
 
-    Within a polygon the order of its samples and triangles is kept (a polygon is triangulated in one round).
+    Within a polygon the order of its samples and triangles is kept (a polygon is finished in one round); each
+    item is copied once, from its round to its place.
     """
-    if len(rounds) == 1:
+    if len(rounds) == 1 and np.all(rounds[0].done[rounds[0].sample_owner]):
         (part,) = rounds
         return part.corners, part.corner_ids, part.following, part.triangle_owner, part.shapes
-    first_sample = np.cumsum([0] + [len(part.following) for part in rounds[:-1]])
-    corner_ids = np.concatenate([part.corner_ids + first for part, first in zip(rounds, first_sample)])
-    following = np.concatenate([part.following + first for part, first in zip(rounds, first_sample)])
-    corners = np.concatenate([part.corners for part in rounds])
-    sample_owner = np.concatenate([part.sample_owner for part in rounds])
-    triangle_owner = np.concatenate([part.triangle_owner for part in rounds])
-    sample_order = np.argsort(sample_owner, kind="stable")
-    position = np.empty_like(sample_order)
-    position[sample_order] = np.arange(len(sample_order))
-    triangle_order = np.argsort(triangle_owner, kind="stable")
+    kept = [
+        (np.flatnonzero(part.done[part.sample_owner]), np.flatnonzero(part.done[part.triangle_owner]))
+        for part in rounds
+    ]
+    sample_slots = _slots([part.sample_owner[samples] for part, (samples, _) in zip(rounds, kept)], count)
+    triangle_slots = _slots([part.triangle_owner[triangles] for part, (_, triangles) in zip(rounds, kept)], count)
+    sample_firsts = np.cumsum([0] + [len(part.following) for part in rounds])
+    triangle_firsts = np.cumsum([0] + [len(part.triangle_owner) for part in rounds])
+    # Each merged item's source among the rounds' items put end to end, and each sample's place when merged.
+    renumbered = np.full(sample_firsts[-1], -1, dtype=np.int64)
+    sample_source = np.empty(sum(len(samples) for samples, _ in kept), dtype=np.int64)
+    triangle_source = np.empty(sum(len(triangles) for _, triangles in kept), dtype=np.int64)
+    for number, ((samples, triangles), sample_slot, triangle_slot) in enumerate(
+        zip(kept, sample_slots, triangle_slots)
+    ):
+        renumbered[sample_firsts[number] + samples] = sample_slot
+        sample_source[sample_slot] = sample_firsts[number] + samples
+        triangle_source[triangle_slot] = triangle_firsts[number] + triangles
+
+    def merged(parts, source):
+        return np.take(np.concatenate(parts), source, axis=0)
+
+    corner_ids = [part.corner_ids + first for part, first in zip(rounds, sample_firsts)]
+    following = [part.following + first for part, first in zip(rounds, sample_firsts)]
     return (
-        corners[triangle_order],
-        position[corner_ids[triangle_order]],
-        position[following[sample_order]],
-        triangle_owner[triangle_order],
-        tuple(np.concatenate(parts)[triangle_order] for parts in zip(*(part.shapes for part in rounds))),
+        merged([part.corners for part in rounds], triangle_source),
+        renumbered[merged(corner_ids, triangle_source)],
+        renumbered[merged(following, sample_source)],
+        merged([part.triangle_owner for part in rounds], triangle_source),
+        tuple(merged(parts, triangle_source) for parts in zip(*(part.shapes for part in rounds))),
     )
+
+
+def _slots(owners, count):
+    """Return the place of each item when the items of all parts are put polygon after polygon.
+
+    ``owners`` holds each part's (non-decreasing) polygon of each item; a polygon's items are all in one part
+    and keep their order.
+    """
+    sizes = sum(np.bincount(owner, minlength=count) for owner in owners)
+    firsts = np.cumsum(sizes) - sizes
+    return [firsts[owner] + ranges(np.bincount(owner, minlength=count))[1] for owner in owners]
 
 
 def _boundary_sample_arrays(polygons):
@@ -345,7 +361,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     coordinates, which = shapely.get_coordinates(triangles[made], include_z=True, return_index=True)
     triangle_owner = made[which[::4]]
     corner_ids = coordinates[:, 2].reshape(-1, 4)[:, :3].astype(np.int64)
-    return moved_all[corner_ids], corner_ids, triangle_owner, waiting
+    return np.take(moved_all, corner_ids, axis=0), corner_ids, triangle_owner, waiting
 
 
 def _runs(values):
@@ -443,7 +459,9 @@ def _dual_graph(corners, corner_ids, following, shapes):
     renumbered = np.cumsum(inside) - 1
     both = linking & inside[first] & inside[second]
     edges = np.stack([renumbered[first[both]], renumbered[second[both]]], axis=1)
-    corners, on_boundary, side_lengths = corners[inside], on_boundary[inside], side_lengths[inside]
+    corners, on_boundary, side_lengths = (
+        np.compress(inside, part, axis=0) for part in (corners, on_boundary, side_lengths)
+    )
     double_area = double_area[inside]
     circumcentres = _circumcentres(corners)
     nodes = circumcentres.copy()
