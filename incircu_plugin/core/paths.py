@@ -34,9 +34,9 @@ FRONT_IN_NUMPY = 16
 def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
     """Return the heaviest path of each start's component, found by a double sweep from the start.
 
-    The chains of the whole graph are contracted at once; each sweep then visits only its component's
-    contracted nodes, so many small components (the skeletons of a batch of polygons) cost one contraction
-    and a few Python operations each.
+    The chains of the whole graph are contracted at once; the components that are trees are then swept
+    together (see :func:`_forest_sweep`), each other one in Python over its contracted nodes only, so many
+    small components (the skeletons of a batch of polygons) cost one contraction and a few numpy calls.
 
     Parameters
     ----------
@@ -49,7 +49,8 @@ def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
     starts : sequence of int
         One node per path, each in a different component: the node its first sweep starts from.
     acyclic : sequence of bool
-        Per start, whether its component is a tree (each sweep a plain traversal, the double sweep exact).
+        Per start, whether its component is a tree (each sweep a plain traversal, the double sweep exact);
+        a component found to be a tree is swept as one whatever this says (a tree's Dijkstra gives the same).
     check : callable, optional
         Called with no argument now and then; may raise to stop.
 

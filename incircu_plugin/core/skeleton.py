@@ -14,7 +14,7 @@ The samples are moved by ``JITTER`` of the step in a fixed pseudo-random pattern
 evenly spaced samples on straight parallel banks are exactly cocircular, which makes the GEOS triangulator
 quadratic (minutes on a 1 x 1e-5 box) and, rarely, fail. The pattern is a function of the sample index, so
 the result stays deterministic. GEOS inserts the points sorted by x, so the samples are also turned to put
-the shape's principal axis along x. Speed: about 5 us of CPU per sample (a third of it the triangulation),
+the shape's principal axis along x. Speed: about 4 us of CPU per sample (a third of it the triangulation),
 at most ``MAX_SAMPLES`` samples. Limit: a thin channel whose long reaches run across its principal axis (a
 tight meander) still makes the sweep slower, about 0.3 s for 20,000 samples.
 """
