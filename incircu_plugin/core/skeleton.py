@@ -454,7 +454,8 @@ def _dual_graph(corners, corner_ids, following, shapes):
     on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
     first, second = _shared_sides(np.flatnonzero(~on_boundary.ravel()), side_start, side_end, len(following))
     linking = solid[first] & solid[second]
-    seeds = solid & np.any(forward.reshape(-1, 3), axis=1)
+    forward_sides = forward.reshape(-1, 3)
+    seeds = solid & (forward_sides[:, 0] | forward_sides[:, 1] | forward_sides[:, 2])
     inside = reached_from(seeds, first[linking], second[linking])
     renumbered = np.cumsum(inside) - 1
     both = linking & inside[first] & inside[second]
@@ -478,7 +479,7 @@ def _dual_graph(corners, corner_ids, following, shapes):
     radii[beyond] = double_area[beyond] / (3.0 * side_lengths[beyond, longest[beyond]])
     # Across a channel sampled coarser than its width, the circumcircle overestimates the width: the height
     # of the triangle over its longest boundary side is the distance to the other bank.
-    boundary_side = np.max(np.where(on_boundary, side_lengths, 0.0), axis=1, initial=0.0)
+    boundary_side = _row_largest(np.where(on_boundary, side_lengths, 0.0))
     across = boundary_side > 0.0
     spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
     return nodes, radii, spans, edges, inside
@@ -492,7 +493,13 @@ def _triangle_shapes(corners):
     side_x, side_y = x[:, [1, 2, 0]] - x, y[:, [1, 2, 0]] - y
     signed = side_x[:, 0] * (y[:, 2] - y[:, 0]) - side_y[:, 0] * (x[:, 2] - x[:, 0])
     side_lengths = np.hypot(side_x, side_y)
-    return signed, side_lengths, np.abs(signed) > SLIVER * np.max(side_lengths, axis=1) ** 2
+    return signed, side_lengths, np.abs(signed) > SLIVER * _row_largest(side_lengths) ** 2
+
+
+def _row_largest(values):
+    """Return the largest of the three values in each row of ``values`` (shape (t, 3)), as ``np.max`` along the
+    rows gives it (an order of magnitude faster on three columns)."""
+    return np.maximum(np.maximum(values[:, 0], values[:, 1]), values[:, 2])
 
 
 def _shared_sides(sides, side_start, side_end, count):
