@@ -71,3 +71,41 @@ def test_a_needle_is_too_thin_after_one_triangulation(monkeypatch):
     wider = shapely.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1e-8)])
     ends = find_ends(wider)
     assert ends.start.x == pytest.approx(0.0, abs=1e-3) and ends.end.x == pytest.approx(1.0, abs=1e-3)
+
+
+def test_reached_from_is_the_union_of_the_seeds_components(monkeypatch):
+    """On random graphs (short and long paths between seeds and nodes), spreading from the seeds marks
+    exactly the components that hold a seed, both by spreading alone (no labels) and by the component labels
+    it falls back to."""
+    labelled = skeleton_module.connected_labels
+
+    def no_labels(*arguments):
+        raise AssertionError("spreading fell back to labels")
+
+    rng = np.random.default_rng(5)
+    chain = np.arange(199)
+    for first, second in [
+        (rng.integers(0, 200, 150), rng.integers(0, 200, 150)),
+        (chain, chain + 1),
+    ]:
+        seeds = np.zeros(200, dtype=bool)
+        seeds[rng.integers(0, 200, 3)] = True
+        labels = labelled(200, first, second)
+        expected = np.isin(labels, labels[seeds])
+        for rounds, labelling in ((0, labelled), (1000, no_labels)):
+            monkeypatch.setattr(skeleton_module, "SPREAD_ROUNDS", rounds)
+            monkeypatch.setattr(skeleton_module, "connected_labels", labelling)
+            assert np.array_equal(skeleton_module.reached_from(seeds, first, second), expected)
+
+
+def test_the_inside_found_by_labels_gives_the_same_skeleton(monkeypatch):
+    """A river with an island (its water a ring of triangles far from the first seeds in the graph) gets the
+    same skeleton whether its inside triangles are found by spreading or by component labels."""
+    hole = shapely.box(2.0, 0.4, 8.0, 0.6)
+    polygon = shapely.Polygon(shapely.box(0.0, 0.0, 10.0, 1.0).exterior, [hole.exterior.coords[::-1]])
+    spread = joint_skeletons([polygon])
+    monkeypatch.setattr(skeleton_module, "SPREAD_ROUNDS", 0)
+    labelled = joint_skeletons([polygon])
+    for name in ("nodes", "radii", "spans", "edges", "owner"):
+        assert np.array_equal(getattr(spread, name), getattr(labelled, name))
+    assert len(spread.nodes) > 0
