@@ -77,9 +77,9 @@ demo: setup
 
 # pytest-qgis starts QGIS with its GUI classes (the dialog tests need them) on the offscreen platform exported above.
 CORE_DOCTESTS := --doctest-modules incircu_plugin/core
-# The core relies on GEOS keeping z through its Delaunay triangulation and listing index hits in one order
-# whatever the query box: these tests run again on the Shapely built for QGIS's own Python on the system GEOS
-# where make setup built one (where QGIS uses the distribution's Shapely, the venv sees that one: one pass is enough).
+# The core relies on GEOS keeping z through its Delaunay triangulation (and its tests on the index listing hits in
+# one order whatever the query box): these tests run again on the Shapely built for QGIS's own Python on the system GEOS
+# where make setup built one (where QGIS uses the distribution's Shapely, nothing is built and this pass is skipped).
 GEOS_TESTS := tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py
 test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests $(CORE_DOCTESTS)
@@ -87,7 +87,7 @@ test: setup
 	  echo "== again on QGIS's Shapely (system GEOS)"; \
 	  PYTHONPATH=$(QGIS_SITE) $(PYTHON) -m pytest -p no:cacheprovider -p no:pytest_qgis -q -m "not slow" $(GEOS_TESTS); \
 	else \
-	  echo "== QGIS uses the distribution's Shapely, which the tests above ran on"; \
+	  echo "== no Shapely was built for QGIS's Python (it uses the distribution's): no second pass"; \
 	fi
 
 # The fast path: numpy, shapely, pyproj and the test tools only; pytest-qgis is switched off, so no QGIS starts

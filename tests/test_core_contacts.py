@@ -298,3 +298,49 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
         monkeypatch.setattr(Boundary, "candidates", listing)
         for result, wanted in zip(solved_on_straight_banks()[1], expected, strict=True):
             assert result.tobytes() == wanted.tobytes(), (all_pairs, single_index, listing.__name__)
+
+
+def solved_between_dense_banks():
+    """``solve`` for samples at the inner vertices of the lower of two banks 20 apart with a vertex every 0.1:
+    a disk of the trial radius 10 meets about 400 segments."""
+    x = np.linspace(0.0, 100.0, 1001)
+    chains = [np.stack([x, np.zeros(1001)], axis=1), np.stack([x[::-1], np.full(1001, 20.0)], axis=1)]
+    count = 999
+    vertex = np.arange(1, 1000)
+    samples = Samples(
+        np.zeros(count, dtype=int),
+        np.stack([x[vertex], np.zeros(count)], axis=1),
+        np.tile([0.0, 1.0], (count, 1)),
+        np.ones(count),
+        x[vertex],
+        np.zeros(count),
+        vertex - 1,
+        vertex,
+    )
+    return solve(samples, np.arange(count), Boundary(chains), np.full(count, 10.0), 30.0, 1e-9)
+
+
+def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypatch):
+    rounds = []
+    solve_round = contacts._solve_round
+
+    def recorded(samples, sample, *arguments):
+        best, pairs = solve_round(samples, sample, *arguments)
+        rounds.append((len(sample), pairs))
+        return best, pairs
+
+    monkeypatch.setattr(contacts, "_solve_round", recorded)
+    contact_t, status, contact, position, _ = expected = solved_between_dense_banks()
+    assert np.all(status == CLEAR) and np.allclose(contact_t, 10.0, rtol=1e-12)
+    x = np.linspace(0.0, 100.0, 1001)[1:-1]
+    np.testing.assert_allclose(contact, np.stack([x, np.full(999, 20.0)], axis=1), atol=1e-12)
+    np.testing.assert_allclose(position, 100.0 - x, atol=1e-12)
+    # About 400 pairs per sample: blocks of 4096 samples would hold 400,000 pairs.
+    pairs_per_sample = max(pairs / samples for samples, pairs in rounds)
+    assert 300 < pairs_per_sample < 500
+    assert max(pairs for _, pairs in rounds) <= 2 * contacts.SOLVE_PAIRS
+    for block, budget in ((1, 1 << 62), (7, 1 << 62), (1 << 20, 1 << 62), (4096, 1)):
+        monkeypatch.setattr(contacts, "SOLVE_BLOCK", block)
+        monkeypatch.setattr(contacts, "SOLVE_PAIRS", budget)
+        for result, wanted in zip(solved_between_dense_banks(), expected, strict=True):
+            assert result.tobytes() == wanted.tobytes(), (block, budget)

@@ -105,10 +105,12 @@ def test_closest_without_a_cluster_and_on_one_vertex(monkeypatch):
     # Too many (point, segment) pairs for a cluster: every point is measured through the index.
     monkeypatch.setattr(polyline_module, "CLUSTER_PAIRS", 1)
     rng = np.random.default_rng(8)
-    polyline = IndexedPolyline(np.cumsum(rng.normal(size=(50, 2)), axis=0))
+    path = np.cumsum(rng.normal(size=(50, 2)), axis=0)
+    polyline = IndexedPolyline(path)
     points = rng.normal(size=(2 * CLUSTER_POINTS, 2)) * 5.0
     assert polyline._segments_near(points) is None
     distance, arc_length, foot = polyline.nearest(points)
+    np.testing.assert_allclose(distance, shapely.distance(shapely.points(points), LineString(path)), rtol=1e-12)
     index, closest_distance, closest_arc_length, closest_foot = polyline.closest(points)
     assert (index, closest_distance, closest_arc_length) == (
         int(np.argmin(distance)),

@@ -12,6 +12,7 @@ a sample is settled once its first contact lies inside the trial disk, otherwise
 doubles, up to the best contact found so far.
 """
 
+import math
 from dataclasses import dataclass, fields
 from functools import cache, partial
 
@@ -37,16 +38,19 @@ SKIPPED, TIED, CLEAR = 0, 1, 2
 #: Relative slack with which a contact on the other chain still wins over a tie on the sample's own chain.
 TIE_TOLERANCE = 1e-10
 
-#: Samples solved together (bounds the memory of the candidate pairs).
+#: Samples given to one solve (bounds the memory of the per-sample arrays; ``SOLVE_BLOCK`` and ``SOLVE_PAIRS``
+#: bound that of the candidate pairs).
 CHUNK = 16_384
 
-#: Samples whose rounds :func:`solve` runs together, block after block: the arrays of a block's (sample,
-#: segment) pairs (about ten per sample) stay in the processor's cache, which makes a solve about a fifth
-#: faster than one pass over a whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy
-#: call (10^6 vertices: the rounds about 4 % faster). Each sample is solved from its own candidate pairs, so
-#: the blocks change no result (a block of a boundary of at most 8 segments may get its pairs from testing
-#: them all instead of the index: the same pairs in another order, as between the rounds of one solve already).
+#: Most samples whose rounds :func:`solve` runs together, block after block: the arrays of a block's (sample,
+#: segment) pairs stay in the processor's cache, which makes a solve about a fifth faster than one pass over a
+#: whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy call (10^6 vertices: the rounds
+#: about 4 % faster). A block also holds at most about ``SOLVE_PAIRS`` pairs, judged from the pairs per sample
+#: of the block before: a boundary with many vertices per width has hundreds of pairs per sample, and 4096 such
+#: samples would take hundreds of MiB (the first block's from the boundary's mean segment length). Each sample
+#: is solved from its own candidate pairs, so the blocks change no result.
 SOLVE_BLOCK = 4096
+SOLVE_PAIRS = 1 << 16
 
 #: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
 #: above the finest one for a chunk large enough.
@@ -67,7 +71,7 @@ QUERY_GROUP = 8
 #: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
 #: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
 #: of 8 would save about 33 MiB at 10^6 segments for the same time (they change only the order of the
-#: candidates, which changes no result since :func:`solve` breaks ties by site).
+#: candidates, which changes no result since :func:`solve` breaks ties by site; not re-measured since).
 INDEX_RUN = 4
 SINGLE_INDEX = 1 << 17
 
@@ -164,6 +168,7 @@ class Boundary:
         end -= self.start
         self.length = np.hypot(end[:, 0], end[:, 1])
         self.unit = end / self.length[:, None]
+        self.mean_length = float(self.length.mean())
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
@@ -452,8 +457,9 @@ def _lowest_site_of_groups(picked, group, site):
     """Of the rows ``picked`` (ascending, ``group`` sorted ascending), each group's row of the lowest ``site``.
 
     The tie rule of :func:`solve`: ``picked`` are the pairs touched at a sample's first contact, and a site
-    occurs at most once per sample (a segment answers for its own interior and start vertex, the last one of
-    a chain for its end too), so each group keeps one row, whatever order its rows are listed in.
+    occurs at most once per sample (:meth:`Boundary.candidates` lists each (box, segment) pair once, and a
+    segment answers for its own interior and start vertex, the last one of a chain for its end too), so each
+    group keeps one row, whatever order its rows are listed in.
     """
     group = group[picked]
     first = np.ones(len(group), dtype=bool)
@@ -496,16 +502,34 @@ def solve(samples, index, boundary, trial, max_t, min_t):
         np.zeros(count),
         np.full(count, -1),
     )
-    for begin in range(0, count, SOLVE_BLOCK):
-        active = np.arange(begin, min(begin + SOLVE_BLOCK, count))
+    begin, block = 0, _first_block(boundary, radius[:SOLVE_BLOCK])
+    while begin < count:
+        active = np.arange(begin, min(begin + block, count))
+        begin += len(active)
+        first_round = True
         while len(active):
-            best = _solve_round(samples, index[active], boundary, radius[active], min_t[active], active, solution)
+            best, pairs = _solve_round(
+                samples, index[active], boundary, radius[active], min_t[active], active, solution
+            )
+            if first_round:
+                block = min(max(SOLVE_PAIRS * len(active) // max(pairs, 1), 1), SOLVE_BLOCK)
+                first_round = False
             settled = best <= radius[active]
             pending = active[~settled]
             best = best[~settled]
             radius[pending] = np.minimum(best, 2.0 * radius[pending])
             active = pending[radius[pending] <= max_t[pending]]
     return solution.contact_t, solution.status, solution.contact, solution.position, solution.site
+
+
+def _first_block(boundary, radius):
+    """Samples in :func:`solve`'s first block: ``SOLVE_PAIRS`` over the pairs a sample is expected to have,
+    judged from the middle one of the first samples' trial radii ``radius`` (CRS units): a disk of radius r
+    meets about 4 r / l segments of mean length l (both chains, both sides of its centre)."""
+    if not len(radius):
+        return SOLVE_BLOCK
+    expected = 4.0 * float(radius[len(radius) // 2]) / boundary.mean_length + 1.0
+    return min(max(int(SOLVE_PAIRS / expected), 1), SOLVE_BLOCK) if math.isfinite(expected) else SOLVE_BLOCK
 
 
 @dataclass(frozen=True)
@@ -523,7 +547,7 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     """One round of :func:`solve`: the samples ``sample`` (rows ``row`` of ``solution``) with trial parameters
     ``radius`` and smallest contacts ``min_t``. Fills in the rows settled (first contact within the trial) and
     the own-chain site of every row, ties broken as :func:`solve` says; returns each sample's first contact
-    found (inf when none).
+    found (inf when none) and the number of candidate (sample, segment) pairs.
 
     Per-sample quantities are taken once per sample and then gathered per (sample, segment) pair.
     """
@@ -534,6 +558,7 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
     reach = radius[:, None] * (1.0 + 1e-9)
     query, segment = boundary.candidates(centre - reach, centre + reach)
+    pairs = len(query)
     if boundary.several_pairs:
         mine = boundary.chain_id[segment] >> 1 == (chain >> 1)[query]
         query, segment = query[mine], segment[mine]
@@ -569,7 +594,8 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     settled = best <= radius
     solution.contact_t[row[settled]] = best[settled]
     best_own_pair = best_own[query]
-    own_winner = _lowest_site_of_groups((np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0], query, touched)
+    own_tied = (np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0]
+    own_winner = _lowest_site_of_groups(own_tied, query, touched)
     solution.site[row[query[own_winner]]] = touched[own_winner]
     winner = np.isfinite(t_other) & (t_other == best_other[query])
     winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
@@ -586,7 +612,7 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
             best_own[query[chosen]],
             boundary,
         )
-    return best
+    return best, pairs
 
 
 def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
