@@ -37,14 +37,18 @@ def path_weight(path, edges, weights):
     return sum(lookup[frozenset(pair)] for pair in zip(path[:-1].tolist(), path[1:].tolist()))
 
 
+@pytest.mark.parametrize("equal_weights", [False, True])
 @pytest.mark.parametrize("front", [1, 16, 10**9])
-def test_trees_swept_together_get_their_heaviest_paths(monkeypatch, front):
+def test_trees_swept_together_get_their_heaviest_paths(monkeypatch, front, equal_weights):
     """Forty random trees (one a single node), swept together in numpy, in Python, or first one then the
-    other: each gets a heaviest path of its own tree, and the same nodes as when swept alone in Python."""
+    other: each gets a heaviest path of its own tree, and the same nodes as when swept alone in Python (also
+    when every weight is 1, so that many paths tie)."""
     monkeypatch.setattr(paths_module, "FRONT_IN_NUMPY", front)
     rng = np.random.default_rng(11)
     sizes = [1] + rng.integers(2, 40, 39).tolist()
     count, edges, weights = random_forest(rng, sizes)
+    if equal_weights:
+        weights = np.ones(len(edges))
     firsts = np.cumsum([0] + sizes[:-1])
     starts = firsts + rng.integers(0, sizes)
     found = heaviest_paths(count, edges, weights, starts.tolist(), [True] * len(starts))
@@ -70,3 +74,25 @@ def test_a_cycle_is_swept_by_dijkstra_next_to_trees():
 
 def test_no_start_gives_no_path():
     assert heaviest_paths(3, np.array([[0, 1], [1, 2]]), np.array([1.0, 1.0]), [], []) == []
+
+
+def test_a_long_tree_finished_in_python_can_be_cancelled(monkeypatch):
+    """A caterpillar (a trunk of 5,000 nodes, each with a twig) swept in Python after the numpy start: the
+    cancel check is called every ``CHECK_EVERY`` nodes, and what it raises stops the sweep."""
+    monkeypatch.setattr(paths_module, "FRONT_IN_NUMPY", 10**9)
+    monkeypatch.setattr(paths_module, "CHECK_EVERY", 64)
+    trunk = np.arange(5000)
+    edges = np.concatenate([np.stack([trunk[:-1], trunk[1:]], axis=1), np.stack([trunk, trunk + 5000], axis=1)])
+    weights = np.ones(len(edges))
+    calls = []
+    paths = heaviest_paths(10000, edges, weights, [0], [True], check=lambda: calls.append(1))
+    assert len(paths[0]) == 5002 and len(calls) >= 10000 // 64 - 1
+
+    class Stop(Exception):
+        pass
+
+    def stop():
+        raise Stop
+
+    with pytest.raises(Stop):
+        heaviest_paths(10000, edges, weights, [0], [True], check=stop)

@@ -160,3 +160,20 @@ def test_as_coordinates_messages():
     coordinates = as_coordinates(source)
     coordinates[0, 0] = 9.0
     assert source[0, 0] == 0.0 and coordinates.shape == (2, 2)
+
+
+def test_counterclockwise_without_orient_polygons_equals_shapely_2_1(monkeypatch):
+    # Shapely 2.0 has no orient_polygons: the per-polygon fallback must give the same polygons.
+    rng = np.random.default_rng(3)
+    polygons = np.empty(30, dtype=object)
+    for number in range(30):
+        outline = shapely.Point(rng.normal(size=2) * 100).buffer(10.0 + number, quad_segs=3)
+        hole = shapely.Point(outline.centroid).buffer(2.0, quad_segs=2)
+        polygon = outline.difference(hole) if number % 2 else outline
+        polygons[number] = shapely.reverse(polygon) if number % 3 else polygon
+    expected = shapely.orient_polygons(polygons, exterior_cw=False)
+    monkeypatch.delattr(shapely, "orient_polygons")
+    fallback = polyline_module.counterclockwise(polygons)
+    assert all(shapely.equals_exact(a, b, tolerance=0.0) for a, b in zip(fallback, expected))
+    assert all(polygon.exterior.is_ccw for polygon in fallback)
+    assert all(not ring.is_ccw for polygon in fallback for ring in polygon.interiors)

@@ -749,7 +749,7 @@ class _Tracer:
         before[intervals.span[ends]] = ends
         before = before[intervals.span[after] - 1]
         after, before = after[before >= 0], before[before >= 0]
-        # In the order of the spans (along the chains), as the coarse-to-fine solution needs.
+        # In the order of the spans (along the chains), so neighbouring samples share index queries.
         order = np.argsort(intervals.span[after], kind="stable")
         return after[order], before[order]
 
@@ -982,7 +982,7 @@ class _Tracer:
 
     def _event_nodes(self, intervals, event_u, event_trial, found):
         """The probes of the open intervals: every predicted event of an interval whose walk holds in closed
-        form (:meth:`_walks`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
+        form (:meth:`_walk_sites`, :meth:`_pair_events`: each event strictly inside the interval, the events in the
         walk's order), else its one event candidate (``event_u``, ``event_trial``, ``found``).
 
         Returns per probe its interval, parameter, trial radius, whether it is an event candidate, and its

@@ -71,7 +71,7 @@ from .chains import extent_of, validate_polygon
 from .contacts import ranges
 from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
-from .polyline import typical_width
+from .polyline import counterclockwise, typical_width
 from .skeleton import joint_skeletons
 
 #: Rules for the automatic ends (see the module docstring).
@@ -315,7 +315,8 @@ def _moved(geometries, origin, scale):
 
 
 def _frames(polygons, guides, boxes):
-    """Return the :class:`_Frame` of each polygon with a local box (None for the others), all moved at once.
+    """Return the :class:`_Frame` of each polygon with a local box (None for the others); the polygons are moved
+    all at once, the guides one by one.
 
     Parameters
     ----------
@@ -332,7 +333,7 @@ def _frames(polygons, guides, boxes):
     geometries = np.empty(len(chosen), dtype=object)
     geometries[:] = [polygons[index] for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
-    local = shapely.orient_polygons(_moved(geometries, origins[owner], scales[owner, None]), exterior_cw=False)
+    local = counterclockwise(_moved(geometries, origins[owner], scales[owner, None]))
     for number, index in enumerate(chosen):
         origin, scale = boxes[index]
         guide = guides[index]

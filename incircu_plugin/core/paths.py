@@ -294,9 +294,11 @@ def _finish_forest_sweep(graph, front, sweep, check):
     distance, parent, parent_via, origin = sweep
     stack = [(node, float(distance[node]), int(parent[node]), int(origin[node])) for node in front]
     found = []
+    pops = 0
     while stack:
         node, reached, came_from, source = stack.pop()
-        if check is not None and len(found) % CHECK_EVERY == CHECK_EVERY - 1:
+        pops += 1
+        if check is not None and pops % CHECK_EVERY == 0:
             check()
         for edge in range(start[node], start[node + 1]):
             neighbour = neighbours[edge]

@@ -12,6 +12,33 @@ from .errors import InvalidGeometryError
 from .validation import check_coordinates
 
 
+def counterclockwise(polygons):
+    """Return the polygons with counterclockwise exteriors and clockwise interiors.
+
+    ``shapely.orient_polygons`` where Shapely has it (2.1 and later), else ``shapely.geometry.polygon.orient``
+    polygon by polygon (Shapely 2.0, e.g. Ubuntu 24.04's).
+
+    Parameters
+    ----------
+    polygons : ndarray of Polygon, shape (n,)
+
+    Returns
+    -------
+    ndarray of Polygon, shape (n,)
+
+    Examples
+    --------
+    >>> from shapely.geometry import Polygon
+    >>> counterclockwise(np.array([Polygon([(0, 0), (0, 1), (1, 0)])]))[0].exterior.is_ccw
+    True
+    """
+    if hasattr(shapely, "orient_polygons"):
+        return shapely.orient_polygons(polygons, exterior_cw=False)
+    oriented = np.empty(len(polygons), dtype=object)
+    oriented[:] = [shapely.geometry.polygon.orient(polygon, 1.0) for polygon in polygons]
+    return oriented
+
+
 def as_coordinates(geometry, name="line"):
     """Return the vertices of a line as a new float array, rejecting empty or non-finite input.
 

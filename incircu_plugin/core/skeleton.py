@@ -27,7 +27,7 @@ import shapely
 
 from .contacts import ranges
 from .errors import InvalidGeometryError
-from .polyline import typical_width
+from .polyline import counterclockwise, typical_width
 
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
 SAMPLES_PER_WIDTH = 3
@@ -268,7 +268,7 @@ def _boundary_sample_arrays(polygons):
     bad = (shapely.get_type_id(simplified) != 3) | ~shapely.is_valid(simplified)
     if np.any(bad):
         simplified[bad] = shapely.simplify(polygons[bad], tolerance[bad], preserve_topology=True)
-    simplified = shapely.orient_polygons(simplified)
+    simplified = counterclockwise(simplified)
     steps = np.maximum(widths / SAMPLES_PER_WIDTH, shapely.length(simplified) / MAX_SAMPLES)
     rings, ring_owner = shapely.get_rings(shapely.segmentize(simplified, steps), return_index=True)
     coordinates, ring = shapely.get_coordinates(rings, return_index=True)
