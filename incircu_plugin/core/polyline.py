@@ -11,6 +11,9 @@ import shapely
 from .errors import InvalidGeometryError
 from .validation import check_coordinates
 
+#: Whether Shapely has ``orient_polygons`` (2.1 and later); else :func:`counterclockwise` orients one by one.
+HAS_ORIENT_POLYGONS = hasattr(shapely, "orient_polygons")
+
 
 def counterclockwise(polygons):
     """Return the polygons with counterclockwise exteriors and clockwise interiors.
@@ -32,7 +35,7 @@ def counterclockwise(polygons):
     >>> counterclockwise(np.array([Polygon([(0, 0), (0, 1), (1, 0)])]))[0].exterior.is_ccw
     True
     """
-    if hasattr(shapely, "orient_polygons"):
+    if HAS_ORIENT_POLYGONS:
         return shapely.orient_polygons(polygons, exterior_cw=False)
     oriented = np.empty(len(polygons), dtype=object)
     oriented[:] = [shapely.geometry.polygon.orient(polygon, 1.0) for polygon in polygons]
