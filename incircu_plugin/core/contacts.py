@@ -168,7 +168,7 @@ class Boundary:
         end -= self.start
         self.length = np.hypot(end[:, 0], end[:, 1])
         self.unit = end / self.length[:, None]
-        self.mean_length = float(self.length.mean())
+        self.mean_length = float(self.length.mean()) if count else 0.0
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
@@ -526,7 +526,7 @@ def _first_block(boundary, radius):
     """Samples in :func:`solve`'s first block: ``SOLVE_PAIRS`` over the pairs a sample is expected to have,
     judged from the middle one of the first samples' trial radii ``radius`` (CRS units): a disk of radius r
     meets about 4 r / l segments of mean length l (both chains, both sides of its centre)."""
-    if not len(radius):
+    if not len(radius) or boundary.mean_length <= 0.0:
         return SOLVE_BLOCK
     expected = 4.0 * float(radius[len(radius) // 2]) / boundary.mean_length + 1.0
     return min(max(int(SOLVE_PAIRS / expected), 1), SOLVE_BLOCK) if math.isfinite(expected) else SOLVE_BLOCK
