@@ -771,10 +771,8 @@ class _Tracer:
         known = np.fmax(self.t[intervals.right[after]], self.t[intervals.left[before]])
         width = self.of(self.width, intervals.subset(after))
         trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known / corners.scale, 0.625 * width)
-        t, status, site = (np.empty(len(after)), np.empty(len(after), dtype=np.int8), np.empty(len(after), dtype=int))
-        for begin in range(0, len(after), CHUNK):
-            chunk = np.arange(begin, min(begin + CHUNK, len(after)))
-            t[chunk], status[chunk], _, _, site[chunk] = solve(corners, chunk, b, trial[chunk], self.max_t, self.min_t)
+        # One solve: it bounds its candidate pairs itself (blocks of about SOLVE_PAIRS pairs).
+        t, status, _, _, site = solve(corners, np.arange(len(after)), b, trial, self.max_t, self.min_t)
         site = self.sites.canonical(site)
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])

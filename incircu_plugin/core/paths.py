@@ -71,7 +71,7 @@ def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
         firsts = _farthest_of_sources(_forest_sweep(graph, sources, check), len(sources))
         sweep = _forest_sweep(graph, firsts, check)
         lasts = _farthest_of_sources(sweep, len(firsts))
-        _, parent, parent_via, _ = (part.tolist() for part in sweep)
+        parent, parent_via = sweep[1].tolist(), sweep[2].tolist()
         for index, first, last in zip(together.tolist(), firsts.tolist(), lasts.tolist()):
             key_path, via = [last], []
             while key_path[-1] != first:
