@@ -17,6 +17,7 @@ from incircu_plugin.core.contacts import (
     CLEAR,
     QUERY_GROUP,
     SINGLE_INDEX,
+    SKIPPED,
     AxisPoints,
     Boundary,
     Samples,
@@ -298,6 +299,86 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
         monkeypatch.setattr(Boundary, "candidates", listing)
         for result, wanted in zip(solved_on_straight_banks()[1], expected, strict=True):
             assert result.tobytes() == wanted.tobytes(), (all_pairs, single_index, listing.__name__)
+
+
+def solved_alone(chain_a, chain_b, point, direction, own, scale=1.0, slide=0.0):
+    """:func:`solve` of one sample of ``chain_a`` (a disk family from ``point`` along the unit ``direction``,
+    own segments ``own``), trial radius 10 and a smallest contact of 1e-10: (t, status, contact, site)."""
+    samples = Samples(
+        np.zeros(1, dtype=int),
+        np.array([point], dtype=float),
+        np.array([direction], dtype=float),
+        np.array([scale]),
+        np.zeros(1),
+        np.array([slide]),
+        np.array([own[0]]),
+        np.array([own[1]]),
+    )
+    boundary = Boundary([np.array(chain_a, dtype=float), np.array(chain_b, dtype=float)])
+    contact_t, status, contact, _, site = solve(samples, np.arange(1), boundary, np.full(1, 10.0), 300.0, 1e-10)
+    return contact_t[0], status[0], contact[0], site[0]
+
+
+@pytest.mark.parametrize("hair", [0.0, 1e-13, 1e-12, 1e-11])
+def test_own_segments_never_count_even_when_rounding_puts_the_sample_inside_one(hair):
+    # A nearly straight reflex vertex at (50, 0): the next segment turns 0.003 rad away from the region. A
+    # sample computed at the vertex with a rounding error ``hair`` towards the region lies on the region side
+    # of that segment's line, so the segment itself would be touched at t = hair / (1 - cos 0.003), about
+    # 2e-7 for hair = 1e-12: above the smallest contact, yet only rounding. It is the sample's own segment,
+    # so the disk grows to the far bank 20 away.
+    t, status, contact, _ = solved_alone(
+        [[0.0, 0.0], [50.0, 0.0], [100.0, -0.15]], [[100.0, 20.0], [0.0, 20.0]], (50.0, hair), (0.0, 1.0), (0, 1)
+    )
+    assert status == CLEAR
+    assert t == pytest.approx(10.0 - hair / 2.0, rel=1e-12)
+    np.testing.assert_allclose(contact, [50.0, 20.0], atol=1e-9)
+
+
+def test_a_convex_corners_disk_slides_past_the_far_end_of_a_short_own_segment():
+    # A valley of half angle 75 degrees at the origin: the disk slides up the bisector with radius
+    # t cos(15 deg), touching both edges t sin(15 deg) from the corner. The right edge is 1 long and is followed
+    # by a horizontal segment, so the disk passes over that edge's far end at t = 1 / sin(15 deg) (a double
+    # root: it touches there, never crosses) and first touches the far bank y = 20 at t = 20 / (1 + cos 15 deg).
+    angle = math.radians(15.0)
+    cos, sin = math.cos(angle), math.sin(angle)
+    t, status, contact, site = solved_alone(
+        [[-30.0 * cos, 30.0 * sin], [0.0, 0.0], [cos, sin], [30.0, sin]],
+        [[30.0, 20.0], [-30.0, 20.0]],
+        (0.0, 0.0),
+        (0.0, 1.0),
+        (0, 1),
+        scale=cos,
+        slide=sin,
+    )
+    assert status == CLEAR
+    assert t == pytest.approx(20.0 / (1.0 + cos), rel=1e-12)
+    np.testing.assert_allclose(contact, [0.0, 20.0], atol=1e-12)
+    assert site == 3  # the far bank's only segment (segments 0-2 are the valley's)
+
+
+@pytest.mark.parametrize("reverse", [False, True])
+def test_a_disk_touching_its_own_chain_twice_at_once_reports_the_lower_site(monkeypatch, reverse):
+    # A U of width 10: the disk from the middle of its floor (segment 1) touches both walls, segments 0 and 2,
+    # at t = 5: the sample is skipped and its own-chain site is the lower one, whatever the listing order.
+    listed = Boundary.candidates
+
+    def reversed_candidates(boundary, low, high):
+        box, segment = listed(boundary, low, high)
+        order = np.lexsort((-np.arange(len(box)), box))
+        return box[order], segment[order]
+
+    if reverse:
+        monkeypatch.setattr(Boundary, "candidates", reversed_candidates)
+    t, status, _, site = solved_alone(
+        [[-5.0, 10.0], [-5.0, 0.0], [5.0, 0.0], [5.0, 10.0]],
+        [[5.0, 40.0], [-5.0, 40.0]],
+        (0.0, 0.0),
+        (0.0, 1.0),
+        (1, 1),
+    )
+    assert status == SKIPPED
+    assert t == 5.0
+    assert site == 0
 
 
 def solved_between_dense_banks():
