@@ -96,3 +96,18 @@ def test_a_long_tree_finished_in_python_can_be_cancelled(monkeypatch):
 
     with pytest.raises(Stop):
         heaviest_paths(10000, edges, weights, [0], [True], check=stop)
+
+
+@pytest.mark.parametrize("front", [1, 16, 10**9])
+def test_equally_far_nodes_go_to_the_smallest_node(monkeypatch, front):
+    """Two stars of five unit arms, listed out of order, one of them with a small cycle at its centre (swept by
+    Dijkstra in Python): every leaf is equally far, so each sweep takes the smallest node, and each path runs
+    from the smallest leaf through the centre to the next smallest, in numpy, in Python, or both."""
+    monkeypatch.setattr(paths_module, "FRONT_IN_NUMPY", front)
+    star = [[0, 5], [0, 3], [0, 1], [0, 4], [0, 2]]
+    cyclic = [[10, 14], [10, 12], [10, 15], [10, 11], [10, 13], [10, 16], [16, 17], [17, 10]]
+    edges = np.array(star + cyclic)
+    weights = np.array([1.0] * 10 + [0.1] * 3)
+    tree_path, cyclic_path = heaviest_paths(18, edges, weights, [0, 10], [True, False])
+    assert tree_path.tolist() == [1, 0, 2]
+    assert cyclic_path.tolist() == [11, 10, 12]
