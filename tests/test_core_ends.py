@@ -7,6 +7,7 @@ the only length that sets how far a reasonable "end" can be from the true one.
 
 import math
 import warnings
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -16,6 +17,8 @@ from shapely.geometry.polygon import orient
 from shapely.ops import unary_union
 
 from incircu_plugin.core import Cancelled, find_ends, polygon_centerline
+from incircu_plugin.core import ends as ends_module
+from incircu_plugin.core.ends import _last_trunk_positions
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
 from tests.support import geometry_cases
 
@@ -348,3 +351,25 @@ def test_a_polygon_too_small_for_its_distance_from_the_origin_gets_a_typed_error
     # 2.8e-5 across at 1e6: under the 1e-9 of the coordinates' magnitude float64 resolves reliably.
     with pytest.raises(InvalidGeometryError, match="Shift the data nearer the origin"):
         find_ends(tiny_heptagon(1.4030173759013428e-05))
+
+
+def test_the_last_trunk_point_is_the_first_widest_junction_near_the_tip_else_where_the_banks_open():
+    """``_last_trunk_positions`` on three hand-made ends (arc lengths ``along`` from the tip, radii, junction
+    flags): two equally wide junctions near the tip and a wider one past half the path; no junction with
+    radius 1 (the trunk point is where the distance from the tip, ``r_tip + along``, first exceeds
+    ``CAP_REACH * r``: at ``CAP_REACH - 1``, between the first two points); no junction with radius 10 (that
+    distance stays below ``CAP_REACH * r`` up to half the path, so half the path)."""
+    along = np.tile([0.0, 1.0, 2.0, 3.0, 6.0, 10.0], 3)
+    radii = np.array([2.0, 2.0, 2.0, 2.0, 5.0, 2.0] + [1.0] * 6 + [10.0] * 6)
+    junction = np.zeros(18, dtype=bool)
+    junction[[1, 3, 4]] = True
+    tips = SimpleNamespace(
+        along=along,
+        radii=radii,
+        junction=junction,
+        starts=np.array([0, 6, 12]),
+        lengths=np.array([6, 6, 6]),
+        group=np.repeat(np.arange(3), 6),
+    )
+    position = _last_trunk_positions(tips)
+    np.testing.assert_allclose(position, [1.0, ends_module.CAP_REACH - 1.0, 5.0], rtol=1e-12)
