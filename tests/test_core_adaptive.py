@@ -387,6 +387,31 @@ def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays
     assert approach_sites["sites"] > 0
 
 
+def test_predicted_walks_save_the_meanders_rounds(monkeypatch):
+    # On the meander, intervals at the chain starts see the own contact walk across several own sites before
+    # the other bank takes over: predicted, the walk is probed in one round; halved, one site per round.
+    from incircu_plugin.core import adaptive
+
+    case = geometry_cases.meander_with_vertex_count(2333)
+    rounds = {"count": 0}
+    solve_probes = adaptive._Tracer._solve_probes
+
+    def counting(self, *arguments):
+        rounds["count"] += 1
+        return solve_probes(self, *arguments)
+
+    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", counting)
+    predicted = polygon_centerline(case.polygon, case.split_points)
+    with_walks = rounds["count"]
+    rounds["count"] = 0
+    monkeypatch.setattr(adaptive._Tracer, "_approaches", lambda self, intervals, found: (np.empty(0, int),) * 2)
+    halved = polygon_centerline(case.polygon, case.split_points)
+    assert with_walks < rounds["count"]
+    tolerance = default_tolerance(case.chain_a, case.chain_b)
+    assert predicted.line.hausdorff_distance(halved.line) <= 2.0 * tolerance
+    check_centerline(predicted, case.chain_a, case.chain_b, case.polygon, case.split_points)
+
+
 def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monkeypatch):
     # A bottom bank bulging out of the region (convex corners), its edges alternately long and very short: a
     # corner's bisector disk touches the short edge beyond its end (left to the rounds), a long one inside it.
