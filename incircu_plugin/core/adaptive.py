@@ -767,10 +767,11 @@ class _Tracer:
         if len(after) == 0:
             return intervals
         corners = self._corner_samples(intervals.span[after])
-        # Trial: a little above the radius of the solved samples at the far ends of the corner's two intervals.
+        # Trial radius: a little above that of the solved samples at the far ends of the corner's two intervals
+        # (else 0.625 widths, as the initial samples'); the trial parameter t is radius / scale.
         known = np.fmax(self.t[intervals.right[after]], self.t[intervals.left[before]])
         width = self.of(self.width, intervals.subset(after))
-        trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known / corners.scale, 0.625 * width)
+        trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known, 0.625 * width) / corners.scale
         # One solve: it bounds its candidate pairs itself (blocks of about SOLVE_PAIRS pairs).
         t, status, _, _, site = solve(corners, np.arange(len(after)), b, trial, self.max_t, self.min_t)
         site = self.sites.canonical(site)
