@@ -425,3 +425,13 @@ def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypa
         monkeypatch.setattr(contacts, "SOLVE_PAIRS", budget)
         for result, wanted in zip(solved_between_dense_banks(), expected, strict=True):
             assert result.tobytes() == wanted.tobytes(), (block, budget)
+
+
+@pytest.mark.parametrize("limit", [contacts.PACKED_LIMIT, 0])
+def test_stable_order_is_the_stable_argsort_packed_or_not(monkeypatch, limit):
+    """Many equal values (ties in input order), both through the packed sort and through the fallback."""
+    monkeypatch.setattr(contacts, "PACKED_LIMIT", limit)
+    values = np.random.default_rng(5).integers(0, 50, size=2000)
+    expected = np.argsort(values, kind="stable")
+    assert np.array_equal(contacts.stable_order(values, 50), expected)
+    assert len(contacts.stable_order(values[:0], 50)) == 0

@@ -23,12 +23,14 @@ from incircu_plugin.core import (
     OptionError,
     SplitPointError,
     centerline_from_chains,
+    chains,
     find_ends,
     lines_centerline,
     multipolygon_centerlines,
     polygon_centerline,
     split_polygon,
 )
+from incircu_plugin.core.chains import validate_polygon
 
 RECTANGLE = box(0.0, 0.0, 100.0, 10.0)
 ENDS = [(0.0, 5.0), (100.0, 5.0)]
@@ -565,3 +567,19 @@ def test_final_check_leaves_the_region_as_given(prepared):
     result = polygon_centerline(region, ENDS)
     assert _checked(result, region) is result
     assert shapely.is_prepared(region) == prepared
+
+
+def test_a_polygon_found_valid_is_checked_once_while_it_lives(monkeypatch):
+    """A batch checks each feature, then finds the ends of all (which check them again): the second check of
+    each of two polygons asks nothing of GEOS; a polygon made after one is freed (perhaps at its address) is
+    checked and refused."""
+    checked = []
+    monkeypatch.setattr(chains, "check_coordinates", lambda *arguments, **options: checked.append(arguments))
+    first, second = box(0.0, 0.0, 2.0, 1.0), box(5.0, 5.0, 9.0, 6.0)
+    for polygon in (first, second, first, second):
+        validate_polygon(polygon)
+    assert len(checked) == 2
+    del first, polygon
+    bow_tie = Polygon([(0.0, 0.0), (4.0, 4.0), (4.0, 0.0), (0.0, 4.0)])
+    with pytest.raises(InvalidGeometryError, match="not valid"):
+        validate_polygon(bow_tie)

@@ -39,6 +39,28 @@ def test_triangle_corners_are_identified_by_the_ids_carried_through_geos():
         assert abs(triangle_areas(corners[own]).sum() - hull) <= 1e-6 * hull
 
 
+def test_lines_of_points_triangulate_as_multipoints_do_repeated_points_included():
+    """The triangulation of the lines ``_point_runs`` builds (what ``_delaunay_all`` triangulates) equals that of
+    multipoints of the same points, corners and their ids (z) included, also with repeated and collinear
+    points (GEOS keeps one of the repeated points, the same for both)."""
+    rng = np.random.default_rng(11)
+    sizes = rng.integers(3, 40, size=60)
+    points = rng.integers(0, 6, size=(int(sizes.sum()), 2)).astype(float)
+    ids = np.arange(len(points))
+    lines = skeleton_module._point_runs(points, ids, sizes)
+    assert np.all(shapely.get_type_id(lines) == 1)
+    firsts = np.append(0, np.cumsum(sizes))
+    multipoints = [
+        shapely.multipoints(np.column_stack([points, ids])[firsts[k] : firsts[k + 1]]) for k in range(len(sizes))
+    ]
+    expected = shapely.delaunay_triangles(np.array(multipoints, dtype=object))
+    found = shapely.delaunay_triangles(lines)
+    assert np.array_equal(shapely.get_num_geometries(found), shapely.get_num_geometries(expected))
+    assert np.array_equal(
+        shapely.get_coordinates(found, include_z=True), shapely.get_coordinates(expected, include_z=True)
+    )
+
+
 def test_joint_skeletons_keep_each_polygons_nodes_and_edges_to_itself():
     """Nodes come polygon after polygon, lie in their own polygon, and edges never join two polygons (the
     boxes overlap in x, so a mixed-up sample numbering would link them)."""

@@ -60,6 +60,9 @@ COARSE_LEVELS = 2
 #: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
 SMALLEST_TRIAL = 1.0 / 16.0
 
+#: Largest integer :func:`stable_order` packs a value and its index into (below ``2**63``).
+PACKED_LIMIT = 2**62
+
 #: Most consecutive samples whose candidate boxes share one spatial-index query. The grouping changes no pair
 #: nor its order: the index reports the hits of any query in one fixed order (its depth-first order), so each
 #: box's segments come in that order whatever group it was queried in. 4 instead of 2, and no box grouped
@@ -338,6 +341,32 @@ def ranges(counts):
     owner = np.repeat(np.arange(len(counts)), counts)
     rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
     return owner, rank
+
+
+def stable_order(values, bound):
+    """Return ``np.argsort(values, kind="stable")`` of non-negative integers below ``bound``.
+
+    Each value is packed with its index into one integer (``value * n + index``, all distinct) and those are
+    sorted, several times faster than a stable argsort; when the packed integers could overflow 63 bits, the
+    stable argsort itself.
+
+    Parameters
+    ----------
+    values : ndarray of shape (n,) of int
+        Non-negative, below ``bound``.
+    bound : int
+        An upper bound of the values (exclusive).
+
+    Returns
+    -------
+    ndarray of shape (n,) of int
+    """
+    count = len(values)
+    if int(bound) * max(count, 1) > PACKED_LIMIT:
+        return np.argsort(values, kind="stable")
+    packed = values.astype(np.int64) * count + np.arange(count, dtype=np.int64)
+    packed.sort()
+    return packed % count
 
 
 def left_normal(vectors):

@@ -21,7 +21,7 @@ import heapq
 
 import numpy as np
 
-from .contacts import ranges
+from .contacts import ranges, stable_order
 from .skeleton import connected_labels
 
 #: Node pops of a sweep between two calls of the cancel check.
@@ -149,7 +149,7 @@ class _Chains:
         self.key_index = np.full(count, -1, dtype=np.int64)
         self.key_index[self.keys] = np.arange(len(self.keys))
         self.labels = labels
-        order = np.argsort(self.tail, kind="stable")
+        order = stable_order(self.tail, count)
         first_out = np.concatenate([[0], np.cumsum(degree)])
         through = np.flatnonzero(~key[self.head])
         one = order[first_out[self.head[through]]]
@@ -178,7 +178,7 @@ class _Chains:
         leaving = np.flatnonzero(self.key[self.tail])
         source = self.key_index[self.tail[leaving]]
         target = self.key_index[self.head[self.last[leaving]]]
-        order = np.argsort(source, kind="stable")
+        order = stable_order(source, len(self.keys))
         start = np.concatenate([[0], np.cumsum(np.bincount(source, minlength=len(self.keys)))])
         return _Contracted(start, target[order], self.total[leaving][order], leaving[order])
 

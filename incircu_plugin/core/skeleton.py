@@ -25,7 +25,7 @@ from typing import NamedTuple
 import numpy as np
 import shapely
 
-from .contacts import ranges
+from .contacts import ranges, stable_order
 from .errors import InvalidGeometryError
 from .polyline import counterclockwise, typical_width
 
@@ -350,7 +350,7 @@ def _delaunay_all(samples, owner, local, steps, count):
         moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
         turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
         polygons, sizes = _runs(owner[mask])
-        found = _each_delaunay(_multipoints(turned, np.flatnonzero(mask), sizes))
+        found = _each_delaunay(_point_runs(turned, np.flatnonzero(mask), sizes))
         success = np.zeros(count, dtype=bool)
         success[polygons] = [item is not None for item in found]
         triangles[polygons[success[polygons]]] = [item for item in found if item is not None]
@@ -358,8 +358,8 @@ def _delaunay_all(samples, owner, local, steps, count):
         moved_all[np.flatnonzero(mask)[took]] = moved[took]
         waiting &= ~success
     made = np.flatnonzero(~shapely.is_missing(triangles))
-    coordinates, which = shapely.get_coordinates(triangles[made], include_z=True, return_index=True)
-    triangle_owner = made[which[::4]]
+    coordinates = shapely.get_coordinates(triangles[made], include_z=True)
+    triangle_owner = np.repeat(made, shapely.get_num_geometries(triangles[made]))
     corner_ids = coordinates[:, 2].reshape(-1, 4)[:, :3].astype(np.int64)
     return np.take(moved_all, corner_ids, axis=0), corner_ids, triangle_owner, waiting
 
@@ -370,33 +370,35 @@ def _runs(values):
     return values[starts], np.diff(np.append(starts, len(values)))
 
 
-def _multipoints(points, ids, sizes):
-    """Return one MultiPoint per run of ``sizes`` consecutive points, each point carrying its id as its z.
+def _point_runs(points, ids, sizes):
+    """Return one line per run of ``sizes`` consecutive points, each point carrying its id as its z.
 
-    GEOS's Delaunay triangulation keeps each input coordinate, z included, so a triangle's corners tell
-    which points they are without a lookup. Built through WKB (ISO types with z), twice as fast as from
-    coordinates.
+    The Delaunay triangulation of a geometry is that of its distinct vertices (GEOS sorts them by x and y and
+    drops repeated ones, whatever the geometry), and it keeps each input coordinate, z included, so a
+    triangle's corners tell which points they are without a lookup. A line holds its vertices in one
+    coordinate sequence where a multipoint holds one point geometry per vertex: built through WKB (ISO type
+    with z), triangulated and freed, the lines of 113,000 samples in 400 polygons take about 155 ms of CPU
+    where multipoints took 180 ms, for the same triangles (GEOS 3.11 and 3.14). Every run has at least two
+    points (a polygon's boundary has three samples or more).
     """
-    record = np.dtype([("order", "u1"), ("kind", "<u4"), ("xyz", "<f8", (3,))])
-    body = np.zeros(len(points), dtype=record)
-    body["order"], body["kind"] = 1, 1001
-    body["xyz"][:, :2], body["xyz"][:, 2] = points, ids
+    body = np.empty((len(points), 3))
+    body[:, :2], body[:, 2] = points, ids
     header = np.zeros(len(sizes), dtype=[("order", "u1"), ("kind", "<u4"), ("count", "<u4")])
-    header["order"], header["kind"], header["count"] = 1, 1004, sizes
+    header["order"], header["kind"], header["count"] = 1, 1002, sizes
     data, heads = body.tobytes(), header.tobytes()
-    bounds = (np.append(0, np.cumsum(sizes)) * record.itemsize).tolist()
+    bounds = (np.append(0, np.cumsum(sizes)) * body.itemsize * 3).tolist()
     size = header.itemsize
     blobs = [heads[size * k : size * (k + 1)] + data[bounds[k] : bounds[k + 1]] for k in range(len(sizes))]
     return shapely.from_wkb(np.array(blobs, dtype=object))
 
 
-def _each_delaunay(multipoints):
-    """Return the Delaunay triangles of each multipoint: one GEOS call, or one each (None where GEOS fails)."""
+def _each_delaunay(point_runs):
+    """Return the Delaunay triangles of each run of points: one GEOS call, or one each (None where GEOS fails)."""
     try:
-        return list(shapely.delaunay_triangles(multipoints))
+        return list(shapely.delaunay_triangles(point_runs))
     except shapely.errors.GEOSException:
         found = []
-        for points in multipoints:
+        for points in point_runs:
             try:
                 found.append(shapely.delaunay_triangles(points))
             except shapely.errors.GEOSException:
@@ -521,7 +523,7 @@ def _shared_sides(sides, side_start, side_end, count):
         The two triangles (the first one's side comes first).
     """
     keys = _edge_keys(side_start[sides], side_end[sides], count)
-    order = np.argsort(keys, kind="stable")
+    order = stable_order(keys, count * count)
     shared = np.flatnonzero(keys[order][1:] == keys[order][:-1])
     return sides[order[shared]] // 3, sides[order[shared + 1]] // 3
 
