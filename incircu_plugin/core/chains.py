@@ -361,8 +361,11 @@ def orient_bank_lines(line_a, line_b):
     b = clean_chain(b, "second line", coincidence)
     ensure_simple(a, "first line")
     ensure_simple(b, "second line")
-    touching = shapely.intersection(LineString(a), LineString(b))
-    if not touching.is_empty:
+    # A predicate first: GEOS 3.11 builds the empty intersection of two disjoint collinear lines with a NaN z
+    # (a RuntimeWarning from shapely), and lines that bound a region never meet.
+    lines = LineString(a), LineString(b)
+    if shapely.intersects(*lines):
+        touching = shapely.intersection(*lines)
         raise CrossingLinesError(
             f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; "
             "they must bound a region between them."
