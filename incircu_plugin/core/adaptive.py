@@ -1285,19 +1285,21 @@ JOINT_SEGMENTS = 1 << 17
 def trace_together(requests, report):
     """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
 
-    Requests of similar extent are placed side by side in one frame and traced in one set of vectorised
-    rounds (contacts are only ever sought within a feature's own pair of chains); each feature's points
-    are shifted back. ``report(fraction)`` is called as the groups are done. Returns a list of
-    :class:`.contacts.AxisPoints` in the requests' order.
+    Requests of similar extent are placed side by side in one frame (a group, :func:`_joint_groups`); groups
+    are traced together in one set of vectorised rounds up to ``JOINT_SEGMENTS`` (:func:`_joint_batches`: their
+    frames overlap, which changes nothing since contacts are only ever sought within a feature's own pair of
+    chains); each feature's points are shifted back. ``report(fraction)`` is called as the batches are done.
+    Returns a list of :class:`.contacts.AxisPoints` in the requests' order.
     """
     results = [None] * len(requests)
-    groups = _joint_groups(requests)
-    for done, group in enumerate(groups):
-        part = lambda fraction, begin=done: report((begin + fraction) / len(groups))
-        if len(group) == 1:
-            results[group[0]] = trace_one(requests[group[0]], part)
+    batches = _joint_batches(requests, _joint_groups(requests))
+    for done, batch in enumerate(batches):
+        part = lambda fraction, begin=done: report((begin + fraction) / len(batches))
+        if len(batch) == 1 and len(batch[0]) == 1:
+            results[batch[0][0]] = trace_one(requests[batch[0][0]], part)
         else:
-            for index, points in zip(group, _trace_group([requests[i] for i in group], part)):
+            indices = [index for group in batch for index in group]
+            for index, points in zip(indices, _trace_batch(requests, batch, part)):
                 results[index] = points
     return results
 
@@ -1318,12 +1320,33 @@ def _joint_groups(requests):
     return groups + [current] if current else groups
 
 
-def _trace_group(requests, report):
-    """Trace ``requests`` in one frame: each shifted to its cell of a square grid; their points shifted back."""
+def _joint_batches(requests, groups):
+    """Consecutive ``groups`` (lists of request indices) packed into batches of at most ``JOINT_SEGMENTS``
+    segments (a group of more is a batch of its own)."""
+    batches, current, segments = [], [], 0
+    for group in groups:
+        size = sum(requests[index].segment_count for index in group)
+        if current and segments + size > JOINT_SEGMENTS:
+            batches.append(current)
+            current, segments = [], 0
+        current.append(group)
+        segments += size
+    return batches + [current] if current else batches
+
+
+def _group_offsets(requests):
+    """Shift of each of ``requests`` (one group) to its cell of a square grid centred on the origin, CRS units."""
     columns = int(np.ceil(np.sqrt(len(requests))))
     cell = JOINT_CELL * max(request.extent for request in requests)
     rank = np.arange(len(requests))
-    offsets = cell * (np.stack([rank % columns, rank // columns], axis=1) - 0.5 * (columns - 1))
+    return cell * (np.stack([rank % columns, rank // columns], axis=1) - 0.5 * (columns - 1))
+
+
+def _trace_batch(requests, batch, report):
+    """Trace the groups of ``batch`` in one tracing: each group's requests shifted to its grid
+    (:func:`_group_offsets`), their points shifted back; returns them in the order of the batch's requests."""
+    offsets = np.concatenate([_group_offsets([requests[index] for index in group]) for group in batch])
+    requests = [requests[index] for group in batch for index in group]
     chains = [chain + offset for request, offset in zip(requests, offsets) for chain in request.chains]
     sides = [side for request in requests for side in request.sides]
     per_chain = [
