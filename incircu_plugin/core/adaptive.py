@@ -927,24 +927,29 @@ class _Tracer:
         row = (mixed & ~found & (rank >= 0) & (step != 0)).nonzero()[0]
         if len(row) == 0:
             return np.empty(0, dtype=int), np.empty(0, dtype=int)
-        owner, k = ranges(np.full(len(row), MAX_PREDICTED))
-        owner = row[owner]
-        candidate_rank = rank[owner] + step[owner] * k
+        row_of, k = ranges(np.full(len(row), MAX_PREDICTED))
+        candidate_rank = rank[row[row_of]] + step[row[row_of]] * k
         valid = (candidate_rank >= 0) & (candidate_rank < len(sites.sequence))
         candidate = sites.sequence[np.clip(candidate_rank, 0, len(sites.sequence) - 1)]
-        valid &= sites.chain(candidate) == chain[owner]
-        other_site = np.where(other_first, intervals.site0, intervals.site1)[owner]
-        middle = 0.5 * (intervals.u0 + intervals.u1)[owner]
+        valid &= sites.chain(candidate) == chain[row[row_of]]
+        # Only the candidates on the own chain's sequence; the other site's terms once per interval.
+        valid = valid.nonzero()[0]
+        row_of, k, candidate = row_of[valid], k[valid], candidate[valid]
+        owner = row[row_of]
+        other_site = np.where(other_first, intervals.site0, intervals.site1)[row]
+        middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(
-            spans, np.tile(span[owner], 2), np.concatenate([other_site, candidate]), np.tile(middle, 2)
+            spans,
+            np.concatenate([span[row], span[owner]]),
+            np.concatenate([other_site, candidate]),
+            np.concatenate([middle[row], middle[owner]]),
         )
-        count = len(owner)
         u, radius, inside = self._pair_events(
-            intervals.subset(owner), [x[:count] for x in terms], [x[count:] for x in terms]
+            intervals.subset(owner), [x[row_of] for x in terms], [x[len(row) :] for x in terms]
         )
         inside &= self._on_run(span[owner], u, radius, candidate)
         # Nearest ``A``'s end: the smallest u when ``A`` is at u0, the largest when at u1.
-        key = np.where(inside & valid, np.where(other_first[owner], u, -u), np.inf)
+        key = np.where(inside, np.where(other_first[owner], u, -u), np.inf)
         best = np.full(len(intervals.span), np.inf)
         np.minimum.at(best, owner, key)
         chosen = ((key == best[owner]) & np.isfinite(key)).nonzero()[0]
