@@ -690,25 +690,26 @@ class _Tracer:
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
     def _solve_initial(self, samples, given_site, given_status, report):
-        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved),
-        then the middles after them (``given_status`` for the ends). Returns ``t``, status and canonical site
-        of every sample."""
+        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved;
+        ``given_status`` for the ends) and the middles after them, together in the order of their points along
+        the chains (one coarse-to-fine solution). Returns ``t``, status and canonical site of every sample."""
         count = len(given_site)
-        solved = np.flatnonzero(given_site < 0)
         middles = np.arange(count, len(samples.chain))
+        index = np.concatenate([np.flatnonzero(given_site < 0), middles])
+        # By chain, then position: a middle goes between its edge's two ends (a stable sort keeps their order).
+        index = index[np.lexsort((samples.position[index], samples.chain[index]))]
         t = np.zeros(len(samples.chain))
         site = np.concatenate([given_site, np.full(len(middles), -1)])
         status = np.concatenate([given_status, np.full(len(middles), SKIPPED, dtype=np.int8)])
-        for index, begin, share in ((solved, 0.0, 0.6), (middles, 0.6, 0.2)):
-            t[index], status[index], _, _, site[index] = _solve_all(
-                samples,
-                index,
-                self.boundary,
-                0.625 * self.width,
-                self.max_t,
-                self.min_t,
-                lambda done, begin=begin, share=share: report(begin + share * done),
-            )
+        t[index], status[index], _, _, site[index] = _solve_all(
+            samples,
+            index,
+            self.boundary,
+            0.625 * self.width,
+            self.max_t,
+            self.min_t,
+            lambda done: report(0.8 * done),
+        )
         return t, status, self.sites.canonical(site)
 
     def _corner_samples(self, span):
