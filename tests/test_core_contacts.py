@@ -248,7 +248,7 @@ def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
 
 
 def straight_features(features, samples_each):
-    """Samples every 0.1 along the lower bank of ``features`` straight channels (banks 4 apart, 10 units
+    """``samples_each`` samples spread along the lower bank of ``features`` straight channels (banks 4 apart, 10 units
     long, stacked 10 apart: pairs of chains ``2k``, ``2k + 1``), each sample's own segment its bank's only."""
     chains = []
     for k in range(features):
