@@ -433,6 +433,27 @@ def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monk
     assert corners["count"] > 0
 
 
+def test_the_ends_and_middles_of_the_edges_are_solved_in_one_pass_along_the_chains(monkeypatch):
+    # The bulging bank of convex corners: every edge between two corners also has its middle solved first; the
+    # middles go into the one coarse-to-fine solution of the edges' ends, in the order of their points.
+    from incircu_plugin.core import adaptive
+
+    calls = []
+    original = adaptive.solve_in_chunks
+
+    def recording(samples, index, *arguments):
+        calls.append((samples.chain[index], samples.position[index], len(samples.chain) - 1 in index))
+        return original(samples, index, *arguments)
+
+    monkeypatch.setattr(adaptive, "solve_in_chunks", recording)
+    xs = np.linspace(0.0, 40.0, 21)
+    polygon = Polygon([(x, -3.0 * np.sin(np.pi * x / 40.0)) for x in xs] + [(40.0, 10.0), (0.0, 10.0)])
+    assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
+    chain, position, with_last_middle = calls[0]
+    assert len(calls) == 1 and with_last_middle
+    assert np.all((chain[1:] > chain[:-1]) | ((chain[1:] == chain[:-1]) & (position[1:] >= position[:-1])))
+
+
 def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
     from incircu_plugin.core.adaptive import _Intervals, _split_at_nodes
 

@@ -248,6 +248,50 @@ def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
     assert sorted(order.tolist()) == list(range(count))
 
 
+def straight_features(features, samples_each):
+    """``samples_each`` samples spread along the lower bank of ``features`` straight channels (banks 4 apart, 10 units
+    long, stacked 10 apart: pairs of chains ``2k``, ``2k + 1``), each sample's own segment its bank's only."""
+    chains = []
+    for k in range(features):
+        chains += [
+            np.array([[0.0, 10.0 * k], [10.0, 10.0 * k]]),
+            np.array([[10.0, 10.0 * k + 4.0], [0.0, 10.0 * k + 4.0]]),
+        ]
+    along = np.tile(np.linspace(0.05, 9.95, samples_each), features)
+    chain = np.repeat(2 * np.arange(features), samples_each)
+    own = chain.copy()
+    samples = Samples(
+        chain,
+        np.stack([along, 5.0 * chain], axis=1),
+        np.tile([0.0, 1.0], (len(along), 1)),
+        np.ones(len(along)),
+        along,
+        np.zeros(len(along)),
+        own,
+        own,
+    )
+    return samples, Boundary(chains)
+
+
+@pytest.mark.parametrize(("features", "levels"), [(1, 3), (8, 2), (80, 1)])
+def test_coarse_to_fine_levels_follow_the_samples_per_feature(monkeypatch, features, levels):
+    # 800 samples in all: one feature gets three levels (strides 64, 8, 1), eight features of 100 samples two,
+    # eighty of 10 one; every level settles its samples exactly as one solve of all.
+    samples, boundary = straight_features(features, 800 // features)
+    index = np.arange(800)
+    expected = solve(samples, index, boundary, np.full(800, 2.5), 30.0, 1e-9)
+    calls = []
+    solved = contacts.solve
+    monkeypatch.setattr(
+        contacts, "solve", lambda samples, index, *rest: calls.append(len(index)) or solved(samples, index, *rest)
+    )
+    result = contacts.solve_coarse_to_fine(samples, index, boundary, 2.5, 30.0, 1e-9, lambda done: None)
+    assert len(calls) == levels and sum(calls) == 800
+    assert np.all(result[0] == 2.0)
+    for got, wanted in zip(result, expected, strict=True):
+        assert np.array_equal(got, wanted)
+
+
 def solved_on_straight_banks():
     """:func:`solve` of samples every half unit along a straight bank, facing a parallel bank 4 units away that
     runs backwards in unit segments; each disk touches the far bank at ``t = 2`` above its sample, at an

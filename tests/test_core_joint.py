@@ -11,7 +11,8 @@ alone:
   the final simplification between equally good vertices: ends equal, lines within the tolerance;
 - features overlapping in space (the same place in the joint frame before their shift) never see each other;
 - features of very different extents are traced in different groups, each group within the documented
-  extent ratio and segment budget.
+  extent ratio and segment budget; groups are traced together (their frames overlapping) within the segment
+  budget, each feature's points exactly those its group gets traced alone.
 """
 
 import numpy as np
@@ -19,7 +20,14 @@ import pytest
 import shapely
 
 from incircu_plugin.core import default_tolerance, split_polygon
-from incircu_plugin.core.adaptive import JOINT_EXTENT_RATIO, JOINT_SEGMENTS, _joint_groups
+from incircu_plugin.core.adaptive import (
+    JOINT_EXTENT_RATIO,
+    JOINT_SEGMENTS,
+    _joint_batches,
+    _joint_groups,
+    _trace_batch,
+    trace_together,
+)
 from incircu_plugin.core.chains import orient_bank_lines
 from incircu_plugin.core.engine import centerline_steps
 from incircu_plugin.core.steps import run_alone, run_together
@@ -119,3 +127,34 @@ def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budg
         sizes = [requests[i].extent for i in group]
         assert max(sizes) <= JOINT_EXTENT_RATIO * min(sizes)
         assert sum(requests[i].segment_count for i in group) <= JOINT_SEGMENTS or len(group) == 1
+
+
+def test_joint_batches_pack_consecutive_groups_within_the_segment_budget():
+    class Request:
+        def __init__(self, segments):
+            self.segment_count = segments
+
+    sizes = [10, JOINT_SEGMENTS // 2, JOINT_SEGMENTS // 2, 5, JOINT_SEGMENTS + 1, 7, 8]
+    requests = [Request(size) for size in sizes]
+    groups = [[0, 1], [2], [3], [4], [5], [6]]
+    batches = _joint_batches(requests, groups)
+    assert [group for batch in batches for group in batch] == groups
+    assert batches == [[[0, 1]], [[2], [3]], [[4]], [[5], [6]]]
+    for batch in batches:
+        total = sum(requests[index].segment_count for group in batch for index in group)
+        assert total <= JOINT_SEGMENTS or len(batch) == 1
+
+
+def test_groups_traced_together_give_each_feature_the_points_of_its_group_alone():
+    # One shape at scales 1, 1/30 and 30 (each in its local frame about the origin) and a second shape at
+    # scale 1: three groups whose frames overlap in the joint tracing (the single features are not shifted,
+    # the pair only half a cell). Traced in one batch, every feature's axis points are bit for bit those of
+    # its group traced on its own.
+    requests = [next(centerline_steps(*chains)) for _, chains, _, _, _ in closed_jobs()[:4]]
+    groups = _joint_groups(requests)
+    assert sorted(len(group) for group in groups) == [1, 1, 2] and len(_joint_batches(requests, groups)) == 1
+    together = trace_together(requests, lambda fraction: None)
+    for group in groups:
+        for index, alone in zip(group, _trace_batch(requests, [group], lambda fraction: None)):
+            for name in ("centre", "radius", "foot_a", "foot_b", "position_a", "position_b"):
+                np.testing.assert_array_equal(getattr(together[index], name), getattr(alone, name))

@@ -690,25 +690,26 @@ class _Tracer:
         return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
 
     def _solve_initial(self, samples, given_site, given_status, report):
-        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved),
-        then the middles after them (``given_status`` for the ends). Returns ``t``, status and canonical site
-        of every sample."""
+        """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved;
+        ``given_status`` for the ends) and the middles after them, together in the order of their points along
+        the chains (one coarse-to-fine solution). Returns ``t``, status and canonical site of every sample."""
         count = len(given_site)
-        solved = np.flatnonzero(given_site < 0)
         middles = np.arange(count, len(samples.chain))
+        index = np.concatenate([np.flatnonzero(given_site < 0), middles])
+        # By chain, then position: a middle goes between its edge's two ends (a stable sort keeps their order).
+        index = index[np.lexsort((samples.position[index], samples.chain[index]))]
         t = np.zeros(len(samples.chain))
         site = np.concatenate([given_site, np.full(len(middles), -1)])
         status = np.concatenate([given_status, np.full(len(middles), SKIPPED, dtype=np.int8)])
-        for index, begin, share in ((solved, 0.0, 0.6), (middles, 0.6, 0.2)):
-            t[index], status[index], _, _, site[index] = _solve_all(
-                samples,
-                index,
-                self.boundary,
-                0.625 * self.width,
-                self.max_t,
-                self.min_t,
-                lambda done, begin=begin, share=share: report(begin + share * done),
-            )
+        t[index], status[index], _, _, site[index] = _solve_all(
+            samples,
+            index,
+            self.boundary,
+            0.625 * self.width,
+            self.max_t,
+            self.min_t,
+            lambda done: report(0.8 * done),
+        )
         return t, status, self.sites.canonical(site)
 
     def _corner_samples(self, span):
@@ -928,24 +929,29 @@ class _Tracer:
         row = (mixed & ~found & (rank >= 0) & (step != 0)).nonzero()[0]
         if len(row) == 0:
             return np.empty(0, dtype=int), np.empty(0, dtype=int)
-        owner, k = ranges(np.full(len(row), MAX_PREDICTED))
-        owner = row[owner]
-        candidate_rank = rank[owner] + step[owner] * k
+        row_of, k = ranges(np.full(len(row), MAX_PREDICTED))
+        candidate_rank = rank[row[row_of]] + step[row[row_of]] * k
         valid = (candidate_rank >= 0) & (candidate_rank < len(sites.sequence))
         candidate = sites.sequence[np.clip(candidate_rank, 0, len(sites.sequence) - 1)]
-        valid &= sites.chain(candidate) == chain[owner]
-        other_site = np.where(other_first, intervals.site0, intervals.site1)[owner]
-        middle = 0.5 * (intervals.u0 + intervals.u1)[owner]
+        valid &= sites.chain(candidate) == chain[row[row_of]]
+        # Only the candidates on the own chain's sequence; the other site's terms once per interval.
+        valid = valid.nonzero()[0]
+        row_of, k, candidate = row_of[valid], k[valid], candidate[valid]
+        owner = row[row_of]
+        other_site = np.where(other_first, intervals.site0, intervals.site1)[row]
+        middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(
-            spans, np.tile(span[owner], 2), np.concatenate([other_site, candidate]), np.tile(middle, 2)
+            spans,
+            np.concatenate([span[row], span[owner]]),
+            np.concatenate([other_site, candidate]),
+            np.concatenate([middle[row], middle[owner]]),
         )
-        count = len(owner)
         u, radius, inside = self._pair_events(
-            intervals.subset(owner), [x[:count] for x in terms], [x[count:] for x in terms]
+            intervals.subset(owner), [x[row_of] for x in terms], [x[len(row) :] for x in terms]
         )
         inside &= self._on_run(span[owner], u, radius, candidate)
         # Nearest ``A``'s end: the smallest u when ``A`` is at u0, the largest when at u1.
-        key = np.where(inside & valid, np.where(other_first[owner], u, -u), np.inf)
+        key = np.where(inside, np.where(other_first[owner], u, -u), np.inf)
         best = np.full(len(intervals.span), np.inf)
         np.minimum.at(best, owner, key)
         chosen = ((key == best[owner]) & np.isfinite(key)).nonzero()[0]
@@ -1286,19 +1292,21 @@ JOINT_SEGMENTS = 1 << 17
 def trace_together(requests, report):
     """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
 
-    Requests of similar extent are placed side by side in one frame and traced in one set of vectorised
-    rounds (contacts are only ever sought within a feature's own pair of chains); each feature's points
-    are shifted back. ``report(fraction)`` is called as the groups are done. Returns a list of
-    :class:`.contacts.AxisPoints` in the requests' order.
+    Requests of similar extent are placed side by side in one frame (a group, :func:`_joint_groups`); groups
+    are traced together in one set of vectorised rounds up to ``JOINT_SEGMENTS`` (:func:`_joint_batches`: their
+    frames overlap, which changes nothing since contacts are only ever sought within a feature's own pair of
+    chains); each feature's points are shifted back. ``report(fraction)`` is called as the batches are done.
+    Returns a list of :class:`.contacts.AxisPoints` in the requests' order.
     """
     results = [None] * len(requests)
-    groups = _joint_groups(requests)
-    for done, group in enumerate(groups):
-        part = lambda fraction, begin=done: report((begin + fraction) / len(groups))
-        if len(group) == 1:
-            results[group[0]] = trace_one(requests[group[0]], part)
+    batches = _joint_batches(requests, _joint_groups(requests))
+    for done, batch in enumerate(batches):
+        part = lambda fraction, begin=done: report((begin + fraction) / len(batches))
+        if len(batch) == 1 and len(batch[0]) == 1:
+            results[batch[0][0]] = trace_one(requests[batch[0][0]], part)
         else:
-            for index, points in zip(group, _trace_group([requests[i] for i in group], part)):
+            indices = [index for group in batch for index in group]
+            for index, points in zip(indices, _trace_batch(requests, batch, part)):
                 results[index] = points
     return results
 
@@ -1319,12 +1327,33 @@ def _joint_groups(requests):
     return groups + [current] if current else groups
 
 
-def _trace_group(requests, report):
-    """Trace ``requests`` in one frame: each shifted to its cell of a square grid; their points shifted back."""
+def _joint_batches(requests, groups):
+    """Consecutive ``groups`` (lists of request indices) packed into batches of at most ``JOINT_SEGMENTS``
+    segments (a group of more is a batch of its own)."""
+    batches, current, segments = [], [], 0
+    for group in groups:
+        size = sum(requests[index].segment_count for index in group)
+        if current and segments + size > JOINT_SEGMENTS:
+            batches.append(current)
+            current, segments = [], 0
+        current.append(group)
+        segments += size
+    return batches + [current] if current else batches
+
+
+def _group_offsets(requests):
+    """Shift of each of ``requests`` (one group) to its cell of a square grid centred on the origin, CRS units."""
     columns = int(np.ceil(np.sqrt(len(requests))))
     cell = JOINT_CELL * max(request.extent for request in requests)
     rank = np.arange(len(requests))
-    offsets = cell * (np.stack([rank % columns, rank // columns], axis=1) - 0.5 * (columns - 1))
+    return cell * (np.stack([rank % columns, rank // columns], axis=1) - 0.5 * (columns - 1))
+
+
+def _trace_batch(requests, batch, report):
+    """Trace the groups of ``batch`` in one tracing: each group's requests shifted to its grid
+    (:func:`_group_offsets`), their points shifted back; returns them in the order of the batch's requests."""
+    offsets = np.concatenate([_group_offsets([requests[index] for index in group]) for group in batch])
+    requests = [requests[index] for group in batch for index in group]
     chains = [chain + offset for request, offset in zip(requests, offsets) for chain in request.chains]
     sides = [side for request in requests for side in request.sides]
     per_chain = [

@@ -659,12 +659,14 @@ def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
 
 
 def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
-    """Settle ``index`` (sorted by position) from coarse to fine; ``trial_radius`` as ``max_t`` in :func:`solve`.
+    """Settle ``index`` (sorted by chain, then position) from coarse to fine; ``trial_radius`` as ``max_t`` in
+    :func:`solve`.
 
-    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th in a small chunk; all
-    at once up to ``COARSE_STRIDE ** 2`` samples) is solved first from a global trial radius, then each finer
-    level from trial radii interpolated between the coarser levels' first contacts: a trial close to the
-    answer keeps the candidate boxes tight where the width varies. ``report(done)`` is called after each level with the number of samples settled.
+    Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th when the features, pairs of
+    chains, have fewer samples each; all at once up to ``COARSE_STRIDE ** 2`` samples per feature) is solved
+    first from a global trial radius, then each finer level from trial radii interpolated between the coarser
+    levels' first contacts: a trial close to the answer keeps the candidate boxes tight where the width varies.
+    ``report(done)`` is called after each level with the number of samples settled.
     """
     count = len(index)
     trial_radius = per_sample(trial_radius, samples.chain[index])
@@ -675,11 +677,16 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     site = np.empty(count, dtype=int)
     # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
     along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
-    if count > COARSE_STRIDE ** (COARSE_LEVELS + 1):
+    # Levels by the samples per feature (pair of chains; sorted by chain, each feature's samples are a run):
+    # a joint tracing's chunk holds many small features, whose coarse levels would hold a few samples each,
+    # cost rounds and interpolate across features (the layer of 400 rivers: 20 ms of 240 ms faster this way).
+    feature = samples.chain[index] >> 1
+    per_feature = count / (np.count_nonzero(feature[1:] != feature[:-1]) + 1) if count else 0
+    if per_feature > COARSE_STRIDE ** (COARSE_LEVELS + 1):
         stride = COARSE_STRIDE**COARSE_LEVELS
     else:
         # A few samples: one level (the coarse one would cost a whole round of overhead to save little).
-        stride = COARSE_STRIDE if count > COARSE_STRIDE**2 else 1
+        stride = COARSE_STRIDE if per_feature > COARSE_STRIDE**2 else 1
     while stride >= 1:
         level = np.zeros(count, dtype=bool)
         level[::stride] = True
