@@ -205,10 +205,14 @@ def _geometry(boundary, sides):
     """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
     side = np.asarray(sides, dtype=float)[boundary.chain_id]
     unit = boundary.unit
-    normal = side[:, None] * left_normal(unit)
+    normal = left_normal(unit)
+    normal *= side[:, None]
     joint = np.flatnonzero(~boundary.last_of_chain)
-    before, after = rows(unit, joint), rows(unit, joint + 1)
+    # The turn at every pair of consecutive segments (views, no gathered copies), then at the junctions: each
+    # row is computed from its own two units, so the same floats as from the junctions' rows alone.
+    before, after = unit[:-1], unit[1:]
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
+    turn = turn[joint]
     signed = side[joint] * turn
     kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)

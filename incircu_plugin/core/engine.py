@@ -27,7 +27,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
-from .contacts import Boundary
+from .contacts import Boundary, rows
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
@@ -220,7 +220,10 @@ def _first_of_each_centre(centres, resolution):
     cells = cells[order]
     first = np.ones(len(order), dtype=bool)
     first[1:] = cells[1:] != cells[:-1]
-    return np.sort(order[first])
+    # The kept indices in ascending order: marked in a mask (linear) rather than sorted.
+    kept = np.zeros(len(order), dtype=bool)
+    kept[order[first]] = True
+    return np.flatnonzero(kept)
 
 
 def _fewest_vertices(points, tolerance):
@@ -242,22 +245,22 @@ def _fewest_vertices(points, tolerance):
         piece = np.repeat(np.arange(len(starts)), sizes)
         # Each piece after the first starts again at the point the one before it ends at.
         index = np.arange(len(piece)) - piece
-        pieces = shapely.linestrings(_with_index(points[index], index), indices=piece)
+        pieces = shapely.linestrings(_with_index(points, index), indices=piece)
     kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
     keep[kept[:, 2].astype(np.intp)] = True
     if not shapely.is_simple(shapely.linestrings(points[keep])):
-        indexed = _with_index(points, np.arange(len(points)))
-        line = shapely.simplify(shapely.linestrings(indexed), tolerance, preserve_topology=True)
+        indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
+        line = shapely.simplify(indexed, tolerance, preserve_topology=True)
         keep[:] = False
         keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
     return keep
 
 
 def _with_index(points, index):
-    """The points (an ``(n, 2)`` array, CRS units) with ``index`` (their indices) as a third column."""
-    indexed = np.empty((len(points), 3))
-    indexed[:, :2] = points
+    """The points ``index`` of ``points`` (an ``(n, 2)`` array, CRS units), with their index as a third column."""
+    indexed = np.empty((len(index), 3))
+    indexed[:, :2] = rows(points, index)
     indexed[:, 2] = index
     return indexed
 
@@ -313,7 +316,11 @@ def _line_ends(chains, closed):
 
 def _with_ends(values, order, ends):
     """``values[order]`` (an array of the axis points) between its two ``ends`` (an array of two rows)."""
-    return np.concatenate([ends[:1], values[order], ends[1:]])
+    joined = np.empty((len(order) + 2,) + values.shape[1:])
+    joined[0], joined[-1] = ends
+    # Gathered straight into place; "clip" (the indices are valid) lets take skip its buffered copy.
+    values.take(order, axis=0, out=joined[1:-1], mode="clip")
+    return joined
 
 
 def _clean_chains(c1, c2):
@@ -483,7 +490,7 @@ def _line_through(points, frame, simplification):
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
     order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    order = order[_first_of_each_centre(points.centre[order], resolution)]
+    order = order[_first_of_each_centre(rows(points.centre, order), resolution)]
     ends = _line_ends(frame.chains, frame.closed)
     centre = _with_ends(points.centre, order, ends[0])
     keep = _distinct(centre, resolution)
@@ -491,7 +498,7 @@ def _line_through(points, frame, simplification):
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
         # meet the axis, so a straight channel keeps vertices that carry its width.
         kept = np.flatnonzero(keep)
-        inner = _fewest_vertices(centre[kept[1:-1]], simplification)
+        inner = _fewest_vertices(rows(centre, kept[1:-1]), simplification)
         keep[kept[2:-2]] = inner[1:-1]
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
