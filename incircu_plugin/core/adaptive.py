@@ -63,6 +63,7 @@ from .contacts import (
     Boundary,
     Samples,
     left_normal,
+    put_rows,
     ranges,
     rows,
     solve,
@@ -305,7 +306,8 @@ class _Sites:
         row = on_vertex.nonzero()[0]
         if len(row):
             vertex = site[row] - b.segment_count
-            foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
+            put_rows(foot, row, rows(b.vertex, vertex))
+            position[row] = b.vertex_position[vertex]
             del vertex
         row = (~on_vertex).nonzero()[0]
         del on_vertex
@@ -319,7 +321,7 @@ class _Sites:
         # start + along * unit, in place.
         unit *= along[:, None]
         unit += start
-        foot[row] = unit
+        put_rows(foot, row, unit)
         position[row] = segment_position + along
         return foot, position
 
@@ -653,7 +655,7 @@ class _Tracer:
             t[chunk], status[chunk], _, _, site[chunk] = solve(
                 probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
-            centre[chunk] = probes.point + t[chunk, None] * probes.direction
+            put_rows(centre, chunk, probes.point + t[chunk, None] * probes.direction)
         return t, status, self.sites.canonical(site), centre
 
     def _initial(self, report):
@@ -781,7 +783,7 @@ class _Tracer:
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
         inside &= intervals.u1[before] - along > intervals.u0[before]
-        centre = corners.point[inside] + t[inside, None] * corners.direction[inside]
+        centre = corners.point.compress(inside, axis=0) + t[inside, None] * corners.direction.compress(inside, axis=0)
         after, before = after[inside], before[inside]
         along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
         span = np.concatenate([intervals.span[after], intervals.span[before]])
@@ -1116,7 +1118,9 @@ class _Tracer:
         self.boundary.release_index()
         store, self.store = self.store, {}
         index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
-        span, u, t, centre, other_site = (store[name][index] for name in ("span", "u", "t", "centre", "other_site"))
+        span, u, t, centre, other_site = (
+            rows(store[name], index) for name in ("span", "u", "t", "centre", "other_site")
+        )
         del store, index
         foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2))
         position_a, position_b = np.empty(len(t)), np.empty(len(t))

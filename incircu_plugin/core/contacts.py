@@ -90,6 +90,9 @@ class ArrayRecord:
         columns = (getattr(self, name) for name in _field_names(type(self)))
         if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
             return type(self)(*(rows(column, index) for column in columns))
+        if isinstance(index, np.ndarray) and index.dtype == bool:
+            # compress: numpy's indexing of a two-column array by a mask is several times slower.
+            return type(self)(*(column.compress(index, axis=0) for column in columns))
         return type(self)(*(column[index] for column in columns))
 
     @classmethod
@@ -331,6 +334,13 @@ def rows(array, index):
     indexing copies the rows of a two-column array several times slower; the method skips the Python layers
     of :func:`numpy.take`, which small inputs, gathering a few rows thousands of times, feel)."""
     return array.take(index, axis=0)
+
+
+def put_rows(array, index, values):
+    """``array[index] = values`` for a C-contiguous float array ``array`` of shape (n, 2), an integer array
+    ``index`` and ``values`` of shape (m, 2): each row written as one complex number (numpy's indexed assignment
+    of a two-column array's rows is about ten times slower; the bytes written are the same)."""
+    array.view(np.complex128)[:, 0][index] = np.ascontiguousarray(values, dtype=float).view(np.complex128)[:, 0]
 
 
 def ranges(counts):

@@ -249,7 +249,7 @@ def _fewest_vertices(points, tolerance):
     kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
     keep[kept[:, 2].astype(np.intp)] = True
-    if not shapely.is_simple(shapely.linestrings(points[keep])):
+    if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
         indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
         line = shapely.simplify(indexed, tolerance, preserve_topology=True)
         keep[:] = False
@@ -507,4 +507,4 @@ def _line_through(points, frame, simplification):
     radius, foot_a, foot_b = (
         _with_ends(values, order, end) for values, end in zip((points.radius, points.foot_a, points.foot_b), ends[1:])
     )
-    return centre[keep], radius, foot_a, foot_b
+    return centre.compress(keep, axis=0), radius, foot_a, foot_b
