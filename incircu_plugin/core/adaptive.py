@@ -136,7 +136,7 @@ class _Spans:
         direction = rows(self.normal, span)
         on_fan = (self.kind[span] != EDGE).nonzero()[0]
         angle, fan = u[on_fan, None], span[on_fan]
-        direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
+        put_rows(direction, on_fan, np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan))
         return direction
 
     def position_at(self, span, u):
@@ -247,11 +247,11 @@ def _straight_runs(kinds, boundary):
     """For each segment, the first segment of its run of segments on one line (the site it stands for), and
     the arc length at the run's end."""
     # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
-    segment = np.arange(boundary.segment_count)
+    segment = np.arange(boundary.segment_count, dtype=np.int32)
     starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
-    last = np.minimum.accumulate(np.where(ends_run, segment, boundary.segment_count)[::-1])[::-1]
+    last = np.minimum.accumulate(np.where(ends_run, segment, np.int32(boundary.segment_count))[::-1])[::-1]
     return first, boundary.segment_end_position[last]
 
 
@@ -261,7 +261,8 @@ def _site_sequence(boundary, kinds, line_of):
     A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
     that ends it, and its end vertex: every site a disk in the region can touch first. A convex vertex never
     is one: next to it the region is a wedge narrower than a half-plane, and a disk inside a wedge touching
-    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1.
+    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1. Both int32
+    (sites and ranks fit it, see :class:`.contacts.Boundary`).
     """
     count = boundary.segment_count
     segment = np.flatnonzero(line_of == np.arange(count))
@@ -269,8 +270,8 @@ def _site_sequence(boundary, kinds, line_of):
     vertex = np.flatnonzero((kinds < 0) | chain_end)
     # Vertex ``g + chain`` starts segment ``g``: keys 2g (vertex), 2g + 1 (segment) follow the chains.
     keys = np.concatenate([2 * segment + 1, 2 * (vertex - boundary.vertex_chain[vertex])])
-    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")]
-    rank = np.full(count + len(boundary.vertex), -1)
+    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")].astype(np.int32)
+    rank = np.full(count + len(boundary.vertex), -1, dtype=np.int32)
     rank[sequence] = np.arange(len(sequence))
     rank[:count] = rank[line_of]
     return sequence, rank
@@ -361,14 +362,18 @@ class _Sites:
     def _segment_terms(self, spans, span, segment, u_ref, on_edge):
         """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
         b = self.boundary
-        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        # The gathered rows are the function's own copies: the differences are taken in place.
+        offset, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        offset -= rows(b.start, segment)
         across = left_normal(rows(b.unit, segment))
-        height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
+        height = np.einsum("ij,ij->i", offset, across)
+        del offset
         if on_edge:
             # The signed height over the site's line changes by `slope` per unit of u.
             slope = np.einsum("ij,ij->i", unit, across)
             side = np.where(height + u_ref * slope < 0, -1.0, 1.0)
-            gap = normal - side[:, None] * across
+            across *= side[:, None]
+            gap = np.subtract(normal, across, out=normal)
             closing = 0.5 * np.einsum("ij,ij->i", gap, gap)
             return side * height / closing, side * slope / closing, np.zeros(len(span))
         # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.

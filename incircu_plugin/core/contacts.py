@@ -672,9 +672,11 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
             trial = np.maximum(1.05 * estimate / samples.scale[index[level]], SMALLEST_TRIAL * trial_radius[level])
         else:
             trial = trial_radius[level]
-        contact_t[level], status[level], contact[level], position[level], site[level] = solve(
+        level = np.flatnonzero(level)
+        contact_t[level], status[level], level_contact, position[level], site[level] = solve(
             samples, index[level], boundary, trial, max_t, min_t
         )
+        put_rows(contact, level, level_contact)
         report(count - np.isnan(contact_t).sum())
         stride //= COARSE_STRIDE
     return contact_t, status, contact, position, site
