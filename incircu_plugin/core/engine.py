@@ -55,6 +55,10 @@ SIMPLIFY_SHARE = 0.5
 #: lines (a million points: 1.3 s in one piece, 0.1 s in pieces of this size).
 SIMPLIFY_PIECE = 32_768
 
+#: Pieces simplified in one GEOS call: their indexed coordinates (about 12 MiB) then reuse freed memory, where
+#: those of a million points at once (44 MiB) would take fresh pages every time.
+SIMPLIFY_BATCH = 16
+
 
 @dataclass(frozen=True)
 class CenterlineResult:
@@ -215,9 +219,11 @@ def _first_of_each_centre(centres, resolution):
     """
     # The cells as complex numbers sort by x, then y in one stable sort: the indices
     # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path.
-    cells = np.ascontiguousarray(np.round(centres / resolution)).view(np.complex128).ravel()
+    cells = np.divide(centres, resolution, order="C")
+    np.round(cells, out=cells)
+    cells = cells.view(np.complex128).ravel()
     order = np.argsort(cells, kind="stable")
-    cells = cells[order]
+    cells = cells.take(order)
     first = np.ones(len(order), dtype=bool)
     first[1:] = cells[1:] != cells[:-1]
     # The kept indices in ascending order: marked in a mask (linear) rather than sorted.
@@ -237,24 +243,38 @@ def _fewest_vertices(points, tolerance):
     """
     # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
     # keeps, so the kept ones are known without matching coordinates.
-    if len(points) <= SIMPLIFY_PIECE + 1:
-        pieces = shapely.linestrings(_with_index(points, np.arange(len(points))))
-    else:
-        starts = np.arange(0, len(points) - 1, SIMPLIFY_PIECE)
-        sizes = np.minimum(starts + SIMPLIFY_PIECE, len(points) - 1) - starts + 1
-        piece = np.repeat(np.arange(len(starts)), sizes)
-        # Each piece after the first starts again at the point the one before it ends at.
-        index = np.arange(len(piece)) - piece
-        pieces = shapely.linestrings(_with_index(points, index), indices=piece)
-    kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
-    keep[kept[:, 2].astype(np.intp)] = True
+    last = len(points) - 1
+    if last <= SIMPLIFY_PIECE:
+        _keep_simplified(keep, shapely.linestrings(_with_index(points, np.arange(len(points)))), tolerance)
+    else:
+        batch = SIMPLIFY_PIECE * SIMPLIFY_BATCH
+        for begin in range(0, last, batch):
+            _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
     if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
         indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
         line = shapely.simplify(indexed, tolerance, preserve_topology=True)
         keep[:] = False
         keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
     return keep
+
+
+def _pieces(points, begin, end):
+    """The line through ``points[begin : end + 1]`` as linestrings of ``SIMPLIFY_PIECE`` segments (the last one
+    shorter) that share their end vertices, each vertex with its index as its z."""
+    starts = np.arange(begin, end, SIMPLIFY_PIECE)
+    sizes = np.minimum(starts + SIMPLIFY_PIECE, end) - starts + 1
+    piece = np.repeat(np.arange(len(starts)), sizes)
+    # Each piece after the first starts again at the point the one before it ends at.
+    index = begin + np.arange(len(piece)) - piece
+    return shapely.linestrings(_with_index(points, index), indices=piece)
+
+
+def _keep_simplified(keep, lines, tolerance):
+    """Mark in ``keep`` the vertices that the Douglas-Peucker simplification of ``lines`` (their z: the vertices'
+    indices) to ``tolerance`` (CRS units) keeps."""
+    kept = shapely.get_coordinates(shapely.simplify(lines, tolerance, preserve_topology=False), include_z=True)
+    keep[kept[:, 2].astype(np.intp)] = True
 
 
 def _with_index(points, index):
