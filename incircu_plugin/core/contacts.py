@@ -168,9 +168,11 @@ class Boundary:
         end = rows(self.vertex, start_vertex + 1)
         del start_vertex
         self.low, self.high = np.minimum(self.start, end), np.maximum(self.start, end)
+        # The end points become the segments' vectors, then their units, in place.
         end -= self.start
         self.length = np.hypot(end[:, 0], end[:, 1])
-        self.unit = end / self.length[:, None]
+        end /= self.length[:, None]
+        self.unit = end
         self.mean_length = float(self.length.mean()) if count else 0.0
         del end
         # Coordinate columns as views (no copies).
