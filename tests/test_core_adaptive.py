@@ -115,6 +115,21 @@ def test_pieces_keep_their_ends_and_every_dropped_vertex_near_its_chord(monkeypa
         assert np.array_equal(points[keep], shapely.get_coordinates(plain))
 
 
+def test_the_pieces_are_the_same_in_any_batches(monkeypatch):
+    rng = np.random.default_rng(11)
+    points = np.cumsum(
+        np.abs(rng.normal(size=(1_001, 2))) * [1.0, 0.0] + rng.normal(size=(1_001, 2)) * [0.0, 1.0], axis=0
+    )
+    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", 40)
+    masks = []
+    for batch in (1, 3, 100):
+        monkeypatch.setattr(engine, "SIMPLIFY_BATCH", batch)
+        masks.append(engine._fewest_vertices(points, 0.5))
+    # 1000 segments: 25 pieces, in batches of 1, 3 (the last one shorter) or all at once.
+    assert masks[0][::40].all() and masks[0][-1]
+    assert np.array_equal(masks[0], masks[1]) and np.array_equal(masks[0], masks[2])
+
+
 def test_a_tighter_tolerance_gives_more_vertices_on_a_curved_axis():
     case = geometry_cases.annulus_sector(n=61)
     counts = [

@@ -23,10 +23,11 @@ from incircu_plugin.core.contacts import (
     Samples,
     _group_starts,
     first_contacts,
+    put_rows,
     solve,
     vertex_contact,
 )
-from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered
+from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered, _with_ends
 
 
 def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
@@ -221,6 +222,36 @@ def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_pred
 def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
     centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
     assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+    # The cells sort otherwise than the indices (1, 3, then 0 and 2): the kept indices still ascend.
+    centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
+    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+
+
+def test_put_rows_writes_the_rows_of_an_index_and_no_others():
+    array = np.arange(12.0).reshape(6, 2)
+    put_rows(array, np.array([4, 1]), np.array([[-1.0, -2.0], [-3.0, -4.0]]))
+    assert array.tolist() == [[0, 1], [-3, -4], [4, 5], [6, 7], [-1, -2], [10, 11]]
+    # Values that are not contiguous (a transposed array) are written row by row as well.
+    put_rows(array, np.array([0, 5]), np.array([[7.0, 8.0], [9.0, 10.0]]).T)
+    assert array[[0, 5]].tolist() == [[7, 9], [8, 10]]
+
+
+def test_subset_by_a_mask_is_subset_by_its_indices():
+    pairs, values = np.arange(20.0).reshape(10, 2), np.arange(10.0)
+    points = AxisPoints(pairs, values, pairs + 100.0, pairs + 200.0, values + 10.0, values + 20.0)
+    mask = np.arange(10) % 3 == 1
+    by_mask, by_index = points.subset(mask), points.subset(np.flatnonzero(mask))
+    for name in ("centre", "radius", "foot_a", "foot_b", "position_a", "position_b"):
+        assert getattr(by_mask, name).tolist() == getattr(by_index, name).tolist()
+        assert getattr(by_mask, name).shape == getattr(by_index, name).shape
+
+
+def test_with_ends_gathers_the_ordered_values_between_the_two_ends():
+    order = np.array([2, 0, 1])
+    centres = np.array([[0.0, 1.0], [2.0, 3.0], [4.0, 5.0]])
+    ends = np.array([[-1.0, -1.0], [9.0, 9.0]])
+    assert _with_ends(centres, order, ends).tolist() == [[-1, -1], [4, 5], [0, 1], [2, 3], [9, 9]]
+    assert _with_ends(np.array([7.0, 8.0, 9.0]), order, np.array([0.0, 1.0])).tolist() == [0, 9, 7, 8, 1]
 
 
 def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():

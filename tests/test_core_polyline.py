@@ -6,6 +6,7 @@ import shapely
 from shapely.geometry import LineString
 
 from incircu_plugin.core import polyline as polyline_module
+from incircu_plugin.core.chains import _nearest_entries
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.polyline import (
     CLUSTER_POINTS,
@@ -178,3 +179,12 @@ def test_counterclockwise_without_orient_polygons_equals_shapely_2_1(monkeypatch
     assert all(shapely.equals_exact(a, b, tolerance=0.0) for a, b in zip(fallback, expected))
     assert all(polygon.exterior.is_ccw for polygon in fallback)
     assert all(not ring.is_ccw for polygon in fallback for ring in polygon.interiors)
+
+
+def test_nearest_entries_are_those_of_the_broadcast_argmin_with_ties_to_the_first():
+    ascending = np.array([0.0, 1.0, 3.0, 3.5, 10.0])
+    # Below the first, on an entry, halfway (a tie: the first), nearer the next, beyond the last.
+    values = np.array([-2.0, 3.0, 2.0, 2.9, 3.25, 6.0, 7.0, 12.0])
+    expected = np.abs(ascending[:, None] - values).argmin(axis=0)
+    assert expected.tolist() == [0, 2, 1, 2, 2, 3, 4, 4]
+    assert _nearest_entries(ascending, values).tolist() == expected.tolist()

@@ -63,6 +63,7 @@ from .contacts import (
     Boundary,
     Samples,
     left_normal,
+    put_rows,
     ranges,
     rows,
     solve,
@@ -135,7 +136,7 @@ class _Spans:
         direction = rows(self.normal, span)
         on_fan = (self.kind[span] != EDGE).nonzero()[0]
         angle, fan = u[on_fan, None], span[on_fan]
-        direction[on_fan] = np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan)
+        put_rows(direction, on_fan, np.cos(angle) * rows(self.unit, fan) + np.sin(angle) * rows(direction, on_fan))
         return direction
 
     def position_at(self, span, u):
@@ -205,10 +206,14 @@ def _geometry(boundary, sides):
     """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
     side = np.asarray(sides, dtype=float)[boundary.chain_id]
     unit = boundary.unit
-    normal = side[:, None] * left_normal(unit)
+    normal = left_normal(unit)
+    normal *= side[:, None]
     joint = np.flatnonzero(~boundary.last_of_chain)
-    before, after = rows(unit, joint), rows(unit, joint + 1)
+    # The turn at every pair of consecutive segments (views, no gathered copies), then at the junctions: each
+    # row is computed from its own two units, so the same floats as from the junctions' rows alone.
+    before, after = unit[:-1], unit[1:]
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
+    turn = turn[joint]
     signed = side[joint] * turn
     kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
@@ -242,11 +247,11 @@ def _straight_runs(kinds, boundary):
     """For each segment, the first segment of its run of segments on one line (the site it stands for), and
     the arc length at the run's end."""
     # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
-    segment = np.arange(boundary.segment_count)
+    segment = np.arange(boundary.segment_count, dtype=np.int32)
     starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
-    last = np.minimum.accumulate(np.where(ends_run, segment, boundary.segment_count)[::-1])[::-1]
+    last = np.minimum.accumulate(np.where(ends_run, segment, np.int32(boundary.segment_count))[::-1])[::-1]
     return first, boundary.segment_end_position[last]
 
 
@@ -256,7 +261,8 @@ def _site_sequence(boundary, kinds, line_of):
     A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
     that ends it, and its end vertex: every site a disk in the region can touch first. A convex vertex never
     is one: next to it the region is a wedge narrower than a half-plane, and a disk inside a wedge touching
-    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1.
+    its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1. Both int32
+    (sites and ranks fit it, see :class:`.contacts.Boundary`).
     """
     count = boundary.segment_count
     segment = np.flatnonzero(line_of == np.arange(count))
@@ -264,8 +270,8 @@ def _site_sequence(boundary, kinds, line_of):
     vertex = np.flatnonzero((kinds < 0) | chain_end)
     # Vertex ``g + chain`` starts segment ``g``: keys 2g (vertex), 2g + 1 (segment) follow the chains.
     keys = np.concatenate([2 * segment + 1, 2 * (vertex - boundary.vertex_chain[vertex])])
-    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")]
-    rank = np.full(count + len(boundary.vertex), -1)
+    sequence = np.concatenate([segment, count + vertex])[np.argsort(keys, kind="stable")].astype(np.int32)
+    rank = np.full(count + len(boundary.vertex), -1, dtype=np.int32)
     rank[sequence] = np.arange(len(sequence))
     rank[:count] = rank[line_of]
     return sequence, rank
@@ -301,7 +307,8 @@ class _Sites:
         row = on_vertex.nonzero()[0]
         if len(row):
             vertex = site[row] - b.segment_count
-            foot[row], position[row] = rows(b.vertex, vertex), b.vertex_position[vertex]
+            put_rows(foot, row, rows(b.vertex, vertex))
+            position[row] = b.vertex_position[vertex]
             del vertex
         row = (~on_vertex).nonzero()[0]
         del on_vertex
@@ -315,7 +322,7 @@ class _Sites:
         # start + along * unit, in place.
         unit *= along[:, None]
         unit += start
-        foot[row] = unit
+        put_rows(foot, row, unit)
         position[row] = segment_position + along
         return foot, position
 
@@ -355,14 +362,18 @@ class _Sites:
     def _segment_terms(self, spans, span, segment, u_ref, on_edge):
         """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
         b = self.boundary
-        point, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        # The gathered rows are the function's own copies: the differences are taken in place.
+        offset, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        offset -= rows(b.start, segment)
         across = left_normal(rows(b.unit, segment))
-        height = np.einsum("ij,ij->i", point - rows(b.start, segment), across)
+        height = np.einsum("ij,ij->i", offset, across)
+        del offset
         if on_edge:
             # The signed height over the site's line changes by `slope` per unit of u.
             slope = np.einsum("ij,ij->i", unit, across)
             side = np.where(height + u_ref * slope < 0, -1.0, 1.0)
-            gap = normal - side[:, None] * across
+            across *= side[:, None]
+            gap = np.subtract(normal, across, out=normal)
             closing = 0.5 * np.einsum("ij,ij->i", gap, gap)
             return side * height / closing, side * slope / closing, np.zeros(len(span))
         # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
@@ -649,7 +660,7 @@ class _Tracer:
             t[chunk], status[chunk], _, _, site[chunk] = solve(
                 probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
-            centre[chunk] = probes.point + t[chunk, None] * probes.direction
+            put_rows(centre, chunk, probes.point + t[chunk, None] * probes.direction)
         return t, status, self.sites.canonical(site), centre
 
     def _initial(self, report):
@@ -779,7 +790,7 @@ class _Tracer:
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
         inside &= intervals.u1[before] - along > intervals.u0[before]
-        centre = corners.point[inside] + t[inside, None] * corners.direction[inside]
+        centre = corners.point.compress(inside, axis=0) + t[inside, None] * corners.direction.compress(inside, axis=0)
         after, before = after[inside], before[inside]
         along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
         span = np.concatenate([intervals.span[after], intervals.span[before]])
@@ -1119,7 +1130,9 @@ class _Tracer:
         self.boundary.release_index()
         store, self.store = self.store, {}
         index = np.flatnonzero(store["emit"][: self.count] & np.isfinite(store["t"][: self.count]))
-        span, u, t, centre, other_site = (store[name][index] for name in ("span", "u", "t", "centre", "other_site"))
+        span, u, t, centre, other_site = (
+            rows(store[name], index) for name in ("span", "u", "t", "centre", "other_site")
+        )
         del store, index
         foot_a, foot_b = np.empty((len(t), 2)), np.empty((len(t), 2))
         position_a, position_b = np.empty(len(t)), np.empty(len(t))

@@ -27,7 +27,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
-from .contacts import Boundary
+from .contacts import Boundary, rows
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
@@ -54,6 +54,10 @@ SIMPLIFY_SHARE = 0.5
 #: Most points simplified in one piece: GEOS's Douglas-Peucker slows down far more than linearly on longer
 #: lines (a million points: 1.3 s in one piece, 0.1 s in pieces of this size).
 SIMPLIFY_PIECE = 32_768
+
+#: Pieces simplified in one GEOS call: their indexed coordinates (about 12 MiB) then reuse freed memory, where
+#: those of a million points at once (44 MiB) would take fresh pages every time.
+SIMPLIFY_BATCH = 16
 
 
 @dataclass(frozen=True)
@@ -215,12 +219,17 @@ def _first_of_each_centre(centres, resolution):
     """
     # The cells as complex numbers sort by x, then y in one stable sort: the indices
     # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path.
-    cells = np.ascontiguousarray(np.round(centres / resolution)).view(np.complex128).ravel()
+    cells = np.divide(centres, resolution, order="C")
+    np.round(cells, out=cells)
+    cells = cells.view(np.complex128).ravel()
     order = np.argsort(cells, kind="stable")
-    cells = cells[order]
+    cells = cells.take(order)
     first = np.ones(len(order), dtype=bool)
     first[1:] = cells[1:] != cells[:-1]
-    return np.sort(order[first])
+    # The kept indices in ascending order: marked in a mask (linear) rather than sorted.
+    kept = np.zeros(len(order), dtype=bool)
+    kept[order[first]] = True
+    return np.flatnonzero(kept)
 
 
 def _fewest_vertices(points, tolerance):
@@ -234,30 +243,44 @@ def _fewest_vertices(points, tolerance):
     """
     # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
     # keeps, so the kept ones are known without matching coordinates.
-    if len(points) <= SIMPLIFY_PIECE + 1:
-        pieces = shapely.linestrings(_with_index(points, np.arange(len(points))))
-    else:
-        starts = np.arange(0, len(points) - 1, SIMPLIFY_PIECE)
-        sizes = np.minimum(starts + SIMPLIFY_PIECE, len(points) - 1) - starts + 1
-        piece = np.repeat(np.arange(len(starts)), sizes)
-        # Each piece after the first starts again at the point the one before it ends at.
-        index = np.arange(len(piece)) - piece
-        pieces = shapely.linestrings(_with_index(points[index], index), indices=piece)
-    kept = shapely.get_coordinates(shapely.simplify(pieces, tolerance, preserve_topology=False), include_z=True)
     keep = np.zeros(len(points), dtype=bool)
-    keep[kept[:, 2].astype(np.intp)] = True
-    if not shapely.is_simple(shapely.linestrings(points[keep])):
-        indexed = _with_index(points, np.arange(len(points)))
-        line = shapely.simplify(shapely.linestrings(indexed), tolerance, preserve_topology=True)
+    last = len(points) - 1
+    if last <= SIMPLIFY_PIECE:
+        _keep_simplified(keep, shapely.linestrings(_with_index(points, np.arange(len(points)))), tolerance)
+    else:
+        batch = SIMPLIFY_PIECE * SIMPLIFY_BATCH
+        for begin in range(0, last, batch):
+            _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
+    if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
+        indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
+        line = shapely.simplify(indexed, tolerance, preserve_topology=True)
         keep[:] = False
         keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
     return keep
 
 
+def _pieces(points, begin, end):
+    """The line through ``points[begin : end + 1]`` as linestrings of ``SIMPLIFY_PIECE`` segments (the last one
+    shorter) that share their end vertices, each vertex with its index as its z."""
+    starts = np.arange(begin, end, SIMPLIFY_PIECE)
+    sizes = np.minimum(starts + SIMPLIFY_PIECE, end) - starts + 1
+    piece = np.repeat(np.arange(len(starts)), sizes)
+    # Each piece after the first starts again at the point the one before it ends at.
+    index = begin + np.arange(len(piece)) - piece
+    return shapely.linestrings(_with_index(points, index), indices=piece)
+
+
+def _keep_simplified(keep, lines, tolerance):
+    """Mark in ``keep`` the vertices that the Douglas-Peucker simplification of ``lines`` (their z: the vertices'
+    indices) to ``tolerance`` (CRS units) keeps."""
+    kept = shapely.get_coordinates(shapely.simplify(lines, tolerance, preserve_topology=False), include_z=True)
+    keep[kept[:, 2].astype(np.intp)] = True
+
+
 def _with_index(points, index):
-    """The points (an ``(n, 2)`` array, CRS units) with ``index`` (their indices) as a third column."""
-    indexed = np.empty((len(points), 3))
-    indexed[:, :2] = points
+    """The points ``index`` of ``points`` (an ``(n, 2)`` array, CRS units), with their index as a third column."""
+    indexed = np.empty((len(index), 3))
+    indexed[:, :2] = rows(points, index)
     indexed[:, 2] = index
     return indexed
 
@@ -313,7 +336,11 @@ def _line_ends(chains, closed):
 
 def _with_ends(values, order, ends):
     """``values[order]`` (an array of the axis points) between its two ``ends`` (an array of two rows)."""
-    return np.concatenate([ends[:1], values[order], ends[1:]])
+    joined = np.empty((len(order) + 2,) + values.shape[1:])
+    joined[0], joined[-1] = ends
+    # Gathered straight into place; "clip" (the indices are valid) lets take skip its buffered copy.
+    values.take(order, axis=0, out=joined[1:-1], mode="clip")
+    return joined
 
 
 def _clean_chains(c1, c2):
@@ -483,7 +510,7 @@ def _line_through(points, frame, simplification):
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
     order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    order = order[_first_of_each_centre(points.centre[order], resolution)]
+    order = order[_first_of_each_centre(rows(points.centre, order), resolution)]
     ends = _line_ends(frame.chains, frame.closed)
     centre = _with_ends(points.centre, order, ends[0])
     keep = _distinct(centre, resolution)
@@ -491,7 +518,7 @@ def _line_through(points, frame, simplification):
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
         # meet the axis, so a straight channel keeps vertices that carry its width.
         kept = np.flatnonzero(keep)
-        inner = _fewest_vertices(centre[kept[1:-1]], simplification)
+        inner = _fewest_vertices(rows(centre, kept[1:-1]), simplification)
         keep[kept[2:-2]] = inner[1:-1]
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
@@ -500,4 +527,4 @@ def _line_through(points, frame, simplification):
     radius, foot_a, foot_b = (
         _with_ends(values, order, end) for values, end in zip((points.radius, points.foot_a, points.foot_b), ends[1:])
     )
-    return centre[keep], radius, foot_a, foot_b
+    return centre.compress(keep, axis=0), radius, foot_a, foot_b
