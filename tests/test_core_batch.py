@@ -362,11 +362,11 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
     # frame without shifts (features overlap, contacts stay within each feature), so every bit must agree.
     cases = tie_cases()
     expected = [exactly(polygon_centerline(polygon, ends)) for _, polygon, ends in cases]
-    for all_pairs, single_index in ((1 << 62, contacts.SINGLE_INDEX), (0, contacts.SINGLE_INDEX), (0, 0)):
+    for all_pairs, index_run in ((1 << 62, contacts.INDEX_RUN), (0, contacts.INDEX_RUN), (0, 1)):
         monkeypatch.setattr(contacts, "ALL_PAIRS", all_pairs)
-        monkeypatch.setattr(contacts, "SINGLE_INDEX", single_index)
+        monkeypatch.setattr(contacts, "INDEX_RUN", index_run)
         for (name, polygon, ends), bits in zip(cases, expected, strict=True):
-            assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, single_index)
+            assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, index_run)
     monkeypatch.undo()
     monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
     order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)

@@ -16,7 +16,6 @@ from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_station
 from incircu_plugin.core.contacts import (
     CLEAR,
     QUERY_GROUP,
-    SINGLE_INDEX,
     SKIPPED,
     AxisPoints,
     Boundary,
@@ -103,20 +102,19 @@ def test_a_segment_starts_at_its_start_vertex_on_every_chain():
     assert np.array_equal(boundary.end(segment), expected_end)
 
 
-def test_grouped_candidates_are_each_boxs_own_hits_in_the_order_of_its_own_query():
-    # Two zigzag chains of more than SINGLE_INDEX segments in all, the second running backwards (the index
-    # holds runs of segments, queried with groups of consecutive boxes, and reports its hits in its own
-    # order): every box gets exactly the segments whose bounding box meets it, boxes in order, each box's
-    # segments in the order a query with that box alone reports them.
+def test_grouped_candidates_are_exactly_the_segments_whose_boxes_meet_each_box():
+    # Two zigzag chains, the second running backwards, with a short last run of segments (the grid holds runs
+    # of segments, queried with groups of consecutive boxes): every box gets exactly the segments whose
+    # bounding box meets it, each once, boxes in order, whatever group it was queried in.
     rng = np.random.default_rng(7)
-    size = SINGLE_INDEX // 2 + 1001
+    size = 20_002
     x = np.arange(size, dtype=float)
     chains = [
         np.stack([x, rng.uniform(0.0, 3.0, size)], axis=1),
         np.stack([x[::-1], rng.uniform(6.0, 9.0, size)], axis=1),
     ]
     boundary = Boundary(chains)
-    assert boundary.index_run > 1
+    assert boundary.segment_count % contacts.INDEX_RUN
     # Overlapping boxes along the chains, then boxes far apart, then overlapping ones again (odd count).
     centre = np.concatenate([np.linspace(100.0, 130.0, 23), rng.uniform(0.0, size, 9), np.linspace(5000.0, 5040.0, 17)])
     centre = np.stack([centre, rng.uniform(0.0, 9.0, len(centre))], axis=1)
@@ -129,7 +127,44 @@ def test_grouped_candidates_are_each_boxs_own_hits_in_the_order_of_its_own_query
         meets &= (boundary.low_y <= high[index, 1]) & (boundary.high_y >= low[index, 1])
         alone = boundary.candidates(low[index : index + 1], high[index : index + 1])[1]
         assert np.array_equal(np.sort(alone), np.flatnonzero(meets))
-        assert np.array_equal(segment[box == index], alone)
+        assert np.array_equal(np.sort(segment[box == index]), np.flatnonzero(meets))
+
+
+def test_a_box_grid_lists_every_meeting_pair_once_whatever_the_boxes():
+    # Boxes on integer corners whose largest sides (points, thin boxes, squares, four long ones) average 2: the
+    # cells, of that side or a power of two times it from the lowest corner 0, have borders on even
+    # coordinates, where many corners of boxes and query boxes lie.
+    rng = np.random.default_rng(3)
+    side = np.array([[0.0, 0.0]] * 100 + [[3.0, 0.0]] * 100 + [[2.0, 2.0]] * 96 + [[50, 1], [1, 40], [10, 10], [8, 0]])
+    low = rng.integers(0, 40, (len(side), 2)).astype(float)
+    low[0] = 0.0
+    high = low + side
+    grid = contacts.BoxGrid(low, high)
+    assert np.array_equal(grid.origin, [0.0, 0.0]) and grid.size in (2.0, 4.0, 8.0)
+    assert np.mean(low % grid.size == 0.0) > 0.2
+    # Query boxes on integer corners (points among them), and a huge one, one across the grid, one outside it.
+    query_low = rng.integers(-5, 95, (300, 2)).astype(float)
+    query_high = query_low + rng.integers(0, 5, (300, 2))
+    query_low = np.concatenate([query_low, [[-1e300, -1e300], [-50.0, 10.0], [200.0, 10.0]]])
+    query_high = np.concatenate([query_high, [[1e300, 1e300], [500.0, 12.0], [220.0, 12.0]]])
+    query, box = grid.query(query_low, query_high)
+    assert np.all(np.diff(query) >= 0)
+    pair = query * len(low) + box
+    assert len(np.unique(pair)) == len(pair)
+    meets = (low[:, 0] <= query_high[:, 0, None]) & (high[:, 0] >= query_low[:, 0, None])
+    meets &= (low[:, 1] <= query_high[:, 1, None]) & (high[:, 1] >= query_low[:, 1, None])
+    assert np.all(np.isin(np.flatnonzero(meets), pair))
+    assert np.all(meets[-3]) and np.any(meets[-2]) and not np.any(meets[-1])
+    assert len(grid.query(query_low[:0], query_high[:0])[0]) == 0
+
+
+def test_a_box_grid_of_no_boxes_or_of_one_point_finds_what_it_holds():
+    empty = contacts.BoxGrid(np.zeros((0, 2)), np.zeros((0, 2)))
+    assert [len(part) for part in empty.query(np.zeros((3, 2)), np.ones((3, 2)))] == [0, 0]
+    point = contacts.BoxGrid(np.full((1, 2), 5.0), np.full((1, 2), 5.0))
+    query, box = point.query(np.array([[0.0, 0.0], [6.0, 6.0]]), np.array([[5.0, 5.0], [7.0, 7.0]]))
+    # A one-cell grid lists its box for every query box (the second, off the point, is filtered by the caller).
+    assert query.tolist() == [0, 1] and box.tolist() == [0, 0]
 
 
 def test_query_groups_are_runs_of_meeting_boxes_cut_every_query_group_boxes():
@@ -363,17 +398,17 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
         return box[order], segment[order]
 
     # The index of single segments, the index of runs, every pair tested, and each box's pairs reversed.
-    for all_pairs, single_index, listing in (
-        (0, SINGLE_INDEX, listed),
-        (0, 0, listed),
-        (1 << 62, SINGLE_INDEX, listed),
-        (1 << 62, SINGLE_INDEX, reversed_candidates),
+    for all_pairs, index_run, listing in (
+        (0, 1, listed),
+        (0, contacts.INDEX_RUN, listed),
+        (1 << 62, contacts.INDEX_RUN, listed),
+        (1 << 62, contacts.INDEX_RUN, reversed_candidates),
     ):
         monkeypatch.setattr(contacts, "ALL_PAIRS", all_pairs)
-        monkeypatch.setattr(contacts, "SINGLE_INDEX", single_index)
+        monkeypatch.setattr(contacts, "INDEX_RUN", index_run)
         monkeypatch.setattr(Boundary, "candidates", listing)
         for result, wanted in zip(solved_on_straight_banks()[1], expected, strict=True):
-            assert result.tobytes() == wanted.tobytes(), (all_pairs, single_index, listing.__name__)
+            assert result.tobytes() == wanted.tobytes(), (all_pairs, index_run, listing.__name__)
 
 
 def solved_alone(chain_a, chain_b, point, direction, own, scale=1.0, slide=0.0):

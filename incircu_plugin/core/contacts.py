@@ -7,9 +7,9 @@ at which the disk touches any other part of the boundary, in closed form per seg
 (a segment's interior or a vertex) it touches there. When that first contact lies on the *other* chain the
 disk is a maximal empty disk touching both chains, so its centre lies on the medial axis between them.
 
-Candidate segments come from a shapely ``STRtree`` queried in bulk with the bounding box of a trial disk;
-a sample is settled once its first contact lies inside the trial disk, otherwise the trial parameter at most
-doubles, up to the best contact found so far.
+Candidate segments come from a grid over runs of consecutive segments (:class:`BoxGrid`) queried in bulk
+with the bounding box of a trial disk; a sample is settled once its first contact lies inside the trial disk,
+otherwise the trial parameter at most doubles, up to the best contact found so far.
 """
 
 import math
@@ -17,7 +17,6 @@ from dataclasses import dataclass, fields
 from functools import cache, partial
 
 import numpy as np
-import shapely
 
 from .errors import InvalidGeometryError
 from .polyline import cumulative_lengths
@@ -63,20 +62,20 @@ SMALLEST_TRIAL = 1.0 / 16.0
 #: Largest integer :func:`stable_order` packs a value and its index into (below ``2**63``).
 PACKED_LIMIT = 2**62
 
-#: Most consecutive samples whose candidate boxes share one spatial-index query. The grouping changes no pair
-#: nor its order: the index reports the hits of any query in one fixed order (its depth-first order), so each
-#: box's segments come in that order whatever group it was queried in. 4 instead of 2, and no box grouped
-#: with one it does not meet, cut the time of the queries at 10^6 vertices by about 30 %; 8 instead of 4
-#: (with blocks of 4096 samples) cut the candidate search by another 10 % at the same peak memory; 16 is
-#: about as fast as 8.
+#: Most consecutive samples whose candidate boxes share one spatial-index query (the grouping changes no
+#: pair). 4 instead of 2, and no box grouped with one it does not meet, cut the time of the queries at 10^6
+#: vertices by about 30 %; 8 instead of 4 (with blocks of 4096 samples) cut the candidate search by another
+#: 10 % at the same peak memory (with an ``STRtree``; with :class:`BoxGrid`, 4 and 16 are about 5 % slower).
 QUERY_GROUP = 8
 
-#: Consecutive segments that share one entry of the spatial index of a large boundary (one GEOS geometry
-#: and its tree node cost about 0.35 kB), and the most segments indexed one by one (faster to query). Runs
-#: of 8 would save about 33 MiB at 10^6 segments for the same time (they change only the order of the
-#: candidates, which changes no result since :func:`solve` breaks ties by site; not re-measured since).
-INDEX_RUN = 4
-SINGLE_INDEX = 1 << 17
+#: Consecutive segments that share one entry of the spatial index: a run's hits are filtered segment by
+#: segment. With :class:`BoxGrid`, runs of 8 made the candidate search at 10^6 vertices about 10 % faster
+#: than runs of 4 or 16.
+INDEX_RUN = 8
+
+#: Most cells of a :class:`BoxGrid`, and most (box, cell) entries, per box indexed (16 and 4 are about as fast
+#: at 10^6 vertices; more cells keep them fine where a boundary is sparse in a large extent).
+GRID_CELLS = 16
 
 #: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
 MAX_SEGMENTS = 2**30 - 1
@@ -183,13 +182,11 @@ class Boundary:
         self.unit_x, self.unit_y = self.unit[:, 0], self.unit[:, 1]
         self.low_x, self.low_y = self.low[:, 0], self.low[:, 1]
         self.high_x, self.high_y = self.high[:, 0], self.high[:, 1]
-        # The index of a large boundary holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer
-        # GEOS geometries to build, store and search; a run's hits are filtered segment by segment.
-        self.index_run = 1 if count <= SINGLE_INDEX else INDEX_RUN
-        run_start = np.arange(0, count, self.index_run)
+        # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer boxes to grid.
+        run_start = np.arange(0, count, INDEX_RUN)
         self.run_low = np.minimum.reduceat(self.low, run_start)
         self.run_high = np.maximum.reduceat(self.high, run_start)
-        self._tree = None
+        self._index = None
 
     def start_vertex(self, segment):
         """Index in ``vertex`` of the start vertex of the segments ``segment`` (global indices)."""
@@ -200,15 +197,16 @@ class Boundary:
         return rows(self.vertex, self.start_vertex(segment) + 1)
 
     @property
-    def tree(self):
-        """The spatial index of the segments (or their runs), built on first use (small inputs never need it)."""
-        if self._tree is None:
-            self._tree = shapely.STRtree(_diagonals(self.run_low, self.run_high))
-        return self._tree
+    def index(self):
+        """The spatial index of the segments' runs (a :class:`BoxGrid`), built on first use (small inputs never
+        need it)."""
+        if self._index is None:
+            self._index = BoxGrid(self.run_low, self.run_high)
+        return self._index
 
     def release_index(self):
         """Free the spatial index (it is built again on the next use)."""
-        self._tree = None
+        self._index = None
 
     def candidates(self, low, high):
         """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
@@ -217,28 +215,24 @@ class Boundary:
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
         per group of up to ``QUERY_GROUP`` consecutive boxes that each meet the one before (their union,
         :func:`_group_starts`), which is much cheaper than one query per box where consecutive boxes overlap,
-        as they do along a chain; the hits are then filtered segment by segment against their group's box,
-        then against each of its boxes (:meth:`_split_groups`). An index of single segments is queried with
-        every box at once. All give the same pairs; the index paths list each box's segments in the index's
-        own order (the same whatever the group), the all-pairs test in segment order (which changes no
-        result: :func:`solve` breaks ties by site).
+        as they do along a chain; the runs found are then filtered segment by segment against their group's
+        box, then against each of its boxes (:meth:`_split_groups`). Both give the same pairs, each once, in
+        orders of their own (which changes no result: :func:`solve` breaks ties by site).
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
             meets = (self.low_x <= high[:, 0, None]) & (self.high_x >= low[:, 0, None])
             meets &= (self.low_y <= high[:, 1, None]) & (self.high_y >= low[:, 1, None])
             return np.nonzero(meets)
-        if self.index_run == 1:
-            return self._query_each(low, high)
         starts = _group_starts(low, high)
         group_low = np.minimum.reduceat(low, starts)
         group_high = np.maximum.reduceat(high, starts)
-        group, run = self.tree.query(_diagonals(group_low, group_high))
-        # Every run hit, segment by segment: a row per hit (only the last run may be short: its missing
+        group, run = self.index.query(group_low, group_high)
+        # Every run found, segment by segment: a row per run (only the last run may be short: its missing
         # segments are the last one again, never kept).
-        segment = run[:, None] * self.index_run + np.arange(self.index_run)
+        segment = run[:, None] * INDEX_RUN + np.arange(INDEX_RUN)
         real = None
-        if len(run) and (run.max() + 1) * self.index_run > self.segment_count:
+        if len(run) and (run.max() + 1) * INDEX_RUN > self.segment_count:
             real = segment < self.segment_count
             np.minimum(segment, self.segment_count - 1, out=segment)
         keep = self._overlaps(segment, group[:, None], group_low, group_high)
@@ -246,13 +240,13 @@ class Boundary:
             keep &= real
         hit, rank = keep.nonzero()
         group = group.take(hit)
-        segment = run.take(hit) * self.index_run + rank
+        segment = run.take(hit) * INDEX_RUN + rank
         return self._split_groups(group, segment, starts, low, high)
 
     def _split_groups(self, group, segment, starts, low, high):
         """Pairs (box index, segment index), sorted by box, from the pairs (group index, segment index) of
         the boxes' groups (sorted by group; group ``g`` holds boxes ``starts[g]`` up to the next group's
-        first): each group's segments tested against each of its boxes in turn, in their order."""
+        first): each group's segments tested against each of its boxes in turn."""
         count = len(low)
         # Segment columns gathered once for all boxes of a group, box columns made contiguous.
         low_x, low_y = self.low_x[segment], self.low_y[segment]
@@ -281,14 +275,6 @@ class Boundary:
         order = np.argsort(box, kind="stable")
         return box.take(order), np.concatenate(kept).take(order)
 
-    def _query_each(self, low, high):
-        """Pairs (box index, segment index), sorted by box, from an index of single segments."""
-        box, segment = self.tree.query(_diagonals(low, high))
-        if np.any(box[1:] < box[:-1]):
-            order = np.argsort(box, kind="stable")
-            box, segment = box[order], segment[order]
-        return box, segment
-
     def within(self, segment, box, point, distance):
         """Whether each segment comes within ``distance[box]`` (CRS units) of ``point[box]``."""
         ux, uy = self.unit_x[segment], self.unit_y[segment]
@@ -315,6 +301,74 @@ class Boundary:
         return keep
 
 
+class BoxGrid:
+    """A uniform grid of square cells over boxes (the bounding boxes of a large boundary's segment runs), each
+    cell listing the boxes that meet it; :meth:`query` lists each (query box, box) pair once.
+
+    The cell side is the boxes' mean extent, enlarged until the grid has at most ``GRID_CELLS`` cells and
+    entries per box (a sparse boundary in a large extent, or long segments, get coarser cells). Cells are
+    found by scaling coordinates (CRS units) from the grid's lowest corner and clipping them to the grid, a
+    nondecreasing map: whenever two boxes meet, their cell ranges meet too, and the lowest cell of that
+    common range is where the pair is reported.
+    """
+
+    def __init__(self, low, high):
+        self.origin = low.min(axis=0) if len(low) else np.zeros(2)
+        span = high.max(axis=0) - self.origin if len(low) else np.zeros(2)
+        self.size = float(np.mean(np.max(high - low, axis=1))) if len(low) else 0.0
+        if not self.size > 0.0:
+            self.size = max(float(span.max()), 1.0)
+        budget = GRID_CELLS * max(len(low), 1)
+        while True:
+            cells = np.floor(span / self.size) + 1.0
+            if cells.prod() <= budget:
+                self.shape = cells.astype(np.int64)
+                first, last = self.cells(low), self.cells(high)
+                rows, columns = (last - first + 1).T
+                if int(rows @ columns) <= budget:
+                    break
+            self.size *= 2.0
+        del last
+        # One entry per (box, cell it meets), sorted by cell (rows of cells, then columns), then by box.
+        box, rank = ranges(rows * columns)
+        row_rank, column_rank = np.divmod(rank, columns[box])
+        cell = (first[:, 0][box] + row_rank) * self.shape[1] + first[:, 1][box] + column_rank
+        order = np.argsort(cell, kind="stable")
+        self.box = box.take(order)
+        #: Whether an entry's cell is in its box's first row (``top``) or first column (``left``) of cells.
+        self.top = row_rank.take(order) == 0
+        self.left = column_rank.take(order) == 0
+        #: Entries of cell ``c``: ``start[c]`` up to ``start[c + 1]``.
+        self.start = np.zeros(self.shape.prod() + 1, dtype=np.int64)
+        np.cumsum(np.bincount(cell, minlength=self.shape.prod()), out=self.start[1:])
+
+    def cells(self, points):
+        """Row and column of the cell of each point (clipped to the grid), int64 of shape (n, 2)."""
+        scaled = points - self.origin
+        scaled /= self.size
+        np.clip(scaled, 0.0, self.shape - 1, out=scaled)
+        return scaled.astype(np.int64)
+
+    def query(self, low, high):
+        """Pairs (query box index, box index), sorted by query box, of the boxes that share a cell with a query
+        box ``low..high`` (a superset of those that meet it), each pair once: where their cell ranges' common
+        part begins (in a row of the query's cells, the box's first row or the query's; in a column, likewise).
+        """
+        first, last = self.cells(low), self.cells(high)
+        query, rank = ranges(last[:, 0] - first[:, 0] + 1)
+        # Per query box and row of its cells: the entries of its cells in that row are consecutive.
+        cell = (first[:, 0][query] + rank) * self.shape[1] + first[:, 1][query]
+        begin = self.start.take(cell)
+        first_column_end = self.start.take(cell + 1)
+        count = self.start.take(cell + (last[:, 1] - first[:, 1])[query] + 1) - begin
+        owner, entry = ranges(count)
+        entry += np.repeat(begin, count)
+        keep = self.top.take(entry) | (rank == 0).take(owner)
+        keep &= self.left.take(entry) | (entry < first_column_end.take(owner))
+        keep = keep.nonzero()[0]
+        return query.take(owner.take(keep)), self.box.take(entry.take(keep))
+
+
 def _group_starts(low, high):
     """First box of each group of consecutive boxes queried together: at most ``QUERY_GROUP`` boxes, each
     meeting the one before it (a run of boxes that meet is cut every ``QUERY_GROUP`` boxes)."""
@@ -326,12 +380,6 @@ def _group_starts(low, high):
     box = np.arange(len(low))
     run_start = np.maximum.accumulate(np.where(apart, box, 0))
     return np.flatnonzero((box - run_start) % QUERY_GROUP == 0)
-
-
-def _diagonals(low, high):
-    """Two-point lines from the corners ``low`` to ``high`` of boxes: their envelopes are the boxes (all an
-    ``STRtree`` query without a predicate compares) and they are about twice as cheap to build as polygons."""
-    return shapely.linestrings(np.stack([low, high], axis=1))
 
 
 def rows(array, index):
