@@ -302,8 +302,8 @@ class Boundary:
 
 
 class BoxGrid:
-    """A uniform grid of square cells over boxes (the bounding boxes of a large boundary's segment runs), each
-    cell listing the boxes that meet it; :meth:`query` lists each (query box, box) pair once.
+    """A uniform grid of square cells over boxes (the bounding boxes of a boundary's segment runs), each cell
+    listing the boxes that meet it; :meth:`query` lists the boxes that meet a query box.
 
     The cell side is the boxes' mean extent, enlarged until the grid has at most ``GRID_CELLS`` cells and
     entries per box (a sparse boundary in a large extent, or long segments, get coarser cells). Cells are
@@ -313,6 +313,8 @@ class BoxGrid:
     """
 
     def __init__(self, low, high):
+        # Contiguous columns: ``take`` copies a strided array whole before gathering from it.
+        self.low_x, self.low_y, self.high_x, self.high_y = np.concatenate([low, high], axis=1).T.copy()
         self.origin = low.min(axis=0) if len(low) else np.zeros(2)
         span = high.max(axis=0) - self.origin if len(low) else np.zeros(2)
         self.size = float(np.mean(np.max(high - low, axis=1))) if len(low) else 0.0
@@ -350,10 +352,10 @@ class BoxGrid:
         return scaled.astype(np.int64)
 
     def query(self, low, high):
-        """Pairs (query box index, box index), sorted by query box, of the boxes that share a cell with a query
-        box ``low..high`` (a superset of those that meet it), each pair once: where their cell ranges' common
-        part begins (in a row of the query's cells, the box's first row or the query's; in a column, likewise).
-        """
+        """Pairs (query box index, box index), sorted by query box, of the boxes that meet a query box
+        ``low..high``, each once: of the boxes that share a cell with it, each is taken where their cell ranges'
+        common part begins (in a row of the query's cells, the box's first row or the query's; in a column,
+        likewise), then kept if it meets the query box."""
         first, last = self.cells(low), self.cells(high)
         query, rank = ranges(last[:, 0] - first[:, 0] + 1)
         # Per query box and row of its cells: the entries of its cells in that row are consecutive.
@@ -366,7 +368,13 @@ class BoxGrid:
         keep = self.top.take(entry) | (rank == 0).take(owner)
         keep &= self.left.take(entry) | (entry < first_column_end.take(owner))
         keep = keep.nonzero()[0]
-        return query.take(owner.take(keep)), self.box.take(entry.take(keep))
+        query, box = query.take(owner.take(keep)), self.box.take(entry.take(keep))
+        meets = self.low_x.take(box) <= high[:, 0][query]
+        meets &= self.high_x.take(box) >= low[:, 0][query]
+        meets &= self.low_y.take(box) <= high[:, 1][query]
+        meets &= self.high_y.take(box) >= low[:, 1][query]
+        meets = meets.nonzero()[0]
+        return query.take(meets), box.take(meets)
 
 
 def _group_starts(low, high):
