@@ -132,16 +132,16 @@ def test_grouped_candidates_are_exactly_the_segments_whose_boxes_meet_each_box()
 
 def test_a_box_grid_lists_every_meeting_pair_once_whatever_the_boxes():
     # Boxes on integer corners whose largest sides (points, thin boxes, squares, four long ones) average 2: the
-    # cells, of that side or a power of two times it from the lowest corner 0, have borders on even
-    # coordinates, where many corners of boxes and query boxes lie.
+    # cells, of GRID_CELL_SIDE times that side or a power of two times it from the lowest corner 0, have
+    # borders on integer coordinates, where many corners of boxes and query boxes lie.
     rng = np.random.default_rng(3)
     side = np.array([[0.0, 0.0]] * 100 + [[3.0, 0.0]] * 100 + [[2.0, 2.0]] * 96 + [[50, 1], [1, 40], [10, 10], [8, 0]])
     low = rng.integers(0, 40, (len(side), 2)).astype(float)
     low[0] = 0.0
     high = low + side
     grid = contacts.BoxGrid(low, high)
-    assert np.array_equal(grid.origin, [0.0, 0.0]) and grid.size in (2.0, 4.0, 8.0)
-    assert np.mean(low % grid.size == 0.0) > 0.2
+    assert np.array_equal(grid.origin, [0.0, 0.0]) and grid.size / (2.0 * contacts.GRID_CELL_SIDE) in (1, 2, 4)
+    assert np.mean(low % grid.size == 0.0) > 0.1
     # Query boxes on integer corners (points among them), and a huge one, one across the grid, one outside it.
     query_low = rng.integers(-5, 95, (300, 2)).astype(float)
     query_high = query_low + rng.integers(0, 5, (300, 2))

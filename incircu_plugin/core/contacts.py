@@ -77,6 +77,10 @@ INDEX_RUN = 8
 #: at 10^6 vertices; more cells keep them fine where a boundary is sparse in a large extent).
 GRID_CELLS = 16
 
+#: Side of a :class:`BoxGrid`'s cells, in mean extents of its boxes (2 made the candidate search at 10^6
+#: vertices about 5 % faster than 1 or 4, and the layer's no slower).
+GRID_CELL_SIDE = 2.0
+
 #: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
 MAX_SEGMENTS = 2**30 - 1
 
@@ -305,11 +309,11 @@ class BoxGrid:
     """A uniform grid of square cells over boxes (the bounding boxes of a boundary's segment runs), each cell
     listing the boxes that meet it; :meth:`query` lists the boxes that meet a query box.
 
-    The cell side is the boxes' mean extent, enlarged until the grid has at most ``GRID_CELLS`` cells and
-    entries per box (a sparse boundary in a large extent, or long segments, get coarser cells). Cells are
-    found by scaling coordinates (CRS units) from the grid's lowest corner and clipping them to the grid, a
-    nondecreasing map: whenever two boxes meet, their cell ranges meet too, and the lowest cell of that
-    common range is where the pair is reported.
+    The cell side (CRS units) is ``GRID_CELL_SIDE`` times the boxes' mean extent (their larger side), doubled
+    until the grid has at most ``GRID_CELLS`` cells and entries per box (a sparse boundary in a large extent,
+    or long segments, get coarser cells). Cells are found by scaling coordinates from the grid's lowest corner
+    and clipping them to the grid, a nondecreasing map: whenever two boxes meet, their cell ranges meet too,
+    and the lowest cell of that common range is where the pair is found.
     """
 
     def __init__(self, low, high):
@@ -317,7 +321,7 @@ class BoxGrid:
         self.low_x, self.low_y, self.high_x, self.high_y = np.concatenate([low, high], axis=1).T.copy()
         self.origin = low.min(axis=0) if len(low) else np.zeros(2)
         span = high.max(axis=0) - self.origin if len(low) else np.zeros(2)
-        self.size = float(np.mean(np.max(high - low, axis=1))) if len(low) else 0.0
+        self.size = GRID_CELL_SIDE * float(np.mean(np.max(high - low, axis=1))) if len(low) else 0.0
         if not self.size > 0.0:
             self.size = max(float(span.max()), 1.0)
         budget = GRID_CELLS * max(len(low), 1)
