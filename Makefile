@@ -77,10 +77,10 @@ demo: setup
 
 # pytest-qgis starts QGIS with its GUI classes (the dialog tests need them) on the offscreen platform exported above.
 CORE_DOCTESTS := --doctest-modules incircu_plugin/core
-# The core relies on GEOS keeping z through its Delaunay triangulation (and its tests on the index listing hits in
-# one order whatever the query box), and bad input must get its typed error without GEOS warnings: these tests run
-# again on the Shapely built for QGIS's own Python on the system GEOS where make setup built one (where QGIS uses the
-# distribution's Shapely, nothing is built and this pass is skipped).
+# The core relies on GEOS keeping z through its Delaunay triangulation (of one line of samples per polygon), and
+# bad input must get its typed error without GEOS warnings: these tests run again on the Shapely built for QGIS's
+# own Python on the system GEOS where make setup built one (where QGIS uses the distribution's Shapely, nothing is
+# built and this pass is skipped).
 GEOS_TESTS := tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py tests/test_core_errors.py
 test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests $(CORE_DOCTESTS)

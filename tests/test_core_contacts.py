@@ -267,6 +267,14 @@ def test_put_rows_writes_the_rows_of_an_index_and_no_others():
     # Values that are not contiguous (a transposed array) are written row by row as well.
     put_rows(array, np.array([0, 5]), np.array([[7.0, 8.0], [9.0, 10.0]]).T)
     assert array[[0, 5]].tolist() == [[7, 9], [8, 10]]
+    # A mask, one row to repeat, and arrays that are not C-contiguous float64: as numpy's assignment.
+    put_rows(array, np.arange(6) == 2, np.array([[0.5, 0.25]]))
+    assert array[2].tolist() == [0.5, 0.25]
+    put_rows(array, np.array([1, 3]), np.array([1.5, 2.5]))
+    assert array[[1, 3]].tolist() == [[1.5, 2.5], [1.5, 2.5]]
+    for other in (np.arange(12).reshape(6, 2), np.asfortranarray(np.zeros((6, 2)))):
+        put_rows(other, np.array([4]), np.array([[3.0, 4.0]]))
+        assert other[4].tolist() == [3, 4]
 
 
 def test_subset_by_a_mask_is_subset_by_its_indices():
@@ -277,6 +285,8 @@ def test_subset_by_a_mask_is_subset_by_its_indices():
     for name in ("centre", "radius", "foot_a", "foot_b", "position_a", "position_b"):
         assert getattr(by_mask, name).tolist() == getattr(by_index, name).tolist()
         assert getattr(by_mask, name).shape == getattr(by_index, name).shape
+    with pytest.raises(IndexError):
+        points.subset(mask[:-1])
 
 
 def test_with_ends_gathers_the_ordered_values_between_the_two_ends():
@@ -543,3 +553,8 @@ def test_stable_order_is_the_stable_argsort_packed_or_not(monkeypatch, limit):
     expected = np.argsort(values, kind="stable")
     assert np.array_equal(contacts.stable_order(values, 50), expected)
     assert len(contacts.stable_order(values[:0], 50)) == 0
+
+
+def test_stable_order_falls_back_where_the_packed_values_would_overflow():
+    values = np.array([2**61, 0, 2**61, 5, 0, 7, 2**61, 1])
+    assert np.array_equal(contacts.stable_order(values, 2**61 + 1), np.argsort(values, kind="stable"))

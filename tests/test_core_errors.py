@@ -5,8 +5,10 @@ coordinates, zero-length segments (dropped silently), a self-intersecting polygo
 split points too far / identical / not two, open-mode lines that cross or touch, a chain that folds back.
 """
 
+import gc
 import math
 import re
+import weakref
 
 import numpy as np
 import pytest
@@ -571,15 +573,26 @@ def test_final_check_leaves_the_region_as_given(prepared):
 
 def test_a_polygon_found_valid_is_checked_once_while_it_lives(monkeypatch):
     """A batch checks each feature, then finds the ends of all (which check them again): the second check of
-    each of two polygons asks nothing of GEOS; a polygon made after one is freed (perhaps at its address) is
-    checked and refused."""
+    each of two polygons asks nothing of GEOS."""
     checked = []
     monkeypatch.setattr(chains, "check_coordinates", lambda *arguments, **options: checked.append(arguments))
     first, second = box(0.0, 0.0, 2.0, 1.0), box(5.0, 5.0, 9.0, 6.0)
     for polygon in (first, second, first, second):
         validate_polygon(polygon)
     assert len(checked) == 2
-    del first, polygon
+
+
+def test_a_reused_id_is_never_trusted_and_no_polygon_is_kept_alive(monkeypatch):
+    """Every polygon under one ``id`` (what a freed polygon's reused address gives): a valid polygon remembered
+    under it does not vouch for another; a remembered polygon is not kept alive."""
+    monkeypatch.setattr(chains._Validated, "polygons", type(chains._Validated.polygons)())
+    monkeypatch.setattr(chains, "id", lambda polygon: 1, raising=False)
+    valid = box(0.0, 0.0, 2.0, 1.0)
+    validate_polygon(valid)
     bow_tie = Polygon([(0.0, 0.0), (4.0, 4.0), (4.0, 0.0), (0.0, 4.0)])
     with pytest.raises(InvalidGeometryError, match="not valid"):
         validate_polygon(bow_tie)
+    freed = weakref.ref(valid)
+    del valid
+    gc.collect()
+    assert freed() is None

@@ -21,12 +21,12 @@ import shapely
 
 from incircu_plugin.core import default_tolerance, split_polygon
 from incircu_plugin.core.adaptive import (
+    JOINT_BATCH_RATIO,
     JOINT_EXTENT_RATIO,
     JOINT_SEGMENTS,
     _joint_batches,
     _joint_groups,
     _trace_batch,
-    trace_together,
 )
 from incircu_plugin.core.chains import orient_bank_lines
 from incircu_plugin.core.engine import centerline_steps
@@ -129,10 +129,11 @@ def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budg
         assert sum(requests[i].segment_count for i in group) <= JOINT_SEGMENTS or len(group) == 1
 
 
-def test_joint_batches_pack_consecutive_groups_within_the_segment_budget():
+def test_joint_batches_pack_consecutive_groups_within_the_segment_budget_and_extent_ratio():
     class Request:
-        def __init__(self, segments):
+        def __init__(self, segments, extent=1.0):
             self.segment_count = segments
+            self.extent = extent
 
     sizes = [10, JOINT_SEGMENTS // 2, JOINT_SEGMENTS // 2, 5, JOINT_SEGMENTS + 1, 7, 8]
     requests = [Request(size) for size in sizes]
@@ -143,6 +144,11 @@ def test_joint_batches_pack_consecutive_groups_within_the_segment_budget():
     for batch in batches:
         total = sum(requests[index].segment_count for group in batch for index in group)
         assert total <= JOINT_SEGMENTS or len(batch) == 1
+    # Small groups by ascending extent: a batch holds extents up to JOINT_BATCH_RATIO times its first.
+    extents = [1.0, 4.0, JOINT_BATCH_RATIO, 1.01 * JOINT_BATCH_RATIO, 10.0 * JOINT_BATCH_RATIO]
+    requests = [Request(10, extent) for extent in extents]
+    groups = [[index] for index in range(len(extents))]
+    assert _joint_batches(requests, groups) == [[[0], [1], [2]], [[3], [4]]]
 
 
 def test_groups_traced_together_give_each_feature_the_points_of_its_group_alone():
@@ -152,8 +158,9 @@ def test_groups_traced_together_give_each_feature_the_points_of_its_group_alone(
     # its group traced on its own.
     requests = [next(centerline_steps(*chains)) for _, chains, _, _, _ in closed_jobs()[:4]]
     groups = _joint_groups(requests)
-    assert sorted(len(group) for group in groups) == [1, 1, 2] and len(_joint_batches(requests, groups)) == 1
-    together = trace_together(requests, lambda fraction: None)
+    assert sorted(len(group) for group in groups) == [1, 1, 2]
+    order = [index for group in groups for index in group]
+    together = dict(zip(order, _trace_batch(requests, groups, lambda fraction: None)))
     for group in groups:
         for index, alone in zip(group, _trace_batch(requests, [group], lambda fraction: None)):
             for name in ("centre", "radius", "foot_a", "foot_b", "position_a", "position_b"):

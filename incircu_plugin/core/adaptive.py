@@ -702,12 +702,14 @@ class _Tracer:
 
     def _solve_initial(self, samples, given_site, given_status, report):
         """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved;
-        ``given_status`` for the ends) and the middles after them, together in the order of their points along
-        the chains (one coarse-to-fine solution). Returns ``t``, status and canonical site of every sample."""
+        ``given_status`` for the ends) and the middles (the samples after the ends), together in the order of
+        their points along the chains (one coarse-to-fine solution). Returns ``t``, status and canonical site
+        of every sample."""
         count = len(given_site)
         middles = np.arange(count, len(samples.chain))
         index = np.concatenate([np.flatnonzero(given_site < 0), middles])
-        # By chain, then position: a middle goes between its edge's two ends (a stable sort keeps their order).
+        # By chain, then position: each middle among the solved ends of the edges around it (its own edge's ends
+        # are given); samples at one place keep their order (lexsort is stable).
         index = index[np.lexsort((samples.position[index], samples.chain[index]))]
         t = np.zeros(len(samples.chain))
         site = np.concatenate([given_site, np.full(len(middles), -1)])
@@ -1292,11 +1294,13 @@ def trace_one(request, report):
     )
 
 
-#: A joint tracing places its features on a grid of cells this many times their largest extent, and takes
+#: A joint group places its features on a grid of cells this many times their largest extent, and holds
 #: features whose extents differ at most by ``JOINT_EXTENT_RATIO``: coordinates then stay within a few tens
-#: of each feature's extent, so the shared frame costs a few bits of float64 at most.
+#: of each feature's extent, so the shared frame costs a few bits of float64 at most. The groups of one
+#: tracing share the frame, their grids overlapping; their extents differ at most by ``JOINT_BATCH_RATIO``.
 JOINT_CELL = 1.25
 JOINT_EXTENT_RATIO = 4.0
+JOINT_BATCH_RATIO = JOINT_EXTENT_RATIO**2
 
 #: Most segments in one joint tracing (bounds its memory).
 JOINT_SEGMENTS = 1 << 17
@@ -1325,7 +1329,8 @@ def trace_together(requests, report):
 
 
 def _joint_groups(requests):
-    """Indices of the requests in groups traced together: similar extents, at most ``JOINT_SEGMENTS``."""
+    """Indices of the requests in groups placed on one grid (several groups share a tracing,
+    :func:`_joint_batches`): similar extents, at most ``JOINT_SEGMENTS``; by ascending extent."""
     extents = np.array([request.extent for request in requests])
     sizes = np.array([request.segment_count for request in requests])
     groups, current, smallest, segments = [], [], 0.0, 0
@@ -1341,14 +1346,19 @@ def _joint_groups(requests):
 
 
 def _joint_batches(requests, groups):
-    """Consecutive ``groups`` (lists of request indices) packed into batches of at most ``JOINT_SEGMENTS``
-    segments (a group of more is a batch of its own)."""
-    batches, current, segments = [], [], 0
+    """Consecutive ``groups`` (lists of request indices, by ascending extent) packed into batches of at most
+    ``JOINT_SEGMENTS`` segments (a group of more is a batch of its own) whose extents differ at most by
+    ``JOINT_BATCH_RATIO``: the groups' grids overlap, so a large feature's candidate boxes would list the
+    segments of every much smaller feature under them (dropped only after the search)."""
+    batches, current, segments, smallest = [], [], 0, 0.0
     for group in groups:
         size = sum(requests[index].segment_count for index in group)
-        if current and segments + size > JOINT_SEGMENTS:
+        extent = requests[group[0]].extent
+        if current and (segments + size > JOINT_SEGMENTS or extent > JOINT_BATCH_RATIO * smallest):
             batches.append(current)
             current, segments = [], 0
+        if not current:
+            smallest = extent
         current.append(group)
         segments += size
     return batches + [current] if current else batches

@@ -52,7 +52,7 @@ SOLVE_BLOCK = 4096
 SOLVE_PAIRS = 1 << 16
 
 #: Ratio between the sample strides of two levels of the coarse-to-fine solution, and the number of levels
-#: above the finest one for a chunk large enough.
+#: above the finest one for features with enough samples.
 COARSE_STRIDE = 8
 COARSE_LEVELS = 2
 
@@ -97,7 +97,11 @@ class ArrayRecord:
         if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
             return type(self)(*(rows(column, index) for column in columns))
         if isinstance(index, np.ndarray) and index.dtype == bool:
-            # compress: numpy's indexing of a two-column array by a mask is several times slower.
+            # compress: numpy's indexing of a two-column array by a mask is several times slower (and it takes a
+            # short mask, which indexing refuses).
+            columns = list(columns)
+            if len(index) != len(columns[0]):
+                raise IndexError(f"a mask of {len(index)} items for {len(columns[0])} rows")
             return type(self)(*(column.compress(index, axis=0) for column in columns))
         return type(self)(*(column[index] for column in columns))
 
@@ -402,9 +406,14 @@ def rows(array, index):
 
 
 def put_rows(array, index, values):
-    """``array[index] = values`` for a C-contiguous float array ``array`` of shape (n, 2), an integer array
-    ``index`` and ``values`` of shape (m, 2): each row written as one complex number (numpy's indexed assignment
-    of a two-column array's rows is about ten times slower; the bytes written are the same)."""
+    """``array[index] = values`` for an array ``array`` of shape (n, 2), an index array or mask ``index`` and
+    ``values`` of shape (m, 2): into a C-contiguous float64 ``array`` each row is written as one complex number
+    (numpy's indexed assignment of a two-column array's rows is about ten times slower; the bytes written are
+    the same), otherwise (or for one row to repeat) by numpy's assignment."""
+    values = np.asarray(values)
+    if array.dtype != np.float64 or not array.flags.c_contiguous or values.ndim != 2:
+        array[index] = values
+        return
     array.view(np.complex128)[:, 0][index] = np.ascontiguousarray(values, dtype=float).view(np.complex128)[:, 0]
 
 
