@@ -250,6 +250,16 @@ def test_crossing_lines_say_where():
     assert 50.0 in numbers and 5.0 in numbers, str(caught.value)
 
 
+def test_lines_found_to_meet_say_where_even_when_their_intersection_comes_back_empty(monkeypatch):
+    # The predicate and the overlay are separate GEOS computations; should they disagree, the message still
+    # names the place (where the lines come nearest).
+    monkeypatch.setattr(chains.shapely, "intersection", lambda *lines: LineString())
+    with pytest.raises(CrossingLinesError) as caught:
+        lines_centerline([(0.0, 0.0), (100.0, 10.0)], [(0.0, 10.0), (100.0, 0.0)])
+    numbers = numbers_in(str(caught.value))
+    assert 50.0 in numbers and 5.0 in numbers, str(caught.value)
+
+
 @pytest.mark.parametrize(
     "line_b",
     [

@@ -6,7 +6,6 @@ import shapely
 from shapely.geometry import LineString
 
 from incircu_plugin.core import polyline as polyline_module
-from incircu_plugin.core.chains import _nearest_entries
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.polyline import (
     CLUSTER_POINTS,
@@ -14,6 +13,7 @@ from incircu_plugin.core.polyline import (
     as_coordinates,
     cumulative_lengths,
     local_origin,
+    nearest_entries,
     nearest_on_polyline,
     points_at,
     turn_angles,
@@ -187,4 +187,4 @@ def test_nearest_entries_are_those_of_the_broadcast_argmin_with_ties_to_the_firs
     values = np.array([-2.0, 3.0, 2.0, 2.9, 3.25, 6.0, 7.0, 12.0])
     expected = np.abs(ascending[:, None] - values).argmin(axis=0)
     assert expected.tolist() == [0, 2, 1, 2, 2, 3, 4, 4]
-    assert _nearest_entries(ascending, values).tolist() == expected.tolist()
+    assert nearest_entries(ascending, values).tolist() == expected.tolist()

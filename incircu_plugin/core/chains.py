@@ -18,7 +18,7 @@ from .errors import (
     SplitPointError,
     format_point,
 )
-from .polyline import as_coordinates, cumulative_lengths, points_at
+from .polyline import as_coordinates, cumulative_lengths, nearest_entries, points_at
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
@@ -327,21 +327,12 @@ def split_polygon(polygon, split_points, tolerance=None):
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     ring, positions = _insert_at(ring, positions, along, coincidence)
-    start, end = _nearest_entries(positions[:-1], along).tolist()
+    start, end = nearest_entries(positions[:-1], along).tolist()
     loop = ring[:-1]
     n = len(loop)
     forward = np.arange(start, start + (end - start) % n + 1) % n
     backward = np.arange(start, start - (start - end) % n - 1, -1) % n
     return loop[forward], loop[backward]
-
-
-def _nearest_entries(ascending, values):
-    """Index of the entry of ``ascending`` (strictly increasing, at least two) nearest each of ``values``, the
-    first of two equally near: ``np.abs(ascending[:, None] - values).argmin(axis=0)`` without its (n, k) array
-    (the nearest entry is one of the two around the value)."""
-    after = np.clip(np.searchsorted(ascending, values), 1, len(ascending) - 1)
-    before = after - 1
-    return np.where(np.abs(ascending[after] - values) < np.abs(ascending[before] - values), after, before)
 
 
 def orient_bank_lines(line_a, line_b):
@@ -375,6 +366,9 @@ def orient_bank_lines(line_a, line_b):
     lines = LineString(a), LineString(b)
     if shapely.intersects(*lines):
         touching = shapely.intersection(*lines)
+        if touching.is_empty:
+            # Not seen, but the predicate and the overlay are separate computations: where they meet, nearly.
+            touching = shapely.shortest_line(*lines)
         raise CrossingLinesError(
             f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; "
             "they must bound a region between them."

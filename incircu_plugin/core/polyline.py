@@ -127,6 +127,19 @@ def cumulative_lengths(xy):
     return cumulative
 
 
+def nearest_entries(ascending, values):
+    """Index of the entry of ``ascending`` (strictly increasing, at least two) nearest each of ``values``, the
+    first of two equally near: ``np.abs(ascending[:, None] - values).argmin(axis=0)`` without its (n, k) array
+    (the nearest entry is one of the two around the value).
+
+    >>> nearest_entries(np.array([0.0, 1.0, 3.0]), np.array([-1.0, 0.5, 2.5, 9.0]))
+    array([0, 0, 2, 2])
+    """
+    after = np.clip(np.searchsorted(ascending, values), 1, len(ascending) - 1)
+    before = after - 1
+    return np.where(np.abs(ascending[after] - values) < np.abs(ascending[before] - values), after, before)
+
+
 def points_at(xy, cumulative, s):
     """Return the points of a polyline at arc lengths ``s`` (linear interpolation between vertices).
 
