@@ -943,20 +943,20 @@ class _Tracer:
         if len(row) == 0:
             return np.empty(0, dtype=int), np.empty(0, dtype=int)
         row_of, k = ranges(np.full(len(row), MAX_PREDICTED))
-        candidate_rank = rank[row[row_of]] + step[row[row_of]] * k
+        owner = row[row_of]
+        candidate_rank = rank[owner] + step[owner] * k
         valid = (candidate_rank >= 0) & (candidate_rank < len(sites.sequence))
         candidate = sites.sequence[np.clip(candidate_rank, 0, len(sites.sequence) - 1)]
-        valid &= sites.chain(candidate) == chain[row[row_of]]
+        valid &= sites.chain(candidate) == chain[owner]
         # Only the candidates on the own chain's sequence; the other site's terms once per interval.
         valid = valid.nonzero()[0]
-        row_of, k, candidate = row_of[valid], k[valid], candidate[valid]
-        owner = row[row_of]
-        other_site = np.where(other_first, intervals.site0, intervals.site1)[row]
+        row_of, owner, k, candidate = row_of[valid], owner[valid], k[valid], candidate[valid]
+        other_site = np.where(other_first, intervals.site0, intervals.site1)
         middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(
             spans,
             np.concatenate([span[row], span[owner]]),
-            np.concatenate([other_site, candidate]),
+            np.concatenate([other_site[row], candidate]),
             np.concatenate([middle[row], middle[owner]]),
         )
         u, radius, inside = self._pair_events(
@@ -983,7 +983,7 @@ class _Tracer:
         own_step = np.where(at_start, reach + 1 - index, index)
         walk_site = sites.sequence[np.clip(rank[walk_row] + step[walk_row] * own_step, 0, len(sites.sequence) - 1)]
         is_other = np.where(at_start, index == 0, index == reach + 1)
-        walk_site = np.where(is_other, np.where(other_first, intervals.site0, intervals.site1)[walk_row], walk_site)
+        walk_site = np.where(is_other, other_site[walk_row], walk_site)
         return walk_row, walk_site
 
     def _on_run(self, span, u, radius, site):
@@ -1330,38 +1330,37 @@ def trace_together(requests, report):
 
 def _joint_groups(requests):
     """Indices of the requests in groups placed on one grid (several groups share a tracing,
-    :func:`_joint_batches`): similar extents, at most ``JOINT_SEGMENTS``; by ascending extent."""
+    :func:`_joint_batches`): extents at most ``JOINT_EXTENT_RATIO`` apart, at most ``JOINT_SEGMENTS``
+    segments; by ascending extent."""
     extents = np.array([request.extent for request in requests])
     sizes = np.array([request.segment_count for request in requests])
-    groups, current, smallest, segments = [], [], 0.0, 0
-    for index in np.argsort(extents, kind="stable"):
-        if current and (extents[index] > JOINT_EXTENT_RATIO * smallest or segments + sizes[index] > JOINT_SEGMENTS):
-            groups.append(current)
-            current = []
-        if not current:
-            smallest, segments = extents[index], 0
-        current.append(int(index))
-        segments += sizes[index]
-    return groups + [current] if current else groups
+    order = np.argsort(extents, kind="stable")
+    return _consecutive_bins(order.tolist(), extents[order], sizes[order], JOINT_EXTENT_RATIO)
 
 
 def _joint_batches(requests, groups):
-    """Consecutive ``groups`` (lists of request indices, by ascending extent) packed into batches of at most
-    ``JOINT_SEGMENTS`` segments (a group of more is a batch of its own) whose extents differ at most by
-    ``JOINT_BATCH_RATIO``: the groups' grids overlap, so a large feature's candidate boxes would list the
-    segments of every much smaller feature under them (dropped only after the search)."""
-    batches, current, segments, smallest = [], [], 0, 0.0
-    for group in groups:
-        size = sum(requests[index].segment_count for index in group)
-        extent = requests[group[0]].extent
-        if current and (segments + size > JOINT_SEGMENTS or extent > JOINT_BATCH_RATIO * smallest):
-            batches.append(current)
-            current, segments = [], 0
+    """Consecutive ``groups`` (lists of request indices, by ascending extent) packed into batches traced in one
+    tracing: extents at most ``JOINT_BATCH_RATIO`` apart (the groups' grids overlap, so a large feature's
+    candidate boxes would list the segments of every much smaller feature under them, dropped only after the
+    search), at most ``JOINT_SEGMENTS`` segments."""
+    extents = [requests[group[0]].extent for group in groups]
+    sizes = [sum(requests[index].segment_count for index in group) for group in groups]
+    return _consecutive_bins(groups, extents, sizes, JOINT_BATCH_RATIO)
+
+
+def _consecutive_bins(items, extents, sizes, ratio):
+    """``items`` (by ascending ``extents``, CRS units) cut into runs whose extents differ at most by ``ratio``
+    and whose ``sizes`` (segments) add up to at most ``JOINT_SEGMENTS`` (an item of more is a run of its own)."""
+    bins, current, smallest, segments = [], [], 0.0, 0
+    for item, extent, size in zip(items, extents, sizes):
+        if current and (extent > ratio * smallest or segments + size > JOINT_SEGMENTS):
+            bins.append(current)
+            current = []
         if not current:
-            smallest = extent
-        current.append(group)
+            smallest, segments = extent, 0
+        current.append(item)
         segments += size
-    return batches + [current] if current else batches
+    return bins + [current] if current else bins
 
 
 def _group_offsets(requests):

@@ -244,13 +244,9 @@ def _fewest_vertices(points, tolerance):
     # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
     # keeps, so the kept ones are known without matching coordinates.
     keep = np.zeros(len(points), dtype=bool)
-    last = len(points) - 1
-    if last <= SIMPLIFY_PIECE:
-        _keep_simplified(keep, shapely.linestrings(_with_index(points, np.arange(len(points)))), tolerance)
-    else:
-        batch = SIMPLIFY_PIECE * SIMPLIFY_BATCH
-        for begin in range(0, last, batch):
-            _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
+    last, batch = len(points) - 1, SIMPLIFY_PIECE * SIMPLIFY_BATCH
+    for begin in range(0, last, batch):
+        _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
     if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
         indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
         line = shapely.simplify(indexed, tolerance, preserve_topology=True)
