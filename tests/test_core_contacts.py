@@ -353,13 +353,13 @@ def test_coarse_to_fine_levels_follow_the_samples_per_feature(monkeypatch, featu
     # eighty of 10 one; every level settles its samples exactly as one solve of all.
     samples, boundary = straight_features(features, 800 // features)
     index = np.arange(800)
-    expected = solve(samples, index, boundary, np.full(800, 2.5), 30.0, 1e-9)
+    expected = solve(samples, index, boundary, np.full(800, 2.5), 30.0, 1e-9, points=True)
     calls = []
     solved = contacts.solve
     monkeypatch.setattr(
         contacts, "solve", lambda samples, index, *rest: calls.append(len(index)) or solved(samples, index, *rest)
     )
-    result = contacts.solve_coarse_to_fine(samples, index, boundary, 2.5, 30.0, 1e-9, lambda done: None)
+    result = contacts.solve_coarse_to_fine(samples, index, boundary, 2.5, 30.0, 1e-9, lambda done: None, points=True)
     assert len(calls) == levels and sum(calls) == 800
     assert np.all(result[0] == 2.0)
     for got, wanted in zip(result, expected, strict=True):
@@ -387,7 +387,7 @@ def solved_on_straight_banks():
         first_own,
         last_own,
     )
-    return along, solve(samples, np.arange(count), Boundary(chains), np.ones(count), 10.0, 1e-9)
+    return along, solve(samples, np.arange(count), Boundary(chains), np.ones(count), 10.0, 1e-9, points=True)
 
 
 def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeypatch):
@@ -433,7 +433,9 @@ def solved_alone(chain_a, chain_b, point, direction, own, scale=1.0, slide=0.0):
         np.array([own[1]]),
     )
     boundary = Boundary([np.array(chain_a, dtype=float), np.array(chain_b, dtype=float)])
-    contact_t, status, contact, _, site = solve(samples, np.arange(1), boundary, np.full(1, 10.0), 300.0, 1e-10)
+    contact_t, status, contact, _, site = solve(
+        samples, np.arange(1), boundary, np.full(1, 10.0), 300.0, 1e-10, points=True
+    )
     return contact_t[0], status[0], contact[0], site[0]
 
 
@@ -516,7 +518,7 @@ def solved_between_dense_banks():
         vertex - 1,
         vertex,
     )
-    return solve(samples, np.arange(count), Boundary(chains), np.full(count, 10.0), 30.0, 1e-9)
+    return solve(samples, np.arange(count), Boundary(chains), np.full(count, 10.0), 30.0, 1e-9, points=True)
 
 
 def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypatch):
@@ -543,6 +545,24 @@ def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypa
         monkeypatch.setattr(contacts, "SOLVE_PAIRS", budget)
         for result, wanted in zip(solved_between_dense_banks(), expected, strict=True):
             assert result.tobytes() == wanted.tobytes(), (block, budget)
+
+
+def test_without_points_the_solvers_keep_no_contact_point_and_the_same_contacts():
+    # solve, solve_coarse_to_fine and solve_in_chunks: contact and position None, the rest as with the points.
+    samples, boundary = straight_features(8, 100)
+    index = np.arange(800)
+    for solver, arguments in (
+        (solve, (np.full(800, 2.5), 30.0, 1e-9)),
+        (contacts.solve_coarse_to_fine, (2.5, 30.0, 1e-9, lambda done: None)),
+        (contacts.solve_in_chunks, (2.5, 30.0, 1e-9, lambda done: None)),
+    ):
+        with_points = solver(samples, index, boundary, *arguments, points=True)
+        without = solver(samples, index, boundary, *arguments)
+        assert without[2] is None and without[3] is None, solver.__name__
+        assert with_points[2].shape == (800, 2) and np.all(with_points[0] == 2.0)
+        for kept in (0, 1, 4):
+            assert without[kept].tobytes() == with_points[kept].tobytes(), (solver.__name__, kept)
+        assert without[4].dtype == np.int32
 
 
 @pytest.mark.parametrize("limit", [contacts.PACKED_LIMIT, 0])

@@ -582,7 +582,7 @@ def _lowest_site_of_groups(picked, group, site):
     return picked[site == lowest[np.cumsum(first) - 1]]
 
 
-def solve(samples, index, boundary, trial, max_t, min_t):
+def solve(samples, index, boundary, trial, max_t, min_t, points=False):
     """Settle the samples ``index``, starting from trial parameters ``trial`` (one per sample).
 
     ``max_t`` (the largest disk parameter searched) and ``min_t`` (the smallest that counts as a contact) are
@@ -591,8 +591,10 @@ def solve(samples, index, boundary, trial, max_t, min_t):
     Returns arrays aligned with ``index``: ``contact_t`` (parameter of the first contact with anything, inf
     when none within ``max_t``), ``status`` (``SKIPPED``; ``TIED``: the first contact lies on the other
     chain and, within ``TIE_TOLERANCE``, on the sample's own chain too; ``CLEAR``: on the other chain only),
-    for accepted samples the ``contact`` point and its arc-length ``position`` along the other chain, and
-    the ``site`` of the contact (for skipped samples the nearest site of their own chain; -1 when none).
+    with ``points`` for accepted samples the ``contact`` point and its arc-length ``position`` along the other
+    chain (CRS units; without ``points`` both are None: the adaptive engine needs neither, and at 10^6 vertices
+    they would take 24 bytes per sample), and the ``site`` of the contact (int32; for skipped samples the
+    nearest site of their own chain; -1 when none).
 
     Sites touched at exactly the same first ``t`` (a disk touching two places of a chain, as at an event) are
     all true contacts; the lowest site wins: a segment's interior before any vertex, and among segments or
@@ -608,9 +610,9 @@ def solve(samples, index, boundary, trial, max_t, min_t):
     solution = _Solution(
         np.full(count, np.inf),
         np.full(count, SKIPPED, dtype=np.int8),
-        np.zeros((count, 2)),
-        np.zeros(count),
-        np.full(count, -1),
+        np.zeros((count, 2)) if points else None,
+        np.zeros(count) if points else None,
+        np.full(count, -1, dtype=np.int32),
     )
     begin, block = 0, _first_block(boundary, radius[:SOLVE_BLOCK])
     while begin < count:
@@ -644,7 +646,8 @@ def _first_block(boundary, radius):
 
 @dataclass(frozen=True)
 class _Solution:
-    """The arrays that :func:`solve` returns, filled in round by round (one row per sample)."""
+    """The arrays that :func:`solve` returns, filled in round by round (one row per sample; ``contact`` and
+    ``position`` None when not asked for)."""
 
     contact_t: np.ndarray
     status: np.ndarray
@@ -731,6 +734,8 @@ def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
     solution.status[row] = np.where(t * (1.0 + TIE_TOLERANCE) < best_own, CLEAR, TIED)
     solution.contact_t[row] = t
     solution.site[row] = site
+    if solution.contact is None:
+        return
     solution.contact[row] = rows(boundary.start, segment) + along[:, None] * rows(boundary.unit, segment)
     solution.position[row] = np.where(
         along >= boundary.length[segment],
@@ -739,9 +744,9 @@ def _record_winners(solution, row, t, along, site, segment, best_own, boundary):
     )
 
 
-def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report):
-    """Settle ``index`` (sorted by chain, then position) from coarse to fine; ``trial_radius`` as ``max_t`` in
-    :func:`solve`.
+def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, report, points=False):
+    """Settle ``index`` (sorted by chain, then position) from coarse to fine; ``trial_radius`` as ``max_t`` and
+    ``points`` as in :func:`solve`.
 
     Every ``COARSE_STRIDE ** COARSE_LEVELS``-th sample (every ``COARSE_STRIDE``-th when the features, pairs of
     chains, have fewer samples each; all at once up to ``COARSE_STRIDE ** 2`` samples per feature) is solved
@@ -753,9 +758,9 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     trial_radius = per_sample(trial_radius, samples.chain[index])
     contact_t = np.full(count, np.nan)
     status = np.zeros(count, dtype=np.int8)
-    contact = np.empty((count, 2))
-    position = np.empty(count)
-    site = np.empty(count, dtype=int)
+    contact = np.empty((count, 2)) if points else None
+    position = np.empty(count) if points else None
+    site = np.empty(count, dtype=np.int32)
     # Arc length along chain 0, then along chain 1 shifted past it: increasing over the sorted samples.
     along = samples.position[index] + samples.chain[index] * (2.0 * samples.position[index].max() + 1.0)
     # Levels by the samples per feature (pair of chains; sorted by chain, each feature's samples are a run):
@@ -780,10 +785,12 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
         else:
             trial = trial_radius[level]
         level = np.flatnonzero(level)
-        contact_t[level], status[level], level_contact, position[level], site[level] = solve(
-            samples, index[level], boundary, trial, max_t, min_t
+        contact_t[level], status[level], level_contact, level_position, site[level] = solve(
+            samples, index[level], boundary, trial, max_t, min_t, points
         )
-        put_rows(contact, level, level_contact)
+        if points:
+            put_rows(contact, level, level_contact)
+            position[level] = level_position
         report(count - np.isnan(contact_t).sum())
         stride //= COARSE_STRIDE
     return contact_t, status, contact, position, site
@@ -832,24 +839,33 @@ def _report_from(report, begin, total, done):
     report((begin + done) / total)
 
 
-def solve_in_chunks(samples, index, boundary, trial_radius, max_t, min_t, report):
+def solve_in_chunks(samples, index, boundary, trial_radius, max_t, min_t, report, points=False):
     """:func:`solve_coarse_to_fine` on ``index`` (sorted by chain and position), ``CHUNK`` samples at a time.
 
-    ``report(done_fraction)`` is called as samples settle. Returns the arrays of :func:`solve`.
+    ``report(done_fraction)`` is called as samples settle. Returns the arrays of :func:`solve` (``contact`` and
+    ``position`` only with ``points``, else None).
     """
     total = len(index)
     solution = [
         np.empty(total),
         np.zeros(total, dtype=np.int8),
-        np.zeros((total, 2)),
-        np.zeros(total),
-        np.zeros(total, dtype=int),
+        np.zeros((total, 2)) if points else None,
+        np.zeros(total) if points else None,
+        np.zeros(total, dtype=np.int32),
     ]
     for begin in range(0, total, CHUNK):
         chunk = slice(begin, min(begin + CHUNK, total))
         parts = solve_coarse_to_fine(
-            samples, index[chunk], boundary, trial_radius, max_t, min_t, partial(_report_from, report, begin, total)
+            samples,
+            index[chunk],
+            boundary,
+            trial_radius,
+            max_t,
+            min_t,
+            partial(_report_from, report, begin, total),
+            points,
         )
         for whole, part in zip(solution, parts):
-            whole[chunk] = part
+            if whole is not None:
+                whole[chunk] = part
     return solution

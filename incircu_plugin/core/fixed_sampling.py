@@ -154,7 +154,7 @@ def _bisect(samples, left, contact_t, boundary, max_t, min_t, on_low_side):
     for _ in range(TRANSITION_ROUNDS):
         where = (low[:, None] + (high - low)[:, None] * steps).ravel()
         probes = _edge_probes(samples, template, where, boundary)
-        solution = solve(probes, np.arange(len(where)), boundary, trial, max_t, min_t)
+        solution = solve(probes, np.arange(len(where)), boundary, trial, max_t, min_t, points=True)
         same = on_low_side(solution, pair).reshape(-1, TRANSITION_PROBES)
         last_same = np.where(same.any(axis=1), TRANSITION_PROBES - 1 - np.argmax(same[:, ::-1], axis=1), -1)
         grid = np.column_stack([low, where.reshape(-1, TRANSITION_PROBES), high])
@@ -296,7 +296,7 @@ def fixed_axis_points(chains, boundary, side, spacings, width, max_t, min_t, rep
         ]
     )
     contact_t, status, contact, position, _ = solve_in_chunks(
-        samples, np.arange(len(samples.point)), boundary, 0.625 * width, max_t, min_t, report
+        samples, np.arange(len(samples.point)), boundary, 0.625 * width, max_t, min_t, report, points=True
     )
     pieces = []
     for probes, probe_t, probe_status, probe_contact, probe_position in (
