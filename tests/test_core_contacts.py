@@ -49,6 +49,27 @@ def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
     return t, along, site, boundary
 
 
+def test_first_contacts_without_along_give_the_same_contacts_and_sites():
+    # A corner's disks (scale below 1) and an edge's against a zigzag: tangencies, start and end vertices.
+    zigzag = [[(-6.0, 9.0), (-2.0, 12.0), (0.0, 8.0), (3.0, 11.0), (7.0, 6.0)], [(-6.0, -5.0), (7.0, -5.0)]]
+    for scale, slide in ((1.0, 0.0), (0.8, 0.6)):
+        t, _along, site, boundary = contacts_of((0.0, 0.0), (0.0, 1.0), zigzag, scale, slide)
+        count = boundary.segment_count
+        ones = np.ones(count)
+        arguments = (0.0 * ones, 0.0 * ones, 0.0 * ones, ones, scale * ones, slide * ones, boundary, np.arange(count))
+        t_only, none, site_only = first_contacts(*arguments, with_along=False)
+        assert none is None and np.isfinite(t).sum() >= 4
+        assert t_only.tobytes() == t.tobytes() and np.array_equal(site_only, site)
+        assert len(set(site[np.isfinite(t)] >= count)) == 2  # vertices and interiors among the contacts
+
+
+def test_the_last_segment_of_a_chain_answers_for_its_end_vertex():
+    # Disks centred (0, t) with radius t reach the end (3, 9) of the segment from (8, 12) when 9 + (9 - t)^2 = t^2.
+    t, along, site, _boundary = contacts_of((0.0, 0.0), (0.0, 1.0), [[(8.0, 12.0), (3.0, 9.0)], [(-6, -5), (7, -5)]])
+    assert t[0] == pytest.approx(5.0, rel=1e-15) and along[0] == pytest.approx(np.hypot(5.0, 3.0), rel=1e-15)
+    assert site[0] == 2 + 1  # two segments, then the vertices: the first chain's second vertex
+
+
 def test_a_disk_on_a_normal_touches_a_parallel_line_halfway():
     # Disks centred (0, t) with radius t touch y = 10 when 10 - t = t: t = 5, at x = 0, 5 from (-5, 10).
     t, along, site, _boundary = contacts_of((0.0, 0.0), (0.0, 1.0), [[(-5, 10), (5, 10)], [(-5, -10), (5, -10)]])

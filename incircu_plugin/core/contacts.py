@@ -144,9 +144,9 @@ class Boundary:
     A *site* is what a disk can touch: the interior of segment ``g`` (site ``g``) or a vertex (site
     ``segment_count + v``, with ``v`` the vertex's index in ``vertex``, the chains' vertices one chain after
     the other). Segment ``g`` runs from vertex ``g + chain_id[g]`` (:meth:`start_vertex`) to the next one.
-    Per segment it holds one copy of each quantity (the x and y columns are views of the coordinate arrays;
-    end points are read from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites
-    in int32.
+    Per segment it holds one copy of each quantity (the x and y columns of ``start`` and ``unit`` are views;
+    the bounding boxes are four contiguous columns, which the candidate search gathers from; end points are
+    read from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites in int32.
     """
 
     def __init__(self, chains):
@@ -177,7 +177,9 @@ class Boundary:
         self.start_site = start_vertex + np.int32(count)
         end = rows(self.vertex, start_vertex + 1)
         del start_vertex
-        self.low, self.high = np.minimum(self.start, end), np.maximum(self.start, end)
+        # Bounding boxes column by column: contiguous columns gather about twice as fast as strided ones.
+        self.low_x, self.high_x = np.minimum(self.start[:, 0], end[:, 0]), np.maximum(self.start[:, 0], end[:, 0])
+        self.low_y, self.high_y = np.minimum(self.start[:, 1], end[:, 1]), np.maximum(self.start[:, 1], end[:, 1])
         # The end points become the segments' vectors, then their units, in place.
         end -= self.start
         self.length = np.hypot(end[:, 0], end[:, 1])
@@ -188,12 +190,10 @@ class Boundary:
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
         self.unit_x, self.unit_y = self.unit[:, 0], self.unit[:, 1]
-        self.low_x, self.low_y = self.low[:, 0], self.low[:, 1]
-        self.high_x, self.high_y = self.high[:, 0], self.high[:, 1]
         # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer boxes to grid.
         run_start = np.arange(0, count, INDEX_RUN)
-        self.run_low = np.minimum.reduceat(self.low, run_start)
-        self.run_high = np.maximum.reduceat(self.high, run_start)
+        self.run_low = np.stack([np.minimum.reduceat(column, run_start) for column in (self.low_x, self.low_y)], 1)
+        self.run_high = np.stack([np.maximum.reduceat(column, run_start) for column in (self.high_x, self.high_y)], 1)
         self._index = None
 
     def start_vertex(self, segment):
@@ -257,8 +257,8 @@ class Boundary:
         first): each group's segments tested against each of its boxes in turn."""
         count = len(low)
         # Segment columns gathered once for all boxes of a group, box columns made contiguous.
-        low_x, low_y = self.low_x[segment], self.low_y[segment]
-        high_x, high_y = self.high_x[segment], self.high_y[segment]
+        low_x, low_y = self.low_x.take(segment), self.low_y.take(segment)
+        high_x, high_y = self.high_x.take(segment), self.high_y.take(segment)
         box_low_x, box_low_y, box_high_x, box_high_y = np.concatenate([low, high], axis=1).T.copy()
         sizes = np.empty_like(starts)
         np.subtract(starts[1:], starts[:-1], out=sizes[:-1])
@@ -283,11 +283,12 @@ class Boundary:
         order = np.argsort(box, kind="stable")
         return box.take(order), np.concatenate(kept).take(order)
 
-    def within(self, segment, box, point, distance):
-        """Whether each segment comes within ``distance[box]`` (CRS units) of ``point[box]``."""
+    def within(self, segment, box, x, y, distance):
+        """Whether each segment comes within ``distance[box]`` (CRS units) of the point ``(x[box], y[box])``
+        (``x``, ``y`` and ``distance``: contiguous arrays, gathered with ``take``)."""
         ux, uy = self.unit_x[segment], self.unit_y[segment]
-        dx, dy = point[:, 0][box] - self.start_x[segment], point[:, 1][box] - self.start_y[segment]
-        distance = distance[box]
+        dx, dy = x.take(box) - self.start_x[segment], y.take(box) - self.start_y[segment]
+        distance = distance.take(box)
         along = dx * ux
         along += dy * uy
         np.minimum(np.maximum(along, 0.0, out=along), self.length[segment], out=along)
@@ -302,10 +303,10 @@ class Boundary:
     def _overlaps(self, segment, box, low, high):
         """Whether each segment's bounding box meets the box ``low[box]..high[box]`` (gathered column by column:
         much cheaper than rows of a two-column array)."""
-        keep = self.low_x[segment] <= high[:, 0][box]
-        keep &= self.high_x[segment] >= low[:, 0][box]
-        keep &= self.low_y[segment] <= high[:, 1][box]
-        keep &= self.high_y[segment] >= low[:, 1][box]
+        keep = self.low_x.take(segment) <= high[:, 0][box]
+        keep &= self.high_x.take(segment) >= low[:, 0][box]
+        keep &= self.low_y.take(segment) <= high[:, 1][box]
+        keep &= self.high_y.take(segment) >= low[:, 1][box]
         return keep
 
 
@@ -495,55 +496,68 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     return np.where(touched, t, np.inf)
 
 
-def first_contacts(px, py, bx, by, scale, slide, boundary, segment):
+def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=True):
     """First contact ``t`` of each (sample, segment) pair, inf when the disk family never touches it.
 
     ``(px, py)`` is the sample point, ``(bx, by)`` its unit direction, ``scale`` the radius per unit of
     ``t`` (``sin`` of the half angle at a convex vertex, else 1) and ``slide`` the matching ``cos`` (else 0).
-    Returns ``t``, where on the segment the contact is (a length from its start) and the site touched
-    (see :class:`Boundary`).
+    Returns ``t``, where on the segment the contact is (a length from its start, CRS units; None without
+    ``with_along``) and the site touched (see :class:`Boundary`).
 
     A segment answers for its start vertex only (its end is the next segment's start, which is a candidate
     whenever that vertex can be touched); the last segment of a chain answers for its end too.
     """
-    ax, ay = boundary.start_x[segment], boundary.start_y[segment]
     ux, uy = boundary.unit_x[segment], boundary.unit_y[segment]
-    length = boundary.length[segment]
-    dx, dy = px - ax, py - ay
+    length = boundary.length.take(segment)
+    dx, dy = px - boundary.start_x[segment], py - boundary.start_y[segment]
     along_p = dx * ux + dy * uy
     height = dx * -uy + dy * ux
+    del dx, dy
     b_along = bx * ux + by * uy
     b_across = by * ux - bx * uy
 
     t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
     t_end = np.full(len(segment), np.inf)
-    last = boundary.last_of_chain[segment].nonzero()[0]
+    last = boundary.last_of_chain.take(segment).nonzero()[0]
     if len(last):
         t_end[last] = vertex_contact(
             length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
         )
 
-    side = np.where(height < 0, -1.0, 1.0)
-    distance = side * height
+    # With side = sign(height) (+1 at 0): distance = side * height, and bx + side * uy, by - side * ux.
+    below = height < 0
+    distance = np.abs(height)
     # 1 - side * b_across is |b - side * across|**2 / 2 for unit vectors: no cancellation when the disk's
     # direction nearly faces the segment's line (a nearly straight corner).
-    denominator = 0.5 * ((bx + side * uy) ** 2 + (by - side * ux) ** 2)
+    across_x = np.where(below, bx - uy, bx + uy)
+    across_y = np.where(below, by + ux, by - ux)
+    across_x *= across_x
+    across_y *= across_y
+    across_x += across_y
+    denominator = np.multiply(across_x, 0.5, out=across_x)
+    del across_y
     corner = (scale != 1.0).nonzero()[0]
     if len(corner):
-        denominator[corner] = scale[corner] - side[corner] * b_across[corner]
+        denominator[corner] = scale[corner] - np.where(below[corner], -1.0, 1.0) * b_across[corner]
     with np.errstate(divide="ignore", invalid="ignore"):
         t_tangent = distance / denominator
-        along = along_p + t_tangent * b_along
+        along = t_tangent * b_along
+        along += along_p
     slack = ALONG_TOLERANCE * length
-    tangent = (distance > 0) & (denominator > 1e-12) & (along >= -slack) & (along <= length + slack)
+    tangent = (distance > 0) & (denominator > 1e-12) & (along >= -slack)
+    tangent &= along <= length + slack
     # A tangency inside the segment is its first contact, and it is well conditioned; a contact through an
     # end point only counts when there is no such tangency (near it, the vertex root is a double root that
     # keeps only half the digits).
     t_vertex = np.minimum(t_start, t_end)
     t = np.where(tangent, t_tangent, t_vertex)
     at_start = t_vertex == t_start
+    site = boundary.start_site.take(segment)
+    site += ~at_start
+    np.copyto(site, segment, where=tangent, casting="unsafe")
+    if not with_along:
+        return t, None, site
     along = np.where(tangent, np.minimum(np.maximum(along, 0.0), length), np.where(at_start, 0.0, length))
-    site = np.where(tangent, segment, boundary.start_site[segment] + np.where(at_start, 0, 1))
     return t, along, site
 
 
@@ -664,38 +678,41 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
 
     Per-sample quantities are taken once per sample and then gathered per (sample, segment) pair.
     """
-    point, direction = rows(samples.point, sample), rows(samples.direction, sample)
+    # Per-sample columns, contiguous: gathered per pair with ``take``.
+    px, py = samples.point[:, 0][sample], samples.point[:, 1][sample]
+    bx, by = samples.direction[:, 0][sample], samples.direction[:, 1][sample]
     chain = samples.chain[sample]
-    centre = point + radius[:, None] * direction
+    centre_x, centre_y = px + radius * bx, py + radius * by
     # Every disk of the family up to the trial one lies in the disk of radius ``radius`` about the
     # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
-    reach = radius[:, None] * (1.0 + 1e-9)
-    query, segment = boundary.candidates(centre - reach, centre + reach)
+    reach = radius * (1.0 + 1e-9)
+    query, segment = boundary.candidates(
+        np.stack([centre_x - reach, centre_y - reach], axis=1), np.stack([centre_x + reach, centre_y + reach], axis=1)
+    )
     pairs = len(query)
+    near = boundary.within(segment, query, centre_x, centre_y, reach)
     if boundary.several_pairs:
-        mine = boundary.chain_id[segment] >> 1 == (chain >> 1)[query]
-        query, segment = query[mine], segment[mine]
-    near = boundary.within(segment, query, centre, reach[:, 0])
+        near &= boundary.chain_id.take(segment) >> 1 == (chain >> 1).take(query)
     # The own segments never count (their first contact is the sample itself): dropped before solving.
     first_own, last_own = samples.first_own[sample], samples.last_own[sample]
-    near &= (segment < first_own[query]) | (segment > last_own[query])
+    near &= (segment < first_own.take(query)) | (segment > last_own.take(query))
     near = near.nonzero()[0]
     query, segment = query.take(near), segment.take(near)
-    del near, centre, reach
+    del near, centre_x, centre_y, reach
     t, along, touched = first_contacts(
-        point[:, 0][query],
-        point[:, 1][query],
-        direction[:, 0][query],
-        direction[:, 1][query],
-        samples.scale[sample][query],
-        samples.slide[sample][query],
+        px.take(query),
+        py.take(query),
+        bx.take(query),
+        by.take(query),
+        samples.scale[sample].take(query),
+        samples.slide[sample].take(query),
         boundary,
         segment,
+        solution.contact is not None,
     )
     # The own segments' end vertices do not count either (the next segment answers for the last one's end).
-    own_segment = (touched >= boundary.start_site[first_own][query]) & (
-        touched <= (boundary.start_site[last_own] + 1)[query]
-    )
+    own_segment = touched >= boundary.start_site.take(first_own).take(query)
+    own_segment &= touched <= (boundary.start_site.take(last_own) + 1).take(query)
     own_segment |= t <= min_t[query]
     t[own_segment] = np.inf
     on_own = boundary.chain_id[segment] == chain[query]
@@ -719,7 +736,7 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
             solution,
             row[query[chosen]],
             t[chosen],
-            along[chosen],
+            None if along is None else along[chosen],
             touched[chosen],
             segment[chosen],
             best_own[query[chosen]],
