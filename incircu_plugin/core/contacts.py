@@ -246,10 +246,9 @@ class Boundary:
         keep = self._overlaps(segment, group[:, None], group_low, group_high)
         if real is not None:
             keep &= real
-        hit, rank = keep.nonzero()
-        group = group.take(hit)
-        segment = run.take(hit) * INDEX_RUN + rank
-        return self._split_groups(group, segment, starts, low, high)
+        # The kept entries' flat indices: numpy's nonzero of a two-dimensional mask is about twice as slow.
+        kept = keep.reshape(-1).nonzero()[0]
+        return self._split_groups(group.take(kept // INDEX_RUN), segment.reshape(-1).take(kept), starts, low, high)
 
     def _split_groups(self, group, segment, starts, low, high):
         """Pairs (box index, segment index), sorted by box, from the pairs (group index, segment index) of
