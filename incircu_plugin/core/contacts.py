@@ -217,7 +217,8 @@ class Boundary:
         self._index = None
 
     def candidates(self, low, high):
-        """Pairs (box index, segment index), sorted by box, of segments whose bounding box meets a box.
+        """Pairs (box index, segment index), each box's pairs consecutive, of segments whose bounding box meets
+        a box.
 
         With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
@@ -225,7 +226,8 @@ class Boundary:
         :func:`_group_starts`), which is much cheaper than one query per box where consecutive boxes overlap,
         as they do along a chain; the runs found are then filtered segment by segment against their group's
         box, then against each of its boxes (:meth:`_split_groups`). Both give the same pairs, each once, in
-        orders of their own (which changes no result: :func:`solve` breaks ties by site).
+        orders of their own (the first sorted by box, the second not; which changes no result: :func:`solve`
+        takes minima per box and breaks ties by site).
         """
         count = len(low)
         if count * self.segment_count <= ALL_PAIRS:
@@ -251,36 +253,38 @@ class Boundary:
         return self._split_groups(group.take(kept // INDEX_RUN), segment.reshape(-1).take(kept), starts, low, high)
 
     def _split_groups(self, group, segment, starts, low, high):
-        """Pairs (box index, segment index), sorted by box, from the pairs (group index, segment index) of
-        the boxes' groups (sorted by group; group ``g`` holds boxes ``starts[g]`` up to the next group's
-        first): each group's segments tested against each of its boxes in turn."""
-        count = len(low)
-        # Segment columns gathered once for all boxes of a group, box columns made contiguous.
+        """Pairs (box index, segment index), each box's pairs consecutive, from the pairs (group index, segment
+        index) of the boxes' groups (sorted by group; group ``g`` holds boxes ``starts[g]`` up to the next
+        group's first): each group's segments tested against its ``k``-th box, for each ``k`` in turn.
+
+        Box ``starts[g] + k`` is only tested in turn ``k``, whose pairs come sorted by group, hence by box:
+        the turns one after the other keep each box's pairs together (boxes in no overall order, no sort).
+        """
+        sizes = np.diff(starts, append=len(low))
+        # The k-th box of every group, column by column: row k of an array of (turns, groups); past a group's
+        # last box an empty one (low +inf, high -inf), which meets nothing.
+        owner, rank = ranges(sizes)
+        slot = rank * len(starts) + owner
+        turns = []
+        for column, empty in ((low[:, 0], np.inf), (high[:, 0], -np.inf), (low[:, 1], np.inf), (high[:, 1], -np.inf)):
+            padded = np.full((int(sizes.max()), len(starts)), empty)
+            padded.reshape(-1)[slot] = column
+            turns.append(padded)
+        box_low_x, box_high_x, box_low_y, box_high_y = turns
+        # Segment columns gathered once for all boxes of a group.
         low_x, low_y = self.low_x.take(segment), self.low_y.take(segment)
         high_x, high_y = self.high_x.take(segment), self.high_y.take(segment)
-        box_low_x, box_low_y, box_high_x, box_high_y = np.concatenate([low, high], axis=1).T.copy()
-        sizes = np.empty_like(starts)
-        np.subtract(starts[1:], starts[:-1], out=sizes[:-1])
-        sizes[-1] = count - starts[-1]
-        first_box, size = starts[group], sizes[group]
         boxes, kept = [], []
-        for first in range(int(sizes.max())):
-            box = first_box + first
-            np.minimum(box, count - 1, out=box)
-            keep = low_x <= box_high_x.take(box)
-            keep &= high_x >= box_low_x.take(box)
-            keep &= low_y <= box_high_y.take(box)
-            keep &= high_y >= box_low_y.take(box)
-            if first:
-                keep &= size > first
+        for turn in range(len(turns[0])):
+            keep = low_x <= box_high_x[turn].take(group)
+            keep &= high_x >= box_low_x[turn].take(group)
+            keep &= low_y <= box_high_y[turn].take(group)
+            keep &= high_y >= box_low_y[turn].take(group)
             # The kept rows' indices once, then gathers: cheaper than a boolean mask applied to two arrays.
             keep = keep.nonzero()[0]
-            boxes.append(box.take(keep))
+            boxes.append(starts.take(group.take(keep)) + turn)
             kept.append(segment.take(keep))
-        box = np.concatenate(boxes)
-        # Each part is sorted by box: a stable sort merges them, each box's segments in their order.
-        order = np.argsort(box, kind="stable")
-        return box.take(order), np.concatenate(kept).take(order)
+        return np.concatenate(boxes), np.concatenate(kept)
 
     def within(self, segment, box, x, y, distance):
         """Whether each segment comes within ``distance[box]`` (CRS units) of the point ``(x[box], y[box])``
@@ -566,7 +570,7 @@ def per_sample(value, chain):
 
 
 def group_minima(group, size, *values):
-    """Minimum of each of ``values`` per group id (``group`` sorted ascending, ids below ``size``); inf for
+    """Minimum of each of ``values`` per group id (each group's rows consecutive, ids below ``size``); inf for
     empty groups. One array of ``size`` per array of ``values``."""
     results = [np.full(size, np.inf) for _ in values]
     if len(group):
@@ -577,7 +581,7 @@ def group_minima(group, size, *values):
 
 
 def _lowest_site_of_groups(picked, group, site):
-    """Of the rows ``picked`` (ascending, ``group`` sorted ascending), each group's row of the lowest ``site``.
+    """Of the rows ``picked`` (ascending; each group's rows consecutive), each group's row of the lowest ``site``.
 
     The tie rule of :func:`solve`: ``picked`` are the pairs touched at a sample's first contact, and a site
     occurs at most once per sample (:meth:`Boundary.candidates` lists each (box, segment) pair once, and a
