@@ -291,17 +291,16 @@ class Boundary:
         (``x``, ``y`` and ``distance``: contiguous arrays, gathered with ``take``)."""
         ux, uy = self.unit_x[segment], self.unit_y[segment]
         dx, dy = x.take(box) - self.start_x[segment], y.take(box) - self.start_y[segment]
-        distance = distance.take(box)
         along = dx * ux
         along += dy * uy
-        np.minimum(np.maximum(along, 0.0, out=along), self.length[segment], out=along)
+        np.minimum(np.maximum(along, 0.0, out=along), self.length.take(segment), out=along)
         # The offset from the nearest point, in place: (dx - along*ux)**2 + (dy - along*uy)**2.
         dx -= np.multiply(along, ux, out=ux)
         dy -= np.multiply(along, uy, out=uy)
         dx *= dx
         dy *= dy
         dx += dy
-        return dx <= distance * distance
+        return dx <= (distance * distance).take(box)
 
     def _overlaps(self, segment, box, low, high):
         """Whether each segment's bounding box meets the box ``low[box]..high[box]`` (gathered column by column:
@@ -716,9 +715,9 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     # The own segments' end vertices do not count either (the next segment answers for the last one's end).
     own_segment = touched >= boundary.start_site.take(first_own).take(query)
     own_segment &= touched <= (boundary.start_site.take(last_own) + 1).take(query)
-    own_segment |= t <= min_t[query]
-    t[own_segment] = np.inf
-    on_own = boundary.chain_id[segment] == chain[query]
+    own_segment |= t <= min_t.take(query)
+    np.putmask(t, own_segment, np.inf)
+    on_own = boundary.chain_id.take(segment) == chain.take(query)
     t_own = np.where(on_own, t, np.inf)
     t_other = np.where(on_own, np.inf, t)
     del own_segment, on_own
@@ -726,13 +725,13 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     best = np.minimum(best_own, best_other)
     settled = best <= radius
     solution.contact_t[row[settled]] = best[settled]
-    best_own_pair = best_own[query]
+    best_own_pair = best_own.take(query)
     own_tied = (np.isfinite(t_own) & (t_own == best_own_pair)).nonzero()[0]
     own_winner = _lowest_site_of_groups(own_tied, query, touched)
     solution.site[row[query[own_winner]]] = touched[own_winner]
-    winner = np.isfinite(t_other) & (t_other == best_other[query])
+    winner = np.isfinite(t_other) & (t_other == best_other.take(query))
     winner &= t_other <= best_own_pair * (1.0 + TIE_TOLERANCE)
-    winner &= settled[query]
+    winner &= settled.take(query)
     chosen = _lowest_site_of_groups(winner.nonzero()[0], query, touched)
     if len(chosen):
         _record_winners(
