@@ -97,7 +97,8 @@ def _swept_path(chains, graph, start, acyclic, check):
 
 def _farthest(distance):
     """Return the node of largest distance in a ``{node: distance}`` map (the smallest such node on a tie)."""
-    return max(distance.items(), key=lambda item: (item[1], -item[0]))[0]
+    largest = max(distance.values())
+    return min(node for node, reached in distance.items() if reached == largest)
 
 
 def _farthest_key(chains, graph, start, acyclic, check):
@@ -351,7 +352,8 @@ def _sweep(graph, source, acyclic, check):
     """Return the distance from ``source`` to each contracted node it reaches and each one's ``(predecessor, via)``.
 
     A plain traversal on a forest (every reachable node has one path from the source), else Dijkstra. Both
-    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only.
+    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only. A
+    leaf is not queued: from it the only way leads back (no shorter, the weights being non-negative).
     """
     start, neighbours, lengths, vias = graph
     distance = {source: 0.0}
@@ -373,6 +375,8 @@ def _sweep(graph, source, acyclic, check):
             if candidate < distance.get(neighbour, float("inf")):
                 distance[neighbour] = candidate
                 predecessor[neighbour] = (node, vias[k])
+                if start[neighbour + 1] - start[neighbour] == 1:
+                    continue
                 if acyclic:
                     queue.append((candidate, neighbour))
                 else:
