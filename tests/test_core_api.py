@@ -12,6 +12,7 @@ from shapely.geometry import MultiPolygon, box
 from incircu_plugin.core import (
     Cancelled,
     IncirCuError,
+    OptionError,
     SplitPointError,
     centerline_from_chains,
     default_spacing,
@@ -20,6 +21,7 @@ from incircu_plugin.core import (
     polygon_centerline,
     split_polygon,
 )
+from incircu_plugin.core.chains import split_checked_polygon
 from tests.support import geometry_cases
 from tests.support.oracle import check_centerline
 
@@ -116,6 +118,17 @@ def test_split_polygon_inserts_a_split_point_inside_an_edge_as_a_vertex():
     for chain in (c1, c2):
         assert tuple(chain[0]) == (0.0, 3.0) and tuple(chain[-1]) == (100.0, 7.5)
     assert len(c1) + len(c2) - 2 == 4 + 2
+
+
+def test_split_checked_polygon_is_split_polygon_without_the_input_checks():
+    polygon = box(0.0, 0.0, 100.0, 10.0)
+    points = [(0.0, 3.0), (100.0, 7.5)]
+    for checked, plain in zip(split_checked_polygon(polygon, np.array(points)), split_polygon(polygon, points)):
+        assert np.array_equal(checked, plain)
+    with pytest.raises(SplitPointError, match="exactly 2 split points"):
+        split_checked_polygon(polygon, np.array(points[:1]))
+    with pytest.raises(OptionError):
+        split_checked_polygon(polygon, np.array(points), -1.0)
 
 
 def test_multipolygon_gives_one_outcome_per_part_and_isolates_failures():

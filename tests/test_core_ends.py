@@ -373,3 +373,40 @@ def test_the_last_trunk_point_is_the_first_widest_junction_near_the_tip_else_whe
     )
     position = _last_trunk_positions(tips)
     np.testing.assert_allclose(position, [1.0, ends_module.CAP_REACH - 1.0, 5.0], rtol=1e-12)
+
+
+def test_arc_vertices_hold_every_vertex_strictly_within_each_arc():
+    """Arcs on three rings (a star, a finely and unevenly digitised circle, a box), some wrapping past the
+    ring's start, some starting at zero or on a vertex, one a whole turn: each arc's vertices include every
+    vertex strictly within it, and their turns are those of the ring's neighbours."""
+    rng = np.random.default_rng(5)
+    angles = np.sort(rng.random(400)) * 2.0 * np.pi
+    star = Polygon(
+        [
+            (np.cos(a) * (1.0 + 0.3 * (k % 2)), np.sin(a) * (1.0 + 0.3 * (k % 2)))
+            for k, a in enumerate(np.linspace(0, 6, 12))
+        ]
+    )
+    circle = Polygon(np.stack([np.cos(angles), np.sin(angles)], axis=1) * 0.4)
+    exteriors = shapely.get_exterior_ring(np.array([orient(star), orient(circle), orient(box(0, 0, 0.6, 0.1))]))
+    rings = ends_module._Rings(exteriors)
+    ring = np.repeat(np.arange(3), 40)
+    perimeter = rings.perimeters[ring]
+    start = rng.random(len(ring)) * perimeter
+    start[::10] = 0.0
+    on_vertex = np.arange(5, len(ring), 10)
+    start[on_vertex] = rings.positions[rings.starts[ring[on_vertex]] + 1]
+    length = rng.random(len(ring)) * perimeter
+    length[::7] = perimeter[::7]
+    vertex, arc = rings.arc_vertices(ring, start, length)
+    for number in range(len(ring)):
+        own = slice(rings.starts[ring[number]], rings.starts[ring[number]] + rings.lengths[ring[number]])
+        offset = (rings.positions[own] - start[number]) % perimeter[number]
+        inside = np.flatnonzero((offset > 0.0) & (offset < length[number])) + own.start
+        assert set(inside.tolist()) <= set(vertex[arc == number].tolist())
+    coordinates = shapely.get_coordinates(exteriors[1])[:-1]
+    incoming = coordinates - np.roll(coordinates, 1, axis=0)
+    outgoing = np.roll(coordinates, -1, axis=0) - coordinates
+    expected = np.arctan2(np.cross(incoming, outgoing), np.sum(incoming * outgoing, axis=1))
+    own = rings.starts[1] + np.arange(rings.lengths[1])
+    assert np.allclose(rings.turns(own), expected, rtol=0.0, atol=1e-12)

@@ -111,3 +111,16 @@ def test_equally_far_nodes_go_to_the_smallest_node(monkeypatch, front):
     tree_path, cyclic_path = heaviest_paths(18, edges, weights, [0, 10], [True, False])
     assert tree_path.tolist() == [1, 0, 2]
     assert cyclic_path.tolist() == [11, 10, 12]
+
+
+@pytest.mark.parametrize("size", [5, 1000])
+def test_a_component_that_is_one_cycle_starts_from_its_smallest_node(size):
+    """A ring of ``size`` nodes has no node without two neighbours: its smallest node becomes the key node, so
+    its path is that node alone, whatever node it starts from; the chain next to it is a tree and keeps its
+    heaviest path."""
+    ring = np.arange(3, 3 + size)
+    edges = np.concatenate([[[0, 1], [1, 2]], np.stack([ring, np.roll(ring, -1)], axis=1)])
+    weights = np.ones(len(edges))
+    chain, cycle = heaviest_paths(3 + size, edges, weights, [1, 3 + size // 2], [True, False])
+    assert chain.tolist() in ([0, 1, 2], [2, 1, 0])
+    assert cycle.tolist() == [3]

@@ -131,3 +131,30 @@ def test_the_inside_found_by_labels_gives_the_same_skeleton(monkeypatch):
     for name in ("nodes", "radii", "spans", "edges", "owner"):
         assert np.array_equal(getattr(spread, name), getattr(labelled, name))
     assert len(spread.nodes) > 0
+
+
+def test_split_samples_keeps_the_flagged_polygons_and_inserts_midpoints_after_their_starts():
+    """Three rings of three polygons: the middle polygon is dropped, and the midpoints of the flagged
+    segments (one of them the closing segment of a ring) follow their starts, in ring order."""
+    samples = np.arange(20.0).reshape(10, 2)
+    ring = np.array([0, 0, 0, 1, 1, 1, 2, 2, 2, 2])
+    owner = np.array([0, 0, 0, 1, 1, 1, 2, 2, 2, 2])
+    following = skeleton_module._following(ring)
+    keep = owner != 1
+    split = np.zeros(10, dtype=bool)
+    split[[0, 2, 7]] = True
+    expected_samples, expected_ring = [], []
+    for index in np.flatnonzero(keep).tolist():
+        expected_samples.append(samples[index])
+        expected_ring.append(ring[index])
+        if split[index]:
+            expected_samples.append((samples[index] + samples[following[index]]) / 2.0)
+            expected_ring.append(ring[index])
+    got_samples, got_ring, got_owner = skeleton_module._split_samples(samples, ring, owner, following, split, keep)
+    assert np.array_equal(got_samples, np.array(expected_samples))
+    assert got_ring.tolist() == expected_ring and got_owner.tolist() == expected_ring
+
+
+def test_sides_run_from_each_corner_to_the_next():
+    start, end = skeleton_module._sides(np.array([[3, 4, 5], [9, 7, 8]]))
+    assert start.tolist() == [3, 4, 5, 9, 7, 8] and end.tolist() == [4, 5, 3, 7, 8, 9]

@@ -13,7 +13,7 @@ from .chains import (
     extent_of,
     find_self_crossing,
     orient_bank_lines,
-    split_polygon,
+    split_checked_polygon,
     validate_polygon,
 )
 from .ends import END_RULES
@@ -38,6 +38,9 @@ BATCH_FEATURES = 256
 
 #: Most boundary vertices in one batch of :func:`batches`: bounds the memory a batch holds at once.
 BATCH_VERTICES = 100_000
+
+#: The fields a :class:`PolygonCenterlineResult` takes over from its :class:`CenterlineResult`.
+_RESULT_FIELDS = tuple(field.name for field in fields(CenterlineResult) if field.init)
 
 
 def check_island_mode(islands):
@@ -156,9 +159,9 @@ def polygon_centerline_steps(
             polygon, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
-        split_points = (ends.start, ends.end)
+        split_points = split_point_coordinates((ends.start, ends.end))
         ends_from = "guide" if ends.guided else "automatic"
-    c1, c2 = split_polygon(polygon, split_points, snap_tolerance)
+    c1, c2 = split_checked_polygon(polygon, split_points, snap_tolerance)
     steps = clean_chains_steps
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
@@ -168,7 +171,7 @@ def polygon_centerline_steps(
     )
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
     result = _checked(result, region)
-    values = {field.name: getattr(result, field.name) for field in fields(CenterlineResult) if field.init}
+    values = {name: getattr(result, name) for name in _RESULT_FIELDS}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
     return PolygonCenterlineResult(**values)
 

@@ -309,7 +309,13 @@ def split_polygon(polygon, split_points, tolerance=None):
     [[0.0, 1.0], [0.0, 0.0], [10.0, 0.0], [10.0, 1.0]]
     """
     validate_polygon(polygon)
-    points = split_point_coordinates(split_points)
+    return split_checked_polygon(polygon, split_point_coordinates(split_points), tolerance)
+
+
+def split_checked_polygon(polygon, points, tolerance=None):
+    """:func:`split_polygon` of a polygon :func:`validate_polygon` passed and split points
+    :func:`.validation.split_point_coordinates` returned (an (n, 2) float array, CRS units), which are not
+    checked again; raises as :func:`split_polygon` does."""
     if len(points) != 2:
         raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
     tolerance = tolerance_length(tolerance, "snap_tolerance")

@@ -248,22 +248,24 @@ def _fewest_vertices(points, tolerance):
     for begin in range(0, last, batch):
         _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
     if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
-        indexed = shapely.linestrings(_with_index(points, np.arange(len(points))))
-        line = shapely.simplify(indexed, tolerance, preserve_topology=True)
+        line = shapely.simplify(_indexed_line(points, 0, last), tolerance, preserve_topology=True)
         keep[:] = False
         keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
     return keep
 
 
 def _pieces(points, begin, end):
-    """The line through ``points[begin : end + 1]`` as linestrings of ``SIMPLIFY_PIECE`` segments (the last one
-    shorter) that share their end vertices, each vertex with its index as its z."""
-    starts = np.arange(begin, end, SIMPLIFY_PIECE)
-    sizes = np.minimum(starts + SIMPLIFY_PIECE, end) - starts + 1
-    piece = np.repeat(np.arange(len(starts)), sizes)
-    # Each piece after the first starts again at the point the one before it ends at.
-    index = begin + np.arange(len(piece)) - piece
-    return shapely.linestrings(_with_index(points, index), indices=piece)
+    """The line through ``points[begin : end + 1]`` as a list of linestrings of ``SIMPLIFY_PIECE`` segments (the
+    last one shorter) that share their end vertices, each vertex with its index as its z."""
+    # One linestring per piece: shapely's ``indices`` path (one call for all) costs more than the calls it saves.
+    return [
+        _indexed_line(points, start, min(start + SIMPLIFY_PIECE, end)) for start in range(begin, end, SIMPLIFY_PIECE)
+    ]
+
+
+def _indexed_line(points, begin, end):
+    """The linestring through ``points[begin : end + 1]`` (CRS units), each vertex with its index as its z."""
+    return shapely.linestrings(_with_index(points, np.arange(begin, end + 1)))
 
 
 def _keep_simplified(keep, lines, tolerance):

@@ -97,7 +97,8 @@ def _swept_path(chains, graph, start, acyclic, check):
 
 def _farthest(distance):
     """Return the node of largest distance in a ``{node: distance}`` map (the smallest such node on a tie)."""
-    return max(distance.items(), key=lambda item: (item[1], -item[0]))[0]
+    largest = max(distance.values())
+    return min(node for node, reached in distance.items() if reached == largest)
 
 
 def _farthest_key(chains, graph, start, acyclic, check):
@@ -138,27 +139,23 @@ class _Chains:
         self.head = np.concatenate([edges[:, 1], edges[:, 0]]).astype(np.int64)
         twin = np.concatenate([np.arange(edge_count, 2 * edge_count), np.arange(edge_count)])
         degree = np.bincount(self.tail, minlength=count)
-        key = degree != 2
-        # A component made of one cycle has no key node: its smallest node becomes one.
-        labels = connected_labels(count, edges[:, 0], edges[:, 1])
-        has_key = np.zeros(count, dtype=bool)
-        has_key[labels[key]] = True
-        key[np.flatnonzero((labels == np.arange(count)) & ~has_key[labels])] = True
-        self.key = key
-        self.keys = np.flatnonzero(key)
-        self.key_index = np.full(count, -1, dtype=np.int64)
-        self.key_index[self.keys] = np.arange(len(self.keys))
-        self.labels = labels
+        self.key = degree != 2
         order = stable_order(self.tail, count)
         first_out = np.concatenate([[0], np.cumsum(degree)])
-        through = np.flatnonzero(~key[self.head])
-        one = order[first_out[self.head[through]]]
-        other = order[first_out[self.head[through]] + 1]
-        self.following = np.full(2 * edge_count, -1, dtype=np.int64)
-        self.following[through] = np.where(one == twin[through], other, one)
-        weights = np.concatenate([weights, weights]).astype(float)
-        (self.total, self.steps), self.last = _rank(self.following, (weights, np.ones(len(weights), np.int64)))
         self.first_out = order[np.minimum(first_out[:-1], len(order) - 1)] if len(order) else first_out[:-1]
+        weights = np.concatenate([weights, weights]).astype(float)
+        unit = np.ones(len(weights), np.int64)
+        self.following = _following_edges(self.key, self.head, twin, order, first_out)
+        (self.total, self.steps), self.last, cycling = _rank(self.following, (weights, unit))
+        if len(cycling):
+            # A component made of one cycle has no key node: its smallest node becomes one.
+            labels = connected_labels(count, self.tail[cycling], self.head[cycling])
+            self.key[labels[self.tail[cycling]]] = True
+            self.following = _following_edges(self.key, self.head, twin, order, first_out)
+            (self.total, self.steps), self.last, _ = _rank(self.following, (weights, unit))
+        self.keys = np.flatnonzero(self.key)
+        self.key_index = np.full(count, -1, dtype=np.int64)
+        self.key_index[self.keys] = np.arange(len(self.keys))
         # Directed edges grouped by chain (chains in the order of their last edges), each chain from its first
         # edge to its last: a chain's edges from ``edge`` on are the ``steps[edge]`` entries from ``edge``'s
         # position in ``chain_order``.
@@ -167,24 +164,27 @@ class _Chains:
         self.chain_position = chain_start[self.last] + chain_size[self.last] - self.steps
         self.chain_order = np.empty_like(self.chain_position)
         self.chain_order[self.chain_position] = np.arange(len(self.chain_position))
-        component_edges = np.bincount(labels[self.tail[:edge_count]], minlength=count)
-        self.tree = component_edges == np.bincount(labels, minlength=count) - 1
+        # A chain of k edges has k - 1 inner nodes: a component is a tree when its contracted graph is one.
+        self.leaving = np.flatnonzero(self.key[self.tail])
+        self.source = self.key_index[self.tail[self.leaving]]
+        self.target = self.key_index[self.head[self.last[self.leaving]]]
+        self.labels = connected_labels(len(self.keys), self.source, self.target)
+        nodes = np.bincount(self.labels, minlength=len(self.keys))
+        self.tree = np.bincount(self.labels[self.source], minlength=len(self.keys)) == 2 * (nodes - 1)
 
     def contracted(self):
         """Return the contracted graph in compressed adjacency: ``(start, neighbour, weight, via)`` arrays.
 
         Node ``i`` of the contracted graph is ``keys[i]``; ``via`` is the first directed edge of each chain.
         """
-        leaving = np.flatnonzero(self.key[self.tail])
-        source = self.key_index[self.tail[leaving]]
-        target = self.key_index[self.head[self.last[leaving]]]
+        leaving, source = self.leaving, self.source
         order = stable_order(source, len(self.keys))
         start = np.concatenate([[0], np.cumsum(np.bincount(source, minlength=len(self.keys)))])
-        return _Contracted(start, target[order], self.total[leaving][order], leaving[order])
+        return _Contracted(start, self.target[order], self.total[leaving][order], leaving[order])
 
     def in_tree(self, nodes):
         """Return whether each node's component is a tree (as many edges as nodes less one)."""
-        return self.tree[self.labels[nodes]]
+        return self.tree[self.labels[self.key_index[self.nearest_keys(nodes)]]]
 
     def nearest_key(self, node):
         """Return a key node of ``node``'s component: ``node`` itself or the end of one of its chains."""
@@ -218,6 +218,26 @@ class _Chains:
         return np.split(nodes, heads[1:])
 
 
+def _following_edges(key, head, twin, order, first_out):
+    """Return the next directed edge of each one's chain: the other edge out of its head, ``-1`` at a key node.
+
+    Parameters
+    ----------
+    key : ndarray of bool
+        Whether each node is a key node (every other node has two edges).
+    head, twin : ndarray of int
+        Head node and reverse edge of each directed edge.
+    order, first_out : ndarray of int
+        The directed edges by tail node, and where each node's edges begin in ``order``.
+    """
+    through = np.flatnonzero(~key[head])
+    one = order[first_out[head[through]]]
+    other = order[first_out[head[through]] + 1]
+    following = np.full(len(head), -1, dtype=np.int64)
+    following[through] = np.where(one == twin[through], other, one)
+    return following
+
+
 def _rank(following, weights):
     """Pointer jumping: the sums of weights from each directed edge to the end of its chain, and that end.
 
@@ -233,19 +253,24 @@ def _rank(following, weights):
     totals : tuple of ndarray
         One per kind of weight.
     last : ndarray of int
+    cycling : ndarray of int
+        The directed edges on cycles without an end (their totals and ``last`` mean nothing).
     """
     totals = tuple(weight.copy() for weight in weights)
     last = np.arange(len(following))
     successor = following.copy()
     active = np.flatnonzero(successor >= 0)
-    while len(active):
+    # After k rounds every chain of up to 2**k edges has ended: what still runs lies on a cycle.
+    for _ in range(len(following).bit_length() + 1):
+        if not len(active):
+            break
         ahead = successor[active]
         for total in totals:
             total[active] += total[ahead]
         last[active] = last[ahead]
         successor[active] = successor[ahead]
         active = active[successor[active] >= 0]
-    return totals, last
+    return totals, last, active
 
 
 def _forest_sweep(graph, sources, check):
@@ -327,7 +352,8 @@ def _sweep(graph, source, acyclic, check):
     """Return the distance from ``source`` to each contracted node it reaches and each one's ``(predecessor, via)``.
 
     A plain traversal on a forest (every reachable node has one path from the source), else Dijkstra. Both
-    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only.
+    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only. A
+    leaf is not queued: from it the only way leads back (no shorter, the weights being non-negative).
     """
     start, neighbours, lengths, vias = graph
     distance = {source: 0.0}
@@ -349,6 +375,8 @@ def _sweep(graph, source, acyclic, check):
             if candidate < distance.get(neighbour, float("inf")):
                 distance[neighbour] = candidate
                 predecessor[neighbour] = (node, vias[k])
+                if start[neighbour + 1] - start[neighbour] == 1:
+                    continue
                 if acyclic:
                     queue.append((candidate, neighbour))
                 else:

@@ -25,7 +25,7 @@ from typing import NamedTuple
 import numpy as np
 import shapely
 
-from .contacts import ranges, stable_order
+from .contacts import put_rows, ranges, rows, stable_order
 from .errors import InvalidGeometryError
 from .polyline import counterclockwise, typical_width
 
@@ -160,7 +160,7 @@ def _triangulations(polygons):
         following = _following(ring)
         local = ranges(np.bincount(owner, minlength=count))[1]
         corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
-        side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
+        side_start, side_end = _sides(corner_ids)
         present = np.zeros(len(samples), dtype=bool)
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
@@ -304,14 +304,19 @@ def _following(ring):
 
 
 def _split_samples(samples, ring, owner, following, split, keep):
-    """Keep the samples flagged ``keep`` and insert the midpoint of every flagged segment after its start."""
+    """Keep the samples flagged ``keep`` and insert the midpoint of every flagged segment after its start.
+
+    Every segment flagged ``split`` starts at a sample flagged ``keep``.
+    """
     where = np.flatnonzero(split)
     middles = 0.5 * (samples[where] + samples[following[where]])
-    samples = np.insert(samples, where + 1, middles, axis=0)
-    ring = np.insert(ring, where + 1, ring[where])
-    owner = np.insert(owner, where + 1, owner[where])
-    kept = np.insert(keep, where + 1, True)
-    return samples[kept], ring[kept], owner[kept]
+    kept = np.flatnonzero(keep)
+    after = np.searchsorted(kept, where) + 1
+    return (
+        np.insert(rows(samples, kept), after, middles, axis=0),
+        np.insert(ring[kept], after, ring[where]),
+        np.insert(owner[kept], after, owner[where]),
+    )
 
 
 def _delaunay_all(samples, owner, local, steps, count):
@@ -355,7 +360,7 @@ def _delaunay_all(samples, owner, local, steps, count):
         success[polygons] = [item is not None for item in found]
         triangles[polygons[success[polygons]]] = [item for item in found if item is not None]
         took = success[owner[mask]]
-        moved_all[np.flatnonzero(mask)[took]] = moved[took]
+        put_rows(moved_all, np.flatnonzero(mask)[took], moved[took])
         waiting &= ~success
     made = np.flatnonzero(~shapely.is_missing(triangles))
     coordinates = shapely.get_coordinates(triangles[made], include_z=True)
@@ -451,7 +456,7 @@ def _dual_graph(corners, corner_ids, following, shapes):
     # Reversed corners (c2, c1, c0) have the sides c2-c1, c1-c0, c0-c2: the old second, first and third.
     side_lengths[clockwise] = side_lengths[clockwise][:, [1, 0, 2]]
     double_area = np.abs(signed)
-    side_start, side_end = corner_ids.ravel(), np.roll(corner_ids, -1, axis=1).ravel()
+    side_start, side_end = _sides(corner_ids)
     forward = following[side_start] == side_end
     on_boundary = (forward | (following[side_end] == side_start)).reshape(-1, 3)
     first, second = _shared_sides(np.flatnonzero(~on_boundary.ravel()), side_start, side_end, len(following))
@@ -485,6 +490,12 @@ def _dual_graph(corners, corner_ids, following, shapes):
     across = boundary_side > 0.0
     spans[across] = np.minimum(spans[across], double_area[across] / boundary_side[across])
     return nodes, radii, spans, edges, inside
+
+
+def _sides(corner_ids):
+    """Return the first and second sample of each side of the triangles, three sides per triangle in order
+    (from corner k to corner k + 1)."""
+    return corner_ids.ravel(), corner_ids.take([1, 2, 0], axis=1).ravel()
 
 
 def _triangle_shapes(corners):
