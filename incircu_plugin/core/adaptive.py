@@ -814,11 +814,7 @@ class _Tracer:
         # Beside the corner the disk touches the corner's other segment (the interval's site there).
         site_before = np.concatenate([intervals.site0[after], site])
         site_after = np.concatenate([site, intervals.site1[before]])
-        cut, owner = np.unique(owner, return_inverse=True)
-        pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
-        uncut = np.ones(len(intervals.span), dtype=bool)
-        uncut[cut] = False
-        return _Intervals.concatenate([pieces, intervals.subset(uncut.nonzero()[0])])
+        return _split_at_nodes(intervals, owner, u, index, site_before, site_after, False)
 
     def _open_and_curved(self, intervals):
         """The open intervals (:meth:`_is_open`) and the curved ones (:meth:`_is_curved`), each judged on the
