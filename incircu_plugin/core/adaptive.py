@@ -31,11 +31,12 @@ chain's contact walks on, away from the span, to the site where the other chain'
 
 A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
 and the event where that line and the other chain are equally far is the junction of the corner's branch with
-the axis. Before the rounds that junction is solved directly, once for both edges: the disks on the corner's
-bisector (radius ``scale * t``, touching both segments ``slide * t`` from the corner) first touch the rest
-of the boundary at the largest empty disk touching both segments, which is the junction; it is cut into both
-edges' intervals as a sample of each (their disks are the same disk). Where it would touch a segment beyond its
-interval (a short edge), or next to a chain's end, the rounds find the junction as an event.
+the axis. Before the rounds that junction is solved directly, once for both edges and together with the
+initial samples: the disks on the corner's bisector (radius ``scale * t``, touching both segments ``slide * t``
+from the corner) first touch the rest of the boundary at the largest empty disk touching both segments, which is
+the junction; it is cut into both edges' intervals as a sample of each (their disks are the same disk). Where it
+would touch a segment beyond its interval (a short edge), or next to a chain's end, the rounds find the junction
+as an event.
 
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
