@@ -448,25 +448,71 @@ def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monk
     assert corners["count"] > 0
 
 
-def test_the_ends_and_middles_of_the_edges_are_solved_in_one_pass_along_the_chains(monkeypatch):
-    # The bulging bank of convex corners: every edge between two corners also has its middle solved first; the
-    # middles go into the one coarse-to-fine solution of the edges' ends, in the order of their points.
+def test_the_ends_middles_and_corners_of_the_edges_are_solved_in_one_pass_along_the_chains(monkeypatch):
+    # The bulging bank of convex corners: every edge between two corners also has its middle solved first, and
+    # every corner its bisector's sample; both go into the one coarse-to-fine solution of the edges' ends, in
+    # the order of their points, and nothing else is solved before the rounds.
     from incircu_plugin.core import adaptive
 
-    calls = []
+    calls, solved_alone = [], []
     original = adaptive.solve_in_chunks
 
     def recording(samples, index, *arguments):
         calls.append((samples.chain[index], samples.position[index], len(samples.chain) - 1 in index))
+        calls[-1] += (np.count_nonzero(samples.slide[index] > 0.0),)
         return original(samples, index, *arguments)
 
     monkeypatch.setattr(adaptive, "solve_in_chunks", recording)
+    original_solve = adaptive.solve
+
+    def solving(samples, *arguments):
+        solved_alone.append(np.count_nonzero(samples.slide > 0.0))
+        return original_solve(samples, *arguments)
+
+    monkeypatch.setattr(adaptive, "solve", solving)
     xs = np.linspace(0.0, 40.0, 21)
     polygon = Polygon([(x, -3.0 * np.sin(np.pi * x / 40.0)) for x in xs] + [(40.0, 10.0), (0.0, 10.0)])
     assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
-    chain, position, with_last_middle = calls[0]
-    assert len(calls) == 1 and with_last_middle
+    chain, position, with_last_sample, corners = calls[0]
+    # Every one of the 19 corners, and none solved alone (the rounds' probes never are corners).
+    assert len(calls) == 1 and with_last_sample and corners == 19 and not any(solved_alone)
     assert np.all((chain[1:] > chain[:-1]) | ((chain[1:] == chain[:-1]) & (position[1:] >= position[:-1])))
+
+
+def test_the_initial_intervals_run_between_the_initial_samples_along_every_span():
+    from incircu_plugin.core.adaptive import FAN, _initial_samples, _Tracer
+    from incircu_plugin.core.contacts import Boundary
+
+    # A zigzag bank (reflex vertices: fans; convex ones: edges between two corners have a middle sample).
+    bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (7.0, 0.5), (9.0, 0.0)])
+    bank_b = np.array([(9.0, 6.0), (0.0, 6.5)])
+    tracer = _Tracer([1, -1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (True, 0.01, 6, 50, 0)))
+    spans = tracer.spans
+    edge, given_site, _, _ = _initial_samples(spans, tracer.sites, tracer.closed, tracer.traced, tracer.boundary)
+    between_corners = (given_site[0::2] >= 0) & (given_site[1::2] >= 0)
+    assert between_corners.any() and np.any(spans.kind == FAN)
+    intervals = tracer._initial_intervals(edge, between_corners)
+    # The samples: both ends of every edge, then the middles.
+    middle = np.flatnonzero(between_corners)
+    sample_span = np.concatenate([np.repeat(np.arange(len(edge)), 2), middle])
+    sample_u = np.concatenate([np.stack([0.0 * edge, spans.length[: len(edge)]], 1).ravel(), spans.length[middle] / 2])
+    order = np.lexsort((intervals.u0, intervals.span))
+    span, u0, u1 = intervals.span[order], intervals.u0[order], intervals.u1[order]
+    # Every span from 0 to its length, in pieces that meet.
+    assert np.array_equal(np.unique(span), np.arange(len(spans.kind)))
+    starts = np.ones(len(span), dtype=bool)
+    starts[1:] = span[1:] != span[:-1]
+    ends = np.append(starts[1:], True)
+    assert np.all(u0[starts] == 0.0) and np.all(u1[ends] == spans.length[span[ends]])
+    assert np.array_equal(u0[~starts], u1[~ends])
+    # Each end's sample lies where the interval ends (a fan's ends at the vertex, its edges' samples).
+    for end, u in ((intervals.left[order], u0), (intervals.right[order], u1)):
+        on_edge = spans.kind[span] != FAN
+        assert np.array_equal(sample_span[end[on_edge]], span[on_edge])
+        assert np.array_equal(sample_u[end[on_edge]], u[on_edge])
+        point, _ = spans.points(sample_span[end], sample_u[end])
+        assert np.allclose(point, spans.points(span, u)[0], rtol=0.0, atol=1e-12)
+    assert np.all(intervals.site0 == -1) and np.all(intervals.site1 == -1)
 
 
 def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():

@@ -31,11 +31,12 @@ chain's contact walks on, away from the span, to the site where the other chain'
 
 A convex vertex needs no sample of its own: the edges next to it meet the corner's own edge line at ``t = 0``,
 and the event where that line and the other chain are equally far is the junction of the corner's branch with
-the axis. Before the rounds that junction is solved directly, once for both edges: the disks on the corner's
-bisector (radius ``scale * t``, touching both segments ``slide * t`` from the corner) first touch the rest
-of the boundary at the largest empty disk touching both segments, which is the junction; it is cut into both
-edges' intervals as a sample of each (their disks are the same disk). Where it would touch a segment beyond its
-interval (a short edge), or next to a chain's end, the rounds find the junction as an event.
+the axis. Before the rounds that junction is solved directly, once for both edges and together with the
+initial samples: the disks on the corner's bisector (radius ``scale * t``, touching both segments ``slide * t``
+from the corner) first touch the rest of the boundary at the largest empty disk touching both segments, which is
+the junction; it is cut into both edges' intervals as a sample of each (their disks are the same disk). Where it
+would touch a segment beyond its interval (a short edge), or next to a chain's end, the rounds find the junction
+as an event.
 
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
@@ -296,8 +297,8 @@ class _Sites:
 
     def chain(self, site):
         """Chain of each site (-1 for no site); ``site`` is -1 or a segment or vertex index (below
-        ``segment_count + len(vertex)``)."""
-        return self.site_chain[np.maximum(site, -1)]
+        ``segment_count + len(vertex)``): -1 reads the last entry, the no-site one."""
+        return self.site_chain.take(site)
 
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
@@ -559,16 +560,16 @@ class _Tracer:
         #: traced chains share it, else None.
         self._uniform = {}
 
-    def of(self, values, intervals):
-        """Per-chain ``values`` for each interval (the chain of its span): spans lie on traced chains only, so
-        one value when those all share it (a single feature)."""
+    def of(self, values, span):
+        """Per-chain ``values`` for each of the spans ``span`` (the chain of each): spans lie on traced chains
+        only, so one value when those all share it (a single feature)."""
         uniform = self._uniform.get(id(values), False)
         if uniform is False:
             traced = values[self.traced]
             uniform = self._uniform[id(values)] = traced[0] if np.all(traced == traced[0]) else None
         if uniform is not None:
-            return np.full(len(intervals.span), uniform)
-        return values[self.spans.chain[intervals.span]]
+            return np.full(len(span), uniform)
+        return values[self.spans.chain[span]]
 
     def add(self, span, u, t, centre, emit, other_site):
         """Append solved samples (at parameters ``u`` of spans ``span``, disk centres ``centre``); returns
@@ -604,7 +605,7 @@ class _Tracer:
 
     def trace(self, report):
         """Run the rounds; returns the emitted samples as :class:`AxisPoints` and the chain of each."""
-        intervals = self._corner_junctions(self._initial(report))
+        intervals = self._initial(report)
         for round_index in range(MAX_ROUNDS):
             events, curves = self._open_and_curved(intervals)
             # Only the open and curved intervals go on: the others are released before the round's output is built.
@@ -664,9 +665,10 @@ class _Tracer:
         return t, status, self.sites.canonical(site), centre
 
     def _initial(self, report):
-        """Solve the samples at both ends of every traced edge, and in the middle of an edge between two convex
-        corners (both its ends are given the corners' own edges: its axis point would take a round to find);
-        returns the intervals of every span between them."""
+        """Solve the samples at both ends of every traced edge, in the middle of an edge between two convex
+        corners (both its ends are given the corners' own edges: its axis point would take a round to find) and
+        on the bisector of every convex corner between two intervals (:meth:`_corner_junctions`), all in one
+        solution; returns the intervals of every span between the samples, cut at the corners' junctions."""
         spans, b = self.spans, self.boundary
         edge, given_site, status, split_vertex = _initial_samples(spans, self.sites, self.closed, self.traced, b)
         # The traced edges' spans come first, in the same order.
@@ -677,16 +679,32 @@ class _Tracer:
         u = np.concatenate(
             [np.stack([np.zeros(len(edge)), spans.length[edge_span]], axis=1).ravel(), 0.5 * spans.length[middle]]
         )
-        samples = spans.samples(span, u, b)
+        intervals = self._initial_intervals(edge, between_corners)
+        after, before = self._beside_corners(intervals)
+        corners = self._corner_samples(intervals.span[after])
+        samples = Samples.concatenate([spans.samples(span, u, b), corners])
         t, status, site = self._solve_initial(samples, given_site, status, report)
         centre = samples.point + t[:, None] * samples.direction
         del samples
+        # The edges' samples (the corners' follow them).
+        count = len(span)
+        solved = (t[count:], status[count:], site[count:], centre[count:])
+        t, status, site, centre = t[:count], status[:count], site[:count], centre[:count]
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
         split_vertex = np.concatenate([split_vertex, np.full(len(middle), -1)])
         at_split = (split_vertex >= 0) & np.isfinite(t) & (t > self.min_t[spans.chain[span]]) & ~emit
         self.add(span, u, t, centre, emit | at_split, np.where(at_split, split_vertex, site))
+        intervals = replace(intervals, site0=site[intervals.left], site1=site[intervals.right])
+        return self._corner_junctions(intervals, after, before, corners, solved)
+
+    def _initial_intervals(self, edge, between_corners):
+        """The intervals between the initial samples (:meth:`_initial`: the ``2k``-th and ``2k + 1``-th at the
+        ends of traced edge ``edge[k]``, then the middles of the edges ``between_corners``), their sites not yet
+        known (-1)."""
+        spans = self.spans
+        middle = np.flatnonzero(between_corners)
         middle_index = 2 * len(edge) + np.arange(len(middle))
         reflex = np.flatnonzero(spans.kind == FAN)
         incoming = np.searchsorted(edge, spans.segment[reflex])
@@ -698,13 +716,15 @@ class _Tracer:
         )
         left = np.concatenate([2 * whole, 2 * middle, middle_index, 2 * incoming + 1])
         right = np.concatenate([2 * whole + 1, middle_index, 2 * middle + 1, 2 * (incoming + 1)])
-        return _Intervals(span, u0, u1, left, right, site[left], site[right], np.zeros(len(span), bool))
+        no_site = np.full(len(span), -1)
+        return _Intervals(span, u0, u1, left, right, no_site, no_site, np.zeros(len(span), bool))
 
     def _solve_initial(self, samples, given_site, given_status, report):
         """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved;
-        ``given_status`` for the ends) and the middles (the samples after the ends), together in the order of
-        their points along the chains (one coarse-to-fine solution). Returns ``t``, status and canonical site
-        of every sample."""
+        ``given_status`` for the ends), the middles and the corners' samples (the samples after the ends),
+        together in the order of their points along the chains (one coarse-to-fine solution: each sample's trial
+        interpolated between the radii found around it). Returns ``t``, status and canonical site of every
+        sample."""
         count = len(given_site)
         middles = np.arange(count, len(samples.chain))
         index = np.concatenate([np.flatnonzero(given_site < 0), middles])
@@ -767,32 +787,24 @@ class _Tracer:
         order = np.argsort(intervals.span[after], kind="stable")
         return after[order], before[order]
 
-    def _corner_junctions(self, intervals):
+    def _corner_junctions(self, intervals, after, before, corners, solved):
         """Split the intervals on both sides of every convex corner of a traced chain at its junction.
 
         The largest empty disk on the corner's bisector touches both its segments and first touches a site
-        elsewhere: one solve gives the event that the intervals beside the corner (each with the corner's
+        elsewhere: one sample gives the event that the intervals beside the corner (each with the corner's
         other segment as its site at the corner) would otherwise probe one by one, from both sides. Its
         disk is the sample of both edges where it touches them; a junction touching an edge beyond its
-        interval, or beside a chain's end, is left to the rounds.
+        interval, or beside a chain's end, is left to the rounds. ``after``, ``before``: the intervals beside
+        the corners (:meth:`_beside_corners`); ``corners``: their samples (:meth:`_corner_samples`), solved
+        with the initial ones (``solved``: their ``t``, status, canonical site and disk centre).
         """
-        b = self.boundary
-        after, before = self._beside_corners(intervals)
         if len(after) == 0:
             return intervals
-        corners = self._corner_samples(intervals.span[after])
-        # Trial radius: a little above that of the solved samples at the far ends of the corner's two intervals
-        # (else 0.625 widths, as the initial samples'); the trial parameter t is radius / scale.
-        known = np.fmax(self.t[intervals.right[after]], self.t[intervals.left[before]])
-        width = self.of(self.width, intervals.subset(after))
-        trial = np.where(np.isfinite(known) & (known > 0.0), 1.25 * known, 0.625 * width) / corners.scale
-        # One solve: it bounds its candidate pairs itself (blocks of about SOLVE_PAIRS pairs).
-        t, status, _, _, site = solve(corners, np.arange(len(after)), b, trial, self.max_t, self.min_t)
-        site = self.sites.canonical(site)
+        t, status, site, centre = solved
         along, radius = corners.slide * t, corners.scale * t
         inside = np.isfinite(t) & (site >= 0) & (along < intervals.u1[after])
         inside &= intervals.u1[before] - along > intervals.u0[before]
-        centre = corners.point.compress(inside, axis=0) + t[inside, None] * corners.direction.compress(inside, axis=0)
+        centre = centre.compress(inside, axis=0)
         after, before = after[inside], before[inside]
         along, radius, status, site = along[inside], radius[inside], status[inside], site[inside]
         span = np.concatenate([intervals.span[after], intervals.span[before]])
@@ -803,45 +815,41 @@ class _Tracer:
         # Beside the corner the disk touches the corner's other segment (the interval's site there).
         site_before = np.concatenate([intervals.site0[after], site])
         site_after = np.concatenate([site, intervals.site1[before]])
-        cut, owner = np.unique(owner, return_inverse=True)
-        pieces = _split_at_nodes(intervals.subset(cut), owner, u, index, site_before, site_after, False)
-        uncut = np.ones(len(intervals.span), dtype=bool)
-        uncut[cut] = False
-        return _Intervals.concatenate([pieces, intervals.subset(uncut.nonzero()[0])])
+        return _split_at_nodes(intervals, owner, u, index, site_before, site_after, False)
 
     def _open_and_curved(self, intervals):
         """The open intervals (:meth:`_is_open`) and the curved ones (:meth:`_is_curved`), each judged on the
         intervals that may be one only: both ends solved, and two known sites that differ (open) or one site
-        whose stations are not yet placed (curved). Subsets are taken by index (a mask would be scanned again
-        for every column of the record)."""
-        t = self.t
-        finite = np.isfinite(t[intervals.left]) & np.isfinite(t[intervals.right])
-        site0, site1 = intervals.site0, intervals.site1
-        differ = site0 != site1
-        events = intervals.subset((differ & finite & (site0 >= 0) & (site1 >= 0)).nonzero()[0])
-        curves = intervals.subset((~differ & finite & (site0 >= 0) & ~intervals.verified).nonzero()[0])
-        return events.subset(self._is_open(events).nonzero()[0]), curves.subset(self._is_curved(curves).nonzero()[0])
-
-    def _is_open(self, intervals):
-        """Which intervals (both ends solved, touching two known different sites) are still wide enough to
-        split."""
+        whose stations are not yet placed (curved). Each record is gathered once, by index, from the rows
+        judged (a mask would be scanned again for every column of the record)."""
         t_left, t_right = self.t[intervals.left], self.t[intervals.right]
-        radius = np.fmax(t_left, t_right)
-        del t_left, t_right
-        move = (intervals.u1 - intervals.u0) * np.where(self.spans.kind[intervals.span] == EDGE, 1.0, radius)
-        tolerance = self.of(self.tolerance, intervals)
+        site0, site1 = intervals.site0, intervals.site1
+        known = np.isfinite(t_left) & np.isfinite(t_right) & (site0 >= 0)
+        differ = site0 != site1
+        event = (differ & known & (site1 >= 0)).nonzero()[0]
+        event = event[self._is_open(intervals, event, np.fmax(t_left[event], t_right[event]))]
+        curve = (~differ & known & ~intervals.verified).nonzero()[0]
+        curve = curve[self._is_curved(intervals.span[curve], site0[curve])]
+        return intervals.subset(event), intervals.subset(curve)
+
+    def _is_open(self, intervals, row, radius):
+        """Which of the intervals ``row`` (both ends solved, touching two known different sites; the larger end
+        disk of radius ``radius``, CRS units) are still wide enough to split."""
+        span = intervals.span[row]
+        move = (intervals.u1[row] - intervals.u0[row]) * np.where(self.spans.kind[span] == EDGE, 1.0, radius)
+        tolerance = self.of(self.tolerance, span)
         open_ = move > SMALLEST_MOVE * tolerance
         # Ends this close leave the axis between them (an event's corner at most) within the tolerance; an
         # event there may be ill-conditioned (a nearly straight convex corner's junction).
         candidate = open_.nonzero()[0]
-        left, right = intervals.left[candidate], intervals.right[candidate]
+        left, right = intervals.left[row[candidate]], intervals.right[row[candidate]]
         chord = np.hypot(*(self.centres(left) - self.centres(right)).T)
         open_[candidate] = chord > SETTLED_CHORD * tolerance[candidate]
         return open_
 
-    def _is_curved(self, intervals):
-        """Which intervals (both ends solved, touching one site, stations not yet placed) lie between samples
-        touching one site of the other chain where the axis is a parabola.
+    def _is_curved(self, span, site):
+        """Which intervals on spans ``span`` (both ends solved, touching one site ``site``, stations not yet
+        placed) lie between samples touching one site of the other chain where the axis is a parabola.
 
         A fan touching a segment traces the parabola of its vertex and that segment's line; an edge touching
         a vertex with no fan (a chain's end) traces the parabola of that vertex and the edge's line. (An edge
@@ -849,7 +857,6 @@ class _Tracer:
         the stations of both.)
         """
         spans, sites, b = self.spans, self.sites, self.boundary
-        span, site = intervals.span, intervals.site0
         curved = sites.chain(site) == spans.chain[span] ^ 1
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
@@ -876,7 +883,7 @@ class _Tracer:
     def _trial(self, intervals, radius, found):
         """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
         known = np.maximum(self.t[intervals.left], self.t[intervals.right])
-        width = self.of(self.width, intervals)
+        width = self.of(self.width, intervals.span)
         known = np.where(np.isfinite(known), 1.25 * known, width)
         # The solver doubles a trial radius that is too small: a small one keeps the candidate boxes tight.
         trial = np.where(found & np.isfinite(radius), np.minimum(1.001 * radius, known), known)
@@ -962,7 +969,9 @@ class _Tracer:
         u, radius, inside = self._pair_events(
             intervals.subset(owner), [x[row_of] for x in terms], [x[len(row) :] for x in terms]
         )
-        inside &= self._on_run(span[owner], u, radius, candidate)
+        # The foot is looked at only where the crossing lies inside the interval.
+        judged = inside.nonzero()[0]
+        inside[judged] = self._on_run(span[owner[judged]], u[judged], radius[judged], candidate[judged])
         # Nearest ``A``'s end: the smallest u when ``A`` is at u0, the largest when at u1.
         key = np.where(inside, np.where(other_first[owner], u, -u), np.inf)
         best = np.full(len(intervals.span), np.inf)
@@ -1051,7 +1060,7 @@ class _Tracer:
             return settled
         end = np.where(at_end[row] == 0, intervals.left[row], intervals.right[row])
         centre = self.centres(end)
-        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals)[row]
+        slack = EVENT_TOLERANCE * self.t[end] + self.of(self.min_t, intervals.span[row])
         with np.errstate(invalid="ignore"):
             _, _, distance0, distance1 = self.sites.pair_feet(intervals.site0[row], intervals.site1[row], centre)
             touching = np.abs(distance0 - self.t[end]) <= slack
@@ -1078,7 +1087,7 @@ class _Tracer:
             parting = np.hypot(*((centre - foot0) / distance0[:, None] - (centre - foot1) / distance1[:, None]).T)
             gap0, gap1 = np.abs(distance0 - t), np.abs(distance1 - t)
             scale = (LOOSE_EVENT_TOLERANCE * t, EVENT_TOLERANCE * t * np.nan_to_num(parting))
-            min_t = self.of(self.min_t, intervals)
+            min_t = self.of(self.min_t, intervals.span)
             own_site = (site == intervals.site0) | (site == intervals.site1)
             found = found & (own_site | (np.hypot(*(foot0 - foot1).T) > EVENT_TOLERANCE * t + min_t))
             return tuple(found & (gap0 <= s + min_t) & (gap1 <= s + min_t) for s in scale)
@@ -1118,12 +1127,12 @@ class _Tracer:
         anchor = np.where(on_fan[:, None], rows(b.start, segment), point)
         unit = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
         ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
-        owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals))
+        owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals.span))
         offset = centre - rows(spans.point, span[owner])
         along = np.einsum("ij,ij->i", offset, rows(spans.unit, span[owner]))
         angle = np.arctan2(np.einsum("ij,ij->i", offset, rows(spans.normal, span[owner])), along)
         u = np.clip(np.where(on_fan[owner], angle, along), intervals.u0[owner], intervals.u1[owner])
-        return owner, u, 1.001 * radius + self.of(self.min_t, intervals)[owner]
+        return owner, u, 1.001 * radius + self.of(self.min_t, span[owner])
 
     def _points(self):
         """The emitted samples as :class:`AxisPoints`, and the chain each was sampled on (the first chain of
