@@ -227,6 +227,8 @@ class _SlitSearch:
     ----------
     island : int
         Index of the island.
+    gap : float
+        Distance between the island and its host, CRS units.
     target : _Target
         Where the slit may end: the host chain, or the walk around the host island.
     inside : Polygon or None
@@ -240,6 +242,7 @@ class _SlitSearch:
     """
 
     island: int
+    gap: float
     target: _Target
     inside: Optional[Polygon]
     excluded: frozenset
@@ -346,9 +349,10 @@ def _next_join(joining, islands):
                 f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
                 " use the option to ignore islands."
             )
-        _, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
+        gap, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
         search = _SlitSearch(
             island=island,
+            gap=gap,
             target=joining.target(host),
             inside=islands.polygons[host - 2] if host >= 2 else None,
             excluded=frozenset({island, host - 2}),
@@ -434,9 +438,11 @@ def _free_slit(search, islands):
     _Slit or None
     """
     outline = LinearRing(islands.rings[search.island])
-    starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
-    # The shortest slit is usually free: find and test it alone first, then all the others at once.
-    shortest, length, position, foot = search.target.closest(starts)
+    spacing = outline.length / SLIT_CANDIDATES
+    starts = shapely.get_coordinates(shapely.segmentize(outline, spacing))[:-1]
+    # The shortest slit is usually free: find and test it alone first, then all the others at once. The island's
+    # nearest point to the host is at most half a spacing from a start, so the shortest is within this hint.
+    shortest, length, position, foot = search.target.closest(starts, within=search.gap + 0.5 * spacing)
     if len(_free_candidates(search, islands, starts[shortest : shortest + 1], foot[None], np.array([length]))):
         return _Slit(island_point=starts[shortest], foot=foot, position=position)
     lengths, positions, feet = search.target.nearest(starts)
