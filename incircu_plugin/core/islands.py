@@ -198,7 +198,7 @@ class _Joining:
         Per host, the polyline a slit to it may end on; for an island, None until :meth:`target` first needs it
         (most islands host no other).
     slits : list of LineString
-        Slits made so far.
+        Slits made so far, but the last island's (no island is left for it to block).
     walks : list of ndarray or None
         Per island, its closed walk from ``Q`` around back to ``Q``.
     joins : list of list of (float, int, ndarray)
@@ -274,13 +274,15 @@ def _join_all(chains, islands):
     component = np.full(count + 2, -1)
     component[:2] = (0, 1)
     joining = _Joining(pairs, component, targets, walks=[None] * count, joins=[[] for _ in range(count + 2)])
-    for _ in range(count):
+    for joined in range(count):
         island, host, slit = _next_join(joining, islands)
-        joining.slits.append(LineString([slit.island_point, slit.foot]))
         component[2 + island] = component[host]
         clockwise = region_on_left if component[host] == 0 else not region_on_left
         joining.walks[island] = _around(islands.rings[island], slit.island_point, clockwise, islands.coincidence)
         joining.joins[host].append((slit.position, island, slit.foot))
+        if joined == count - 1:
+            break  # No island is left for this slit to block or this island to host.
+        joining.slits.append(LineString([slit.island_point, slit.foot]))
         polygon = islands.polygons[island]
         near = islands.tree.query(polygon, predicate="dwithin", distance=reach)
         near = near[component[2 + near] < 0]
