@@ -310,3 +310,23 @@ def test_a_blocked_shortest_slit_gives_way_to_the_next_shortest(monkeypatch):
     assert refused[0] < slit <= refused[0] + radius * (1.0 - np.cos(step)) + 1e-9
     assert 0.0 < abs(foot[0] - centre[0]) <= radius * np.sin(step) + 1e-6
     assert not LineString(bridged_a).intersects(island.buffer(-TOLERANCE))
+
+
+def test_the_gap_to_the_host_bounds_the_shortest_slit(monkeypatch):
+    """The island's gap to its host plus half a candidate spacing bounds its shortest candidate slit, so the
+    nearest-candidate search never falls back to probing (the same slit either way, only slower).
+
+    The bank rises to a peak 0.5 under the middle of the lower island's bottom edge, between two candidates;
+    the upper island joins the lower one.
+    """
+
+    def refuse_to_probe(*args):
+        raise AssertionError("closest fell back to probing: the hint was below the shortest candidate")
+
+    monkeypatch.setattr(islands_module.IndexedPolyline, "_may_be_closest", refuse_to_probe)
+    c1 = np.array([[0.0, 10.0], [0.0, 0.0], [50.37, 1.5], [200.0, 0.0], [200.0, 10.0]])
+    c2 = np.array([[0.0, 10.0], [0.0, 20.0], [200.0, 20.0], [200.0, 10.0]])
+    lower, upper = box(40.0, 2.0, 60.0, 4.0), box(45.0, 4.5, 55.0, 5.0)
+    bridged_a, bridged_b = bridge_islands(c1, c2, [lower, upper])
+    assert len(bridged_b) == len(c2)
+    assert np.isclose(bridged_a[:, 1], 2.0).any() and np.isclose(bridged_a[:, 1], 5.0).any()

@@ -188,3 +188,54 @@ def test_nearest_entries_are_those_of_the_broadcast_argmin_with_ties_to_the_firs
     expected = np.abs(ascending[:, None] - values).argmin(axis=0)
     assert expected.tolist() == [0, 2, 1, 2, 2, 3, 4, 4]
     assert nearest_entries(ascending, values).tolist() == expected.tolist()
+
+
+@pytest.mark.parametrize("hint_scale", [0.0, 0.5, 1.0, 1.5, 1e6])
+def test_closest_within_a_hint_is_the_first_smallest_distance_of_nearest(hint_scale, monkeypatch):
+    # A hint at or above the smallest distance is answered from the segments within it; a hint below it (or 0)
+    # finds no point that near, and closest answers without it: nearest's answer, bit for bit, either way.
+    rng = np.random.default_rng(13)
+    path = np.cumsum(rng.normal(size=(300, 2)), axis=0)
+    polyline = IndexedPolyline(path)
+    probed = []
+    monkeypatch.setattr(
+        IndexedPolyline, "_may_be_closest", lambda self, *args: probed.append(1) or np.arange(len(args[0]))
+    )
+    for centre in path[rng.integers(0, len(path), 12)] + rng.normal(size=(12, 2)) * 3.0:
+        angle = np.linspace(0.0, 2.0 * np.pi, 4 * CLUSTER_POINTS, endpoint=False)
+        points = centre + 4.0 * np.column_stack([np.cos(angle), 0.3 * np.sin(angle)])
+        distance, arc_length, foot = polyline.nearest(points)
+        index, closest_distance, closest_arc_length, closest_foot = polyline.closest(
+            points, within=hint_scale * distance.min()
+        )
+        assert index == int(np.argmin(distance))
+        assert (closest_distance, closest_arc_length) == (distance[index], arc_length[index])
+        assert closest_foot.tolist() == foot[index].tolist()
+    # Only the hints below the smallest distance fall back to probing.
+    assert bool(probed) == (hint_scale < 1.0)
+
+
+def test_segments_within_are_those_whose_boxes_come_that_near():
+    rng = np.random.default_rng(17)
+    path = np.cumsum(rng.normal(size=(200, 2)), axis=0)
+    polyline = IndexedPolyline(path)
+    starts, ends = path[:-1], path[1:]
+    low, high = np.minimum(starts, ends), np.maximum(starts, ends)
+    for centre in path[rng.integers(0, len(path), 10)]:
+        points = centre + rng.normal(size=(20, 2))
+        for reach in (0.0, 0.7, 3.0):
+            near = polyline._segments_within(points, reach)
+            apart = np.maximum(points.min(axis=0) - high, low - points.max(axis=0)).max(axis=1)
+            assert near.tolist() == np.flatnonzero(apart <= reach).tolist()
+
+
+def test_closest_within_a_hint_too_small_ignores_segments_that_only_touch_the_box():
+    # A circle of radius 1 at the origin; a bank 0.2 above it, and a last segment ending in the corner of the
+    # circle's box, 0.4 from it. A hint of 0.1 keeps only that last segment, which must not give the answer.
+    angle = np.linspace(0.0, 2.0 * np.pi, 2 * CLUSTER_POINTS, endpoint=False)
+    points = np.column_stack([np.cos(angle), np.sin(angle)])
+    polyline = IndexedPolyline(np.array([[-10.0, 1.2], [10.0, 1.2], [10.0, -5.0], [0.99, -0.99]]))
+    assert polyline._segments_within(points, 0.1).tolist() == [2]
+    index, distance, arc_length, foot = polyline.closest(points, within=0.1)
+    assert angle[index] == np.pi / 2 and foot.tolist() == [0.0, 1.2]
+    assert (distance, arc_length) == (pytest.approx(0.2), 10.0)

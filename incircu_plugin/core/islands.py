@@ -198,7 +198,7 @@ class _Joining:
         Per host, the polyline a slit to it may end on; for an island, None until :meth:`target` first needs it
         (most islands host no other).
     slits : list of LineString
-        Slits made so far.
+        Slits made so far, but the last island's (no island is left for it to block).
     walks : list of ndarray or None
         Per island, its closed walk from ``Q`` around back to ``Q``.
     joins : list of list of (float, int, ndarray)
@@ -227,6 +227,8 @@ class _SlitSearch:
     ----------
     island : int
         Index of the island.
+    gap : float
+        Distance between the island and its host, CRS units.
     target : _Target
         Where the slit may end: the host chain, or the walk around the host island.
     inside : Polygon or None
@@ -240,6 +242,7 @@ class _SlitSearch:
     """
 
     island: int
+    gap: float
     target: _Target
     inside: Optional[Polygon]
     excluded: frozenset
@@ -271,13 +274,15 @@ def _join_all(chains, islands):
     component = np.full(count + 2, -1)
     component[:2] = (0, 1)
     joining = _Joining(pairs, component, targets, walks=[None] * count, joins=[[] for _ in range(count + 2)])
-    for _ in range(count):
+    for joined in range(count):
         island, host, slit = _next_join(joining, islands)
-        joining.slits.append(LineString([slit.island_point, slit.foot]))
         component[2 + island] = component[host]
         clockwise = region_on_left if component[host] == 0 else not region_on_left
         joining.walks[island] = _around(islands.rings[island], slit.island_point, clockwise, islands.coincidence)
         joining.joins[host].append((slit.position, island, slit.foot))
+        if joined == count - 1:
+            break  # No island is left for this slit to block or this island to host.
+        joining.slits.append(LineString([slit.island_point, slit.foot]))
         polygon = islands.polygons[island]
         near = islands.tree.query(polygon, predicate="dwithin", distance=reach)
         near = near[component[2 + near] < 0]
@@ -346,9 +351,10 @@ def _next_join(joining, islands):
                 f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
                 " use the option to ignore islands."
             )
-        _, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
+        gap, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
         search = _SlitSearch(
             island=island,
+            gap=gap,
             target=joining.target(host),
             inside=islands.polygons[host - 2] if host >= 2 else None,
             excluded=frozenset({island, host - 2}),
@@ -434,9 +440,11 @@ def _free_slit(search, islands):
     _Slit or None
     """
     outline = LinearRing(islands.rings[search.island])
-    starts = shapely.get_coordinates(shapely.segmentize(outline, outline.length / SLIT_CANDIDATES))[:-1]
-    # The shortest slit is usually free: find and test it alone first, then all the others at once.
-    shortest, length, position, foot = search.target.closest(starts)
+    spacing = outline.length / SLIT_CANDIDATES
+    starts = shapely.get_coordinates(shapely.segmentize(outline, spacing))[:-1]
+    # The shortest slit is usually free: find and test it alone first, then all the others at once. The island's
+    # nearest point to the host is at most half a spacing from a start, so the shortest is within this hint.
+    shortest, length, position, foot = search.target.closest(starts, within=search.gap + 0.5 * spacing)
     if len(_free_candidates(search, islands, starts[shortest : shortest + 1], foot[None], np.array([length]))):
         return _Slit(island_point=starts[shortest], foot=foot, position=position)
     lengths, positions, feet = search.target.nearest(starts)

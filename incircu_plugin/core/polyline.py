@@ -240,16 +240,21 @@ class IndexedPolyline:
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         return self._measured(points, self._segments_near(points))
 
-    def closest(self, points):
+    def closest(self, points, within=None):
         """Return the first of the points nearest to the polyline, with what :meth:`nearest` gives for it.
 
         The result is that of ``nearest(points)`` at its first smallest distance; a cluster of points is
-        answered measuring only the points that can be that one (:meth:`_may_be_closest`).
+        answered measuring only the points that can be that one (:meth:`_closest_within`, else
+        :meth:`_may_be_closest`).
 
         Parameters
         ----------
         points : ndarray of shape (m, 2)
             CRS units; ``m >= 1``.
+        within : float, optional
+            A distance, CRS units, that some point is expected to come within of the polyline (a hint, such as
+            a known distance between the shape the points lie on and the polyline): only the segments that can
+            come that near the points are measured. When no point does, the answer is found without it.
 
         Returns
         -------
@@ -261,11 +266,32 @@ class IndexedPolyline:
             CRS units.
         """
         points = np.asarray(points, dtype=float).reshape(-1, 2)
+        if within is not None and len(points) >= CLUSTER_POINTS and len(self.xy) > 1:
+            found = self._closest_within(points, within)
+            if found is not None:
+                return found
         near = self._segments_near(points)
         candidates = np.arange(len(points)) if near is None else self._may_be_closest(points, near)
         distance, arc_length, foot = self._measured(points[candidates], near)
         first = int(np.argmin(distance))
         return int(candidates[first]), float(distance[first]), float(arc_length[first]), foot[first]
+
+    def _closest_within(self, points, within):
+        """:meth:`closest` measuring every point on the segments that can come ``within`` (CRS units) of them;
+        None when no point comes that near.
+
+        A point that comes ``within`` of the polyline has its nearest segment among those, so it is measured
+        exactly; any other point is farther, whatever those segments give it.
+        """
+        # With a little slack, so rounding cannot leave out a segment at exactly that distance.
+        near = self._segments_within(points, within + 1e-9 * (within + float(np.abs(points).max())))
+        if not len(near):
+            return None
+        distance, arc_length, foot = self._feet(points, self._nearest_of(points, near))
+        first = int(np.argmin(distance))
+        if distance[first] > within:
+            return None
+        return first, float(distance[first]), float(arc_length[first]), foot[first]
 
     def _measured(self, points, near):
         """Distance, foot's arc length and foot (CRS units) of each point on the polyline: from the segments
@@ -319,10 +345,14 @@ class IndexedPolyline:
             return None
         first = self.tree.query_nearest(shapely.points(points[0]), return_distance=True, all_matches=False)[1][0]
         # With a little slack, so rounding cannot leave out a segment at exactly that distance.
-        reach = (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9)
-        low, high = points.min(axis=0) - reach, points.max(axis=0) + reach
-        near = np.sort(self.tree.query(shapely.box(*low, *high)))
+        near = self._segments_within(points, (float(np.hypot(*(points - points[0]).T).max()) + first) * (1.0 + 1e-9))
         return None if len(near) * len(points) > CLUSTER_PAIRS else near
+
+    def _segments_within(self, points, reach):
+        """Sorted indices of the segments whose boxes come within ``reach`` (CRS units) of the points' box."""
+        low, high = (points.min(axis=0) - reach).tolist(), (points.max(axis=0) + reach).tolist()
+        # Python floats: shapely.box takes far longer to read NumPy scalars.
+        return np.sort(self.tree.query(shapely.box(*low, *high)))
 
     def _nearest_of(self, points, near):
         """The nearest segment of each point among ``near`` (sorted segment indices that include it); equally
