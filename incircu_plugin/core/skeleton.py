@@ -159,20 +159,25 @@ def _triangulations(polygons):
     for refinement in range(MAX_REFINEMENTS):
         following = _following(ring)
         local = ranges(np.bincount(owner, minlength=count))[1]
-        corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
+        moved, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
         side_start, side_end = _sides(corner_ids)
         present = np.zeros(len(samples), dtype=bool)
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
-        refine = np.bincount(owner[~present], minlength=count) > 0
-        shapes = _triangle_shapes(corners)
+        missing = np.bincount(owner[~present], minlength=count) > 0
         if refinement == 0:
             # Only slivers: the polygon is thinner than its samples can resolve (a needle whose sides meet at
             # an angle of 1e-11). Splitting would not converge and only ends in "too thin"; it is not tried.
-            flat = np.bincount(triangle_owner[shapes[2]], minlength=count) == 0
-        refine &= ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
+            unsplit = np.flatnonzero(missing[triangle_owner])
+            solid = _triangle_shapes(np.take(moved, corner_ids[unsplit], axis=0))[2]
+            flat = np.bincount(triangle_owner[unsplit[solid]], minlength=count) == 0
+        refine = missing & ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
+        kept = _kept_triangles(moved, corner_ids, following, triangle_owner, done, ~missing)
+        corner_ids, triangle_owner = corner_ids[kept], triangle_owner[kept]
+        corners = np.take(moved, corner_ids, axis=0)
+        shapes = _triangle_shapes(corners)
         stored.append(_Round(corners, corner_ids, following, owner, triangle_owner, shapes, done))
         if not np.any(refine):
             break
@@ -180,6 +185,83 @@ def _triangulations(polygons):
         keep = refine[owner]
         samples, ring, owner = _split_samples(samples, ring, owner, following, split, keep)
     return (*_merged_by_polygon(stored, count), steps, made)
+
+
+def _kept_triangles(points, corner_ids, following, triangle_owner, done, conforming):
+    """Return the triangles that may be inside their polygon: of the polygons ``done``, those not
+    :func:`_clearly_outside` where the polygon's triangulation is ``conforming`` (all its boundary segments
+    are edges; only there does the boundary wall the outside off).
+
+    Dropping a triangle that no path from the boundary's inside reaches changes no skeleton: the inside
+    triangles, their order and the order of their shared sides stay the same.
+
+    Parameters
+    ----------
+    points : ndarray of shape (n, 2)
+        The triangulated samples, CRS units.
+    corner_ids : ndarray of shape (t, 3) of int
+        Sample index of each corner.
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring.
+    triangle_owner : ndarray of shape (t,) of int
+    done, conforming : ndarray of shape (p,) of bool
+
+    Returns
+    -------
+    ndarray of int
+        Indices of the kept triangles, increasing.
+    """
+    candidate = np.flatnonzero(done[triangle_owner])
+    walled = conforming[triangle_owner[candidate]]
+    outside = np.zeros(len(candidate), dtype=bool)
+    outside[walled] = _clearly_outside(points, corner_ids[candidate[walled]], following)
+    return candidate[~outside]
+
+
+def _clearly_outside(points, corner_ids, following):
+    """Return whether each triangle lies clearly outside the rings' interior at its first corner.
+
+    Every corner is a boundary sample ``v``; the interior lies on the left of the rings (counter-clockwise
+    exterior, clockwise holes), so near ``v`` it is the angle turning counter-clockwise from the next sample
+    ``u`` to the previous one ``w``. A triangle of a conforming triangulation lies wholly on one side of the
+    boundary; it is outside when the direction from ``v`` through its middle (the sum of its two sides from
+    ``v``) lies in the outer angle, from ``w`` to ``u``, by more than the rounding of the cross products
+    (``1e-9`` of the sides' lengths, plus ``1e-13`` of their sum for the coordinates' rounding: the samples are
+    within about 1 of the origin). A doubtful triangle is not outside.
+
+    Parameters
+    ----------
+    points : ndarray of shape (n, 2)
+        Samples, CRS units, within about 1 of the origin.
+    corner_ids : ndarray of shape (t, 3) of int
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring.
+
+    Returns
+    -------
+    ndarray of shape (t,) of bool
+    """
+    preceding = np.empty_like(following)
+    preceding[following] = np.arange(len(following))
+    vertex = corner_ids[:, 0]
+    origin = np.take(points, vertex, axis=0)
+    middle = np.take(points, corner_ids[:, 1], axis=0) + np.take(points, corner_ids[:, 2], axis=0) - 2.0 * origin
+    after = np.take(points, following[vertex], axis=0) - origin
+    before = np.take(points, preceding[vertex], axis=0) - origin
+
+    past_before = _clearly_counterclockwise(before, middle)
+    short_of_after = _clearly_counterclockwise(middle, after)
+    narrow = (before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]) > 0.0
+    return np.where(narrow, past_before & short_of_after, past_before | short_of_after)
+
+
+def _clearly_counterclockwise(first, second):
+    """Return whether each vector ``second`` turns counter-clockwise from ``first`` by more than the rounding
+    of their cross product (see :func:`_clearly_outside`); both of shape (t, 2), CRS units."""
+    cross = first[:, 0] * second[:, 1] - first[:, 1] * second[:, 0]
+    size_first = np.abs(first[:, 0]) + np.abs(first[:, 1])
+    size_second = np.abs(second[:, 0]) + np.abs(second[:, 1])
+    return cross > 1e-9 * size_first * size_second + 1e-13 * (size_first + size_second)
 
 
 class _Round(NamedTuple):
@@ -335,10 +417,11 @@ def _delaunay_all(samples, owner, local, steps, count):
 
     Returns
     -------
-    corners : ndarray of shape (t, 3, 2)
-        Corners of each triangle (the displaced samples, in the samples' frame), polygon after polygon.
+    moved : ndarray of shape (n, 2)
+        The displaced samples that were triangulated (in the samples' frame), CRS units.
     corner_ids : ndarray of shape (t, 3) of int
-        Index in ``samples`` of each corner (read from its z; one of them for a repeated point).
+        Index in ``samples`` of each corner (read from its z; one of them for a repeated point), triangles
+        polygon after polygon.
     triangle_owner : ndarray of shape (t,) of int
     failed : ndarray of shape (count,) of bool
         Polygons whose samples GEOS could not triangulate with any displacement.
@@ -366,7 +449,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     coordinates = shapely.get_coordinates(triangles[made], include_z=True)
     triangle_owner = np.repeat(made, shapely.get_num_geometries(triangles[made]))
     corner_ids = coordinates[:, 2].reshape(-1, 4)[:, :3].astype(np.int64)
-    return np.take(moved_all, corner_ids, axis=0), corner_ids, triangle_owner, waiting
+    return moved_all, corner_ids, triangle_owner, waiting
 
 
 def _runs(values):
