@@ -121,8 +121,9 @@ def joint_skeletons(polygons):
         return Skeletons(
             np.empty((0, 2)), nothing, nothing, np.empty((0, 2), np.int64), np.empty(0, np.int64), nothing, []
         )
-    corners, corner_ids, following, triangle_owner, shapes, steps, made = _triangulations(polygons)
-    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, shapes)
+    points, corner_ids, following, triangle_owner, steps, made = _triangulations(polygons)
+    corners = np.take(points, corner_ids, axis=0)
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, _triangle_shapes(corners))
     errors = [
         None
         if triangulated
@@ -135,18 +136,19 @@ def joint_skeletons(polygons):
 def _triangulations(polygons):
     """Return the conforming Delaunay triangulations of the polygons' boundary samples, as flat arrays.
 
+    Only the triangles that may be inside are returned (see :func:`_kept_triangles`).
+
     Returns
     -------
-    corners : ndarray of shape (t, 3, 2)
-        Corners of each triangle, polygon after polygon, CRS units.
+    points : ndarray of shape (n, 2)
+        The triangulated (displaced) samples, polygon after polygon, CRS units.
     corner_ids : ndarray of shape (t, 3) of int
-        Sample index of each corner (samples numbered polygon after polygon, over the triangulated ones).
+        Sample index of each corner (samples numbered polygon after polygon, over the triangulated ones),
+        triangles polygon after polygon.
     following : ndarray of shape (n,) of int
         Index of the next sample on the same ring.
     triangle_owner : ndarray of shape (t,) of int
         Polygon of each triangle (non-decreasing).
-    shapes : tuple
-        The :func:`_triangle_shapes` of the triangles.
     steps : ndarray of shape (p,)
         Densification step of each polygon, CRS units.
     made : ndarray of shape (p,) of bool
@@ -175,10 +177,7 @@ def _triangulations(polygons):
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
         kept = _kept_triangles(moved, corner_ids, following, triangle_owner, done, ~missing)
-        corner_ids, triangle_owner = corner_ids[kept], triangle_owner[kept]
-        corners = np.take(moved, corner_ids, axis=0)
-        shapes = _triangle_shapes(corners)
-        stored.append(_Round(corners, corner_ids, following, owner, triangle_owner, shapes, done))
+        stored.append(_Round(moved, corner_ids[kept], following, owner, triangle_owner[kept], done))
         if not np.any(refine):
             break
         split = ~present & refine[owner]
@@ -211,11 +210,8 @@ def _kept_triangles(points, corner_ids, following, triangle_owner, done, conform
     ndarray of int
         Indices of the kept triangles, increasing.
     """
-    candidate = np.flatnonzero(done[triangle_owner])
-    walled = conforming[triangle_owner[candidate]]
-    outside = np.zeros(len(candidate), dtype=bool)
-    outside[walled] = _clearly_outside(points, corner_ids[candidate[walled]], following)
-    return candidate[~outside]
+    outside = _clearly_outside(points, corner_ids, following) & conforming[triangle_owner]
+    return np.flatnonzero(done[triangle_owner] & ~outside)
 
 
 def _clearly_outside(points, corner_ids, following):
@@ -267,25 +263,24 @@ def _clearly_counterclockwise(first, second):
 class _Round(NamedTuple):
     """The triangulations of one refinement round (samples numbered from 0) and the polygons it finished."""
 
-    corners: np.ndarray
+    points: np.ndarray
     corner_ids: np.ndarray
     following: np.ndarray
     sample_owner: np.ndarray
     triangle_owner: np.ndarray
-    shapes: tuple
     done: np.ndarray
 
 
 def _merged_by_polygon(rounds, count):
     """Return the triangulations of the polygons each round finished as one set, polygon after polygon:
-    ``corners, corner_ids, following, triangle_owner, shapes``.
+    ``points, corner_ids, following, triangle_owner``.
 
     Within a polygon the order of its samples and triangles is kept (a polygon is finished in one round); each
     item is copied once, from its round to its place.
     """
     if len(rounds) == 1 and np.all(rounds[0].done[rounds[0].sample_owner]):
         (part,) = rounds
-        return part.corners, part.corner_ids, part.following, part.triangle_owner, part.shapes
+        return part.points, part.corner_ids, part.following, part.triangle_owner
     kept = [
         (np.flatnonzero(part.done[part.sample_owner]), np.flatnonzero(part.done[part.triangle_owner]))
         for part in rounds
@@ -311,11 +306,10 @@ def _merged_by_polygon(rounds, count):
     corner_ids = [part.corner_ids + first for part, first in zip(rounds, sample_firsts)]
     following = [part.following + first for part, first in zip(rounds, sample_firsts)]
     return (
-        merged([part.corners for part in rounds], triangle_source),
+        merged([part.points for part in rounds], sample_source),
         renumbered[merged(corner_ids, triangle_source)],
         renumbered[merged(following, sample_source)],
         merged([part.triangle_owner for part in rounds], triangle_source),
-        tuple(merged(parts, triangle_source) for parts in zip(*(part.shapes for part in rounds))),
     )
 
 
