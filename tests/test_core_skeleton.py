@@ -232,3 +232,31 @@ def test_clearly_outside_is_the_outer_angle_at_the_first_corner(reflex):
     outer = (directions > 90.0) if not reflex else (directions < 90.0)
     expected = np.concatenate([outer, np.zeros(len(near), dtype=bool)])
     assert skeleton_module._clearly_outside(points, corner_ids, following).tolist() == expected.tolist()
+
+
+def test_kept_triangles_drop_the_clearly_outside_ones_of_finished_conforming_polygons_only():
+    """Of two copies of the U-shaped channel's triangulation, a finished conforming one keeps the triangles not
+    clearly outside, a finished one that does not conform keeps them all, and an unfinished one none."""
+    polygon = u_with_island()
+    samples, ring, owner, steps = skeleton_module._boundary_sample_arrays([polygon])
+    following = skeleton_module._following(ring)
+    moved, corner_ids, _, _ = _delaunay_all(samples, owner, np.arange(len(samples)), steps, 1)
+    outside = skeleton_module._clearly_outside(moved, corner_ids, following)
+    assert np.any(outside)
+    count = len(corner_ids)
+    points = np.concatenate([moved, moved])
+    both_ids = np.concatenate([corner_ids, corner_ids + len(moved)])
+    both_following = np.concatenate([following, following + len(moved)])
+    triangle_owner = np.repeat([0, 1], count)
+
+    def kept(done, conforming):
+        return skeleton_module._kept_triangles(
+            points, both_ids, both_following, triangle_owner, np.array(done), np.array(conforming)
+        ).tolist()
+
+    walled = np.flatnonzero(~outside).tolist()
+    assert kept([True, True], [True, False]) == walled + list(range(count, 2 * count))
+    assert kept([True, True], [False, True]) == list(range(count)) + [count + k for k in walled]
+    assert kept([False, True], [True, False]) == list(range(count, 2 * count))
+    assert kept([True, False], [True, True]) == walled
+    assert kept([False, False], [True, True]) == []

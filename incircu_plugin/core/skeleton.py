@@ -6,9 +6,11 @@ topology-preserving variant only when that gives an invalid polygon) and densifi
 more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
 segments that are not edges of it; a polygon whose first triangulation has only slivers, thinner than its
 samples can resolve, is not refined and gets no skeleton), so no triangle crosses the boundary. The triangles
-inside the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle
-placed at its circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the
-skeleton: every path in it stays in the region and goes around the islands.
+clearly outside the rings (about half of a river's: its hull's pockets, its islands) are dropped as soon as they
+are read (see :func:`_kept_triangles`). The triangles inside the polygon are kept, except slivers of nearly
+collinear samples along a straight bank. Their dual graph, each triangle placed at its circumcentre (a Voronoi
+vertex of the samples, on the approximate medial axis), is the skeleton: every path in it stays in the region
+and goes around the islands.
 
 The samples are moved by ``JITTER`` of the step in a fixed pseudo-random pattern before the triangulation:
 evenly spaced samples on straight parallel banks are exactly cocircular, which makes the GEOS triangulator
@@ -188,11 +190,13 @@ def _triangulations(polygons):
 
 def _kept_triangles(points, corner_ids, following, triangle_owner, done, conforming):
     """Return the triangles that may be inside their polygon: of the polygons ``done``, those not
-    :func:`_clearly_outside` where the polygon's triangulation is ``conforming`` (all its boundary segments
-    are edges; only there does the boundary wall the outside off).
+    :func:`_clearly_outside` where the polygon's triangulation is ``conforming``.
 
-    Dropping a triangle that no path from the boundary's inside reaches changes no skeleton: the inside
-    triangles, their order and the order of their shared sides stay the same.
+    In a conforming triangulation every boundary segment is an edge, so the rings cross nowhere and the
+    spreading from the inside (see :func:`_dual_graph`, never across a boundary side) reaches no triangle
+    outside them. Dropping those changes no skeleton: the inside triangles, their order and the order of their
+    shared sides stay the same. A triangulation that does not conform (its last round, or only slivers) keeps
+    all its triangles.
 
     Parameters
     ----------
@@ -210,7 +214,10 @@ def _kept_triangles(points, corner_ids, following, triangle_owner, done, conform
     ndarray of int
         Indices of the kept triangles, increasing.
     """
-    outside = _clearly_outside(points, corner_ids, following) & conforming[triangle_owner]
+    walled = done & conforming
+    if not np.any(walled):
+        return np.flatnonzero(done[triangle_owner])
+    outside = _clearly_outside(points, corner_ids, following) & walled[triangle_owner]
     return np.flatnonzero(done[triangle_owner] & ~outside)
 
 
@@ -244,7 +251,7 @@ def _clearly_outside(points, corner_ids, following):
     middle = np.take(points, corner_ids[:, 1], axis=0) + np.take(points, corner_ids[:, 2], axis=0) - 2.0 * origin
     after = np.take(points, following[vertex], axis=0) - origin
     before = np.take(points, preceding[vertex], axis=0) - origin
-
+    # An outer angle under a half turn holds the directions past ``w`` and short of ``u``; a wider one, either.
     past_before = _clearly_counterclockwise(before, middle)
     short_of_after = _clearly_counterclockwise(middle, after)
     narrow = (before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]) > 0.0
