@@ -13,6 +13,7 @@ from incircu_plugin.core import skeleton as skeleton_module
 from incircu_plugin.core.contacts import ranges
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.skeleton import _delaunay_all, joint_skeletons
+from tests.support import geometry_cases
 
 
 def triangle_areas(corners):
@@ -28,7 +29,8 @@ def test_triangle_corners_are_identified_by_the_ids_carried_through_geos():
     samples = np.concatenate([rng.random((150, 2)), rng.random((120, 2)) * (2.0, 0.5) + (3.0, 0.0)])
     owner = np.repeat([0, 1], [150, 120])
     local = ranges(np.bincount(owner))[1]
-    corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, np.array([1e-3, 1e-3]), 2)
+    moved, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, np.array([1e-3, 1e-3]), 2)
+    corners = moved[corner_ids]
     assert not np.any(failed)
     for polygon in (0, 1):
         own = triangle_owner == polygon
@@ -158,3 +160,103 @@ def test_split_samples_keeps_the_flagged_polygons_and_inserts_midpoints_after_th
 def test_sides_run_from_each_corner_to_the_next():
     start, end = skeleton_module._sides(np.array([[3, 4, 5], [9, 7, 8]]))
     assert start.tolist() == [3, 4, 5, 9, 7, 8] and end.tolist() == [4, 5, 3, 7, 8, 9]
+
+
+def u_with_island():
+    """A U-shaped channel about 1 across with an island in its bend (hole clockwise), near the origin."""
+    outline = shapely.Polygon(
+        [(-0.5, -0.4), (0.5, -0.4), (0.5, 0.4), (0.3, 0.4), (0.3, -0.2), (-0.3, -0.2)] + [(-0.3, 0.4), (-0.5, 0.4)]
+    )
+    return outline.difference(shapely.box(-0.05, -0.35, 0.05, -0.25))
+
+
+def test_clearly_outside_triangles_lie_outside_and_are_most_of_the_outside():
+    """On a conforming triangulation of a U-shaped channel with an island, every triangle flagged outside has
+    its centroid outside the polygon, and the flagged ones are nearly all of those outside (the bend's
+    pocket, the island) but slivers of nearly collinear samples along the straight banks."""
+    polygon = u_with_island()
+    samples, ring, owner, steps = skeleton_module._boundary_sample_arrays([polygon])
+    following = skeleton_module._following(ring)
+    moved, corner_ids, _, failed = _delaunay_all(samples, owner, np.arange(len(samples)), steps, 1)
+    start, end = skeleton_module._sides(corner_ids)
+    edges = set(zip(start.tolist(), end.tolist())) | set(zip(end.tolist(), start.tolist()))
+    assert not failed[0] and all((k, int(following[k])) in edges for k in range(len(samples)))
+    outside = skeleton_module._clearly_outside(moved, corner_ids, following)
+    inside = shapely.within(shapely.points(moved[corner_ids].mean(axis=1)), polygon)
+    solid = skeleton_module._triangle_shapes(moved[corner_ids])[2]
+    assert not np.any(outside & inside)
+    assert np.count_nonzero(outside) >= 0.95 * np.count_nonzero(~inside & solid) > 0
+
+
+def test_dropping_the_outside_triangles_changes_no_skeleton(monkeypatch):
+    """The skeletons of a U-shaped channel with an island, a meander (refined over several rounds) and a
+    needle too thin to conform are the same whether the outside triangles are dropped early or not."""
+    meander = geometry_cases.meander().polygon
+    meander = shapely.transform(meander, lambda xy: (xy - meander.centroid.coords[0]) / 2000.0)
+    needle = shapely.Polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1e-7)])
+    polygons = [u_with_island(), meander, needle]
+    dropped = joint_skeletons(polygons)
+    monkeypatch.setattr(
+        skeleton_module, "_clearly_outside", lambda points, corner_ids, following: np.zeros(len(corner_ids), dtype=bool)
+    )
+    kept = joint_skeletons(polygons)
+    for name in ("nodes", "radii", "spans", "edges", "owner", "steps"):
+        assert np.array_equal(getattr(dropped, name), getattr(kept, name))
+    assert [error is None for error in dropped.errors] == [error is None for error in kept.errors]
+    assert len(np.unique(dropped.owner)) == 3
+
+
+@pytest.mark.parametrize("reflex", [False, True])
+def test_clearly_outside_is_the_outer_angle_at_the_first_corner(reflex):
+    """At a corner of the boundary (next sample along x, previous along y: a right angle inside; the other
+    way round: three right angles inside), a triangle with that first corner is outside when it lies in the
+    outer angle, and not when it lies inside or only about 1e-12 radians off the boundary."""
+    after, before = ((0.0, 1.0), (1.0, 0.0)) if reflex else ((1.0, 0.0), (0.0, 1.0))
+    directions = np.array([20.0, 70.0, 110.0, 160.0, 200.0, 250.0, 290.0, 340.0])
+    unit = np.stack([np.cos(np.radians(directions)), np.sin(np.radians(directions))], axis=1)
+    near = np.array([[1.0, 1e-12], [1.0, -1e-12], [1e-12, 1.0], [-1e-12, 1.0]])
+    # Each triangle's other corners: two points 10 degrees apart around its direction.
+    spread = np.radians(5.0)
+    turn = np.array([[np.cos(spread), -np.sin(spread)], [np.sin(spread), np.cos(spread)]])
+    others = np.concatenate([unit @ turn.T, unit @ turn, near, near * 0.5])
+    points = np.concatenate([[(0.0, 0.0), after, before], others * 0.5])
+    following = np.concatenate([[1, 2, 0], np.arange(4, len(points)), [3]])
+    count = len(directions) + len(near)
+    first = 3 + np.arange(len(directions))
+    second = 3 + len(directions) + np.arange(len(directions))
+    near_first = 3 + 2 * len(directions) + np.arange(len(near))
+    corner_ids = np.stack(
+        [np.zeros(count, np.int64), np.concatenate([first, near_first]), np.concatenate([second, near_first + 4])],
+        axis=1,
+    )
+    outer = (directions > 90.0) if not reflex else (directions < 90.0)
+    expected = np.concatenate([outer, np.zeros(len(near), dtype=bool)])
+    assert skeleton_module._clearly_outside(points, corner_ids, following).tolist() == expected.tolist()
+
+
+def test_kept_triangles_drop_the_clearly_outside_ones_of_finished_conforming_polygons_only():
+    """Of two copies of the U-shaped channel's triangulation, a finished conforming one keeps the triangles not
+    clearly outside, a finished one that does not conform keeps them all, and an unfinished one none."""
+    polygon = u_with_island()
+    samples, ring, owner, steps = skeleton_module._boundary_sample_arrays([polygon])
+    following = skeleton_module._following(ring)
+    moved, corner_ids, _, _ = _delaunay_all(samples, owner, np.arange(len(samples)), steps, 1)
+    outside = skeleton_module._clearly_outside(moved, corner_ids, following)
+    assert np.any(outside)
+    count = len(corner_ids)
+    points = np.concatenate([moved, moved])
+    both_ids = np.concatenate([corner_ids, corner_ids + len(moved)])
+    both_following = np.concatenate([following, following + len(moved)])
+    triangle_owner = np.repeat([0, 1], count)
+
+    def kept(done, conforming):
+        return skeleton_module._kept_triangles(
+            points, both_ids, both_following, triangle_owner, np.array(done), np.array(conforming)
+        ).tolist()
+
+    walled = np.flatnonzero(~outside).tolist()
+    assert kept([True, True], [True, False]) == walled + list(range(count, 2 * count))
+    assert kept([True, True], [False, True]) == list(range(count)) + [count + k for k in walled]
+    assert kept([False, True], [True, False]) == list(range(count, 2 * count))
+    assert kept([True, False], [True, True]) == walled
+    assert kept([False, False], [True, True]) == []

@@ -6,9 +6,11 @@ topology-preserving variant only when that gives an invalid polygon) and densifi
 more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
 segments that are not edges of it; a polygon whose first triangulation has only slivers, thinner than its
 samples can resolve, is not refined and gets no skeleton), so no triangle crosses the boundary. The triangles
-inside the polygon are kept, except slivers of nearly collinear samples along a straight bank. Their dual graph, each triangle
-placed at its circumcentre (a Voronoi vertex of the samples, on the approximate medial axis), is the
-skeleton: every path in it stays in the region and goes around the islands.
+clearly outside the rings (about half of a river's: its hull's pockets, its islands) are dropped as soon as they
+are read (see :func:`_kept_triangles`). The triangles inside the polygon are kept, except slivers of nearly
+collinear samples along a straight bank. Their dual graph, each triangle placed at its circumcentre (a Voronoi
+vertex of the samples, on the approximate medial axis), is the skeleton: every path in it stays in the region
+and goes around the islands.
 
 The samples are moved by ``JITTER`` of the step in a fixed pseudo-random pattern before the triangulation:
 evenly spaced samples on straight parallel banks are exactly cocircular, which makes the GEOS triangulator
@@ -121,8 +123,9 @@ def joint_skeletons(polygons):
         return Skeletons(
             np.empty((0, 2)), nothing, nothing, np.empty((0, 2), np.int64), np.empty(0, np.int64), nothing, []
         )
-    corners, corner_ids, following, triangle_owner, shapes, steps, made = _triangulations(polygons)
-    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, shapes)
+    points, corner_ids, following, triangle_owner, steps, made = _triangulations(polygons)
+    corners = np.take(points, corner_ids, axis=0)
+    nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, _triangle_shapes(corners))
     errors = [
         None
         if triangulated
@@ -135,18 +138,19 @@ def joint_skeletons(polygons):
 def _triangulations(polygons):
     """Return the conforming Delaunay triangulations of the polygons' boundary samples, as flat arrays.
 
+    Only the triangles that may be inside are returned (see :func:`_kept_triangles`).
+
     Returns
     -------
-    corners : ndarray of shape (t, 3, 2)
-        Corners of each triangle, polygon after polygon, CRS units.
+    points : ndarray of shape (n, 2)
+        The triangulated (displaced) samples, polygon after polygon, CRS units.
     corner_ids : ndarray of shape (t, 3) of int
-        Sample index of each corner (samples numbered polygon after polygon, over the triangulated ones).
+        Sample index of each corner (samples numbered polygon after polygon, over the triangulated ones),
+        triangles polygon after polygon.
     following : ndarray of shape (n,) of int
         Index of the next sample on the same ring.
     triangle_owner : ndarray of shape (t,) of int
         Polygon of each triangle (non-decreasing).
-    shapes : tuple
-        The :func:`_triangle_shapes` of the triangles.
     steps : ndarray of shape (p,)
         Densification step of each polygon, CRS units.
     made : ndarray of shape (p,) of bool
@@ -159,21 +163,23 @@ def _triangulations(polygons):
     for refinement in range(MAX_REFINEMENTS):
         following = _following(ring)
         local = ranges(np.bincount(owner, minlength=count))[1]
-        corners, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
+        moved, corner_ids, triangle_owner, failed = _delaunay_all(samples, owner, local, steps, count)
         side_start, side_end = _sides(corner_ids)
         present = np.zeros(len(samples), dtype=bool)
         present[side_start[following[side_start] == side_end]] = True
         present[side_end[following[side_end] == side_start]] = True
-        refine = np.bincount(owner[~present], minlength=count) > 0
-        shapes = _triangle_shapes(corners)
+        missing = np.bincount(owner[~present], minlength=count) > 0
         if refinement == 0:
             # Only slivers: the polygon is thinner than its samples can resolve (a needle whose sides meet at
             # an angle of 1e-11). Splitting would not converge and only ends in "too thin"; it is not tried.
-            flat = np.bincount(triangle_owner[shapes[2]], minlength=count) == 0
-        refine &= ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
+            unsplit = np.flatnonzero(missing[triangle_owner])
+            solid = _triangle_shapes(np.take(moved, corner_ids[unsplit], axis=0))[2]
+            flat = np.bincount(triangle_owner[unsplit[solid]], minlength=count) == 0
+        refine = missing & ~failed & ~flat & (refinement < MAX_REFINEMENTS - 1)
         done = (np.bincount(owner, minlength=count) > 0) & ~refine & ~failed
         made |= done
-        stored.append(_Round(corners, corner_ids, following, owner, triangle_owner, shapes, done))
+        kept = _kept_triangles(moved, corner_ids, following, triangle_owner, done, ~missing)
+        stored.append(_Round(moved, corner_ids[kept], following, owner, triangle_owner[kept], done))
         if not np.any(refine):
             break
         split = ~present & refine[owner]
@@ -182,28 +188,106 @@ def _triangulations(polygons):
     return (*_merged_by_polygon(stored, count), steps, made)
 
 
+def _kept_triangles(points, corner_ids, following, triangle_owner, done, conforming):
+    """Return the triangles that may be inside their polygon: of the polygons ``done``, those not
+    :func:`_clearly_outside` where the polygon's triangulation is ``conforming``.
+
+    In a conforming triangulation every boundary segment is an edge, so the rings cross nowhere and the
+    spreading from the inside (see :func:`_dual_graph`, never across a boundary side) reaches no triangle
+    outside them. Dropping those changes no skeleton: the inside triangles, their order and the order of their
+    shared sides stay the same. A triangulation that does not conform (its last round, or only slivers) keeps
+    all its triangles.
+
+    Parameters
+    ----------
+    points : ndarray of shape (n, 2)
+        The triangulated samples, CRS units.
+    corner_ids : ndarray of shape (t, 3) of int
+        Sample index of each corner.
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring.
+    triangle_owner : ndarray of shape (t,) of int
+    done, conforming : ndarray of shape (p,) of bool
+
+    Returns
+    -------
+    ndarray of int
+        Indices of the kept triangles, increasing.
+    """
+    walled = done & conforming
+    if not np.any(walled):
+        return np.flatnonzero(done[triangle_owner])
+    outside = _clearly_outside(points, corner_ids, following) & walled[triangle_owner]
+    return np.flatnonzero(done[triangle_owner] & ~outside)
+
+
+def _clearly_outside(points, corner_ids, following):
+    """Return whether each triangle lies clearly outside the rings' interior at its first corner.
+
+    Every corner is a boundary sample ``v``; the interior lies on the left of the rings (counter-clockwise
+    exterior, clockwise holes), so near ``v`` it is the angle turning counter-clockwise from the next sample
+    ``u`` to the previous one ``w``. A triangle of a conforming triangulation lies wholly on one side of the
+    boundary; it is outside when the direction from ``v`` through its middle (the sum of its two sides from
+    ``v``) lies in the outer angle, from ``w`` to ``u``, by more than the rounding of the cross products
+    (``1e-9`` of the sides' lengths, plus ``1e-13`` of their sum for the coordinates' rounding: the samples are
+    within about 1 of the origin). A doubtful triangle is not outside.
+
+    Parameters
+    ----------
+    points : ndarray of shape (n, 2)
+        Samples, CRS units, within about 1 of the origin.
+    corner_ids : ndarray of shape (t, 3) of int
+    following : ndarray of shape (n,) of int
+        Index of the next sample on the same ring.
+
+    Returns
+    -------
+    ndarray of shape (t,) of bool
+    """
+    preceding = np.empty_like(following)
+    preceding[following] = np.arange(len(following))
+    vertex = corner_ids[:, 0]
+    origin = np.take(points, vertex, axis=0)
+    middle = np.take(points, corner_ids[:, 1], axis=0) + np.take(points, corner_ids[:, 2], axis=0) - 2.0 * origin
+    after = np.take(points, following[vertex], axis=0) - origin
+    before = np.take(points, preceding[vertex], axis=0) - origin
+    # An outer angle under a half turn holds the directions past ``w`` and short of ``u``; a wider one, either.
+    past_before = _clearly_counterclockwise(before, middle)
+    short_of_after = _clearly_counterclockwise(middle, after)
+    narrow = (before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]) > 0.0
+    return np.where(narrow, past_before & short_of_after, past_before | short_of_after)
+
+
+def _clearly_counterclockwise(first, second):
+    """Return whether each vector ``second`` turns counter-clockwise from ``first`` by more than the rounding
+    of their cross product (see :func:`_clearly_outside`); both of shape (t, 2), CRS units."""
+    cross = first[:, 0] * second[:, 1] - first[:, 1] * second[:, 0]
+    size_first = np.abs(first[:, 0]) + np.abs(first[:, 1])
+    size_second = np.abs(second[:, 0]) + np.abs(second[:, 1])
+    return cross > 1e-9 * size_first * size_second + 1e-13 * (size_first + size_second)
+
+
 class _Round(NamedTuple):
     """The triangulations of one refinement round (samples numbered from 0) and the polygons it finished."""
 
-    corners: np.ndarray
+    points: np.ndarray
     corner_ids: np.ndarray
     following: np.ndarray
     sample_owner: np.ndarray
     triangle_owner: np.ndarray
-    shapes: tuple
     done: np.ndarray
 
 
 def _merged_by_polygon(rounds, count):
     """Return the triangulations of the polygons each round finished as one set, polygon after polygon:
-    ``corners, corner_ids, following, triangle_owner, shapes``.
+    ``points, corner_ids, following, triangle_owner``.
 
     Within a polygon the order of its samples and triangles is kept (a polygon is finished in one round); each
     item is copied once, from its round to its place.
     """
     if len(rounds) == 1 and np.all(rounds[0].done[rounds[0].sample_owner]):
         (part,) = rounds
-        return part.corners, part.corner_ids, part.following, part.triangle_owner, part.shapes
+        return part.points, part.corner_ids, part.following, part.triangle_owner
     kept = [
         (np.flatnonzero(part.done[part.sample_owner]), np.flatnonzero(part.done[part.triangle_owner]))
         for part in rounds
@@ -229,11 +313,10 @@ def _merged_by_polygon(rounds, count):
     corner_ids = [part.corner_ids + first for part, first in zip(rounds, sample_firsts)]
     following = [part.following + first for part, first in zip(rounds, sample_firsts)]
     return (
-        merged([part.corners for part in rounds], triangle_source),
+        merged([part.points for part in rounds], sample_source),
         renumbered[merged(corner_ids, triangle_source)],
         renumbered[merged(following, sample_source)],
         merged([part.triangle_owner for part in rounds], triangle_source),
-        tuple(merged(parts, triangle_source) for parts in zip(*(part.shapes for part in rounds))),
     )
 
 
@@ -335,10 +418,11 @@ def _delaunay_all(samples, owner, local, steps, count):
 
     Returns
     -------
-    corners : ndarray of shape (t, 3, 2)
-        Corners of each triangle (the displaced samples, in the samples' frame), polygon after polygon.
+    moved : ndarray of shape (n, 2)
+        The displaced samples that were triangulated (in the samples' frame), CRS units.
     corner_ids : ndarray of shape (t, 3) of int
-        Index in ``samples`` of each corner (read from its z; one of them for a repeated point).
+        Index in ``samples`` of each corner (read from its z; one of them for a repeated point), triangles
+        polygon after polygon.
     triangle_owner : ndarray of shape (t,) of int
     failed : ndarray of shape (count,) of bool
         Polygons whose samples GEOS could not triangulate with any displacement.
@@ -366,7 +450,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     coordinates = shapely.get_coordinates(triangles[made], include_z=True)
     triangle_owner = np.repeat(made, shapely.get_num_geometries(triangles[made]))
     corner_ids = coordinates[:, 2].reshape(-1, 4)[:, :3].astype(np.int64)
-    return np.take(moved_all, corner_ids, axis=0), corner_ids, triangle_owner, waiting
+    return moved_all, corner_ids, triangle_owner, waiting
 
 
 def _runs(values):
