@@ -276,10 +276,18 @@ def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_pred
 
 def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
     centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
-    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
     # The cells sort otherwise than the indices (1, 3, then 0 and 2): the kept indices still ascend.
     centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
-    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
+
+
+def test_first_of_each_centre_counts_places_in_the_order_and_leaves_the_centres_alone():
+    centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
+    before = centres.copy()
+    # In the order 3, 2, 1, 0 the junction (points 2 and 0) is first met at place 1.
+    assert _first_of_each_centre(centres, np.array([3, 2, 1, 0]), 1e-9).tolist() == [0, 1, 2]
+    assert np.array_equal(centres, before)
 
 
 def test_put_rows_writes_the_rows_of_an_index_and_no_others():
