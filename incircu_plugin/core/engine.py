@@ -203,7 +203,8 @@ def _distinct(points, tolerance):
     step = points[1:] - points[:-1]
     keep = np.empty(len(points), dtype=bool)
     keep[0] = True
-    np.greater(np.hypot(step[:, 0], step[:, 1]), tolerance, out=keep[1:])
+    # The steps' lengths into their x column (no second array of the size of the line).
+    np.greater(np.hypot(step[:, 0], step[:, 1], out=step[:, 0]), tolerance, out=keep[1:])
     keep[-1] = True
     kept = np.flatnonzero(keep)
     if len(kept) > 2 and np.hypot(*(points[kept[-2]] - points[-1])) <= tolerance:
@@ -483,8 +484,10 @@ class _Frame:
         self.extent = extent_of(ring)
         self.coincidence = COINCIDENCE_TOLERANCE * self.extent
         self.origin = local_origin(ring)
-        #: Both chains as one ring in the local frame (the region between them), CRS units.
-        self.ring = ring - self.origin
+        #: Both chains as one ring in the local frame (the region between them), CRS units (shifted in place:
+        #: ``ring`` is a new array).
+        ring -= self.origin
+        self.ring = ring
         first = len(chains[0])
         self.chains = [self.ring[:first], np.ascontiguousarray(self.ring[first:][::-1])]
         self.lengths = [float(cumulative_lengths(c)[-1]) for c in self.chains]
