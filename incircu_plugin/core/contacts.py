@@ -431,7 +431,9 @@ def put_rows(array, index, values):
 def ranges(counts):
     """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
     owner = np.repeat(np.arange(len(counts)), counts)
-    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    # Each item's index less its owner's first item's, subtracted in place.
+    rank = np.arange(len(owner))
+    rank -= np.repeat(np.cumsum(counts) - counts, counts)
     return owner, rank
 
 
