@@ -21,6 +21,7 @@ from incircu_plugin.core.contacts import (
     Boundary,
     Samples,
     _group_starts,
+    _per_segment,
     first_contacts,
     put_rows,
     solve,
@@ -276,10 +277,35 @@ def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_pred
 
 def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
     centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
-    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
     # The cells sort otherwise than the indices (1, 3, then 0 and 2): the kept indices still ascend.
     centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
-    assert _first_of_each_centre(centres, 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
+
+
+def test_first_of_each_centre_counts_places_in_the_order_and_leaves_the_centres_alone():
+    centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
+    before = centres.copy()
+    # In the order 3, 2, 1, 0 the junction (points 2 and 0) is first met at place 1.
+    assert _first_of_each_centre(centres, np.array([3, 2, 1, 0]), 1e-9).tolist() == [0, 1, 2]
+    assert np.array_equal(centres, before)
+
+
+def test_boundary_segments_start_and_end_at_their_chains_vertices():
+    chains = [
+        np.array([[0.0, 0.0], [1.0, 0.0], [3.0, 0.0]]),
+        np.array([[0.0, 2.0], [2.0, 2.0], [2.0, 5.0], [1.0, 5.0]]),
+    ]
+    boundary = Boundary(chains)
+    # The chains' vertex offsets are 0 and 3: segment 2, the second chain's first, runs from vertex 3 to vertex 4.
+    assert _per_segment(np.arange(7), np.array([0, 3]), np.array([2, 3])).tolist() == [0, 1, 3, 4, 5]
+    starts = np.concatenate([chain[:-1] for chain in chains])
+    ends = np.concatenate([chain[1:] for chain in chains])
+    assert np.array_equal(boundary.start, starts)
+    assert np.array_equal(boundary.unit * boundary.length[:, None], ends - starts)
+    assert boundary.segment_position.tolist() == [0.0, 1.0, 0.0, 2.0, 5.0]
+    assert boundary.segment_end_position.tolist() == [1.0, 3.0, 2.0, 5.0, 6.0]
+    assert boundary.start_site.tolist() == [5 + v for v in (0, 1, 3, 4, 5)]
 
 
 def test_put_rows_writes_the_rows_of_an_index_and_no_others():

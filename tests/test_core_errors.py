@@ -33,6 +33,7 @@ from incircu_plugin.core import (
     split_polygon,
 )
 from incircu_plugin.core.chains import validate_polygon
+from incircu_plugin.core.validation import check_coordinates
 
 RECTANGLE = box(0.0, 0.0, 100.0, 10.0)
 ENDS = [(0.0, 5.0), (100.0, 5.0)]
@@ -606,3 +607,17 @@ def test_a_reused_id_is_never_trusted_and_no_polygon_is_kept_alive(monkeypatch):
     del valid
     gc.collect()
     assert freed() is None
+
+
+@pytest.mark.parametrize(
+    ("coordinates", "words"),
+    [
+        ([[-1e155, 0.0], [0.0, 1.0]], "scale the data down"),
+        ([[-1e6, -1e6], [-1e6 + 1e-5, -1e6], [-1e6, -1e6 + 1e-5]], "Shift the data nearer the origin"),
+    ],
+    ids=["huge", "tiny-far"],
+)
+def test_the_magnitude_of_negative_coordinates_counts(coordinates, words):
+    # The largest |coordinate| is a negative one: its magnitude decides both checks.
+    with pytest.raises(InvalidGeometryError, match=words):
+        check_coordinates(np.array(coordinates), "polygon")

@@ -111,7 +111,11 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     if len(chain) < 2:
         raise ChainError(f"The {name} has fewer than 2 distinct points.")
     # Each turn from the incoming segment (d[:-1]) to the outgoing one (d[1:]).
-    backward = dx[:-1] * dx[1:] + dy[:-1] * dy[1:] < 0
+    # The dot products, summed into the first term's array (at 10^6 vertices each term is 8 MB).
+    dot = np.multiply(dx[:-1], dx[1:])
+    dot += dy[:-1] * dy[1:]
+    backward = dot < 0
+    del dot
     if not backward.any():
         return chain
     cross = dx[:-1] * dy[1:] - dy[:-1] * dx[1:]

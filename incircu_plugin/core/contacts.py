@@ -170,13 +170,14 @@ class Boundary:
         self.last_of_chain[np.cumsum(sizes) - 1] = True
         self.first_of_chain = np.zeros(count, dtype=bool)
         self.first_of_chain[self.offset] = True
-        start_vertex = self.start_vertex(np.arange(count, dtype=np.int32))
-        self.start = rows(self.vertex, start_vertex)
-        self.segment_position = self.vertex_position[start_vertex]
-        self.segment_end_position = self.vertex_position[start_vertex + 1]
-        self.start_site = start_vertex + np.int32(count)
-        end = rows(self.vertex, start_vertex + 1)
-        del start_vertex
+        # Per segment its start and end vertex, chain by chain: slices copied one after the other (cheaper
+        # than gathering by index).
+        self.start = _per_segment(self.vertex, vertex_offset, sizes)
+        self.segment_position = _per_segment(self.vertex_position, vertex_offset, sizes)
+        self.segment_end_position = _per_segment(self.vertex_position, vertex_offset + 1, sizes)
+        self.start_site = self.start_vertex(np.arange(count, dtype=np.int32))
+        self.start_site += np.int32(count)
+        end = _per_segment(self.vertex, vertex_offset + 1, sizes)
         # Bounding boxes column by column: contiguous columns gather about twice as fast as strided ones.
         self.low_x, self.high_x = np.minimum(self.start[:, 0], end[:, 0]), np.maximum(self.start[:, 0], end[:, 0])
         self.low_y, self.high_y = np.minimum(self.start[:, 1], end[:, 1]), np.maximum(self.start[:, 1], end[:, 1])
@@ -312,6 +313,13 @@ class Boundary:
         return keep
 
 
+def _per_segment(values, first, sizes):
+    """``values[first[c] : first[c] + sizes[c]]`` of each chain ``c``, one after the other: per segment the value
+    at its start vertex, with ``first`` the chains' first vertices in ``values`` (at their second vertices: at
+    its end vertex)."""
+    return np.concatenate([values[begin : begin + size] for begin, size in zip(first, sizes)])
+
+
 class BoxGrid:
     """A uniform grid of square cells over boxes (the bounding boxes of a boundary's segment runs), each cell
     listing the boxes that meet it; :meth:`query` lists the boxes that meet a query box.
@@ -423,7 +431,9 @@ def put_rows(array, index, values):
 def ranges(counts):
     """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
     owner = np.repeat(np.arange(len(counts)), counts)
-    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    # Each item's index less its owner's first item's, subtracted in place.
+    rank = np.arange(len(owner))
+    rank -= np.repeat(np.cumsum(counts) - counts, counts)
     return owner, rank
 
 

@@ -203,7 +203,8 @@ def _distinct(points, tolerance):
     step = points[1:] - points[:-1]
     keep = np.empty(len(points), dtype=bool)
     keep[0] = True
-    np.greater(np.hypot(step[:, 0], step[:, 1]), tolerance, out=keep[1:])
+    # The steps' lengths into their x column (no second array of the size of the line).
+    np.greater(np.hypot(step[:, 0], step[:, 1], out=step[:, 0]), tolerance, out=keep[1:])
     keep[-1] = True
     kept = np.flatnonzero(keep)
     if len(kept) > 2 and np.hypot(*(points[kept[-2]] - points[-1])) <= tolerance:
@@ -211,15 +212,18 @@ def _distinct(points, tolerance):
     return keep
 
 
-def _first_of_each_centre(centres, resolution):
-    """Sorted indices of the first of the points sharing one centre (to ``resolution``, CRS units).
+def _first_of_each_centre(centres, order, resolution):
+    """Sorted positions in ``order`` (indices of ``centres``) of the first of the points sharing one centre (to
+    ``resolution``, CRS units).
 
     A junction of the axis is found from several sides, with different feet and so different places in the
     order; keeping its first place only, the line passes it once.
     """
     # The cells as complex numbers sort by x, then y in one stable sort: the indices
-    # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path.
-    cells = np.divide(centres, resolution, order="C")
+    # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path. Gathered,
+    # then scaled and rounded in place (one array of 16 bytes per point).
+    cells = rows(centres, order)
+    cells /= resolution
     np.round(cells, out=cells)
     cells = cells.view(np.complex128).ravel()
     order = np.argsort(cells, kind="stable")
@@ -292,24 +296,32 @@ def _ordered(points, side, lengths, coincidence):
     split point lie on the stub from it: their disks grow away from the first split point and shrink into
     the last, so they are ordered by radius.
     """
-    across_x = points.foot_b[:, 0] - points.foot_a[:, 0]
-    across_y = points.foot_b[:, 1] - points.foot_a[:, 1]
-    along = points.position_a / max(lengths[0], coincidence) + points.position_b / max(lengths[1], coincidence)
-    # The centre's component along the direction of travel, side * (across_y, -across_x).
-    crossing = side * (points.centre[:, 0] * across_y - points.centre[:, 1] * across_x)
+    # In place where the values allow: at 10^6 boundary vertices each temporary is a fresh 16 MB array.
+    across_x = np.subtract(points.foot_b[:, 0], points.foot_a[:, 0])
+    across_y = np.subtract(points.foot_b[:, 1], points.foot_a[:, 1])
+    spare = np.hypot(across_x, across_y)
     # Feet one point up to rounding: a split point, where both chains start (0) or end (2). No direction of
     # travel there; the radius orders the points.
-    one_foot = np.hypot(across_x, across_y) <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    one_foot = spare <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    # The centre's component along the direction of travel, side * (across_y, -across_x).
+    crossing = np.multiply(points.centre[:, 0], across_y)
+    crossing -= np.multiply(points.centre[:, 1], across_x, out=spare)
+    crossing *= side
+    # The sum of the relative arc lengths, into the memory of ``across_x`` (no longer needed).
+    along = np.divide(points.position_a, max(lengths[0], coincidence), out=across_x)
+    along += np.divide(points.position_b, max(lengths[1], coincidence), out=spare)
     if one_foot.any():
         along[one_foot] = np.round(along[one_foot])
         crossing[one_foot] = 0.0
-    growing = np.where(along < 1.0, points.radius, -points.radius)
+    growing = np.negative(points.radius, out=spare)
+    np.copyto(growing, points.radius, where=along < 1.0)
     # Feet at the same two vertices may come from different computations: equal up to rounding.
-    along = np.round(along / ORDER_RESOLUTION)
+    along /= ORDER_RESOLUTION
+    np.round(along, out=along)
     # np.lexsort((growing, crossing, along)), with the two other keys looked at only where ``along`` ties: a
     # stable sort by ``along``, then each run of ties (contiguous, in input order) sorted by all three keys.
     order = np.argsort(along, kind="stable")
-    key = along[order]
+    key = along.take(order, out=across_y, mode="clip")
     tied = np.zeros(len(order), dtype=bool)
     tied[1:] = key[1:] == key[:-1]
     tied[:-1] |= tied[1:]
@@ -472,8 +484,10 @@ class _Frame:
         self.extent = extent_of(ring)
         self.coincidence = COINCIDENCE_TOLERANCE * self.extent
         self.origin = local_origin(ring)
-        #: Both chains as one ring in the local frame (the region between them), CRS units.
-        self.ring = ring - self.origin
+        #: Both chains as one ring in the local frame (the region between them), CRS units (shifted in place:
+        #: ``ring`` is a new array).
+        ring -= self.origin
+        self.ring = ring
         first = len(chains[0])
         self.chains = [self.ring[:first], np.ascontiguousarray(self.ring[first:][::-1])]
         self.lengths = [float(cumulative_lengths(c)[-1]) for c in self.chains]
@@ -508,7 +522,7 @@ def _line_through(points, frame, simplification):
         points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
     order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    order = order[_first_of_each_centre(rows(points.centre, order), resolution)]
+    order = order[_first_of_each_centre(points.centre, order, resolution)]
     ends = _line_ends(frame.chains, frame.closed)
     centre = _with_ends(points.centre, order, ends[0])
     keep = _distinct(centre, resolution)

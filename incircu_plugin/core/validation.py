@@ -53,7 +53,8 @@ def check_coordinates(coordinates, name, whole=True):
         raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     if len(coordinates) == 0:
         return
-    magnitude = float(np.abs(coordinates).max())
+    # The largest |coordinate| from the extremes: no array of absolute values.
+    magnitude = max(float(coordinates.max()), -float(coordinates.min()))
     if magnitude > MAX_COORDINATE:
         raise InvalidGeometryError(
             f"The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {MAX_COORDINATE:.0e}: products of "
