@@ -407,6 +407,7 @@ def test_arc_vertices_hold_every_vertex_strictly_within_each_arc():
     coordinates = shapely.get_coordinates(exteriors[1])[:-1]
     incoming = coordinates - np.roll(coordinates, 1, axis=0)
     outgoing = np.roll(coordinates, -1, axis=0) - coordinates
-    expected = np.arctan2(np.cross(incoming, outgoing), np.sum(incoming * outgoing, axis=1))
+    cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
+    expected = np.arctan2(cross, np.sum(incoming * outgoing, axis=1))
     own = rings.starts[1] + np.arange(rings.lengths[1])
     assert np.allclose(rings.turns(own), expected, rtol=0.0, atol=1e-12)
