@@ -1443,8 +1443,8 @@ def _trace_batch(requests, batch, report):
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
-    tracer = _Tracer(sides, Boundary(chains), *per_chain)
-    points, chain = tracer.trace(report)
+    with _huge_pages_paused():
+        points, chain = _Tracer(sides, Boundary(chains), *per_chain).trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
     feature = feature[order]
