@@ -578,20 +578,3 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     assert np.all((height[on_segment] < 0.0) == same_direction)
     # Every segment's line is touched from the samples' side (a wrong side leaves the disks untouched: inf).
     assert np.all(np.isfinite(radius[on_segment]) & (radius[on_segment] > 0.0))
-
-
-def test_huge_page_advice_is_paused_while_tracings_run_and_restored_after_the_last():
-    from incircu_plugin.core.adaptive import _huge_page_advice_setter, _huge_pages_paused
-
-    setter = _huge_page_advice_setter()
-    assert setter is not None
-    original = setter(True)
-    try:
-        with _huge_pages_paused():
-            with _huge_pages_paused():
-                assert setter(False) is False
-            # One tracing still runs: the advice stays off.
-            assert setter(False) is False
-        assert setter(True) is True
-    finally:
-        setter(original)

@@ -37,7 +37,7 @@ from incircu_plugin.core import (
     split_polygon,
 )
 from incircu_plugin.core import steps as steps_module
-from incircu_plugin.core.steps import collector_paused, run_alone, trace_alone
+from incircu_plugin.core.steps import _huge_page_advice_setter, run_alone, run_settings_paused, trace_alone
 from tests.support import geometry_cases
 
 #: Largest difference allowed between a feature traced together and alone at the line's ends, as a fraction
@@ -323,15 +323,25 @@ def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeyp
     assert seen and not any(seen)
 
 
-def test_overlapping_pauses_restore_the_collector_when_the_last_ends():
+def test_overlapping_pauses_restore_the_collector_and_the_huge_page_advice_when_the_last_ends():
+    setter = _huge_page_advice_setter()
+    assert setter is not None
     assert gc.isenabled()
-    first, second = collector_paused(), collector_paused()
-    first.__enter__()
-    second.__enter__()
-    first.__exit__(None, None, None)
-    assert not gc.isenabled()
-    second.__exit__(None, None, None)
-    assert gc.isenabled()
+    original = setter(True)
+    try:
+        first, second = run_settings_paused(), run_settings_paused()
+        first.__enter__()
+        second.__enter__()
+        first.__exit__(None, None, None)
+        # One run still goes on: both stay paused.
+        assert not gc.isenabled()
+        assert setter(False) is False
+        second.__exit__(None, None, None)
+        assert gc.isenabled()
+        assert setter(True) is True
+    finally:
+        setter(original)
+        gc.enable()
 
 
 def tie_cases():

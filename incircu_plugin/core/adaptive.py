@@ -50,8 +50,6 @@ Several features are traced together (:func:`trace_together`) as pairs of chains
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
 
-import threading
-from contextlib import contextmanager
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -1284,57 +1282,7 @@ def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t
     ``min_t`` and ``report`` are as for :func:`.fixed_sampling.fixed_axis_points`. Returns :class:`.contacts.AxisPoints`.
     """
     per_chain = [np.full(2, value) for value in (closed, tolerance, width, max_t, min_t)]
-    with _huge_pages_paused():
-        return _Tracer(sides, boundary, *per_chain).trace(report)[0]
-
-
-def _huge_page_advice_setter():
-    """numpy's switch of its huge-page advice (``_set_madvise_hugepage``: sets it, returns the previous
-    state), or None when this numpy has none."""
-    try:
-        from numpy._core.multiarray import _set_madvise_hugepage
-    except ImportError:
-        # numpy before 1.26 has no ``numpy._core``.
-        try:
-            from numpy.core.multiarray import _set_madvise_hugepage
-        except ImportError:
-            return None
-    return _set_madvise_hugepage
-
-
-class _HugePagePause:
-    """Who pauses numpy's huge-page advice: the number of tracings under way, and the advice before the first."""
-
-    lock = threading.Lock()
-    holders = 0
-    was_advised = False
-
-
-@contextmanager
-def _huge_pages_paused():
-    """Stop numpy advising the kernel to back new arrays with huge pages for the duration, then restore it.
-
-    numpy asks for transparent huge pages on every array of 4 MiB or more; where the kernel then compacts
-    memory to find them on first touch (Debian's default ``defrag=madvise``) the tracer's large arrays cost
-    up to a second of system time at 10**6 boundary vertices, and the time varies from run to run (0.4 to
-    1.6 s). Without the advice the same pages cost about 0.65 s, every run; the outputs are the same bytes.
-    Tracings in several threads share one pause: the advice returns when the last of them ends.
-    """
-    setter = _huge_page_advice_setter()
-    if setter is None:
-        yield
-        return
-    with _HugePagePause.lock:
-        if _HugePagePause.holders == 0:
-            _HugePagePause.was_advised = setter(False)
-        _HugePagePause.holders += 1
-    try:
-        yield
-    finally:
-        with _HugePagePause.lock:
-            _HugePagePause.holders -= 1
-            if _HugePagePause.holders == 0:
-                setter(_HugePagePause.was_advised)
+    return _Tracer(sides, boundary, *per_chain).trace(report)[0]
 
 
 def trace_one(request, report):
@@ -1443,8 +1391,7 @@ def _trace_batch(requests, batch, report):
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
-    with _huge_pages_paused():
-        points, chain = _Tracer(sides, Boundary(chains), *per_chain).trace(report)
+    points, chain = _Tracer(sides, Boundary(chains), *per_chain).trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
     feature = feature[order]

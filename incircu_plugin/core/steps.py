@@ -11,7 +11,8 @@ rounds' overhead once per batch instead of once per feature. A polygon without s
 an :class:`EndsRequest` (its automatic ends, :func:`.ends.find_ends`); :func:`run_together` answers all
 those of a batch at once (:func:`.ends.find_ends_together`) before the tracing.
 
-Both drivers pause Python's cyclic garbage collector while they run (:func:`collector_paused`).
+Both drivers pause Python's cyclic garbage collector and numpy's huge-page advice while they run
+(:func:`run_settings_paused`).
 """
 
 import gc
@@ -72,36 +73,64 @@ class TraceRequest:
         return float(np.max(points.max(axis=0) - points.min(axis=0)))
 
 
-class _CollectorPause:
-    """Who pauses the garbage collector: the number of runs under way, and whether it ran before the first."""
+class _RunPause:
+    """Who pauses the process-wide settings (:func:`run_settings_paused`): the number of runs under way, and
+    the settings before the first."""
 
     lock = threading.Lock()
     holders = 0
-    was_enabled = False
+    was_collecting = False
+    was_advising = False
+
+
+def _huge_page_advice_setter():
+    """numpy's switch of its huge-page advice (``_set_madvise_hugepage``: sets it, returns the previous
+    state), or None when this numpy has none."""
+    try:
+        from numpy._core.multiarray import _set_madvise_hugepage
+    except ImportError:
+        # numpy before 1.26 has no ``numpy._core``.
+        try:
+            from numpy.core.multiarray import _set_madvise_hugepage
+        except ImportError:
+            return None
+    return _set_madvise_hugepage
 
 
 @contextmanager
-def collector_paused():
-    """Pause Python's cyclic garbage collector for the duration, then restore it as it was.
+def run_settings_paused():
+    """Pause Python's cyclic garbage collector and numpy's huge-page advice for the duration, then restore
+    both as they were. Neither changes a computed value.
 
-    The tracer creates and drops millions of short-lived GEOS geometries (its spatial-index queries); every
-    few hundred of them set off a collection, and now and then a full one walks every live object of the
-    process. In a large host such as QGIS (hundreds of thousands of objects) that made a layer about 10%
-    slower. The tracing creates no reference cycles worth collecting meanwhile. Runs in several threads
-    share one pause: the collector runs again when the last of them ends.
+    The collector: the tracer creates and drops millions of short-lived objects; every few hundred of them set
+    off a collection, and now and then a full one walks every live object of the process. In a large host
+    such as QGIS (hundreds of thousands of objects) that made a layer about 10% slower. A run creates no
+    reference cycles worth collecting meanwhile.
+
+    The advice: numpy asks the kernel to back every array of 4 MiB or more with transparent huge pages; where
+    the kernel then compacts memory to find them on first touch (Debian's default ``defrag=madvise``), a run's
+    large arrays cost up to a second of system time at 10**6 boundary vertices, varying from run to run (0.4
+    to 1.6 s); without the advice about 0.65 s, every run.
+
+    Runs in several threads share one pause: both settings return when the last of them ends.
     """
-    with _CollectorPause.lock:
-        if _CollectorPause.holders == 0:
-            _CollectorPause.was_enabled = gc.isenabled()
+    setter = _huge_page_advice_setter()
+    with _RunPause.lock:
+        if _RunPause.holders == 0:
+            _RunPause.was_collecting = gc.isenabled()
             gc.disable()
-        _CollectorPause.holders += 1
+            _RunPause.was_advising = setter(False) if setter is not None else False
+        _RunPause.holders += 1
     try:
         yield
     finally:
-        with _CollectorPause.lock:
-            _CollectorPause.holders -= 1
-            if _CollectorPause.holders == 0 and _CollectorPause.was_enabled:
-                gc.enable()
+        with _RunPause.lock:
+            _RunPause.holders -= 1
+            if _RunPause.holders == 0:
+                if _RunPause.was_collecting:
+                    gc.enable()
+                if setter is not None:
+                    setter(_RunPause.was_advising)
 
 
 @dataclass
@@ -144,7 +173,7 @@ def run_alone(steps):
     A request that fails (a tracing, or automatic ends) raises its exception inside the generator, at the
     request, as :func:`run_together` does (a multipart feature then loses that part only).
     """
-    with collector_paused():
+    with run_settings_paused():
         try:
             request = next(steps)
             while True:
@@ -184,7 +213,7 @@ def run_together(step_generators, progress=None):
     Cancelled
         If ``progress`` returned False.
     """
-    with collector_paused():
+    with run_settings_paused():
         return _run_together(list(step_generators), progress)
 
 
