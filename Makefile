@@ -98,6 +98,7 @@ test-core: $(VENV)/.installed
 
 lint: setup
 	$(PYTHON) -m ruff check .
+	$(PYTHON) -m ruff format --check .
 
 package:
 	@mkdir -p $(DIST)

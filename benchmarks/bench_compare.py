@@ -47,9 +47,11 @@ SCALING_TIMEOUT_SECONDS = {"IncirCu": 300.0, "peer": 90.0}
 
 def incircu_version():
     """The repository's commit, marked when the core has uncommitted changes (what is being measured)."""
+
     def git(*arguments):
-        completed = subprocess.run(["git", "-C", str(BENCH_DIR.parent), *arguments], capture_output=True,
-                                   text=True, check=False)
+        completed = subprocess.run(
+            ["git", "-C", str(BENCH_DIR.parent), *arguments], capture_output=True, text=True, check=False
+        )
         return completed.stdout.strip()
 
     commit = git("rev-parse", "--short", "HEAD") or "unknown"
@@ -67,8 +69,10 @@ def side_by_side(case_list, tools, timeout_seconds):
             measurements.append(measurement)
             if geometry is not None:
                 geometries[(case.name, tool.name)] = geometry
-            print(f"  {case.name:<28} {tool.name:<26} {time.perf_counter() - started:7.1f} s"
-                  f"  {measurement.error}", flush=True)
+            print(
+                f"  {case.name:<28} {tool.name:<26} {time.perf_counter() - started:7.1f} s  {measurement.error}",
+                flush=True,
+            )
     return measurements, geometries
 
 
@@ -95,17 +99,32 @@ def scaling(tools, sizes):
         for tool in [INCIRCU, *tools]:
             prediction = predicted_seconds(history[tool.name], case.vertex_count)
             if prediction > SCALING_SKIP_SECONDS:
-                rows.append({"tool": tool.name, "vertices": case.vertex_count, "seconds": None,
-                             "note": f"skipped: predicted {prediction:.0f} s"})
+                rows.append(
+                    {
+                        "tool": tool.name,
+                        "vertices": case.vertex_count,
+                        "seconds": None,
+                        "note": f"skipped: predicted {prediction:.0f} s",
+                    }
+                )
                 print(f"  {case.name:<28} {tool.name:<26} skipped (predicted {prediction:.0f} s)", flush=True)
                 continue
             limit = SCALING_TIMEOUT_SECONDS["IncirCu" if tool is INCIRCU else "peer"]
             measurement, _ = run_tool(tool, case, timeout_seconds=limit, budget_seconds=1.0)
-            rows.append({"tool": tool.name, "vertices": case.vertex_count, "seconds": measurement.seconds,
-                         "note": measurement.error, "mean_dev_rel": measurement.mean_dev_rel,
-                         "parts": measurement.parts, "branches": measurement.branches})
-            print(f"  {case.name:<28} {tool.name:<26} {measurement.seconds or 0:8.3f} s {measurement.error}",
-                  flush=True)
+            rows.append(
+                {
+                    "tool": tool.name,
+                    "vertices": case.vertex_count,
+                    "seconds": measurement.seconds,
+                    "note": measurement.error,
+                    "mean_dev_rel": measurement.mean_dev_rel,
+                    "parts": measurement.parts,
+                    "branches": measurement.branches,
+                }
+            )
+            print(
+                f"  {case.name:<28} {tool.name:<26} {measurement.seconds or 0:8.3f} s {measurement.error}", flush=True
+            )
             if measurement.seconds is None:
                 history[tool.name].append((case.vertex_count, float("inf")))
             else:
@@ -148,20 +167,35 @@ def plot_outlines(case_list, tool_names, geometries, path):
     for case in case_list:
         x0, y0, x1, y1 = case.polygon.bounds
         aspects.append(min(max((y1 - y0) / (x1 - x0), 0.4), 3.0))
-    figure, grid = plt.subplots(len(case_list), len(tool_names), dpi=72, squeeze=False,
-                                figsize=(1.9 * len(tool_names), 1.9 * sum(aspects) + 0.6),
-                                gridspec_kw={"height_ratios": aspects})
+    figure, grid = plt.subplots(
+        len(case_list),
+        len(tool_names),
+        dpi=72,
+        squeeze=False,
+        figsize=(1.9 * len(tool_names), 1.9 * sum(aspects) + 0.6),
+        gridspec_kw={"height_ratios": aspects},
+    )
     for row, case in zip(grid, case_list):
         for axes, tool_name in zip(row, tool_names):
             x, y = case.polygon.exterior.xy
             axes.fill(x, y, color="#dddddd", linewidth=0)
             geometry = geometries.get((case.name, tool_name))
             for part in line_parts(geometry):
-                axes.plot(*part.xy, linewidth=1.2 if tool_name == INCIRCU.name else 0.7,
-                          color="C3" if tool_name == INCIRCU.name else "C0")
+                axes.plot(
+                    *part.xy,
+                    linewidth=1.2 if tool_name == INCIRCU.name else 0.7,
+                    color="C3" if tool_name == INCIRCU.name else "C0",
+                )
             if geometry is None:
-                axes.text(0.5, 0.5, "no output\n(failed or timed out)", ha="center", va="center",
-                          transform=axes.transAxes, fontsize=7)
+                axes.text(
+                    0.5,
+                    0.5,
+                    "no output\n(failed or timed out)",
+                    ha="center",
+                    va="center",
+                    transform=axes.transAxes,
+                    fontsize=7,
+                )
             axes.set_aspect("equal")
             axes.set_xticks([])
             axes.set_yticks([])
@@ -176,8 +210,12 @@ def plot_outlines(case_list, tool_names, geometries, path):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="smaller scaling range, no GRASS (a smoke run)")
-    parser.add_argument("--timeout", type=float, default=45.0,
-                        help="seconds allowed per tool and input, runs included (scaling: SCALING_TIMEOUT_SECONDS)")
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        default=45.0,
+        help="seconds allowed per tool and input, runs included (scaling: SCALING_TIMEOUT_SECONDS)",
+    )
     arguments = parser.parse_args(argv)
     RESULTS_DIR.mkdir(exist_ok=True)
     preload()
@@ -206,8 +244,9 @@ def main(argv=None):
         for case in outlines:
             case.extra["keep_geometry"] = True
         outline_measurements, outline_geometries = side_by_side(outlines, tools, arguments.timeout)
-        plot_outlines(outlines, [tool.name for tool in [INCIRCU, *tools]], outline_geometries,
-                      RESULTS_DIR / "outlines.png")
+        plot_outlines(
+            outlines, [tool.name for tool in [INCIRCU, *tools]], outline_geometries, RESULTS_DIR / "outlines.png"
+        )
 
         print("== Scaling (synthetic river)", flush=True)
         sizes = SCALING_SIZES[:3] if arguments.quick else SCALING_SIZES
@@ -217,8 +256,9 @@ def main(argv=None):
     results = {
         "analytic": [dataclasses.asdict(m) for m in analytic_measurements],
         "outlines": [dataclasses.asdict(m) for m in outline_measurements],
-        "outline_info": [{"name": c.name, "vertices": c.vertex_count, "width_m": c.width,
-                          "axis_kind": c.axis_kind} for c in outlines],
+        "outline_info": [
+            {"name": c.name, "vertices": c.vertex_count, "width_m": c.width, "axis_kind": c.axis_kind} for c in outlines
+        ],
         "analytic_info": [{"name": c.name, "vertices": c.vertex_count, "width": c.width} for c in analytic],
         "scaling": scaling_rows,
         "grass_startup_seconds": startup,

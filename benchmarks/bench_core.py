@@ -61,8 +61,16 @@ def _measure_end_to_end(n_vertices):
     result = polygon_centerline(case.polygon, case.split_points)
     seconds = time.perf_counter() - start
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
-    print(json.dumps({"seconds": seconds, "peak_bytes": peak, "vertices": case.vertex_count,
-                      "output_vertices": len(result.line.coords)}))
+    print(
+        json.dumps(
+            {
+                "seconds": seconds,
+                "peak_bytes": peak,
+                "vertices": case.vertex_count,
+                "output_vertices": len(result.line.coords),
+            }
+        )
+    )
 
 
 #: Longest run of one child (s) and the address space it may use: past them the row reports why it stopped.
@@ -79,8 +87,13 @@ def _child_row(option, n, environment):
     and ``CHILD_TIMEOUT_SECONDS``) and return its JSON row, or ``{"error": why}``."""
     try:
         completed = subprocess.run(
-            [sys.executable, __file__, option, str(n)], capture_output=True, text=True, env=environment,
-            timeout=CHILD_TIMEOUT_SECONDS, preexec_fn=_limit_memory, check=False,
+            [sys.executable, __file__, option, str(n)],
+            capture_output=True,
+            text=True,
+            env=environment,
+            timeout=CHILD_TIMEOUT_SECONDS,
+            preexec_fn=_limit_memory,
+            check=False,
         )
     except subprocess.TimeoutExpired:
         return {"error": f"stopped after {CHILD_TIMEOUT_SECONDS} s", "vertices": n}
@@ -182,11 +195,15 @@ def main():
     end_to_end = _child_row("--child-end-to-end", 10**arguments.max_exponent, environment)
     smaller = None
     if "error" in end_to_end:
-        print(f"\nEnd to end from the polygon, core defaults, {end_to_end['vertices']:,} vertices: {end_to_end['error']}")
+        print(
+            f"\nEnd to end from the polygon, core defaults, {end_to_end['vertices']:,} vertices: {end_to_end['error']}"
+        )
         smaller = _child_row("--child-end-to-end", 10 ** (arguments.max_exponent - 1), environment)
         if "error" not in smaller:
-            print(f"At {smaller['vertices']:,} vertices: {smaller['seconds']:.2f} s, "
-                  f"peak memory {smaller['peak_bytes'] / 2**20:.0f} MiB.")
+            print(
+                f"At {smaller['vertices']:,} vertices: {smaller['seconds']:.2f} s, "
+                f"peak memory {smaller['peak_bytes'] / 2**20:.0f} MiB."
+            )
     else:
         print(
             f"\nEnd to end from the polygon, core defaults: {end_to_end['vertices']:,} boundary vertices in "
@@ -202,9 +219,14 @@ def main():
     for name, seconds in hydro.items():
         print(f"The same meander, {name}: median {seconds * 1e3:.1f} ms over {arguments.repeats} runs.")
     if arguments.json:
-        results = {"rivers": rows, "end_to_end": end_to_end, "end_to_end_smaller": smaller,
-                   "meander_seconds": median, "meander_variants": hydro,
-                   "load_average": {"start": load_before, "end": os.getloadavg()}}
+        results = {
+            "rivers": rows,
+            "end_to_end": end_to_end,
+            "end_to_end_smaller": smaller,
+            "meander_seconds": median,
+            "meander_variants": hydro,
+            "load_average": {"start": load_before, "end": os.getloadavg()},
+        }
         arguments.json.write_text(json.dumps(results, indent=1))
 
 

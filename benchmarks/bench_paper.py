@@ -91,21 +91,25 @@ def table_1():
         skeleton = run_sfcgal_straight_skeleton(bench_cases.Case(label, shape.polygon, (), shape.width))
         to_skeleton = NearestDistance(skeleton)(points)
         paper = PAPER_TABLE_1[key]
-        rows.append({
-            "case": key,
-            "shape": label,
-            "width": shape.width,
-            "vertex_distance": mean_vertex_distance(shape),
-            "medial_axis_rel": float(to_medial_axis.mean()) / shape.width,
-            "straight_skeleton_rel": float(to_skeleton.mean()) / shape.width,
-            "paper_medial_axis": paper["medial_axis"],
-            "paper_straight_skeleton": paper["straight_skeleton"],
-            "paper_vertex_distance": paper["vertex_distance"],
-            "paper_medial_axis_rel": paper["medial_axis"] / paper["vertex_distance"],
-            "paper_straight_skeleton_rel": paper["straight_skeleton"] / paper["vertex_distance"],
-        })
-        print(f"  {key}) {label:<28} MA {rows[-1]['medial_axis_rel']:.2e}  SS {rows[-1]['straight_skeleton_rel']:.2e}",
-              flush=True)
+        rows.append(
+            {
+                "case": key,
+                "shape": label,
+                "width": shape.width,
+                "vertex_distance": mean_vertex_distance(shape),
+                "medial_axis_rel": float(to_medial_axis.mean()) / shape.width,
+                "straight_skeleton_rel": float(to_skeleton.mean()) / shape.width,
+                "paper_medial_axis": paper["medial_axis"],
+                "paper_straight_skeleton": paper["straight_skeleton"],
+                "paper_vertex_distance": paper["vertex_distance"],
+                "paper_medial_axis_rel": paper["medial_axis"] / paper["vertex_distance"],
+                "paper_straight_skeleton_rel": paper["straight_skeleton"] / paper["vertex_distance"],
+            }
+        )
+        print(
+            f"  {key}) {label:<28} MA {rows[-1]['medial_axis_rel']:.2e}  SS {rows[-1]['straight_skeleton_rel']:.2e}",
+            flush=True,
+        )
     return rows
 
 
@@ -119,16 +123,21 @@ def figure_4():
         result = incircu(shape, samples_per_chain=samples)
         seconds = time.perf_counter() - started
         distances = medial.distance(densified_points(result.line, shape.width / 200.0))
-        rows.append({
-            "samples_per_chain": samples,
-            "vertices": len(result.line.coords),
-            "mean_rel": float(distances.mean()) / shape.width,
-            "max_rel": float(distances.max()) / shape.width,
-            "hausdorff_from_target_rel": medial.hausdorff_from_target(result.line) / shape.width,
-            "seconds": seconds,
-        })
-        print(f"  n={samples:>5} vertices={rows[-1]['vertices']:>6} mean {rows[-1]['mean_rel']:.2e} "
-              f"max {rows[-1]['max_rel']:.2e}", flush=True)
+        rows.append(
+            {
+                "samples_per_chain": samples,
+                "vertices": len(result.line.coords),
+                "mean_rel": float(distances.mean()) / shape.width,
+                "max_rel": float(distances.max()) / shape.width,
+                "hausdorff_from_target_rel": medial.hausdorff_from_target(result.line) / shape.width,
+                "seconds": seconds,
+            }
+        )
+        print(
+            f"  n={samples:>5} vertices={rows[-1]['vertices']:>6} mean {rows[-1]['mean_rel']:.2e} "
+            f"max {rows[-1]['max_rel']:.2e}",
+            flush=True,
+        )
     return label, shape, rows
 
 
@@ -143,8 +152,13 @@ def plot_figure_4(label, shape, rows, path):
     samples = [row["samples_per_chain"] for row in rows]
     axes.loglog(samples, [row["mean_rel"] for row in rows], marker="o", label="mean distance / width")
     axes.loglog(samples, [row["max_rel"] for row in rows], marker="s", linewidth=1, label="largest distance / width")
-    axes.loglog(samples, [row["hausdorff_from_target_rel"] for row in rows], marker="^", linewidth=1,
-                label="medial axis → IncirCu (Hausdorff) / width")
+    axes.loglog(
+        samples,
+        [row["hausdorff_from_target_rel"] for row in rows],
+        marker="^",
+        linewidth=1,
+        label="medial axis → IncirCu (Hausdorff) / width",
+    )
     axes.set_xlabel("samples per chain (equidistant, plus every vertex)")
     axes.set_ylabel("distance to the medial axis / width")
     axes.set_title("Fig. 4 reproduced: IncirCu vs medial axis (case d)")
@@ -172,8 +186,9 @@ def main():
     print("== Fig. 4 (paper) reproduced", flush=True)
     label, shape, fig4 = figure_4()
     plot_figure_4(label, shape, fig4, RESULTS_DIR / "fig4.png")
-    (RESULTS_DIR / "paper.json").write_text(json.dumps({"table_1": table, "figure_4": fig4, "figure_4_shape": label},
-                                                       indent=1))
+    (RESULTS_DIR / "paper.json").write_text(
+        json.dumps({"table_1": table, "figure_4": fig4, "figure_4_shape": label}, indent=1)
+    )
     return 0
 
 

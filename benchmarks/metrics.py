@@ -133,7 +133,9 @@ def measure(tool_name, case, geometry, seconds, runs):
         measurement.max_vertex_dev_rel = float(case.axis_distance(vertices_of(geometry)).max()) / width
     analytic_distance = case.extra.get("analytic_distance")
     if analytic_distance is not None:
-        measurement.mean_analytic_dev_rel = float(analytic_distance(densified_points(geometry, width / 50.0)).mean()) / width
+        measurement.mean_analytic_dev_rel = (
+            float(analytic_distance(densified_points(geometry, width / 50.0)).mean()) / width
+        )
     lines = shapely.MultiLineString(parts)
     measurement.end_gap_rel = tuple(float(lines.distance(end)) / width for end in case.ends)
     tolerance = 1e-9 * max(np.ptp(np.asarray(case.polygon.exterior.coords), axis=0))

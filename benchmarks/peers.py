@@ -200,8 +200,13 @@ class QgisProcess:
         plugin_dir.mkdir(exist_ok=True)
         if not (plugin_dir / "incircu").exists():
             (plugin_dir / "incircu").symlink_to(REPO_ROOT, target_is_directory=True)
-        self.env = dict(os.environ, QT_QPA_PLATFORM="offscreen", QGIS_CUSTOM_CONFIG_PATH=str(config_dir),
-                        QGIS_PLUGINPATH=str(plugin_dir), PYTHONPATH=str(REPO_ROOT / ".venv" / "qgis-site"))
+        self.env = dict(
+            os.environ,
+            QT_QPA_PLATFORM="offscreen",
+            QGIS_CUSTOM_CONFIG_PATH=str(config_dir),
+            QGIS_PLUGINPATH=str(plugin_dir),
+            PYTHONPATH=str(REPO_ROOT / ".venv" / "qgis-site"),
+        )
         for plugin in plugins:
             self.call(["plugins", "enable", plugin])
 
@@ -212,7 +217,11 @@ class QgisProcess:
         ``subprocess.TimeoutExpired`` is raised.
         """
         process = subprocess.Popen(
-            [QGIS_PROCESS, *arguments], env=self.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+            [QGIS_PROCESS, *arguments],
+            env=self.env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
             start_new_session=True,
         )
         try:
@@ -262,11 +271,18 @@ class GrassRunner:
         input_path = self._input_path(case)
         with tempfile.TemporaryDirectory(dir=self.work_dir) as out_dir:
             output_path = Path(out_dir) / "skeleton.geojson"
-            self._call([
-                "run", "grass7:v.voronoi.skeleton", "--",
-                f"input={input_path}", f"smoothness={mean_width(case.polygon) / 10.0!r}", "thin=-1", "-s=true",
-                f"output={output_path}",
-            ])
+            self._call(
+                [
+                    "run",
+                    "grass7:v.voronoi.skeleton",
+                    "--",
+                    f"input={input_path}",
+                    f"smoothness={mean_width(case.polygon) / 10.0!r}",
+                    "thin=-1",
+                    "-s=true",
+                    f"output={output_path}",
+                ]
+            )
             features = json.loads(output_path.read_text())["features"]
         return shapely.GeometryCollection([shapely.geometry.shape(feature["geometry"]) for feature in features])
 

@@ -36,8 +36,10 @@ def format_measurements(measurements, title):
             reference[record["case"]] = record["seconds"]
     for record in records:
         if record["error"]:
-            rows.append(f"| {record['case']} | {record['tool']} | – | – | – | – | – | – | – | – | – | – | "
-                        f"{record['error'].replace('|', '/')} |")
+            rows.append(
+                f"| {record['case']} | {record['tool']} | – | – | – | – | – | – | – | – | – | – | "
+                f"{record['error'].replace('|', '/')} |"
+            )
             continue
         base = reference.get(record["case"])
         ratio = record["seconds"] / base if base and record["seconds"] else None
@@ -67,7 +69,9 @@ def layer_reference(layer, row):
     """The IncirCu row a row's speed is compared with: the whole-layer ``qgis_process`` run for whole-layer
     calls, otherwise the core as fast as it runs a layer (:func:`core_layer_row`)."""
     if row["whole_layer_call"]:
-        return next((r for r in layer["rows"] if r["tool"] == "IncirCu (qgis_process)" and r["polygons_per_second"]), None)
+        return next(
+            (r for r in layer["rows"] if r["tool"] == "IncirCu (qgis_process)" and r["polygons_per_second"]), None
+        )
     return core_layer_row(layer)
 
 

@@ -38,8 +38,14 @@ GRASS = "GRASS v.voronoi.skeleton"
 
 def _command_output(arguments):
     try:
-        completed = subprocess.run(arguments, capture_output=True, text=True, timeout=60, check=False,
-                                   env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
+        completed = subprocess.run(
+            arguments,
+            capture_output=True,
+            text=True,
+            timeout=60,
+            check=False,
+            env=dict(os.environ, QT_QPA_PLATFORM="offscreen"),
+        )
         return completed.stdout
     except (OSError, subprocess.SubprocessError):
         return ""
@@ -47,32 +53,63 @@ def _command_output(arguments):
 
 def machine_and_versions(incircu_version):
     """Markdown bullet list: CPU, memory, OS, Python and every library/tool version."""
-    cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
-                if line.startswith("model name")), platform.processor())
+    cpu = next(
+        (
+            line.split(":", 1)[1].strip()
+            for line in Path("/proc/cpuinfo").read_text().splitlines()
+            if line.startswith("model name")
+        ),
+        platform.processor(),
+    )
     cores = sum(1 for line in Path("/proc/cpuinfo").read_text().splitlines() if line.startswith("processor"))
-    memory_kib = int(next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines()
-                          if line.startswith("MemTotal")))
-    os_name = next((line.split("=", 1)[1].strip('"') for line in Path("/etc/os-release").read_text().splitlines()
-                    if line.startswith("PRETTY_NAME")), platform.platform())
+    memory_kib = int(
+        next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines() if line.startswith("MemTotal"))
+    )
+    os_name = next(
+        (
+            line.split("=", 1)[1].strip('"')
+            for line in Path("/etc/os-release").read_text().splitlines()
+            if line.startswith("PRETTY_NAME")
+        ),
+        platform.platform(),
+    )
     import shapely
 
-    versions = {name: metadata.version(name) for name in
-                ("numpy", "shapely", "pyproj", "pyvoronoi", "pygeoops", "label-centerlines", "centerline",
-                 "pysfcgal", "scipy", "matplotlib")}
+    versions = {
+        name: metadata.version(name)
+        for name in (
+            "numpy",
+            "shapely",
+            "pyproj",
+            "pyvoronoi",
+            "pygeoops",
+            "label-centerlines",
+            "centerline",
+            "pysfcgal",
+            "scipy",
+            "matplotlib",
+        )
+    }
     import pysfcgal
 
-    qgis = next((line for line in _command_output(["qgis_process.bin", "--version"]).splitlines()
-                 if line.startswith("QGIS ")), "QGIS ?")
+    qgis = next(
+        (line for line in _command_output(["qgis_process.bin", "--version"]).splitlines() if line.startswith("QGIS ")),
+        "QGIS ?",
+    )
     grass = _command_output(["grass", "--config", "version"]).strip() or "?"
     lines = [
         f"- Machine: {cpu}, {cores} cores, {memory_kib / 2**20:.0f} GiB RAM, {os_name}; every tool runs on one core,",
         "  one after the other.",
-        (f"- Python {platform.python_version()}; numpy {versions['numpy']}, shapely {versions['shapely']} "
-         f"(GEOS {shapely.geos_version_string}), pyproj {versions['pyproj']}, scipy {versions['scipy']}, "
-         f"pyvoronoi {versions['pyvoronoi']} (oracle), matplotlib {versions['matplotlib']}."),
-        (f"- Peers: pygeoops {versions['pygeoops']}, label-centerlines {versions['label-centerlines']}, "
-         f"centerline {versions['centerline']}, pysfcgal {versions['pysfcgal']} ({pysfcgal.sfcgal_full_version()}), "
-         f"GRASS {grass} through {qgis.split(chr(39))[0].strip()} `qgis_process` (provider grass7)."),
+        (
+            f"- Python {platform.python_version()}; numpy {versions['numpy']}, shapely {versions['shapely']} "
+            f"(GEOS {shapely.geos_version_string}), pyproj {versions['pyproj']}, scipy {versions['scipy']}, "
+            f"pyvoronoi {versions['pyvoronoi']} (oracle), matplotlib {versions['matplotlib']}."
+        ),
+        (
+            f"- Peers: pygeoops {versions['pygeoops']}, label-centerlines {versions['label-centerlines']}, "
+            f"centerline {versions['centerline']}, pysfcgal {versions['pysfcgal']} ({pysfcgal.sfcgal_full_version()}), "
+            f"GRASS {grass} through {qgis.split(chr(39))[0].strip()} `qgis_process` (provider grass7)."
+        ),
         f"- IncirCu: the geometry core at commit `{incircu_version}` (`incircu_plugin.core.polygon_centerline`).",
         f"- Measured {datetime.now(timezone.utc):%Y-%m-%d %H:%M} UTC.",
     ]
@@ -98,21 +135,31 @@ def verdicts(compare):
 
     failures = [r for r in incircu if r["error"]]
     one_part = [r for r in incircu if not r["error"] and r["parts"] == 1 and r["branches"] == 1]
-    add("one part, no branch, on every input",
-        f"{len(one_part)} of {len(incircu)} inputs" + (f" (failed: {', '.join(r['case'] for r in failures)})"
-                                                        if failures else ""),
-        len(one_part) == len(incircu))
+    add(
+        "one part, no branch, on every input",
+        f"{len(one_part)} of {len(incircu)} inputs"
+        + (f" (failed: {', '.join(r['case'] for r in failures)})" if failures else ""),
+        len(one_part) == len(incircu),
+    )
     exact = [r for r in incircu if r["max_vertex_dev_rel"] is not None]
     worst = max(exact, key=lambda r: r["max_vertex_dev_rel"], default=None)
-    add("vertices on the medial axis (oracle, every input)",
+    add(
+        "vertices on the medial axis (oracle, every input)",
         f"largest vertex distance {_number(worst['max_vertex_dev_rel'])} × width ({worst['case']})" if worst else "–",
-        worst is not None and worst["max_vertex_dev_rel"] < 1e-6)
+        worst is not None and worst["max_vertex_dev_rel"] < 1e-6,
+    )
     gaps = [max(r["end_gap_rel"]) for r in incircu if r["end_gap_rel"]]
-    add("ends exactly at the split points", f"largest end gap {_number(max(gaps, default=None))} × width",
-        bool(gaps) and max(gaps) < 1e-9)
+    add(
+        "ends exactly at the split points",
+        f"largest end gap {_number(max(gaps, default=None))} × width",
+        bool(gaps) and max(gaps) < 1e-9,
+    )
     outside = [r["outside_rel"] for r in incircu if r["outside_rel"] is not None]
-    add("stays inside the polygon", f"largest length outside {_number(max(outside, default=None))} × width",
-        bool(outside) and max(outside) < 1e-9)
+    add(
+        "stays inside the polygon",
+        f"largest length outside {_number(max(outside, default=None))} × width",
+        bool(outside) and max(outside) < 1e-9,
+    )
 
     meander = [r for r in analytic if r["case"] == MEANDER]
     ours = _by(meander, MEANDER, "IncirCu")
@@ -120,14 +167,19 @@ def verdicts(compare):
     if ours and ours["seconds"] and peers:
         fastest = min(peers, key=lambda r: r["seconds"])
         ratio = fastest["seconds"] / ours["seconds"]
-        add("≥ 10× faster than the fastest peer on the meander",
+        add(
+            "≥ 10× faster than the fastest peer on the meander",
             f"{ratio:.2g}× ({_seconds(ours['seconds'])} vs {fastest['tool']} {_seconds(fastest['seconds'])})",
-            ratio >= 10)
+            ratio >= 10,
+        )
         accurate = min(peers, key=lambda r: r["mean_dev_rel"])
         accuracy = accurate["mean_dev_rel"] / ours["mean_dev_rel"] if ours["mean_dev_rel"] else float("inf")
-        add("≥ 100× more accurate than every peer on the meander (mean deviation)",
+        add(
+            "≥ 100× more accurate than every peer on the meander (mean deviation)",
             f"{accuracy:.3g}× (IncirCu {_number(ours['mean_dev_rel'])} vs best peer {accurate['tool']} "
-            f"{_number(accurate['mean_dev_rel'])} × width)", accuracy >= 100)
+            f"{_number(accurate['mean_dev_rel'])} × width)",
+            accuracy >= 100,
+        )
         accuracy_fastest = fastest["mean_dev_rel"] / ours["mean_dev_rel"] if ours["mean_dev_rel"] else float("inf")
         add("… and than the fastest peer", f"{accuracy_fastest:.3g}× ({fastest['tool']})", accuracy_fastest >= 100)
     grass = _by(meander, MEANDER, GRASS)
@@ -136,9 +188,12 @@ def verdicts(compare):
             ratio = grass["seconds"] / ours["seconds"]
             startup = compare.get("grass_startup_seconds") or 0.0
             net = (grass["seconds"] - startup) / ours["seconds"]
-            add("≥ 1000× faster than the GRASS skeleton (meander)",
+            add(
+                "≥ 1000× faster than the GRASS skeleton (meander)",
                 f"{ratio:.3g}× ({_seconds(grass['seconds'])} per qgis_process call; {net:.3g}× without its "
-                f"{_seconds(startup)} start-up)", ratio >= 1000)
+                f"{_seconds(startup)} start-up)",
+                ratio >= 1000,
+            )
         else:
             add("≥ 1000× faster than the GRASS skeleton (meander)", f"GRASS: {grass['error']}", True)
     return "| expected (issue 4) | measured | verdict |\n|---|---|---|\n" + "\n".join(rows) + "\n", failed
@@ -154,19 +209,30 @@ def closing_note(failed, compare, profiles):
     if speed and profiles:
         meander = profiles[0]
         top = meander["top"][:3]
-        share = ", ".join(f"`{row['function']}` {row['own_seconds'] / meander['profiled_seconds']:.0%}"
-                          for row in top)
-        stages = ", ".join(f"`{name}` {seconds / meander['profiled_seconds']:.0%}"
-                           for name, seconds in meander.get("stages", {}).items())
-        lines += ["", (f"Where the time goes on {meander['case']} ({_seconds(meander['median_seconds'])} median): "
-                       f"by stage (cumulative) {stages}; heaviest functions (own time) {share} of the profiled "
-                       "time. Full tables below.")]
+        share = ", ".join(f"`{row['function']}` {row['own_seconds'] / meander['profiled_seconds']:.0%}" for row in top)
+        stages = ", ".join(
+            f"`{name}` {seconds / meander['profiled_seconds']:.0%}"
+            for name, seconds in meander.get("stages", {}).items()
+        )
+        lines += [
+            "",
+            (
+                f"Where the time goes on {meander['case']} ({_seconds(meander['median_seconds'])} median): "
+                f"by stage (cumulative) {stages}; heaviest functions (own time) {share} of the profiled "
+                "time. Full tables below."
+            ),
+        ]
         scaling = [r for r in compare["scaling"] if r["tool"] == "IncirCu" and r["seconds"]]
         if scaling:
             largest = max(scaling, key=lambda r: r["vertices"])
-            lines += ["", (f"At {largest['vertices']:,} boundary vertices IncirCu takes "
-                           f"{_seconds(largest['seconds'])} ({largest['seconds'] / largest['vertices'] * 1e6:.2g} µs "
-                           "per vertex, end to end from the polygon).")]
+            lines += [
+                "",
+                (
+                    f"At {largest['vertices']:,} boundary vertices IncirCu takes "
+                    f"{_seconds(largest['seconds'])} ({largest['seconds'] / largest['vertices'] * 1e6:.2g} µs "
+                    "per vertex, end to end from the polygon)."
+                ),
+            ]
     return "\n".join(lines)
 
 
@@ -190,39 +256,51 @@ def scaling_table(rows):
     incircu = [r for r in rows if r["tool"] == "IncirCu" and r["seconds"]]
     if incircu:
         per_vertex = ", ".join(f"{r['vertices']:,} v: {r['seconds'] / r['vertices'] * 1e6:.2g} µs" for r in incircu)
-        text += (f"\nIncirCu time per boundary vertex: {per_vertex}. IncirCu's adaptive sampling (its default) solves"
-                 " the vertices of one chain and the events and parabola stations between them, about three exact"
-                 " solves per boundary vertex on rivers like this one.\n")
+        text += (
+            f"\nIncirCu time per boundary vertex: {per_vertex}. IncirCu's adaptive sampling (its default) solves"
+            " the vertices of one chain and the events and parabola stations between them, about three exact"
+            " solves per boundary vertex on rivers like this one.\n"
+        )
     return text
 
 
 def paper_tables(paper):
     """Table 1 next to the paper's values, and the Fig. 4 numbers."""
-    text = ("| case | our shape | width | IncirCu → medial axis / width | paper: MA / vertex dist. "
-            "| IncirCu → straight skeleton / width | paper: SS / vertex dist. | paper (raw): SS, MA, vertex dist. |\n"
-            "|---|---|---:|---:|---:|---:|---:|---|\n")
+    text = (
+        "| case | our shape | width | IncirCu → medial axis / width | paper: MA / vertex dist. "
+        "| IncirCu → straight skeleton / width | paper: SS / vertex dist. | paper (raw): SS, MA, vertex dist. |\n"
+        "|---|---|---:|---:|---:|---:|---:|---|\n"
+    )
     for row in paper["table_1"]:
-        text += (f"| {row['case']}) | {row['shape']} | {row['width']:.4g} | {_number(row['medial_axis_rel'])} | "
-                 f"{row['paper_medial_axis_rel']:.3f} | {_number(row['straight_skeleton_rel'])} | "
-                 f"{row['paper_straight_skeleton_rel']:.3f} | {row['paper_straight_skeleton']:.2f}, "
-                 f"{row['paper_medial_axis']:.2f}, {row['paper_vertex_distance']:.2f} |\n")
+        text += (
+            f"| {row['case']}) | {row['shape']} | {row['width']:.4g} | {_number(row['medial_axis_rel'])} | "
+            f"{row['paper_medial_axis_rel']:.3f} | {_number(row['straight_skeleton_rel'])} | "
+            f"{row['paper_straight_skeleton_rel']:.3f} | {row['paper_straight_skeleton']:.2f}, "
+            f"{row['paper_medial_axis']:.2f}, {row['paper_vertex_distance']:.2f} |\n"
+        )
     figure = "| samples per chain | IncirCu vertices | mean distance / width | largest / width | time |\n"
     figure += "|---:|---:|---:|---:|---:|\n"
     for row in paper["figure_4"]:
-        figure += (f"| {row['samples_per_chain']} | {row['vertices']} | {_number(row['mean_rel'])} | "
-                   f"{_number(row['max_rel'])} | {_seconds(row['seconds'])} |\n")
+        figure += (
+            f"| {row['samples_per_chain']} | {row['vertices']} | {_number(row['mean_rel'])} | "
+            f"{_number(row['max_rel'])} | {_seconds(row['seconds'])} |\n"
+        )
     return text, figure
 
 
 def profile_section(profiles):
     text = ""
     for result in profiles:
-        text += (f"\n**{result['case']}** ({result['vertices']:,} boundary vertices): "
-                 f"{_seconds(result['median_seconds'])} median, {_seconds(result['profiled_seconds'])} under cProfile.\n\n"
-                 "| own time | cumulative | calls | function |\n|---:|---:|---:|---|\n")
+        text += (
+            f"\n**{result['case']}** ({result['vertices']:,} boundary vertices): "
+            f"{_seconds(result['median_seconds'])} median, {_seconds(result['profiled_seconds'])} under cProfile.\n\n"
+            "| own time | cumulative | calls | function |\n|---:|---:|---:|---|\n"
+        )
         for row in result["top"]:
-            text += (f"| {_seconds(row['own_seconds'])} | {_seconds(row['cumulative_seconds'])} | {row['calls']} | "
-                     f"`{row['function']}` |\n")
+            text += (
+                f"| {_seconds(row['own_seconds'])} | {_seconds(row['cumulative_seconds'])} | {row['calls']} | "
+                f"`{row['function']}` |\n"
+            )
     return text
 
 
@@ -284,48 +362,80 @@ def issue9_verdicts(compare, layer_results, core):
     if rivers:
         ours = core_layer_row(rivers)
         pygeoops = _speedup(rivers, "pygeoops")
-        add(f"{rivers['name']}: IncirCu ≥ 5× pygeoops (polygons/s, {ours['tool']})",
+        add(
+            f"{rivers['name']}: IncirCu ≥ 5× pygeoops (polygons/s, {ours['tool']})",
             f"{_number(pygeoops)}× ({_number(ours['polygons_per_second'])} vs "
-            f"{_number(_row(rivers, 'pygeoops')['polygons_per_second'])} polygons/s)" if pygeoops else "–",
-            None if pygeoops is None else pygeoops >= 5)
+            f"{_number(_row(rivers, 'pygeoops')['polygons_per_second'])} polygons/s)"
+            if pygeoops
+            else "–",
+            None if pygeoops is None else pygeoops >= 5,
+        )
         grass = _speedup(rivers, "GRASS v.voronoi.skeleton (qgis_process)")
         grass_row = _row(rivers, "GRASS v.voronoi.skeleton (qgis_process)")
         claim = "… IncirCu ≥ 20× GRASS on the whole layer (one qgis_process call each)"
         reference = _row(rivers, "IncirCu (qgis_process)")
         if grass is None and grass_row and grass_row.get("timeout_seconds") and reference:
             bound = reference["polygons_per_second"] * grass_row["timeout_seconds"] / rivers["polygons"]
-            add(claim, f"> {_number(bound)}× (GRASS stopped at its {grass_row['timeout_seconds']:.0f} s limit)",
-                True if bound >= 20 else None)
+            add(
+                claim,
+                f"> {_number(bound)}× (GRASS stopped at its {grass_row['timeout_seconds']:.0f} s limit)",
+                True if bound >= 20 else None,
+            )
         else:
-            add(claim, f"{_number(grass)}×" if grass else (grass_row["note"] if grass_row else "GRASS not run"),
-                None if grass is None else grass >= 20)
+            add(
+                claim,
+                f"{_number(grass)}×" if grass else (grass_row["note"] if grass_row else "GRASS not run"),
+                None if grass is None else grass >= 20,
+            )
         peers = [r for r in (_row(rivers, name) for name in PEERS) if r and r["mean_dev_rel"] is not None]
         best = min(peers, key=lambda r: r["mean_dev_rel"], default=None)
         lead = best["mean_dev_rel"] / ours["mean_dev_rel"] if best and ours["mean_dev_rel"] else None
-        add("… accuracy lead kept: IncirCu's mean deviation below every peer's",
+        add(
+            "… accuracy lead kept: IncirCu's mean deviation below every peer's",
             f"{_number(lead)}× lower than the best peer ({best['tool']}: {_number(best['mean_dev_rel'])} vs "
-            f"{_number(ours['mean_dev_rel'])} × width)" if lead else "–", None if lead is None else lead > 1)
+            f"{_number(ours['mean_dev_rel'])} × width)"
+            if lead
+            else "–",
+            None if lead is None else lead > 1,
+        )
         out_in = ours["output_vertices"] / ours["input_vertices"] if ours["input_vertices"] else None
-        add("… output vertices ≤ 1.5× the input's (default tolerance)", f"{_number(out_in)}×",
-            None if out_in is None else out_in <= 1.5)
+        add(
+            "… output vertices ≤ 1.5× the input's (default tolerance)",
+            f"{_number(out_in)}×",
+            None if out_in is None else out_in <= 1.5,
+        )
     ratio, fastest, _ = meander_ratios(compare)
-    add("meander (2,333 v): ≥ 10× the fastest peer", f"{_number(ratio)}× ({fastest})" if ratio else "–",
-        None if ratio is None else ratio >= 10)
+    add(
+        "meander (2,333 v): ≥ 10× the fastest peer",
+        f"{_number(ratio)}× ({fastest})" if ratio else "–",
+        None if ratio is None else ratio >= 10,
+    )
     end = core["end_to_end"] if core else None
     million = end is not None and end["vertices"] >= 1_000_000
     if end and "error" in end:
         smaller = core.get("end_to_end_smaller") or {}
-        at_smaller = (f"; {smaller['vertices']:,} v: {_seconds(smaller['seconds'])}, "
-                      f"{smaller['peak_bytes'] / 2**20:,.0f} MiB" if "seconds" in smaller else "")
-        add("10^6 boundary vertices end to end ≤ 5 s", f"{end['vertices']:,} v: {end['error']}{at_smaller}",
-            False if million else None)
+        at_smaller = (
+            f"; {smaller['vertices']:,} v: {_seconds(smaller['seconds'])}, {smaller['peak_bytes'] / 2**20:,.0f} MiB"
+            if "seconds" in smaller
+            else ""
+        )
+        add(
+            "10^6 boundary vertices end to end ≤ 5 s",
+            f"{end['vertices']:,} v: {end['error']}{at_smaller}",
+            False if million else None,
+        )
         add("… peak memory ≤ 1 GiB", "–", False if million and "MemoryError" in end["error"] else None)
     else:
-        add("10^6 boundary vertices end to end ≤ 5 s",
+        add(
+            "10^6 boundary vertices end to end ≤ 5 s",
             f"{_seconds(end['seconds'])} ({end['vertices']:,} v)" if end else "–",
-            end["seconds"] <= 5 if million else None)
-        add("… peak memory ≤ 1 GiB", f"{end['peak_bytes'] / 2**20:,.0f} MiB" if end else "–",
-            end["peak_bytes"] <= 2**30 if million else None)
+            end["seconds"] <= 5 if million else None,
+        )
+        add(
+            "… peak memory ≤ 1 GiB",
+            f"{end['peak_bytes'] / 2**20:,.0f} MiB" if end else "–",
+            end["peak_bytes"] <= 2**30 if million else None,
+        )
     return "| target (issue 9) | measured | verdict |\n|---|---|---|\n" + "\n".join(rows) + "\n", failed
 
 
@@ -336,10 +446,13 @@ def issue9_closing(failed, profiles):
     text = f"Targets not met in this run: {len(failed)} (marked above)."
     layer = next((result for result in profiles if "layer" in result["case"]), None)
     if layer:
-        top = ", ".join(f"`{row['function']}` {row['own_seconds'] / layer['profiled_seconds']:.0%}"
-                        for row in layer["top"][:4])
-        text += (f" Where the time goes on {layer['case']} ({layer['vertices']:,} boundary vertices, "
-                 f"{_seconds(layer['median_seconds'])}): {top} of the profiled time (own time; full tables at the end).")
+        top = ", ".join(
+            f"`{row['function']}` {row['own_seconds'] / layer['profiled_seconds']:.0%}" for row in layer["top"][:4]
+        )
+        text += (
+            f" Where the time goes on {layer['case']} ({layer['vertices']:,} boundary vertices, "
+            f"{_seconds(layer['median_seconds'])}): {top} of the profiled time (own time; full tables at the end)."
+        )
     return text
 
 
@@ -349,13 +462,16 @@ def layer_section(layer_results):
         return "Not run (`benchmarks/bench_layer.py` writes `benchmarks/results/layer.json`).\n"
     load = layer_results["load_average"]
     startup = layer_results.get("qgis_startup_seconds")
-    tolerance = ("the core has the `tolerance` keyword: an extra row at tolerance 0.001 × width"
-                 if layer_results["tolerance_keyword"] else "the core has no `tolerance` keyword yet")
+    tolerance = (
+        "the core has the `tolerance` keyword: an extra row at tolerance 0.001 × width"
+        if layer_results["tolerance_keyword"]
+        else "the core has no `tolerance` keyword yet"
+    )
     text = f"""`benchmarks/bench_layer.py`: the seeded layer of `benchmarks/rivers.py` (random-walk axes 200–3,000 m,
 5–40 m wide, 290 bank vertices, some islands, EPSG:32633, split points at the caps' midpoints) and each real
-outline as a layer of one polygon. IncirCu `{layer_results['incircu_version']}`; {tolerance}. Load average
-(1 min) at start / end: {load['start'][0]:.1f} / {load['end'][0]:.1f} on 2 cores; whole run
-{layer_results['wall_seconds'] / 60:.0f} min.
+outline as a layer of one polygon. IncirCu `{layer_results["incircu_version"]}`; {tolerance}. Load average
+(1 min) at start / end: {load["start"][0]:.1f} / {load["end"][0]:.1f} on 2 cores; whole run
+{layer_results["wall_seconds"] / 60:.0f} min.
 
 - **polygons/s**: polygons attempted / time. Core and peers: the sum of the tool calls, polygon after polygon in
   one clean child process (forked from a fork server that only imported the tools; stopped past its time limit); `IncirCu (core, layer together)`: one call on the whole
@@ -405,23 +521,34 @@ def summary(compare, layer_results, core):
         put("layer_polygons", rivers["polygons"], "layer.json: polygons in the river layer")
         put("layer_polygons_per_second", ours["polygons_per_second"], f"layer.json: {ours['tool']}")
         put("layer_vs_pygeoops", _speedup(rivers, "pygeoops"), f"layer.json: {ours['tool']} / pygeoops, polygons/s")
-        put("layer_vs_grass", _speedup(rivers, "GRASS v.voronoi.skeleton (qgis_process)"),
-            "layer.json: IncirCu (qgis_process) / GRASS (qgis_process), polygons/s")
-        put("layer_output_vs_input", ours["output_vertices"] / ours["input_vertices"],
-            f"layer.json: {ours['tool']} output vertices / input vertices")
+        put(
+            "layer_vs_grass",
+            _speedup(rivers, "GRASS v.voronoi.skeleton (qgis_process)"),
+            "layer.json: IncirCu (qgis_process) / GRASS (qgis_process), polygons/s",
+        )
+        put(
+            "layer_output_vs_input",
+            ours["output_vertices"] / ours["input_vertices"],
+            f"layer.json: {ours['tool']} output vertices / input vertices",
+        )
     if core and "error" not in core["end_to_end"]:
         end = core["end_to_end"]
         put("end_to_end_vertices", end["vertices"], "core.json: end_to_end vertices")
         put("end_to_end_seconds", end["seconds"], "core.json: end_to_end seconds")
         put("end_to_end_peak_mib", end["peak_bytes"] / 2**20, "core.json: end_to_end peak_bytes / 2^20")
-    loads = [source["load_average"]["start"][0] for source in (compare, layer_results, core)
-             if source and "load_average" in source]
+    loads = [
+        source["load_average"]["start"][0]
+        for source in (compare, layer_results, core)
+        if source and "load_average" in source
+    ]
     return {
         "generated_by": "benchmarks/write_docs.py",
         "largest_load_average": max(loads, default=None),
         "accuracy_floor": ACCURACY_FLOOR,
-        "incircu_version": {"compare": compare.get("incircu_version"),
-                            "layer": layer_results.get("incircu_version") if layer_results else None},
+        "incircu_version": {
+            "compare": compare.get("incircu_version"),
+            "layer": layer_results.get("incircu_version") if layer_results else None,
+        },
         "quotes": quotes,
     }
 
@@ -432,30 +559,43 @@ LOADED = 1.5
 
 def readme_block(quotes, load=None):
     """The README's benchmark bullet, from the summary's quotes (only the measured ones) and the largest load."""
+
     def text(key):
         return f"**{quotes[key]['text']}**"
 
     sentences = []
     if {"accuracy_factor_min", "accuracy_factor_max"} <= quotes.keys():
-        sentences.append(f"IncirCu is {text('accuracy_factor_min')} to {text('accuracy_factor_max')} times closer "
-                         "to the medial axis than the most accurate peer on each input")
+        sentences.append(
+            f"IncirCu is {text('accuracy_factor_min')} to {text('accuracy_factor_max')} times closer "
+            "to the medial axis than the most accurate peer on each input"
+        )
     if "meander_vs_fastest_peer" in quotes:
         grass = f" and {text('meander_vs_grass')}× GRASS's" if "meander_vs_grass" in quotes else ""
-        sentences.append(f"on the 2 km meander its speed is {text('meander_vs_fastest_peer')}× the fastest "
-                         f"peer's{grass}")
+        sentences.append(
+            f"on the 2 km meander its speed is {text('meander_vs_fastest_peer')}× the fastest peer's{grass}"
+        )
     if {"layer_polygons", "layer_vs_pygeoops", "layer_output_vs_input"} <= quotes.keys():
-        grass = (f" and {text('layer_vs_grass')}× GRASS's on the whole layer through `qgis_process`"
-                 if "layer_vs_grass" in quotes else "")
-        sentences.append(f"on a layer of {text('layer_polygons')} river-like polygons it does "
-                         f"{text('layer_polygons_per_second')} polygons/s, {text('layer_vs_pygeoops')}× pygeoops' "
-                         f"rate{grass}, with {text('layer_output_vs_input')}× the input's vertex count in its output")
+        grass = (
+            f" and {text('layer_vs_grass')}× GRASS's on the whole layer through `qgis_process`"
+            if "layer_vs_grass" in quotes
+            else ""
+        )
+        sentences.append(
+            f"on a layer of {text('layer_polygons')} river-like polygons it does "
+            f"{text('layer_polygons_per_second')} polygons/s, {text('layer_vs_pygeoops')}× pygeoops' "
+            f"rate{grass}, with {text('layer_output_vs_input')}× the input's vertex count in its output"
+        )
     if {"end_to_end_vertices", "end_to_end_seconds", "end_to_end_peak_mib"} <= quotes.keys():
-        sentences.append(f"{text('end_to_end_vertices')} boundary vertices take {text('end_to_end_seconds')} s end "
-                         f"to end with a peak memory of {text('end_to_end_peak_mib')} MiB")
+        sentences.append(
+            f"{text('end_to_end_vertices')} boundary vertices take {text('end_to_end_seconds')} s end "
+            f"to end with a peak memory of {text('end_to_end_peak_mib')} MiB"
+        )
     body = "; ".join(sentences) + "." if sentences else "no benchmark results yet: run `make bench`."
     if load is not None and load > LOADED:
         body += " Some of these runs shared the machine with other work: `make bench` on an idle machine gives the real figures."
-    bullet = textwrap.fill(f"- Measured by `make bench`: {body}", width=115, subsequent_indent="  ", break_on_hyphens=False)
+    bullet = textwrap.fill(
+        f"- Measured by `make bench`: {body}", width=115, subsequent_indent="  ", break_on_hyphens=False
+    )
     return f"{README_START}\n{bullet}\n{README_END}"
 
 
@@ -480,7 +620,6 @@ def _optional_json(name):
     return json.loads(path.read_text()) if path.exists() else None
 
 
-
 def main():
     compare = json.loads((RESULTS_DIR / "compare.json").read_text())
     paper = json.loads((RESULTS_DIR / "paper.json").read_text())
@@ -491,13 +630,18 @@ def main():
     table_1, figure_4 = paper_tables(paper)
     verdict_table, failed = verdicts(compare)
     startup = compare.get("grass_startup_seconds")
-    outline_info = ", ".join(f"{o['name']} {o['vertices']:,} v (width 2A/P = {o['width_m'] / 1e3:.0f} km)"
-                             for o in compare["outline_info"])
+    outline_info = ", ".join(
+        f"{o['name']} {o['vertices']:,} v (width 2A/P = {o['width_m'] / 1e3:.0f} km)" for o in compare["outline_info"]
+    )
     quick_note = "\n> **Quick run** (`--quick`: no GRASS, scaling to 10^5 only).\n" if compare.get("quick") else ""
     load = compare.get("load_average", {})
-    load_note = (f"Load average (1 min) when the comparison started / ended: {load['start'][0]:.1f} / "
-                 f"{load['end'][0]:.1f} on 2 cores (other processes share this machine; times above 1 core's "
-                 "worth of load are inflated accordingly)." if load else "")
+    load_note = (
+        f"Load average (1 min) when the comparison started / ended: {load['start'][0]:.1f} / "
+        f"{load['end'][0]:.1f} on 2 cores (other processes share this machine; times above 1 core's "
+        "worth of load are inflated accordingly)."
+        if load
+        else ""
+    )
     page = f"""# Benchmark: IncirCu against the centerline tools in use today
 
 Generated by `make bench` (`bash benchmarks/run.sh`) from one run; do not edit by hand. Raw numbers:
@@ -560,8 +704,8 @@ synthetic river's polygon and split points at the core's defaults (input generat
   `interpolation_distance=w/10`; GRASS `smoothness=w/10, thin=-1, -s`. pygeoops: defaults (already
   relative to the width) with `extend=True`. SFCGAL has no parameter. IncirCu: default spacing.
 
-{format_measurements(compare['analytic'], 'Analytic shapes (deviation from the polygon medial axis, oracle)')}
-{format_measurements(compare['outlines'], 'Real outlines (deviation from the oracle medial axis between the two ends; w = 2A/P)')}
+{format_measurements(compare["analytic"], "Analytic shapes (deviation from the polygon medial axis, oracle)")}
+{format_measurements(compare["outlines"], "Real outlines (deviation from the oracle medial axis between the two ends; w = 2A/P)")}
 ![Real outlines](../benchmarks/results/outlines.png)
 
 ## Scaling
@@ -571,7 +715,7 @@ width, so more vertices means a longer river). A tool is skipped at a size where
 from the smaller sizes (the last measured growth, at least linear; n^1.5 while only one size is known),
 would exceed 60 s; a run is stopped after 90 s (IncirCu: 300 s).
 
-{scaling_table(compare['scaling'])}
+{scaling_table(compare["scaling"])}
 ![Scaling](../benchmarks/results/scaling.png)
 
 ## The paper reproduced
