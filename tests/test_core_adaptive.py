@@ -578,3 +578,31 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     assert np.all((height[on_segment] < 0.0) == same_direction)
     # Every segment's line is touched from the samples' side (a wrong side leaves the disks untouched: inf).
     assert np.all(np.isfinite(radius[on_segment]) & (radius[on_segment] > 0.0))
+
+
+def test_intervals_touching_the_own_chain_on_one_side_of_their_span_are_settled_without_changing_the_line(
+    monkeypatch,
+):
+    # Ragged banks (a real outline, random-walk rivers) put many samples on side branches: an interval whose two
+    # ends touch the own bank on the same side of its span holds no point of the axis, so settling it without
+    # probes must give the very same line as probing it.
+    from benchmarks.rivers import river_layer
+    from incircu_plugin.core import adaptive
+
+    original = adaptive._Tracer._off_the_axis
+    settled = {"count": 0}
+
+    def counting(self, intervals, row):
+        off = original(self, intervals, row)
+        settled["count"] += np.count_nonzero(off)
+        return off
+
+    shapes = [(GAMBIA.polygon, GAMBIA.split_points)] + [(river.polygon, river.ends) for river in river_layer(6, 7)]
+    for polygon, split_points in shapes:
+        settled["count"] = 0
+        monkeypatch.setattr(adaptive._Tracer, "_off_the_axis", counting)
+        line = np.asarray(polygon_centerline(polygon, split_points).line.coords)
+        monkeypatch.setattr(adaptive._Tracer, "_off_the_axis", lambda self, intervals, row: np.zeros(len(row), bool))
+        probed = np.asarray(polygon_centerline(polygon, split_points).line.coords)
+        assert settled["count"] > 0
+        np.testing.assert_array_equal(line, probed)

@@ -44,7 +44,10 @@ that touch the same site: the disks between them lie in the region enclosed by t
 two (empty) end disks, which the boundary cannot enter without crossing one of them. A probe whose first
 contact is the vertex where its interval's two segments meet touches that vertex, not the segments: it is
 no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
-there touches the other chain too, whatever it touches first: it is a point of the axis.
+there touches the other chain too, whatever it touches first: it is a point of the axis. In general the disks
+between two samples first touch the boundary between the two samples' contacts, on the side away from the
+span: so where both contacts lie on the own chain, both before the span or both after it, every disk between
+touches its own chain first, and the interval is closed without a probe (:meth:`_Tracer._off_the_axis`).
 
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
@@ -299,6 +302,18 @@ class _Sites:
         """Chain of each site (-1 for no site); ``site`` is -1 or a segment or vertex index (below
         ``segment_count + len(vertex)``): -1 reads the last entry, the no-site one."""
         return self.site_chain.take(site)
+
+    def extent(self, site):
+        """Arc lengths along its chain where each site (a segment or vertex index, not -1) begins and ends, CRS
+        units (a segment site: its whole straight run)."""
+        b = self.boundary
+        count = b.segment_count
+        segment = self.line_of[np.clip(site, 0, count - 1)]
+        vertex = np.clip(site - count, 0, len(b.vertex) - 1)
+        on_vertex = site >= count
+        first = np.where(on_vertex, b.vertex_position[vertex], b.segment_position[segment])
+        last = np.where(on_vertex, first, self.run_end_position[segment])
+        return first, last
 
     def feet(self, site, centre):
         """Nearest point to ``centre`` of each site (a segment site: its straight run), and its arc length."""
@@ -827,10 +842,29 @@ class _Tracer:
         known = np.isfinite(t_left) & np.isfinite(t_right) & (site0 >= 0)
         differ = site0 != site1
         event = (differ & known & (site1 >= 0)).nonzero()[0]
+        event = event[~self._off_the_axis(intervals, event)]
         event = event[self._is_open(intervals, event, np.fmax(t_left[event], t_right[event]))]
         curve = (~differ & known & ~intervals.verified).nonzero()[0]
         curve = curve[self._is_curved(intervals.span[curve], site0[curve])]
         return intervals.subset(event), intervals.subset(curve)
+
+    def _off_the_axis(self, intervals, row):
+        """Which of the intervals ``row`` (both ends solved, touching two known different sites) hold no point of
+        the axis: both ends touch their own chain, on the same side of the span along it.
+
+        The disks between two samples first touch the boundary between the two contacts, on the side away from
+        the span (module docstring); when both contacts lie on the own chain before the span, or both after it,
+        that part of the boundary is the own chain between them, so every disk between touches its own chain
+        first: the samples there lie on side branches, and their events are not points of the axis.
+        """
+        span, site0, site1 = intervals.span[row], intervals.site0[row], intervals.site1[row]
+        own = self.spans.chain[span]
+        on_own = (self.sites.chain(site0) == own) & (self.sites.chain(site1) == own)
+        start = self.spans.position[span]
+        end = self.spans.position_at(span, self.spans.length[span])
+        first0, last0 = self.sites.extent(site0)
+        first1, last1 = self.sites.extent(site1)
+        return on_own & (((last0 <= start) & (last1 <= start)) | ((first0 >= end) & (first1 >= end)))
 
     def _is_open(self, intervals, row, radius):
         """Which of the intervals ``row`` (both ends solved, touching two known different sites; the larger end
