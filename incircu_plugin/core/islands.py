@@ -166,10 +166,9 @@ class _Target(IndexedPolyline):
     """A polyline a slit may end on (a chain, or the walk around a joined island): indexed, with its line."""
 
     def __init__(self, coordinates):
-        """Index the segments of ``coordinates`` (an (n, 2) array, CRS units) and prepare the line."""
+        """Index the segments of ``coordinates`` (an (n, 2) array, CRS units) and make the line."""
         super().__init__(coordinates)
         self.line = LineString(self.xy)
-        shapely.prepare(self.line)
 
 
 @dataclass(frozen=True)
