@@ -326,9 +326,14 @@ def toothed_channel(length, width, bottom_step, tooth, depth, spike=None):
 
 @pytest.fixture
 def predicted_events(monkeypatch):
-    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them)."""
+    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them).
+
+    The bound (:meth:`_Tracer._settled_by_bound`) would close most of these intervals before a walk is predicted
+    (their axis is within the tolerance of the chord): it is switched off, so that the walks are exercised.
+    """
     from incircu_plugin.core import adaptive
 
+    monkeypatch.setattr(adaptive._Tracer, "_settled_by_bound", lambda self, i: np.zeros(len(i.span), dtype=bool))
     counted = {"events": 0}
     original = adaptive._Tracer._pair_events
 
@@ -578,3 +583,93 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     assert np.all((height[on_segment] < 0.0) == same_direction)
     # Every segment's line is touched from the samples' side (a wrong side leaves the disks untouched: inf).
     assert np.all(np.isfinite(radius[on_segment]) & (radius[on_segment] > 0.0))
+
+
+@pytest.fixture
+def bound_judged(monkeypatch):
+    """Counts the open intervals judged by the bound and those it settled (the cases below must exercise it)."""
+    from incircu_plugin.core import adaptive
+
+    counted = {"judged": 0, "settled": 0}
+    original = adaptive._Tracer._edge_bound
+
+    def counting(self, intervals, low, high, tolerance):
+        bound = original(self, intervals, low, high, tolerance)
+        counted["judged"] += len(bound)
+        counted["settled"] += int(np.sum(bound <= tolerance))
+        return bound
+
+    monkeypatch.setattr(adaptive._Tracer, "_edge_bound", counting)
+    return counted
+
+
+@pytest.mark.parametrize("spike", [(30.0, 6.0), (30.0, 9.0), (71.0, 7.0)])
+def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(bound_judged, spike):
+    # The top bank is flat but for a thin spike pointing down between the bottom edge's samples: both samples
+    # touch the flat top, but the axis dips under the spike; the bound must see the spike's sites.
+    x, tip = spike
+    ring = [(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (x + 0.2, 10.0), (x, tip), (x - 0.2, 10.0), (0.0, 10.0)]
+    polygon = Polygon(ring)
+    assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
+    assert bound_judged["judged"] > bound_judged["settled"]
+
+
+def test_a_gently_curving_bank_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, bound_judged):
+    # The top bank's 24 segments turn by 0.1 degrees in all: the axis over the long bottom edge stays within the
+    # tolerance of the chord of the edge's samples, which the bound proves: no probe along the edge's middle
+    # (without it, every event between two of the top's segments is probed).
+    from incircu_plugin.core import adaptive
+
+    x = np.linspace(0.0, 100.0, 25)
+    top = np.stack([x, 10.0 + 0.04 * np.sin(np.pi * x / 100.0)], axis=1)
+    polygon = Polygon([(0.0, 0.0), (100.0, 0.0), *top[::-1]])
+    probed = []
+    solve_probes = adaptive._Tracer._solve_probes
+
+    def recording(self, span, u, trial):
+        # The probes along the middle of the long edge (the only span 100 long).
+        probed.append(np.sum((self.spans.length[span] > 99.0) & (u > 10.0) & (u < 90.0)))
+        return solve_probes(self, span, u, trial)
+
+    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", recording)
+    middle = []
+    for bound in (True, False):
+        if not bound:
+            monkeypatch.setattr(adaptive._Tracer, "_settled_by_bound", lambda self, i: np.zeros(len(i.span), bool))
+        probed.clear()
+        assert_adaptive_properties(polygon, [(0.0, 0.0), (100.0, 0.0)])
+        middle.append(int(sum(probed)))
+    assert bound_judged["settled"] > 0
+    assert middle[0] == 0 and middle[1] >= 10
+
+
+@pytest.mark.parametrize("case", WAVY + [GAMBIA], ids=lambda case: case.name)
+def test_the_bound_holds_the_axis_between_the_samples_it_judges(monkeypatch, case):
+    # Every interval the bound judges is probed at 15 places inside: each probe's disk centre lies within the
+    # bound (computed in full: no tolerance to stop at) of the chord between the interval's end centres.
+    from incircu_plugin.core import adaptive
+
+    original = adaptive._Tracer._edge_bound
+    judged = {"intervals": 0, "worst": 0.0}
+
+    def checking(self, intervals, low, high, tolerance):
+        bound = original(self, intervals, low, high, np.full(len(low), np.inf))
+        owner = np.repeat(np.arange(len(bound)), 15)
+        share = np.tile(np.arange(1, 16) / 16.0, len(bound))
+        u = intervals.u0[owner] + share * (intervals.u1 - intervals.u0)[owner]
+        trial = 1.25 * np.maximum(self.t[intervals.left], self.t[intervals.right])[owner]
+        t, _, _, centre = self._solve_probes(intervals.span[owner], u, trial)
+        start, end = self.centres(intervals.left)[owner], self.centres(intervals.right)[owner]
+        chord = end - start
+        along = np.clip(np.einsum("ij,ij->i", centre - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
+        distance = np.hypot(*(centre - start - along[:, None] * chord).T)
+        slack = 1e-9 * np.abs(centre).max()
+        excess = np.where(np.isfinite(t), distance - bound[owner] - slack, -np.inf)
+        judged["intervals"] += len(bound)
+        judged["worst"] = max(judged["worst"], float(excess.max(initial=-np.inf)))
+        return bound
+
+    monkeypatch.setattr(adaptive._Tracer, "_edge_bound", checking)
+    polygon_centerline(case.polygon, case.split_points)
+    assert judged["intervals"] > 0
+    assert judged["worst"] <= 0.0

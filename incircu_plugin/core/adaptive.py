@@ -46,6 +46,30 @@ contact is the vertex where its interval's two segments meet touches that vertex
 no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
 there touches the other chain too, whatever it touches first: it is a point of the axis.
 
+*Settled by a bound.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
+sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1``, neither at an end vertex of ``B``, is
+closed without a probe when the axis between its samples provably lies within the tolerance of the chord of
+their centres (:meth:`_Tracer._settled_by_bound`). Every disk of the span between them touches ``B`` first
+between ``q0`` and ``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1``
+enclose a region that the boundary enters only across them. It does not cross the empty disks, and ``B`` does
+not cross itself or the own chain. The own chain leaves the span's piece at its ends along the edge's line, or
+turned away from the region at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0``,
+and is not emitted), or, at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0``
+along the tangent of ``D0`` (a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from
+the interval (the contact moves along ``B`` monotonically as the disk's foot moves along the span). Only at an
+end vertex of ``B`` does the own chain join it: excluded. So the first contact of every disk in between is
+one of ``B``'s segments or vertices between those of ``q0`` and ``q1``: an index range (whole straight runs,
+both segments at a vertex, convex vertices too: a superset only lowers the bound below). Then, with ``t(u)``
+the disk's radius, ``t(u) >= min_k r_k(u)`` over those candidates, with a segment's line counted only where
+the foot of the disk touching it lies on the segment and its radius is positive (elsewhere it is touched at an
+end vertex, a candidate too), a vertex only in front of the span; and ``t(u) <= r_q(u)`` for any boundary
+point ``q`` (the disk would hold it), so for ``q0``, ``q1`` and, where their feet lie on their runs, the lines
+of the end sites. On an edge the centre is ``(u, t(u))`` in an orthonormal frame, so its distance to the chord
+is at most ``|t(u) - chord(u)|``; all radii are convex quadratics in ``u`` (lines: linear) on a range, and the
+extremes of both differences are found in closed form (:func:`_envelope_peak`). The interval closes when the
+larger is within the tolerance; the simplification's share of the engine's tolerance comes on top of it, as
+for a parabola's chords.
+
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
 """
@@ -94,6 +118,10 @@ SETTLED_CHORD = 1.0 / 16.0
 #: Relative slack under which a slightly negative discriminant is a double root (a contact sliding off a
 #: segment's end onto its vertex).
 DOUBLE_ROOT = 1e-8
+
+#: Most segments of the other chain between an open interval's two contacts for a bound to settle it (more
+#: are left to the probes: the bound's cost stays linear).
+MAX_BOUND_SEGMENTS = 32
 
 #: Most rounds of event location (each round at least halves the open intervals' count of unknown sites).
 MAX_ROUNDS = 64
@@ -245,15 +273,15 @@ def _build_spans(boundary, geometry, traced):
 
 
 def _straight_runs(kinds, boundary):
-    """For each segment, the first segment of its run of segments on one line (the site it stands for), and
-    the arc length at the run's end."""
+    """For each segment, the first and the last segment of its run of segments on one line (the first is the
+    site it stands for), and the arc length at the run's end."""
     # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
     segment = np.arange(boundary.segment_count, dtype=np.int32)
     starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
     last = np.minimum.accumulate(np.where(ends_run, segment, np.int32(boundary.segment_count))[::-1])[::-1]
-    return first, boundary.segment_end_position[last]
+    return first, last, boundary.segment_end_position[last]
 
 
 def _site_sequence(boundary, kinds, line_of):
@@ -285,7 +313,7 @@ class _Sites:
     def __init__(self, boundary, kinds):
         self.boundary = boundary
         self.kinds = kinds
-        self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
+        self.line_of, self.run_last, self.run_end_position = _straight_runs(kinds, boundary)
         self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
@@ -553,6 +581,9 @@ class _Tracer:
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
+        self.chain_end = _split_vertices(boundary, np.ones(len(closed), dtype=bool))
+        #: Inward unit normal of every segment (the region lies on its side).
+        self.inward = geometry.normal
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
@@ -608,6 +639,7 @@ class _Tracer:
         intervals = self._initial(report)
         for round_index in range(MAX_ROUNDS):
             events, curves = self._open_and_curved(intervals)
+            events = events.subset((~self._settled_by_bound(events)).nonzero()[0])
             # Only the open and curved intervals go on: the others are released before the round's output is built.
             intervals = None
             if len(events.span) + len(curves.span) == 0:
@@ -863,6 +895,134 @@ class _Tracer:
         untraced_fan = ~self.traced[b.vertex_chain[vertex]]
         edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & ((sites.kinds[vertex] == 0) | untraced_fan)
         return curved & (fan | edge)
+
+    def _settled_by_bound(self, intervals):
+        """Mask of the open intervals whose axis provably lies within the tolerance of the chord between their
+        end centres (module docstring, *Settled by a bound*): they close without a probe."""
+        settled = np.zeros(len(intervals.span), dtype=bool)
+        row, low, high = self._bounded(intervals)
+        kind = self.spans.kind[intervals.span[row]]
+        for value, bound_of in ((EDGE, self._edge_bound),):
+            of_kind = (kind == value).nonzero()[0]
+            if len(of_kind):
+                judged = row[of_kind]
+                # Infinite radii (sites never touched) and empty ranges are part of the arithmetic.
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    tolerance = self.of(self.tolerance, intervals.span[judged])
+                    bound = bound_of(intervals.subset(judged), low[of_kind], high[of_kind], tolerance)
+                settled[judged] = bound <= tolerance
+        return settled
+
+    def _bounded(self, intervals):
+        """The open intervals that a bound may settle, and the range ``low`` .. ``high`` of the other chain's
+        segments between their two contacts (whole straight runs, both segments at a vertex: a superset).
+
+        Both end samples are emitted (their disks are empty and touch the interval's sites), both sites lie on
+        the other chain and neither is one of its end vertices, and the range holds at most
+        ``MAX_BOUND_SEGMENTS`` segments.
+        """
+        sites, b = self.sites, self.boundary
+        other = self.spans.chain[intervals.span] ^ 1
+        emit = self.store["emit"]
+        judged = (sites.chain(intervals.site0) == other) & (sites.chain(intervals.site1) == other)
+        judged &= emit[intervals.left] & emit[intervals.right]
+        ranges_ = []
+        for site in (intervals.site0, intervals.site1):
+            vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+            on_vertex = site >= b.segment_count
+            judged &= ~(on_vertex & self.chain_end[vertex])
+            segment = np.clip(site, 0, b.segment_count - 1)
+            after = vertex - b.vertex_chain[vertex]
+            ranges_.append(
+                (np.where(on_vertex, after - 1, segment), np.where(on_vertex, after, sites.run_last[segment]))
+            )
+        low = np.minimum(ranges_[0][0], ranges_[1][0])
+        high = np.maximum(ranges_[0][1], ranges_[1][1])
+        judged &= high - low < MAX_BOUND_SEGMENTS
+        row = judged.nonzero()[0]
+        return row, low[row], high[row]
+
+    def _edge_bound(self, intervals, low, high, tolerance):
+        """Bound of the distance between the axis and the chord of its end centres over each open interval of
+        an edge span (the other chain's segments ``low`` .. ``high`` hold its contacts), CRS units, where it is
+        at most ``tolerance`` (per interval, CRS units); elsewhere some value above it.
+
+        With ``l`` the share of the interval (0 at ``u0``, 1 at ``u1``) the centre is ``(u(l), t(l))`` in the
+        orthonormal frame (along, across) of the edge, so its distance to the chord is at most
+        ``|t(l) - chord(l)|``. The radius ``t`` is the least of the candidates' radius functions (each a
+        convex quadratic on a range of ``l``, :meth:`_edge_candidates`): below the chord each candidate's
+        largest excess is found in closed form; above it, :func:`_envelope_excess`.
+        """
+        spans = self.spans
+        span = intervals.span
+        origin, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        t0, t1 = self.t[intervals.left], self.t[intervals.right]
+        width = intervals.u1 - intervals.u0
+        origin += intervals.u0[:, None] * unit
+        chord = t0, t1 - t0
+        owner, terms, first, last = self._edge_candidates((origin, unit, normal, width), low, high)
+        start = np.searchsorted(owner, np.arange(len(span)))
+        # chord - radius is concave in the share: it peaks where its derivative vanishes, or at a range's end.
+        stationary = np.where(terms[2] > 0.0, (chord[1][owner] - terms[1]) / (2.0 * terms[2]), first)
+        excess = np.full(len(owner), -np.inf)
+        for share in (first, last, np.clip(stationary, first, last)):
+            value = _quadratic_at(chord, share, owner) - _quadratic_at(terms, share)
+            excess = np.fmax(excess, np.where(first <= last, value, -np.inf))
+        below = np.maximum.reduceat(excess, start)
+        limit = np.where(below <= tolerance, tolerance, -np.inf)
+        return np.fmax(below, _envelope_excess((owner, start, terms, first, last), chord, limit))
+
+    def _edge_candidates(self, frame, low, high):
+        """The radius functions of the candidate sites of intervals of edge spans (``frame``: per interval the
+        origin at ``u0``, the edge's unit and normal, the width ``u1 - u0``), as functions of the share ``l``.
+
+        The candidates are the other chain's segments ``low`` .. ``high`` (their lines where the foot lies on
+        the segment and the radius is positive) and their vertices (in front of the edge). Returns per
+        candidate, ordered by interval: its interval, the terms of ``r(l) = c0 + c1 l + c2 l**2``, and the first
+        and last share of its range (first > last: never touched).
+        """
+        b = self.boundary
+        origin, unit, normal, width = frame
+        owner, rank = ranges(high - low + 1)
+        segment = low[owner] + rank
+        length = b.segment_end_position[segment] - b.segment_position[segment]
+        line_terms, line_first, line_last = self._line_radii(frame, owner, segment, length)
+        vertex_owner, rank = ranges(high - low + 2)
+        vertex = b.start_vertex(low)[vertex_owner] + rank
+        offset = rows(b.vertex, vertex) - rows(origin, vertex_owner)
+        point_terms, point_first, point_last = _point_radii(
+            offset, rows(unit, vertex_owner), rows(normal, vertex_owner), width[vertex_owner]
+        )
+        owner = np.concatenate([owner, vertex_owner])
+        order = np.argsort(owner, kind="stable")
+        terms = tuple(np.concatenate([x, y])[order] for x, y in zip(line_terms, point_terms))
+        first = np.concatenate([line_first, point_first])[order]
+        return owner[order], terms, first, np.concatenate([line_last, point_last])[order]
+
+    def _line_radii(self, frame, owner, segment, length):
+        """Radius, as a function of the share ``l`` of each interval ``owner`` of edge spans (``frame``: origin
+        at ``u0``, unit, normal, width), of the disks touching the line of ``segment`` from the region's side,
+        and the range of ``l`` where that radius is positive and its foot lies within ``length`` (CRS units;
+        negative: nowhere) of the segment's start.
+
+        Returns the terms ``(c0, c1, 0)`` of ``r(l) = c0 + c1 l`` and the first and last share of the range.
+        """
+        b = self.boundary
+        origin, unit, normal, width = (rows(x, owner) if x.ndim == 2 else x[owner] for x in frame)
+        inward, direction = rows(self.inward, segment), rows(b.unit, segment)
+        offset = origin - rows(b.start, segment)
+        closing = 1.0 - np.einsum("ij,ij->i", normal, inward)
+        start = np.einsum("ij,ij->i", offset, inward) / closing
+        rise = width * np.einsum("ij,ij->i", unit, inward) / closing
+        along = np.einsum("ij,ij->i", offset, direction)
+        turning = np.einsum("ij,ij->i", normal, direction)
+        foot = (
+            along + turning * start,
+            along + width * np.einsum("ij,ij->i", unit, direction) + turning * (start + rise),
+        )
+        first, last = _linear_range(*foot, 0.0, length)
+        positive_first, positive_last = _linear_range(start, start + rise, 0.0, np.inf)
+        return (start, rise, np.zeros(len(segment))), np.maximum(first, positive_first), np.minimum(last, positive_last)
 
     def _event_candidates(self, intervals):
         """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
@@ -1153,6 +1313,109 @@ class _Tracer:
             position_a[part] = self.spans.position[span[part]] + along
             foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
         return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
+
+
+def _linear_range(start, end, low, high):
+    """Where a linear function, ``start`` at share 0 and ``end`` at share 1, lies in ``[low, high]``: the
+    first and last share in ``[0, 1]`` (first > last when nowhere; NaN values: nowhere). Call it under
+    ``np.errstate`` ignoring invalid values and divisions by zero."""
+    step = end - start
+    at_low, at_high = (low - start) / step, (high - start) / step
+    rising = step > 0.0
+    first = np.where(rising, at_low, np.where(step < 0.0, at_high, np.where(start >= low, 0.0, np.inf)))
+    last = np.where(rising, at_high, np.where(step < 0.0, at_low, np.where(start <= high, 1.0, -np.inf)))
+    first, last = np.maximum(np.nan_to_num(first, nan=np.inf), 0.0), np.minimum(np.nan_to_num(last, nan=-np.inf), 1.0)
+    return first, last
+
+
+def _point_radii(offset, unit, normal, width):
+    """Radius, as a function of the share ``l`` of an interval of an edge, of the disks touching the edge at
+    ``u0 + l * width`` on the side of ``normal`` and passing through the points ``offset`` (from the edge's
+    point at ``u0``; ``unit`` along it), CRS units.
+
+    Returns the terms ``(c0, c1, c2)`` of ``r(l) = c0 + c1 l + c2 l**2`` and the range of ``l`` where the
+    point is ever touched: ``[0, 1]`` in front of the edge, else empty (``inf``, ``-inf``).
+    """
+    along, height = np.einsum("ij,ij->i", offset, unit), np.einsum("ij,ij->i", offset, normal)
+    in_front = height > 0.0
+    terms = (along * along + height * height) / (2.0 * height), -along * width / height, width * width / (2.0 * height)
+    return terms, np.where(in_front, 0.0, np.inf), np.where(in_front, 1.0, -np.inf)
+
+
+def _quadratic_at(terms, share, owner=None):
+    """``c0 + c1 l + c2 l**2`` of ``terms`` (two or three arrays, of rows ``owner`` if given) at shares ``l``."""
+    terms = [x if owner is None else x[owner] for x in terms]
+    value = terms[0] + share * terms[1]
+    return value + share * share * terms[2] if len(terms) > 2 else value
+
+
+#: Slack, as a share of the interval, of the ranges of the radius functions when evaluated at their ends.
+RANGE_SLACK = 1e-12
+
+
+#: Cells of the share in which the least of an interval's radius functions is bounded above by the least of two
+#: (:func:`_envelope_excess`).
+ENVELOPE_CELLS = 16
+
+
+def _envelope_excess(candidates, chord, limit):
+    """Per interval, an upper bound of ``max_l (min_k f_k(l) - chord(l))`` over the share ``l`` in ``[0, 1]``
+    (inf where at some share no ``f_k`` is defined) for the radius functions ``f_k`` of its candidates, where
+    it is at most ``limit``; elsewhere some value above ``limit``.
+
+    ``candidates``: their interval (ascending), the index of each interval's first one, their quadratic terms
+    and ranges (``first`` .. ``last``), as from :meth:`_Tracer._edge_candidates`. They are evaluated on
+    ``ENVELOPE_CELLS + 1`` equally spaced shares. In a cell whose two ends have the same least function, it is
+    the least one in between too (at most it, and convex); elsewhere the least is at most the lesser of the
+    two (:func:`_envelope_peak`, exact where the cell holds one change of the least function).
+    """
+    owner, start, terms, first, last = candidates
+    grid = np.linspace(0.0, 1.0, ENVELOPE_CELLS + 1)
+    values = _quadratic_at([x[:, None] for x in terms], grid)
+    values[(grid < first[:, None]) | (grid > last[:, None])] = np.inf
+    least = np.minimum.reduceat(values, start, axis=0)
+    excess = (least - _quadratic_at([x[:, None] for x in chord], grid)).max(axis=1)
+    # The first candidate of each interval that is the least at each share.
+    index = np.where(values == least[owner], np.arange(len(owner))[:, None], len(owner))
+    index = np.minimum.reduceat(index, start, axis=0)
+    # The cells whose ends' least functions differ, in intervals that may still settle.
+    interval, cell = ((index[:, :-1] != index[:, 1:]) & (excess <= limit)[:, None]).nonzero()
+    functions = []
+    for ends in (index[interval, cell], index[interval, cell + 1]):
+        functions.append((tuple(x[ends] for x in terms), first[ends], last[ends]))
+    cell_chord = tuple(x[interval] for x in chord)
+    peak = _envelope_peak(functions, cell_chord, grid[cell], grid[cell + 1])
+    np.maximum.at(excess, interval, peak)
+    return excess
+
+
+def _envelope_peak(functions, chord, low, high):
+    """Largest value over the share ``l`` in ``[low, high]`` of ``min_j f_j(l) - chord(l)`` (inf where no
+    ``f_j`` is defined), for quadratics ``f_j`` each on a range of ``l`` (``(terms, first, last)``).
+
+    Each ``f_j`` is convex on its range, so where one of them is the least the difference peaks at an end of
+    that stretch: ``low``, ``high``, a range's end or where two of them are equal. All of those are tried, each
+    from both sides (the functions defined just before it, then just after it: at a range's end the least one
+    jumps).
+    """
+    shares = [low, high]
+    for terms, first, last in functions:
+        shares += [first, last]
+    for j, (terms_j, _, _) in enumerate(functions):
+        for terms_k, _, _ in functions[j + 1 :]:
+            shares += list(_edge_roots(*(x - y for x, y in zip(terms_j, terms_k))))
+    peak = np.full(len(chord[0]), -np.inf)
+    for share in shares:
+        valid = np.isfinite(share) & (share >= low) & (share <= high)
+        share = np.where(valid, share, low)
+        before, after = np.full(len(share), np.inf), np.full(len(share), np.inf)
+        for terms, first, last in functions:
+            value = _quadratic_at(terms, share)
+            before = np.fmin(before, np.where((first < share) & (last >= share - RANGE_SLACK), value, np.inf))
+            after = np.fmin(after, np.where((first <= share + RANGE_SLACK) & (last > share), value, np.inf))
+        least = np.fmax(np.where(share > low, before, -np.inf), np.where(share < high, after, -np.inf))
+        peak = np.fmax(peak, np.where(valid, least - _quadratic_at(chord, share), -np.inf))
+    return peak
 
 
 def _solve_all(samples, index, *arguments):
