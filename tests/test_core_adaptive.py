@@ -587,19 +587,24 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
 
 @pytest.fixture
 def bound_judged(monkeypatch):
-    """Counts the open intervals judged by the bound and those it settled (the cases below must exercise it)."""
+    """Counts the open intervals of edges and of fans judged by the bound and those it settled (the cases below
+    must exercise it)."""
     from incircu_plugin.core import adaptive
 
-    counted = {"judged": 0, "settled": 0}
-    original = adaptive._Tracer._edge_bound
+    counted = {"edge": 0, "fan": 0, "edge settled": 0, "fan settled": 0}
 
-    def counting(self, intervals, low, high, tolerance):
-        bound = original(self, intervals, low, high, tolerance)
-        counted["judged"] += len(bound)
-        counted["settled"] += int(np.sum(bound <= tolerance))
-        return bound
+    def counting(kind, original):
+        def bound_of(self, intervals, low, high, tolerance):
+            bound = original(self, intervals, low, high, tolerance)
+            counted[kind] += len(bound)
+            counted[kind + " settled"] += int(np.sum(bound <= tolerance))
+            return bound
 
-    monkeypatch.setattr(adaptive._Tracer, "_edge_bound", counting)
+        return bound_of
+
+    for kind in ("edge", "fan"):
+        name = f"_{kind}_bound"
+        monkeypatch.setattr(adaptive._Tracer, name, counting(kind, getattr(adaptive._Tracer, name)))
     return counted
 
 
@@ -611,7 +616,16 @@ def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(bound
     ring = [(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (x + 0.2, 10.0), (x, tip), (x - 0.2, 10.0), (0.0, 10.0)]
     polygon = Polygon(ring)
     assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
-    assert bound_judged["judged"] > bound_judged["settled"]
+    assert bound_judged["edge"] > bound_judged["edge settled"]
+
+
+def test_a_spike_of_the_other_bank_facing_a_reflex_vertex_is_not_settled_over(bound_judged):
+    # The top bank's reflex vertex (50, 10) faces a flat bottom bank with a short thin spike: the disks at both
+    # ends of the vertex's fan touch the flat bottom beside the spike, the ones between dip under its tip by
+    # 0.15 (the tracer's tolerance is 0.037): the bound must see the tip.
+    ring = [(0.0, 30.0), (0.0, 0.0), (49.9, 0.0), (50.0, 0.3), (50.1, 0.0), (100.0, 0.0), (100.0, 30.0), (50.0, 10.0)]
+    assert_adaptive_properties(Polygon(ring), [(100.0, 15.0), (0.0, 15.0)])
+    assert bound_judged["fan"] > bound_judged["fan settled"]
 
 
 def test_a_gently_curving_bank_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, bound_judged):
@@ -639,17 +653,19 @@ def test_a_gently_curving_bank_opposite_one_long_edge_needs_no_probe_along_it(mo
         probed.clear()
         assert_adaptive_properties(polygon, [(0.0, 0.0), (100.0, 0.0)])
         middle.append(int(sum(probed)))
-    assert bound_judged["settled"] > 0
+    assert bound_judged["edge settled"] > 0
     assert middle[0] == 0 and middle[1] >= 10
 
 
+@pytest.mark.parametrize("kind", ["edge", "fan"])
 @pytest.mark.parametrize("case", WAVY + [GAMBIA], ids=lambda case: case.name)
-def test_the_bound_holds_the_axis_between_the_samples_it_judges(monkeypatch, case):
+def test_the_bound_holds_the_axis_between_the_samples_it_judges(monkeypatch, case, kind):
     # Every interval the bound judges is probed at 15 places inside: each probe's disk centre lies within the
     # bound (computed in full: no tolerance to stop at) of the chord between the interval's end centres.
     from incircu_plugin.core import adaptive
 
-    original = adaptive._Tracer._edge_bound
+    name = f"_{kind}_bound"
+    original = getattr(adaptive._Tracer, name)
     judged = {"intervals": 0, "worst": 0.0}
 
     def checking(self, intervals, low, high, tolerance):
@@ -669,7 +685,7 @@ def test_the_bound_holds_the_axis_between_the_samples_it_judges(monkeypatch, cas
         judged["worst"] = max(judged["worst"], float(excess.max(initial=-np.inf)))
         return bound
 
-    monkeypatch.setattr(adaptive._Tracer, "_edge_bound", checking)
+    monkeypatch.setattr(adaptive._Tracer, name, checking)
     polygon_centerline(case.polygon, case.split_points)
     assert judged["intervals"] > 0
     assert judged["worst"] <= 0.0

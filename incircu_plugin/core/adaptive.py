@@ -66,9 +66,10 @@ end vertex, a candidate too), a vertex only in front of the span; and ``t(u) <= 
 point ``q`` (the disk would hold it), so for ``q0``, ``q1`` and, where their feet lie on their runs, the lines
 of the end sites. On an edge the centre is ``(u, t(u))`` in an orthonormal frame, so its distance to the chord
 is at most ``|t(u) - chord(u)|``; all radii are convex quadratics in ``u`` (lines: linear) on a range, and the
-extremes of both differences are found in closed form (:func:`_envelope_peak`). The interval closes when the
-larger is within the tolerance; the simplification's share of the engine's tolerance comes on top of it, as
-for a parabola's chords.
+extremes of both differences are found in closed form (:func:`_envelope_peak`). On a fan the centre never
+lies nearer the vertex than the chord, and its distance beyond it is bounded the same way
+(:meth:`_Tracer._fan_bound`). The interval closes when the bound is within the tolerance; the
+simplification's share of the engine's tolerance comes on top of it, as for a parabola's chords.
 
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
@@ -902,7 +903,7 @@ class _Tracer:
         settled = np.zeros(len(intervals.span), dtype=bool)
         row, low, high = self._bounded(intervals)
         kind = self.spans.kind[intervals.span[row]]
-        for value, bound_of in ((EDGE, self._edge_bound),):
+        for value, bound_of in ((EDGE, self._edge_bound), (FAN, self._fan_bound)):
             of_kind = (kind == value).nonzero()[0]
             if len(of_kind):
                 judged = row[of_kind]
@@ -969,15 +970,132 @@ class _Tracer:
             value = _quadratic_at(chord, share, owner) - _quadratic_at(terms, share)
             excess = np.fmax(excess, np.where(first <= last, value, -np.inf))
         below = np.maximum.reduceat(excess, start)
-        limit = np.where(below <= tolerance, tolerance, -np.inf)
-        return np.fmax(below, _envelope_excess((owner, start, terms, first, last), chord, limit))
+        limit = np.where(below <= tolerance, tolerance, np.nan)
+        bounds = np.zeros(len(span)), np.ones(len(span))
+        return np.fmax(below, _envelope_excess((owner, start, terms, first, last), chord, limit, bounds, EDGE))
+
+    def _fan_bound(self, intervals, low, high, tolerance):
+        """Bound of the distance between the axis and the chord of its end centres over each open interval of
+        a fan span (the other chain's segments ``low`` .. ``high`` hold its contacts), CRS units, where it is at
+        most ``tolerance`` (per interval, CRS units); elsewhere some value above it.
+
+        The centre at ``u`` is ``v + t(u) d(u)``; with ``w`` the chord's unit normal away from the vertex ``v``
+        and ``h`` the chord's distance from it, its distance to the chord's line is ``|t(u) cos(u - psi) - h|``
+        (``psi`` the angle of ``w``), and the ray ``d(u)`` meets the chord between its ends, so its distance to
+        the chord is at most that over ``cos(u - psi)``, which is least at an end (``h / t`` there).
+
+        The centre never lies nearer ``v`` than the chord: the disk centred at ``c`` through ``v`` holds a point
+        ``q`` when ``c`` is nearer ``q`` than ``v``, a half-plane; no end disk holds a point of the boundary, so
+        for each such ``q`` both end centres, hence the chord, lie in the other, convex half-plane with ``v``,
+        and along the ray from ``v`` the disk reaches ``q`` beyond the chord. Above the chord,
+        :func:`_envelope_excess` bounds ``t(u) cos(u - psi) - h`` (each candidate's ``r(u) cos(u - psi)`` is
+        monotonic (a vertex) or has a single minimum (a line): no inner maximum).
+        """
+        spans = self.spans
+        span, u0, u1 = intervals.span, intervals.u0, intervals.u1
+        vertex, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
+        t0, t1 = self.t[intervals.left], self.t[intervals.right]
+        start, end = self.centres(intervals.left), self.centres(intervals.right)
+        across = left_normal(end - start)
+        across /= np.hypot(*across.T)[:, None]
+        height = np.einsum("ij,ij->i", start - vertex, across)
+        across *= np.where(height < 0.0, -1.0, 1.0)[:, None]
+        height = np.abs(height)
+        psi = np.arctan2(np.einsum("ij,ij->i", across, normal), np.einsum("ij,ij->i", across, unit))
+        owner, terms, first, last = self._fan_candidates((vertex, unit, normal, psi, u0, u1), low, high)
+        start_of = np.searchsorted(owner, np.arange(len(span)))
+        # Distances to the chord's line over the least cosine: the tolerance's share of them.
+        stretch = np.maximum(t0, t1) / height
+        target = height, np.zeros(len(span))
+        limit = np.where(np.isfinite(stretch), tolerance / stretch, np.nan)
+        above = _envelope_excess((owner, start_of, terms, first, last), target, limit, (u0, u1), FAN)
+        return np.fmax(above, 0.0) * stretch
+
+    def _fan_candidates(self, frame, low, high):
+        """The functions ``r(u) cos(u - psi)`` of the candidate sites of intervals of fan spans (``frame``: per
+        interval the vertex, the fan's unit and normal, the angle ``psi`` of the chord's normal, ``u0``, ``u1``).
+
+        The candidates are the other chain's segments ``low`` .. ``high`` (their lines, where the foot lies on
+        the segment) and their vertices (:meth:`_candidate_vertices`). Returns per candidate, ordered by interval: its interval, its terms
+        ``(a0, a1, a2, psi)`` (:func:`_value_of`) and the first and last ``u`` where it bounds the radius above
+        (its disk touches a point of the boundary; first > last: nowhere). A line's foot moves monotonically
+        along it as ``u`` turns (the centres of the disks through the vertex touching it lie on a parabola
+        around the vertex), except across the direction of its normal (the radius is infinite there): such a
+        line, or one whose foot's range is not found, is left out (the bound only grows).
+        """
+        b = self.boundary
+        vertex, unit, normal, psi, u0, u1 = frame
+        owner, rank = ranges(high - low + 1)
+        segment = low[owner] + rank
+        inward, direction = rows(self.inward, segment), rows(b.unit, segment)
+        offset = rows(vertex, owner) - rows(b.start, segment)
+        height = np.einsum("ij,ij->i", offset, inward)
+        along = np.einsum("ij,ij->i", offset, direction)
+        m_unit, m_normal = (np.einsum("ij,ij->i", rows(x, owner), inward) for x in (unit, normal))
+        e_unit, e_normal = (np.einsum("ij,ij->i", rows(x, owner), direction) for x in (unit, normal))
+        line_terms = (1.0 / height, -m_unit / height, -m_normal / height, psi[owner])
+        length = b.segment_end_position[segment] - b.segment_position[segment]
+        start, end, middle = u0[owner], u1[owner], 0.5 * (u0 + u1)[owner]
+        normal_angle = np.arctan2(m_normal, m_unit)
+        normal_angle = np.remainder(normal_angle - middle + np.pi, 2.0 * np.pi) - np.pi + middle
+        doubt = (normal_angle >= start) & (normal_angle <= end)
+
+        def foot(u):
+            radius = height / (1.0 - m_unit * np.cos(u) - m_normal * np.sin(u))
+            return along + radius * (e_unit * np.cos(u) + e_normal * np.sin(u))
+
+        def where_foot_is(level):
+            shifted = along - level
+            roots = _fan_roots(
+                shifted, -shifted * m_unit + height * e_unit, -shifted * m_normal + height * e_normal, middle
+            )
+            inside = [np.where((root >= start) & (root <= end), root, np.nan) for root in roots]
+            return np.fmin(*inside)
+
+        foot0, foot1 = foot(start), foot(end)
+        rising = foot1 >= foot0
+        first = np.where(
+            np.where(rising, foot0 >= 0.0, foot0 <= length), start, where_foot_is(np.where(rising, 0.0, length))
+        )
+        last = np.where(
+            np.where(rising, foot1 <= length, foot1 >= 0.0), end, where_foot_is(np.where(rising, length, 0.0))
+        )
+        beyond = np.where(rising, (foot1 < 0.0) | (foot0 > length), (foot0 < 0.0) | (foot1 > length))
+        known = ~doubt & ~beyond & np.isfinite(first) & np.isfinite(last)
+        touched = height > 0.0
+        first, last = np.where(known & touched, first, np.inf), np.where(known & touched, last, -np.inf)
+        vertex_owner, candidate = self._candidate_vertices(low, high)
+        offset = rows(b.vertex, candidate) - rows(vertex, vertex_owner)
+        scale = 2.0 / np.einsum("ij,ij->i", offset, offset)
+        point_terms = (
+            np.zeros(len(vertex_owner)),
+            scale * np.einsum("ij,ij->i", offset, rows(unit, vertex_owner)),
+            scale * np.einsum("ij,ij->i", offset, rows(normal, vertex_owner)),
+            psi[vertex_owner],
+        )
+        owner = np.concatenate([owner, vertex_owner])
+        order = np.argsort(owner, kind="stable")
+        terms = tuple(np.concatenate([x, y])[order] for x, y in zip(line_terms, point_terms))
+        first = np.concatenate([first, u0[vertex_owner]])[order]
+        return owner[order], terms, first, np.concatenate([last, u1[vertex_owner]])[order]
+
+    def _candidate_vertices(self, low, high):
+        """The vertices of the segments ``low`` .. ``high`` of each interval that may be a disk's first contact
+        (reflex ones and the chains' ends: a convex or straight vertex never is, and as a point of the boundary
+        it only bounds the radius above, which the bound may do without). Returns their interval and index."""
+        b = self.boundary
+        owner, rank = ranges(high - low + 2)
+        vertex = b.start_vertex(low)[owner] + rank
+        site = (self.sites.rank[b.segment_count + vertex] >= 0).nonzero()[0]
+        return owner[site], vertex[site]
 
     def _edge_candidates(self, frame, low, high):
         """The radius functions of the candidate sites of intervals of edge spans (``frame``: per interval the
         origin at ``u0``, the edge's unit and normal, the width ``u1 - u0``), as functions of the share ``l``.
 
         The candidates are the other chain's segments ``low`` .. ``high`` (their lines where the foot lies on
-        the segment and the radius is positive) and their vertices (in front of the edge). Returns per
+        the segment and the radius is positive) and their vertices (:meth:`_candidate_vertices`, in front of the
+        edge). Returns per
         candidate, ordered by interval: its interval, the terms of ``r(l) = c0 + c1 l + c2 l**2``, and the first
         and last share of its range (first > last: never touched).
         """
@@ -987,8 +1105,7 @@ class _Tracer:
         segment = low[owner] + rank
         length = b.segment_end_position[segment] - b.segment_position[segment]
         line_terms, line_first, line_last = self._line_radii(frame, owner, segment, length)
-        vertex_owner, rank = ranges(high - low + 2)
-        vertex = b.start_vertex(low)[vertex_owner] + rank
+        vertex_owner, vertex = self._candidate_vertices(low, high)
         offset = rows(b.vertex, vertex) - rows(origin, vertex_owner)
         point_terms, point_first, point_last = _point_radii(
             offset, rows(unit, vertex_owner), rows(normal, vertex_owner), width[vertex_owner]
@@ -1358,63 +1475,85 @@ RANGE_SLACK = 1e-12
 ENVELOPE_CELLS = 16
 
 
-def _envelope_excess(candidates, chord, limit):
-    """Per interval, an upper bound of ``max_l (min_k f_k(l) - chord(l))`` over the share ``l`` in ``[0, 1]``
-    (inf where at some share no ``f_k`` is defined) for the radius functions ``f_k`` of its candidates, where
-    it is at most ``limit``; elsewhere some value above ``limit``.
+def _envelope_excess(candidates, target, limit, bounds, kind):
+    """Per interval, an upper bound of ``max_x (min_k f_k(x) - target(x))`` over ``x`` in its ``bounds``
+    (inf where at some ``x`` no ``f_k`` is defined) for the functions ``f_k`` of its candidates, where it is at
+    most ``limit`` (NaN: not judged, inf); elsewhere some value above ``limit``.
 
-    ``candidates``: their interval (ascending), the index of each interval's first one, their quadratic terms
-    and ranges (``first`` .. ``last``), as from :meth:`_Tracer._edge_candidates`. They are evaluated on
-    ``ENVELOPE_CELLS + 1`` equally spaced shares. In a cell whose two ends have the same least function, it is
-    the least one in between too (at most it, and convex); elsewhere the least is at most the lesser of the
-    two (:func:`_envelope_peak`, exact where the cell holds one change of the least function).
+    ``candidates``: their interval (ascending), the index of each interval's first one, their terms and
+    ranges (``first`` .. ``last``), as from :meth:`_Tracer._edge_candidates` (``kind`` EDGE) or
+    :meth:`_Tracer._fan_candidates` (FAN); ``target``: linear terms per interval. The functions are evaluated
+    at ``ENVELOPE_CELLS + 1`` equally spaced places. In a cell whose two ends have the same least function, it
+    is the least one in between too (at most it, and it has no inner maximum); elsewhere the least is at most
+    the lesser of the two (:func:`_envelope_peak`, exact where the cell holds one change of the least one).
     """
     owner, start, terms, first, last = candidates
-    grid = np.linspace(0.0, 1.0, ENVELOPE_CELLS + 1)
-    values = _quadratic_at([x[:, None] for x in terms], grid)
-    values[(grid < first[:, None]) | (grid > last[:, None])] = np.inf
-    least = np.minimum.reduceat(values, start, axis=0)
-    excess = (least - _quadratic_at([x[:, None] for x in chord], grid)).max(axis=1)
-    # The first candidate of each interval that is the least at each share.
-    index = np.where(values == least[owner], np.arange(len(owner))[:, None], len(owner))
-    index = np.minimum.reduceat(index, start, axis=0)
+    low, high = bounds
+    judged = np.flatnonzero(~np.isnan(limit))
+    excess = np.where(np.isnan(limit), np.inf, -np.inf)
+    if len(judged) == 0:
+        return excess
+    grid = low[:, None] + (high - low)[:, None] * np.linspace(0.0, 1.0, ENVELOPE_CELLS + 1)
+    # Places by candidates (rows: places), for the reductions along rows.
+    places = grid[owner].T
+    values = _value_of(kind, [x[None, :] for x in terms], places)
+    values[(places < first) | (places > last)] = np.inf
+    least = np.minimum.reduceat(values, start, axis=1)
+    excess = np.fmax(excess, (least - _quadratic_at([x[None, :] for x in target], grid.T)).max(axis=0))
+    # The first candidate of each interval that is the least at each place.
+    index = np.where(values == least[:, owner], np.arange(len(owner)), len(owner))
+    index = np.minimum.reduceat(index, start, axis=1)
     # The cells whose ends' least functions differ, in intervals that may still settle.
-    interval, cell = ((index[:, :-1] != index[:, 1:]) & (excess <= limit)[:, None]).nonzero()
+    cell, interval = ((index[:-1] != index[1:]) & (excess <= limit)).nonzero()
     functions = []
-    for ends in (index[interval, cell], index[interval, cell + 1]):
+    for ends in (index[cell, interval], index[cell + 1, interval]):
         functions.append((tuple(x[ends] for x in terms), first[ends], last[ends]))
-    cell_chord = tuple(x[interval] for x in chord)
-    peak = _envelope_peak(functions, cell_chord, grid[cell], grid[cell + 1])
+    cell_target = tuple(x[interval] for x in target)
+    peak = _envelope_peak(functions, cell_target, grid[interval, cell], grid[interval, cell + 1], kind)
     np.maximum.at(excess, interval, peak)
     return excess
 
 
-def _envelope_peak(functions, chord, low, high):
-    """Largest value over the share ``l`` in ``[low, high]`` of ``min_j f_j(l) - chord(l)`` (inf where no
-    ``f_j`` is defined), for quadratics ``f_j`` each on a range of ``l`` (``(terms, first, last)``).
+def _value_of(kind, terms, x):
+    """The functions ``terms`` at ``x``: on an edge the quadratic ``c0 + c1 x + c2 x**2``, on a fan
+    ``r(x) cos(x - psi)`` with ``1 / r = a0 + a1 cos(x) + a2 sin(x)`` (terms ``a0, a1, a2, psi``; inf where
+    ``1 / r`` is not positive: never touched)."""
+    if kind == EDGE:
+        return _quadratic_at(terms, x)
+    inverse = terms[0] + terms[1] * np.cos(x) + terms[2] * np.sin(x)
+    return np.where(inverse > 0.0, np.cos(x - terms[3]) / inverse, np.inf)
 
-    Each ``f_j`` is convex on its range, so where one of them is the least the difference peaks at an end of
-    that stretch: ``low``, ``high``, a range's end or where two of them are equal. All of those are tried, each
-    from both sides (the functions defined just before it, then just after it: at a range's end the least one
-    jumps).
+
+def _envelope_peak(functions, target, low, high, kind):
+    """Largest value over ``x`` in ``[low, high]`` of ``min_j f_j(x) - target(x)`` (inf where no ``f_j`` is
+    defined), for functions ``f_j`` (:func:`_value_of`) each on a range of ``x`` (``(terms, first, last)``).
+
+    Each ``f_j`` - target has no inner maximum on its range (a convex quadratic less a line; on a fan a
+    monotonic function or one with a single minimum), so where one of them is the least the difference peaks
+    at an end of that stretch: ``low``, ``high``, a range's end or where two of them are equal. All of those
+    are tried, each from both sides (the functions defined just before it, then just after it: at a range's
+    end the least one jumps).
     """
-    shares = [low, high]
+    places = [low, high]
     for terms, first, last in functions:
-        shares += [first, last]
+        places += [first, last]
+    middle = 0.5 * (low + high)
     for j, (terms_j, _, _) in enumerate(functions):
         for terms_k, _, _ in functions[j + 1 :]:
-            shares += list(_edge_roots(*(x - y for x, y in zip(terms_j, terms_k))))
-    peak = np.full(len(chord[0]), -np.inf)
-    for share in shares:
-        valid = np.isfinite(share) & (share >= low) & (share <= high)
-        share = np.where(valid, share, low)
-        before, after = np.full(len(share), np.inf), np.full(len(share), np.inf)
+            difference = [x - y for x, y in zip(terms_j[:3], terms_k[:3])]
+            places += list(_edge_roots(*difference) if kind == EDGE else _fan_roots(*difference, middle))
+    peak = np.full(len(target[0]), -np.inf)
+    for place in places:
+        valid = np.isfinite(place) & (place >= low) & (place <= high)
+        place = np.where(valid, place, low)
+        before, after = np.full(len(place), np.inf), np.full(len(place), np.inf)
+        slack = RANGE_SLACK * (high - low)
         for terms, first, last in functions:
-            value = _quadratic_at(terms, share)
-            before = np.fmin(before, np.where((first < share) & (last >= share - RANGE_SLACK), value, np.inf))
-            after = np.fmin(after, np.where((first <= share + RANGE_SLACK) & (last > share), value, np.inf))
-        least = np.fmax(np.where(share > low, before, -np.inf), np.where(share < high, after, -np.inf))
-        peak = np.fmax(peak, np.where(valid, least - _quadratic_at(chord, share), -np.inf))
+            value = _value_of(kind, terms, place)
+            before = np.fmin(before, np.where((first < place) & (last >= place - slack), value, np.inf))
+            after = np.fmin(after, np.where((first <= place + slack) & (last > place), value, np.inf))
+        least = np.fmax(np.where(place > low, before, -np.inf), np.where(place < high, after, -np.inf))
+        peak = np.fmax(peak, np.where(valid, least - _quadratic_at(target, place), -np.inf))
     return peak
 
 
