@@ -326,14 +326,9 @@ def toothed_channel(length, width, bottom_step, tooth, depth, spike=None):
 
 @pytest.fixture
 def predicted_events(monkeypatch):
-    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them).
-
-    The bound (:meth:`_Tracer._settled_by_bound`) would close most of these intervals before a walk is predicted
-    (their axis is within the tolerance of the chord): it is switched off, so that the walks are exercised.
-    """
+    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them)."""
     from incircu_plugin.core import adaptive
 
-    monkeypatch.setattr(adaptive._Tracer, "_settled_by_bound", lambda self, i: np.zeros(len(i.span), dtype=bool))
     counted = {"events": 0}
     original = adaptive._Tracer._pair_events
 
@@ -586,57 +581,46 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
 
 
 @pytest.fixture
-def bound_judged(monkeypatch):
-    """Counts the open intervals of edges and of fans judged by the bound and those it settled (the cases below
-    must exercise it)."""
+def settled_at_event(monkeypatch):
+    """Counts the open intervals judged at their event and those settled there (the cases below must exercise
+    it)."""
     from incircu_plugin.core import adaptive
 
-    counted = {"edge": 0, "fan": 0, "edge settled": 0, "fan settled": 0}
+    counted = {"judged": 0, "settled": 0}
+    original = adaptive._Tracer._settled_at_event
+    beside_each_other = adaptive._Tracer._beside_each_other
 
-    def counting(kind, original):
-        def bound_of(self, intervals, low, high, tolerance):
-            bound = original(self, intervals, low, high, tolerance)
-            counted[kind] += len(bound)
-            counted[kind + " settled"] += int(np.sum(bound <= tolerance))
-            return bound
+    def judging(self, intervals, judged):
+        row = beside_each_other(self, intervals, judged)
+        counted["judged"] += len(row)
+        return row
 
-        return bound_of
+    def settling(self, intervals, u, radius, found):
+        settled = original(self, intervals, u, radius, found)
+        counted["settled"] += int(np.sum(settled))
+        return settled
 
-    for kind in ("edge", "fan"):
-        name = f"_{kind}_bound"
-        monkeypatch.setattr(adaptive._Tracer, name, counting(kind, getattr(adaptive._Tracer, name)))
+    monkeypatch.setattr(adaptive._Tracer, "_beside_each_other", judging)
+    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", settling)
     return counted
 
 
-@pytest.mark.parametrize("spike", [(30.0, 6.0), (30.0, 9.0), (71.0, 7.0)])
-def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(bound_judged, spike):
-    # The top bank is flat but for a thin spike pointing down between the bottom edge's samples: both samples
-    # touch the flat top, but the axis dips under the spike; the bound must see the spike's sites.
+@pytest.mark.parametrize("spike", [(30.0, 9.0), (50.0, 9.5), (71.0, 8.5)])
+def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(spike):
+    # The top bank is two slightly different lines with a thin spike pointing down between them: the bottom
+    # edge's samples beside it touch the two lines, whose event lies between them, but the axis dips under the
+    # spike: its sites lie between the two lines', so the interval is not settled at the lines' event.
     x, tip = spike
-    ring = [(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (x + 0.2, 10.0), (x, tip), (x - 0.2, 10.0), (0.0, 10.0)]
-    polygon = Polygon(ring)
-    assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
-    assert bound_judged["edge"] > bound_judged["edge settled"]
+    ring = [(0.0, 0.0), (100.0, 0.0), (100.0, 10.5), (x + 0.2, 10.0), (x, tip), (x - 0.2, 10.0), (0.0, 10.0)]
+    assert_adaptive_properties(Polygon(ring), [(0.0, 5.0), (100.0, 5.0)])
 
 
-def test_a_spike_of_the_other_bank_facing_a_reflex_vertex_is_not_settled_over(bound_judged):
-    # The top bank's reflex vertex (50, 10) faces a flat bottom bank with a short thin spike: the disks at both
-    # ends of the vertex's fan touch the flat bottom beside the spike, the ones between dip under its tip by
-    # 0.15 (the tracer's tolerance is 0.037): the bound must see the tip.
-    ring = [(0.0, 30.0), (0.0, 0.0), (49.9, 0.0), (50.0, 0.3), (50.1, 0.0), (100.0, 0.0), (100.0, 30.0), (50.0, 10.0)]
-    assert_adaptive_properties(Polygon(ring), [(100.0, 15.0), (0.0, 15.0)])
-    assert bound_judged["fan"] > bound_judged["fan settled"]
-
-
-def test_a_gently_curving_bank_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, bound_judged):
-    # The top bank's 24 segments turn by 0.1 degrees in all: the axis over the long bottom edge stays within the
-    # tolerance of the chord of the edge's samples, which the bound proves: no probe along the edge's middle
-    # (without it, every event between two of the top's segments is probed).
+def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
+    # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
+    # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).
     from incircu_plugin.core import adaptive
 
-    x = np.linspace(0.0, 100.0, 25)
-    top = np.stack([x, 10.0 + 0.04 * np.sin(np.pi * x / 100.0)], axis=1)
-    polygon = Polygon([(0.0, 0.0), (100.0, 0.0), *top[::-1]])
+    polygon = Polygon([(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (30.0, 10.03), (0.0, 10.0)])
     probed = []
     solve_probes = adaptive._Tracer._solve_probes
 
@@ -647,45 +631,76 @@ def test_a_gently_curving_bank_opposite_one_long_edge_needs_no_probe_along_it(mo
 
     monkeypatch.setattr(adaptive._Tracer, "_solve_probes", recording)
     middle = []
-    for bound in (True, False):
-        if not bound:
-            monkeypatch.setattr(adaptive._Tracer, "_settled_by_bound", lambda self, i: np.zeros(len(i.span), bool))
+    for settling in (True, False):
+        if not settling:
+            monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", lambda self, i, *_: np.zeros(len(i.span), bool))
         probed.clear()
-        assert_adaptive_properties(polygon, [(0.0, 0.0), (100.0, 0.0)])
+        assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
         middle.append(int(sum(probed)))
-    assert bound_judged["edge settled"] > 0
-    assert middle[0] == 0 and middle[1] >= 10
+    assert settled_at_event["settled"] > 0
+    assert middle[0] == 0 and middle[1] >= 1
 
 
-@pytest.mark.parametrize("kind", ["edge", "fan"])
 @pytest.mark.parametrize("case", WAVY + [GAMBIA], ids=lambda case: case.name)
-def test_the_bound_holds_the_axis_between_the_samples_it_judges(monkeypatch, case, kind):
-    # Every interval the bound judges is probed at 15 places inside: each probe's disk centre lies within the
-    # bound (computed in full: no tolerance to stop at) of the chord between the interval's end centres.
+def test_intervals_settled_at_their_event_hold_the_axis(monkeypatch, case):
+    # Every interval settled at its event is probed at 15 places inside: each probe's disk centre lies within
+    # the tracer's tolerance of the chord between the interval's end centres.
     from incircu_plugin.core import adaptive
 
-    name = f"_{kind}_bound"
-    original = getattr(adaptive._Tracer, name)
-    judged = {"intervals": 0, "worst": 0.0}
+    original = adaptive._Tracer._settled_at_event
+    settled = {"intervals": 0, "worst": 0.0}
 
-    def checking(self, intervals, low, high, tolerance):
-        bound = original(self, intervals, low, high, np.full(len(low), np.inf))
-        owner = np.repeat(np.arange(len(bound)), 15)
-        share = np.tile(np.arange(1, 16) / 16.0, len(bound))
-        u = intervals.u0[owner] + share * (intervals.u1 - intervals.u0)[owner]
-        trial = 1.25 * np.maximum(self.t[intervals.left], self.t[intervals.right])[owner]
-        t, _, _, centre = self._solve_probes(intervals.span[owner], u, trial)
-        start, end = self.centres(intervals.left)[owner], self.centres(intervals.right)[owner]
+    def checking(self, intervals, u, radius, found):
+        mask = original(self, intervals, u, radius, found)
+        inside = intervals.subset(mask.nonzero()[0])
+        owner = np.repeat(np.arange(len(inside.span)), 15)
+        share = np.tile(np.arange(1, 16) / 16.0, len(inside.span))
+        at = inside.u0[owner] + share * (inside.u1 - inside.u0)[owner]
+        trial = 1.25 * np.maximum(self.t[inside.left], self.t[inside.right])[owner]
+        t, _, _, centre = self._solve_probes(inside.span[owner], at, trial)
+        start, end = self.centres(inside.left)[owner], self.centres(inside.right)[owner]
         chord = end - start
         along = np.clip(np.einsum("ij,ij->i", centre - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
         distance = np.hypot(*(centre - start - along[:, None] * chord).T)
-        slack = 1e-9 * np.abs(centre).max()
-        excess = np.where(np.isfinite(t), distance - bound[owner] - slack, -np.inf)
-        judged["intervals"] += len(bound)
-        judged["worst"] = max(judged["worst"], float(excess.max(initial=-np.inf)))
-        return bound
+        tolerance = self.of(self.tolerance, inside.span[owner])
+        excess = np.where(np.isfinite(t), distance - tolerance * (1.0 + 1e-9), -np.inf)
+        settled["intervals"] += len(inside.span)
+        settled["worst"] = max(settled["worst"], float(excess.max(initial=-np.inf)))
+        return mask
 
-    monkeypatch.setattr(adaptive._Tracer, name, checking)
+    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", checking)
     polygon_centerline(case.polygon, case.split_points)
-    assert judged["intervals"] > 0
-    assert judged["worst"] <= 0.0
+    assert settled["intervals"] > 0
+    assert settled["worst"] <= 0.0
+
+
+def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
+    """The axis touching one site between two parameters of a span (a parabola for an edge and a vertex or a
+    fan and a segment, else straight) lies within the sag of its chord, and the sag is not far above it (away
+    from the parabola's apex the bound's curvature 1 / h is several times the actual one)."""
+    from incircu_plugin.core.adaptive import _radius_at, _Tracer
+    from incircu_plugin.core.contacts import Boundary
+
+    bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
+    bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
+    tracer = _Tracer([1, 1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    spans, boundary = tracer.spans, tracer.boundary
+    site = np.concatenate([np.arange(4, 8), boundary.segment_count + 5 + np.arange(1, 4)])
+    span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
+    share = np.linspace(0.1, 0.9, 81)
+    u = share[:, None] * spans.length[span]
+    centres = []
+    for row in u:
+        radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site, row), row)
+        centres.append(spans.points(span, row)[0] + radius[:, None] * spans.directions(span, row))
+    centres = np.array(centres)
+    start, end = centres[0], centres[-1]
+    chord = end - start
+    along = np.clip(np.einsum("kij,ij->ki", centres - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
+    deviation = np.hypot(*(centres - start - along[..., None] * chord).transpose(2, 0, 1)).max(axis=0)
+    sag = tracer._sag(span, site, start, end)
+    touched = np.all(np.isfinite(centres), axis=(0, 2))
+    curved = (spans.kind[span] == 1) != (site >= boundary.segment_count)
+    assert touched[curved].sum() > 5 and touched[~curved].sum() > 5
+    assert np.all(deviation[touched] <= sag[touched] + 1e-9)
+    assert np.all(deviation[touched & curved] >= 0.1 * sag[touched & curved])

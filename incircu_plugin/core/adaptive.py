@@ -46,30 +46,27 @@ contact is the vertex where its interval's two segments meet touches that vertex
 no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
 there touches the other chain too, whatever it touches first: it is a point of the axis.
 
-*Settled by a bound.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
-sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1``, neither at an end vertex of ``B``, is
-closed without a probe when the axis between its samples provably lies within the tolerance of the chord of
-their centres (:meth:`_Tracer._settled_by_bound`). Every disk of the span between them touches ``B`` first
-between ``q0`` and ``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1``
-enclose a region that the boundary enters only across them. It does not cross the empty disks, and ``B`` does
-not cross itself or the own chain. The own chain leaves the span's piece at its ends along the edge's line, or
-turned away from the region at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0``,
-and is not emitted), or, at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0``
-along the tangent of ``D0`` (a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from
-the interval (the contact moves along ``B`` monotonically as the disk's foot moves along the span). Only at an
-end vertex of ``B`` does the own chain join it: excluded. So the first contact of every disk in between is
-one of ``B``'s segments or vertices between those of ``q0`` and ``q1``: an index range (whole straight runs,
-both segments at a vertex, convex vertices too: a superset only lowers the bound below). Then, with ``t(u)``
-the disk's radius, ``t(u) >= min_k r_k(u)`` over those candidates, with a segment's line counted only where
-the foot of the disk touching it lies on the segment and its radius is positive (elsewhere it is touched at an
-end vertex, a candidate too), a vertex only in front of the span; and ``t(u) <= r_q(u)`` for any boundary
-point ``q`` (the disk would hold it), so for ``q0``, ``q1`` and, where their feet lie on their runs, the lines
-of the end sites. On an edge the centre is ``(u, t(u))`` in an orthonormal frame, so its distance to the chord
-is at most ``|t(u) - chord(u)|``; all radii are convex quadratics in ``u`` (lines: linear) on a range, and the
-extremes of both differences are found in closed form (:func:`_envelope_peak`). On a fan the centre never
-lies nearer the vertex than the chord, and its distance beyond it is bounded the same way
-(:meth:`_Tracer._fan_bound`). The interval closes when the bound is within the tolerance; the
-simplification's share of the engine's tolerance comes on top of it, as for a parabola's chords.
+*Settled at the event.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
+sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1`` that follow each other in its site
+sequence (neither an end vertex of ``B``), and whose event lies inside it, is closed without a probe when the
+axis between its samples provably lies within the tolerance of the chord of their centres
+(:meth:`_Tracer._settled_at_event`). Every disk of the span between them touches ``B`` first between ``q0``
+and ``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1`` enclose a region
+that the boundary enters only across them. It does not cross the empty disks, and ``B`` does not cross itself or
+the own chain. The own chain leaves the span's piece at its ends along the edge's line, or turned away from the
+region at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0`` and is not emitted), or,
+at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0`` along the tangent of ``D0``
+(a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from the interval (the contacts
+move along ``B`` monotonically as the disk's foot moves along the span: two disks' spokes do not cross). Only
+at an end vertex of ``B`` does the own chain join it: excluded. Between two consecutive sites lie no other
+site (at most a convex vertex, never a first contact), so every disk between touches one of the two first,
+the first one up to the event and the second one after it (the contact moves monotonically). The axis is then
+two known arcs, each a segment or a parabola's arc (an edge and a vertex, a fan and a segment), from each end
+centre to the event's centre, computed in closed form. Each arc lies within its sag of its own chord (at most
+``d**2 / (8 h)`` for a parabola of focal height ``h``, ``d`` the chord's extent along its directrix), and every
+point of those two chords within the event's distance to the interval's chord (the distance to a segment is
+convex and zero at its ends): the interval closes when the sum is within the tolerance, the
+simplification's share of the engine's tolerance coming on top of it, as for a parabola's chords.
 
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
@@ -119,10 +116,6 @@ SETTLED_CHORD = 1.0 / 16.0
 #: Relative slack under which a slightly negative discriminant is a double root (a contact sliding off a
 #: segment's end onto its vertex).
 DOUBLE_ROOT = 1e-8
-
-#: Most segments of the other chain between an open interval's two contacts for a bound to settle it (more
-#: are left to the probes: the bound's cost stays linear).
-MAX_BOUND_SEGMENTS = 32
 
 #: Most rounds of event location (each round at least halves the open intervals' count of unknown sites).
 MAX_ROUNDS = 64
@@ -274,15 +267,15 @@ def _build_spans(boundary, geometry, traced):
 
 
 def _straight_runs(kinds, boundary):
-    """For each segment, the first and the last segment of its run of segments on one line (the first is the
-    site it stands for), and the arc length at the run's end."""
+    """For each segment, the first segment of its run of segments on one line (the site it stands for), and
+    the arc length at the run's end."""
     # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
     segment = np.arange(boundary.segment_count, dtype=np.int32)
     starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
     last = np.minimum.accumulate(np.where(ends_run, segment, np.int32(boundary.segment_count))[::-1])[::-1]
-    return first, last, boundary.segment_end_position[last]
+    return first, boundary.segment_end_position[last]
 
 
 def _site_sequence(boundary, kinds, line_of):
@@ -314,7 +307,7 @@ class _Sites:
     def __init__(self, boundary, kinds):
         self.boundary = boundary
         self.kinds = kinds
-        self.line_of, self.run_last, self.run_end_position = _straight_runs(kinds, boundary)
+        self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
         self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
@@ -436,9 +429,10 @@ def _radius_at(spans, span, terms, u):
     return np.where(np.isfinite(radius) & (radius >= 0.0), radius, np.inf)
 
 
-def _crossing(spans, intervals, terms0, terms1):
+def _crossing(spans, intervals, terms0, terms1, counted=False):
     """Parameter inside ``(u0, u1)`` where both sites' radii are equal (else the middle), whether there is
-    one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
+    one, and which end (0, 1; else -1) the crossing lies at when it lies at one; if ``counted``, also how many
+    of the equation's two roots lie in ``[u0, u1]``."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     middle = 0.5 * (u0 + u1)
@@ -452,12 +446,17 @@ def _crossing(spans, intervals, terms0, terms1):
         roots = _by_kind(spans.kind[intervals.span], (EDGE, FAN), roots_of, 2)
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
+    count = np.zeros(len(u0), dtype=int)
     for candidate in roots:
-        inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
+        inside = np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
+        # A double root (a segment's line and its end vertex) split by rounding counts once.
+        count += inside & ~(found & (np.abs(candidate - chosen) <= DOUBLE_ROOT * (u1 - u0)))
+        inside &= ~found
         chosen[inside], found[inside] = candidate[inside], True
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
-    return np.where(found, chosen, middle), found, at_end
+    crossing = np.where(found, chosen, middle), found, at_end
+    return crossing + (count,) if counted else crossing
 
 
 def _by_kind(kind, kinds, compute, columns):
@@ -583,8 +582,6 @@ class _Tracer:
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
         self.chain_end = _split_vertices(boundary, np.ones(len(closed), dtype=bool))
-        #: Inward unit normal of every segment (the region lies on its side).
-        self.inward = geometry.normal
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
@@ -640,18 +637,18 @@ class _Tracer:
         intervals = self._initial(report)
         for round_index in range(MAX_ROUNDS):
             events, curves = self._open_and_curved(intervals)
-            events = events.subset((~self._settled_by_bound(events)).nonzero()[0])
             # Only the open and curved intervals go on: the others are released before the round's output is built.
             intervals = None
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
-            event_u, event_trial, found, at_end = self._event_candidates(events)
+            event_u, event_trial, found, at_end, event_radius = self._event_candidates(events)
             settled = self._settle_at_ends(events, at_end)
-            carried = []
-            if settled.any():
-                carried = [events.subset(settled.nonzero()[0])]
-                unsettled = (~settled).nonzero()[0]
+            # Intervals settled at their event close (their sites still differ: they are not carried on).
+            closed = self._settled_at_event(events, event_u, event_radius, found)
+            carried = [events.subset(settled.nonzero()[0])] if settled.any() else []
+            if settled.any() or closed.any():
+                unsettled = (~settled & ~closed).nonzero()[0]
                 events = events.subset(unsettled)
                 event_u, event_trial, found = event_u[unsettled], event_trial[unsettled], found[unsettled]
             owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
@@ -897,252 +894,10 @@ class _Tracer:
         edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & ((sites.kinds[vertex] == 0) | untraced_fan)
         return curved & (fan | edge)
 
-    def _settled_by_bound(self, intervals):
-        """Mask of the open intervals whose axis provably lies within the tolerance of the chord between their
-        end centres (module docstring, *Settled by a bound*): they close without a probe."""
-        settled = np.zeros(len(intervals.span), dtype=bool)
-        row, low, high = self._bounded(intervals)
-        kind = self.spans.kind[intervals.span[row]]
-        for value, bound_of in ((EDGE, self._edge_bound), (FAN, self._fan_bound)):
-            of_kind = (kind == value).nonzero()[0]
-            if len(of_kind):
-                judged = row[of_kind]
-                # Infinite radii (sites never touched) and empty ranges are part of the arithmetic.
-                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-                    tolerance = self.of(self.tolerance, intervals.span[judged])
-                    bound = bound_of(intervals.subset(judged), low[of_kind], high[of_kind], tolerance)
-                settled[judged] = bound <= tolerance
-        return settled
-
-    def _bounded(self, intervals):
-        """The open intervals that a bound may settle, and the range ``low`` .. ``high`` of the other chain's
-        segments between their two contacts (whole straight runs, both segments at a vertex: a superset).
-
-        Both end samples are emitted (their disks are empty and touch the interval's sites), both sites lie on
-        the other chain and neither is one of its end vertices, and the range holds at most
-        ``MAX_BOUND_SEGMENTS`` segments.
-        """
-        sites, b = self.sites, self.boundary
-        other = self.spans.chain[intervals.span] ^ 1
-        emit = self.store["emit"]
-        judged = (sites.chain(intervals.site0) == other) & (sites.chain(intervals.site1) == other)
-        judged &= emit[intervals.left] & emit[intervals.right]
-        ranges_ = []
-        for site in (intervals.site0, intervals.site1):
-            vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-            on_vertex = site >= b.segment_count
-            judged &= ~(on_vertex & self.chain_end[vertex])
-            segment = np.clip(site, 0, b.segment_count - 1)
-            after = vertex - b.vertex_chain[vertex]
-            ranges_.append(
-                (np.where(on_vertex, after - 1, segment), np.where(on_vertex, after, sites.run_last[segment]))
-            )
-        low = np.minimum(ranges_[0][0], ranges_[1][0])
-        high = np.maximum(ranges_[0][1], ranges_[1][1])
-        judged &= high - low < MAX_BOUND_SEGMENTS
-        row = judged.nonzero()[0]
-        return row, low[row], high[row]
-
-    def _edge_bound(self, intervals, low, high, tolerance):
-        """Bound of the distance between the axis and the chord of its end centres over each open interval of
-        an edge span (the other chain's segments ``low`` .. ``high`` hold its contacts), CRS units, where it is
-        at most ``tolerance`` (per interval, CRS units); elsewhere some value above it.
-
-        With ``l`` the share of the interval (0 at ``u0``, 1 at ``u1``) the centre is ``(u(l), t(l))`` in the
-        orthonormal frame (along, across) of the edge, so its distance to the chord is at most
-        ``|t(l) - chord(l)|``. The radius ``t`` is the least of the candidates' radius functions (each a
-        convex quadratic on a range of ``l``, :meth:`_edge_candidates`): below the chord each candidate's
-        largest excess is found in closed form; above it, :func:`_envelope_excess`.
-        """
-        spans = self.spans
-        span = intervals.span
-        origin, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
-        t0, t1 = self.t[intervals.left], self.t[intervals.right]
-        width = intervals.u1 - intervals.u0
-        origin += intervals.u0[:, None] * unit
-        chord = t0, t1 - t0
-        owner, terms, first, last = self._edge_candidates((origin, unit, normal, width), low, high)
-        start = np.searchsorted(owner, np.arange(len(span)))
-        # chord - radius is concave in the share: it peaks where its derivative vanishes, or at a range's end.
-        stationary = np.where(terms[2] > 0.0, (chord[1][owner] - terms[1]) / (2.0 * terms[2]), first)
-        excess = np.full(len(owner), -np.inf)
-        for share in (first, last, np.clip(stationary, first, last)):
-            value = _quadratic_at(chord, share, owner) - _quadratic_at(terms, share)
-            excess = np.fmax(excess, np.where(first <= last, value, -np.inf))
-        below = np.maximum.reduceat(excess, start)
-        limit = np.where(below <= tolerance, tolerance, np.nan)
-        bounds = np.zeros(len(span)), np.ones(len(span))
-        return np.fmax(below, _envelope_excess((owner, start, terms, first, last), chord, limit, bounds, EDGE))
-
-    def _fan_bound(self, intervals, low, high, tolerance):
-        """Bound of the distance between the axis and the chord of its end centres over each open interval of
-        a fan span (the other chain's segments ``low`` .. ``high`` hold its contacts), CRS units, where it is at
-        most ``tolerance`` (per interval, CRS units); elsewhere some value above it.
-
-        The centre at ``u`` is ``v + t(u) d(u)``; with ``w`` the chord's unit normal away from the vertex ``v``
-        and ``h`` the chord's distance from it, its distance to the chord's line is ``|t(u) cos(u - psi) - h|``
-        (``psi`` the angle of ``w``), and the ray ``d(u)`` meets the chord between its ends, so its distance to
-        the chord is at most that over ``cos(u - psi)``, which is least at an end (``h / t`` there).
-
-        The centre never lies nearer ``v`` than the chord: the disk centred at ``c`` through ``v`` holds a point
-        ``q`` when ``c`` is nearer ``q`` than ``v``, a half-plane; no end disk holds a point of the boundary, so
-        for each such ``q`` both end centres, hence the chord, lie in the other, convex half-plane with ``v``,
-        and along the ray from ``v`` the disk reaches ``q`` beyond the chord. Above the chord,
-        :func:`_envelope_excess` bounds ``t(u) cos(u - psi) - h`` (each candidate's ``r(u) cos(u - psi)`` is
-        monotonic (a vertex) or has a single minimum (a line): no inner maximum).
-        """
-        spans = self.spans
-        span, u0, u1 = intervals.span, intervals.u0, intervals.u1
-        vertex, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
-        t0, t1 = self.t[intervals.left], self.t[intervals.right]
-        start, end = self.centres(intervals.left), self.centres(intervals.right)
-        across = left_normal(end - start)
-        across /= np.hypot(*across.T)[:, None]
-        height = np.einsum("ij,ij->i", start - vertex, across)
-        across *= np.where(height < 0.0, -1.0, 1.0)[:, None]
-        height = np.abs(height)
-        psi = np.arctan2(np.einsum("ij,ij->i", across, normal), np.einsum("ij,ij->i", across, unit))
-        owner, terms, first, last = self._fan_candidates((vertex, unit, normal, psi, u0, u1), low, high)
-        start_of = np.searchsorted(owner, np.arange(len(span)))
-        # Distances to the chord's line over the least cosine: the tolerance's share of them.
-        stretch = np.maximum(t0, t1) / height
-        target = height, np.zeros(len(span))
-        limit = np.where(np.isfinite(stretch), tolerance / stretch, np.nan)
-        above = _envelope_excess((owner, start_of, terms, first, last), target, limit, (u0, u1), FAN)
-        return np.fmax(above, 0.0) * stretch
-
-    def _fan_candidates(self, frame, low, high):
-        """The functions ``r(u) cos(u - psi)`` of the candidate sites of intervals of fan spans (``frame``: per
-        interval the vertex, the fan's unit and normal, the angle ``psi`` of the chord's normal, ``u0``, ``u1``).
-
-        The candidates are the other chain's segments ``low`` .. ``high`` (their lines, where the foot lies on
-        the segment) and their vertices (:meth:`_candidate_vertices`). Returns per candidate, ordered by interval: its interval, its terms
-        ``(a0, a1, a2, psi)`` (:func:`_value_of`) and the first and last ``u`` where it bounds the radius above
-        (its disk touches a point of the boundary; first > last: nowhere). A line's foot moves monotonically
-        along it as ``u`` turns (the centres of the disks through the vertex touching it lie on a parabola
-        around the vertex), except across the direction of its normal (the radius is infinite there): such a
-        line, or one whose foot's range is not found, is left out (the bound only grows).
-        """
-        b = self.boundary
-        vertex, unit, normal, psi, u0, u1 = frame
-        owner, rank = ranges(high - low + 1)
-        segment = low[owner] + rank
-        inward, direction = rows(self.inward, segment), rows(b.unit, segment)
-        offset = rows(vertex, owner) - rows(b.start, segment)
-        height = np.einsum("ij,ij->i", offset, inward)
-        along = np.einsum("ij,ij->i", offset, direction)
-        m_unit, m_normal = (np.einsum("ij,ij->i", rows(x, owner), inward) for x in (unit, normal))
-        e_unit, e_normal = (np.einsum("ij,ij->i", rows(x, owner), direction) for x in (unit, normal))
-        line_terms = (1.0 / height, -m_unit / height, -m_normal / height, psi[owner])
-        length = b.segment_end_position[segment] - b.segment_position[segment]
-        start, end, middle = u0[owner], u1[owner], 0.5 * (u0 + u1)[owner]
-        normal_angle = np.arctan2(m_normal, m_unit)
-        normal_angle = np.remainder(normal_angle - middle + np.pi, 2.0 * np.pi) - np.pi + middle
-        doubt = (normal_angle >= start) & (normal_angle <= end)
-
-        def foot(u):
-            radius = height / (1.0 - m_unit * np.cos(u) - m_normal * np.sin(u))
-            return along + radius * (e_unit * np.cos(u) + e_normal * np.sin(u))
-
-        def where_foot_is(level):
-            shifted = along - level
-            roots = _fan_roots(
-                shifted, -shifted * m_unit + height * e_unit, -shifted * m_normal + height * e_normal, middle
-            )
-            inside = [np.where((root >= start) & (root <= end), root, np.nan) for root in roots]
-            return np.fmin(*inside)
-
-        foot0, foot1 = foot(start), foot(end)
-        rising = foot1 >= foot0
-        first = np.where(
-            np.where(rising, foot0 >= 0.0, foot0 <= length), start, where_foot_is(np.where(rising, 0.0, length))
-        )
-        last = np.where(
-            np.where(rising, foot1 <= length, foot1 >= 0.0), end, where_foot_is(np.where(rising, length, 0.0))
-        )
-        beyond = np.where(rising, (foot1 < 0.0) | (foot0 > length), (foot0 < 0.0) | (foot1 > length))
-        known = ~doubt & ~beyond & np.isfinite(first) & np.isfinite(last)
-        touched = height > 0.0
-        first, last = np.where(known & touched, first, np.inf), np.where(known & touched, last, -np.inf)
-        vertex_owner, candidate = self._candidate_vertices(low, high)
-        offset = rows(b.vertex, candidate) - rows(vertex, vertex_owner)
-        scale = 2.0 / np.einsum("ij,ij->i", offset, offset)
-        point_terms = (
-            np.zeros(len(vertex_owner)),
-            scale * np.einsum("ij,ij->i", offset, rows(unit, vertex_owner)),
-            scale * np.einsum("ij,ij->i", offset, rows(normal, vertex_owner)),
-            psi[vertex_owner],
-        )
-        owner = np.concatenate([owner, vertex_owner])
-        order = np.argsort(owner, kind="stable")
-        terms = tuple(np.concatenate([x, y])[order] for x, y in zip(line_terms, point_terms))
-        first = np.concatenate([first, u0[vertex_owner]])[order]
-        return owner[order], terms, first, np.concatenate([last, u1[vertex_owner]])[order]
-
-    def _candidate_vertices(self, low, high):
-        """The vertices of the segments ``low`` .. ``high`` of each interval that may be a disk's first contact
-        (reflex ones and the chains' ends: a convex or straight vertex never is, and as a point of the boundary
-        it only bounds the radius above, which the bound may do without). Returns their interval and index."""
-        b = self.boundary
-        owner, rank = ranges(high - low + 2)
-        vertex = b.start_vertex(low)[owner] + rank
-        site = (self.sites.rank[b.segment_count + vertex] >= 0).nonzero()[0]
-        return owner[site], vertex[site]
-
-    def _edge_candidates(self, frame, low, high):
-        """The radius functions of the candidate sites of intervals of edge spans (``frame``: per interval the
-        origin at ``u0``, the edge's unit and normal, the width ``u1 - u0``), as functions of the share ``l``.
-
-        The candidates are the other chain's segments ``low`` .. ``high`` (their lines where the foot lies on
-        the segment and the radius is positive) and their vertices (:meth:`_candidate_vertices`, in front of the
-        edge). Returns per
-        candidate, ordered by interval: its interval, the terms of ``r(l) = c0 + c1 l + c2 l**2``, and the first
-        and last share of its range (first > last: never touched).
-        """
-        b = self.boundary
-        origin, unit, normal, width = frame
-        owner, rank = ranges(high - low + 1)
-        segment = low[owner] + rank
-        length = b.segment_end_position[segment] - b.segment_position[segment]
-        line_terms, line_first, line_last = self._line_radii(frame, owner, segment, length)
-        vertex_owner, vertex = self._candidate_vertices(low, high)
-        offset = rows(b.vertex, vertex) - rows(origin, vertex_owner)
-        point_terms, point_first, point_last = _point_radii(
-            offset, rows(unit, vertex_owner), rows(normal, vertex_owner), width[vertex_owner]
-        )
-        owner = np.concatenate([owner, vertex_owner])
-        order = np.argsort(owner, kind="stable")
-        terms = tuple(np.concatenate([x, y])[order] for x, y in zip(line_terms, point_terms))
-        first = np.concatenate([line_first, point_first])[order]
-        return owner[order], terms, first, np.concatenate([line_last, point_last])[order]
-
-    def _line_radii(self, frame, owner, segment, length):
-        """Radius, as a function of the share ``l`` of each interval ``owner`` of edge spans (``frame``: origin
-        at ``u0``, unit, normal, width), of the disks touching the line of ``segment`` from the region's side,
-        and the range of ``l`` where that radius is positive and its foot lies within ``length`` (CRS units;
-        negative: nowhere) of the segment's start.
-
-        Returns the terms ``(c0, c1, 0)`` of ``r(l) = c0 + c1 l`` and the first and last share of the range.
-        """
-        b = self.boundary
-        origin, unit, normal, width = (rows(x, owner) if x.ndim == 2 else x[owner] for x in frame)
-        inward, direction = rows(self.inward, segment), rows(b.unit, segment)
-        offset = origin - rows(b.start, segment)
-        closing = 1.0 - np.einsum("ij,ij->i", normal, inward)
-        start = np.einsum("ij,ij->i", offset, inward) / closing
-        rise = width * np.einsum("ij,ij->i", unit, inward) / closing
-        along = np.einsum("ij,ij->i", offset, direction)
-        turning = np.einsum("ij,ij->i", normal, direction)
-        foot = (
-            along + turning * start,
-            along + width * np.einsum("ij,ij->i", unit, direction) + turning * (start + rise),
-        )
-        first, last = _linear_range(*foot, 0.0, length)
-        positive_first, positive_last = _linear_range(start, start + rise, 0.0, np.inf)
-        return (start, rise, np.zeros(len(segment))), np.maximum(first, positive_first), np.minimum(last, positive_last)
-
     def _event_candidates(self, intervals):
-        """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
+        """Where to probe each open interval: its event candidate, the trial radius, whether it is one, which end
+        it lies at (see :func:`_crossing`) and its radius (CRS units) where it is the one crossing in the
+        interval (else NaN)."""
         span = intervals.span
         middle = 0.5 * (intervals.u0 + intervals.u1)
         # Both sites' terms in one call (each row depends on its own values only: the same floats).
@@ -1153,9 +908,10 @@ class _Tracer:
             np.concatenate([middle, middle]),
         )
         terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
-        u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
+        u, found, at_end, roots = _crossing(self.spans, intervals, terms0, terms1, counted=True)
         radius = _radius_at(self.spans, span, terms0, u)
-        return u, self._trial(intervals, radius, found), found, at_end
+        # The radius at a single crossing (where two lie in the interval, which one is the event is not known).
+        return u, self._trial(intervals, radius, found), found, at_end, np.where(roots == 1, radius, np.nan)
 
     def _trial(self, intervals, radius, found):
         """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
@@ -1325,6 +1081,61 @@ class _Tracer:
             probe_pairs,
         )
 
+    def _settled_at_event(self, intervals, u, radius, found):
+        """Mask of the open intervals whose two sites follow each other on the other chain and whose axis
+        provably lies within the tolerance of the chord of their end centres (module docstring, *Settled at
+        the event*): the centre of their event (at ``u``, of ``radius``, CRS units, where ``found``) lies within
+        the tolerance of the chord, less the larger deviation of the two arcs beside it from their own chords."""
+        settled = np.zeros(len(intervals.span), dtype=bool)
+        row = self._beside_each_other(intervals, found & np.isfinite(radius))
+        if len(row) == 0:
+            return settled
+        spans = self.spans
+        span = intervals.span[row]
+        point, _ = spans.points(span, u[row])
+        event = point + radius[row, None] * spans.directions(span, u[row])
+        start, end = self.centres(intervals.left[row]), self.centres(intervals.right[row])
+        chord = end - start
+        along = np.clip(np.einsum("ij,ij->i", event - start, chord) / np.einsum("ij,ij->i", chord, chord), 0.0, 1.0)
+        distance = np.hypot(*(event - start - along[:, None] * chord).T)
+        sag = np.maximum(
+            self._sag(span, intervals.site0[row], start, event), self._sag(span, intervals.site1[row], event, end)
+        )
+        with np.errstate(invalid="ignore"):
+            settled[row] = distance + sag <= self.of(self.tolerance, span)
+        return settled
+
+    def _beside_each_other(self, intervals, judged):
+        """Of the intervals ``judged``, those whose end samples are emitted (empty disks touching their sites)
+        and whose two sites follow each other in the other chain's site sequence, neither at one of its ends."""
+        sites, b = self.sites, self.boundary
+        other = self.spans.chain[intervals.span] ^ 1
+        emit = self.store["emit"]
+        judged = judged & (sites.chain(intervals.site0) == other) & (sites.chain(intervals.site1) == other)
+        judged &= emit[intervals.left] & emit[intervals.right]
+        judged &= np.abs(sites.rank[intervals.site0] - sites.rank[intervals.site1]) == 1
+        for site in (intervals.site0, intervals.site1):
+            judged &= ~((site >= b.segment_count) & self.chain_end[np.clip(site - b.segment_count, 0, None)])
+        return judged.nonzero()[0]
+
+    def _sag(self, span, site, start, end):
+        """Largest distance between the axis touching ``site`` on ``span`` and its chord from ``start`` to ``end``
+        (centres on it), CRS units: 0 where it is straight (an edge and a segment, a fan and a vertex), else
+        at most ``d**2 / (8 h)`` for the parabola of focal height ``h`` (a vertex over the edge's line, the
+        fan's vertex over the segment's line), ``d`` the chord's length along the directrix (the parabola's
+        curvature is at most ``1 / h``)."""
+        spans, b = self.spans, self.boundary
+        on_fan, on_vertex = spans.kind[span] == FAN, site >= b.segment_count
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        direction = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
+        focus = np.where(on_fan[:, None], rows(spans.point, span), rows(b.vertex, vertex))
+        anchor = np.where(on_fan[:, None], rows(b.start, segment), rows(spans.point, span))
+        height = np.abs(np.einsum("ij,ij->i", focus - anchor, left_normal(direction)))
+        along = np.einsum("ij,ij->i", end - start, direction)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(on_fan != on_vertex, along * along / (8.0 * height), 0.0)
+
     def _settle_at_ends(self, intervals, at_end):
         """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
 
@@ -1430,131 +1241,6 @@ class _Tracer:
             position_a[part] = self.spans.position[span[part]] + along
             foot_b[part], position_b[part] = self.sites.feet(other_site[part], centre[part])
         return AxisPoints(centre, t, foot_a, foot_b, position_a, position_b), self.spans.chain[span]
-
-
-def _linear_range(start, end, low, high):
-    """Where a linear function, ``start`` at share 0 and ``end`` at share 1, lies in ``[low, high]``: the
-    first and last share in ``[0, 1]`` (first > last when nowhere; NaN values: nowhere). Call it under
-    ``np.errstate`` ignoring invalid values and divisions by zero."""
-    step = end - start
-    at_low, at_high = (low - start) / step, (high - start) / step
-    rising = step > 0.0
-    first = np.where(rising, at_low, np.where(step < 0.0, at_high, np.where(start >= low, 0.0, np.inf)))
-    last = np.where(rising, at_high, np.where(step < 0.0, at_low, np.where(start <= high, 1.0, -np.inf)))
-    first, last = np.maximum(np.nan_to_num(first, nan=np.inf), 0.0), np.minimum(np.nan_to_num(last, nan=-np.inf), 1.0)
-    return first, last
-
-
-def _point_radii(offset, unit, normal, width):
-    """Radius, as a function of the share ``l`` of an interval of an edge, of the disks touching the edge at
-    ``u0 + l * width`` on the side of ``normal`` and passing through the points ``offset`` (from the edge's
-    point at ``u0``; ``unit`` along it), CRS units.
-
-    Returns the terms ``(c0, c1, c2)`` of ``r(l) = c0 + c1 l + c2 l**2`` and the range of ``l`` where the
-    point is ever touched: ``[0, 1]`` in front of the edge, else empty (``inf``, ``-inf``).
-    """
-    along, height = np.einsum("ij,ij->i", offset, unit), np.einsum("ij,ij->i", offset, normal)
-    in_front = height > 0.0
-    terms = (along * along + height * height) / (2.0 * height), -along * width / height, width * width / (2.0 * height)
-    return terms, np.where(in_front, 0.0, np.inf), np.where(in_front, 1.0, -np.inf)
-
-
-def _quadratic_at(terms, share, owner=None):
-    """``c0 + c1 l + c2 l**2`` of ``terms`` (two or three arrays, of rows ``owner`` if given) at shares ``l``."""
-    terms = [x if owner is None else x[owner] for x in terms]
-    value = terms[0] + share * terms[1]
-    return value + share * share * terms[2] if len(terms) > 2 else value
-
-
-#: Slack, as a share of the interval, of the ranges of the radius functions when evaluated at their ends.
-RANGE_SLACK = 1e-12
-
-
-#: Cells of the share in which the least of an interval's radius functions is bounded above by the least of two
-#: (:func:`_envelope_excess`).
-ENVELOPE_CELLS = 16
-
-
-def _envelope_excess(candidates, target, limit, bounds, kind):
-    """Per interval, an upper bound of ``max_x (min_k f_k(x) - target(x))`` over ``x`` in its ``bounds``
-    (inf where at some ``x`` no ``f_k`` is defined) for the functions ``f_k`` of its candidates, where it is at
-    most ``limit`` (NaN: not judged, inf); elsewhere some value above ``limit``.
-
-    ``candidates``: their interval (ascending), the index of each interval's first one, their terms and
-    ranges (``first`` .. ``last``), as from :meth:`_Tracer._edge_candidates` (``kind`` EDGE) or
-    :meth:`_Tracer._fan_candidates` (FAN); ``target``: linear terms per interval. The functions are evaluated
-    at ``ENVELOPE_CELLS + 1`` equally spaced places. In a cell whose two ends have the same least function, it
-    is the least one in between too (at most it, and it has no inner maximum); elsewhere the least is at most
-    the lesser of the two (:func:`_envelope_peak`, exact where the cell holds one change of the least one).
-    """
-    owner, start, terms, first, last = candidates
-    low, high = bounds
-    judged = np.flatnonzero(~np.isnan(limit))
-    excess = np.where(np.isnan(limit), np.inf, -np.inf)
-    if len(judged) == 0:
-        return excess
-    grid = low[:, None] + (high - low)[:, None] * np.linspace(0.0, 1.0, ENVELOPE_CELLS + 1)
-    # Places by candidates (rows: places), for the reductions along rows.
-    places = grid[owner].T
-    values = _value_of(kind, [x[None, :] for x in terms], places)
-    values[(places < first) | (places > last)] = np.inf
-    least = np.minimum.reduceat(values, start, axis=1)
-    excess = np.fmax(excess, (least - _quadratic_at([x[None, :] for x in target], grid.T)).max(axis=0))
-    # The first candidate of each interval that is the least at each place.
-    index = np.where(values == least[:, owner], np.arange(len(owner)), len(owner))
-    index = np.minimum.reduceat(index, start, axis=1)
-    # The cells whose ends' least functions differ, in intervals that may still settle.
-    cell, interval = ((index[:-1] != index[1:]) & (excess <= limit)).nonzero()
-    functions = []
-    for ends in (index[cell, interval], index[cell + 1, interval]):
-        functions.append((tuple(x[ends] for x in terms), first[ends], last[ends]))
-    cell_target = tuple(x[interval] for x in target)
-    peak = _envelope_peak(functions, cell_target, grid[interval, cell], grid[interval, cell + 1], kind)
-    np.maximum.at(excess, interval, peak)
-    return excess
-
-
-def _value_of(kind, terms, x):
-    """The functions ``terms`` at ``x``: on an edge the quadratic ``c0 + c1 x + c2 x**2``, on a fan
-    ``r(x) cos(x - psi)`` with ``1 / r = a0 + a1 cos(x) + a2 sin(x)`` (terms ``a0, a1, a2, psi``; inf where
-    ``1 / r`` is not positive: never touched)."""
-    if kind == EDGE:
-        return _quadratic_at(terms, x)
-    inverse = terms[0] + terms[1] * np.cos(x) + terms[2] * np.sin(x)
-    return np.where(inverse > 0.0, np.cos(x - terms[3]) / inverse, np.inf)
-
-
-def _envelope_peak(functions, target, low, high, kind):
-    """Largest value over ``x`` in ``[low, high]`` of ``min_j f_j(x) - target(x)`` (inf where no ``f_j`` is
-    defined), for functions ``f_j`` (:func:`_value_of`) each on a range of ``x`` (``(terms, first, last)``).
-
-    Each ``f_j`` - target has no inner maximum on its range (a convex quadratic less a line; on a fan a
-    monotonic function or one with a single minimum), so where one of them is the least the difference peaks
-    at an end of that stretch: ``low``, ``high``, a range's end or where two of them are equal. All of those
-    are tried, each from both sides (the functions defined just before it, then just after it: at a range's
-    end the least one jumps).
-    """
-    places = [low, high]
-    for terms, first, last in functions:
-        places += [first, last]
-    middle = 0.5 * (low + high)
-    for j, (terms_j, _, _) in enumerate(functions):
-        for terms_k, _, _ in functions[j + 1 :]:
-            difference = [x - y for x, y in zip(terms_j[:3], terms_k[:3])]
-            places += list(_edge_roots(*difference) if kind == EDGE else _fan_roots(*difference, middle))
-    peak = np.full(len(target[0]), -np.inf)
-    for place in places:
-        valid = np.isfinite(place) & (place >= low) & (place <= high)
-        place = np.where(valid, place, low)
-        before, after = np.full(len(place), np.inf), np.full(len(place), np.inf)
-        slack = RANGE_SLACK * (high - low)
-        for terms, first, last in functions:
-            value = _value_of(kind, terms, place)
-            before = np.fmin(before, np.where((first < place) & (last >= place - slack), value, np.inf))
-            after = np.fmin(after, np.where((first <= place + slack) & (last > place), value, np.inf))
-        least = np.fmax(np.where(place > low, before, -np.inf), np.where(place < high, after, -np.inf))
-        peak = np.fmax(peak, np.where(valid, least - _quadratic_at(target, place), -np.inf))
-    return peak
 
 
 def _solve_all(samples, index, *arguments):
