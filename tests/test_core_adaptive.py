@@ -606,3 +606,129 @@ def test_intervals_touching_the_own_chain_on_one_side_of_their_span_are_settled_
         probed = np.asarray(polygon_centerline(polygon, split_points).line.coords)
         assert settled["count"] > 0
         np.testing.assert_array_equal(line, probed)
+
+
+@pytest.fixture
+def settled_at_event(monkeypatch):
+    """Counts the open intervals judged at their event and those settled there (the cases below must exercise
+    it)."""
+    from incircu_plugin.core import adaptive
+
+    counted = {"judged": 0, "settled": 0}
+    original = adaptive._Tracer._settled_at_event
+    beside_each_other = adaptive._Tracer._beside_each_other
+
+    def judging(self, intervals, judged):
+        row = beside_each_other(self, intervals, judged)
+        counted["judged"] += len(row)
+        return row
+
+    def settling(self, intervals, u, radius, found):
+        settled = original(self, intervals, u, radius, found)
+        counted["settled"] += int(np.sum(settled))
+        return settled
+
+    monkeypatch.setattr(adaptive._Tracer, "_beside_each_other", judging)
+    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", settling)
+    return counted
+
+
+@pytest.mark.parametrize("spike", [(30.0, 9.0), (50.0, 9.5), (71.0, 8.5)])
+def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(spike):
+    # The top bank is two slightly different lines with a thin spike pointing down between them: the bottom
+    # edge's samples beside it touch the two lines, whose event lies between them, but the axis dips under the
+    # spike: its sites lie between the two lines', so the interval is not settled at the lines' event.
+    x, tip = spike
+    ring = [(0.0, 0.0), (100.0, 0.0), (100.0, 10.5), (x + 0.2, 10.0), (x, tip), (x - 0.2, 10.0), (0.0, 10.0)]
+    assert_adaptive_properties(Polygon(ring), [(0.0, 5.0), (100.0, 5.0)])
+
+
+def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
+    # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
+    # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).
+    from incircu_plugin.core import adaptive
+
+    polygon = Polygon([(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (30.0, 10.03), (0.0, 10.0)])
+    probed = []
+    solve_probes = adaptive._Tracer._solve_probes
+
+    def recording(self, span, u, trial):
+        # The probes along the middle of the long edge (the only span 100 long).
+        probed.append(np.sum((self.spans.length[span] > 99.0) & (u > 10.0) & (u < 90.0)))
+        return solve_probes(self, span, u, trial)
+
+    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", recording)
+    middle = []
+    for settling in (True, False):
+        if not settling:
+            monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", lambda self, i, *_: np.zeros(len(i.span), bool))
+        probed.clear()
+        assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
+        middle.append(int(sum(probed)))
+    assert settled_at_event["settled"] > 0
+    assert middle[0] == 0 and middle[1] >= 1
+
+
+@pytest.mark.parametrize("case", WAVY + [GAMBIA], ids=lambda case: case.name)
+def test_intervals_settled_at_their_event_hold_the_axis(monkeypatch, case):
+    # Every interval settled at its event is probed at 15 places inside: each probe's disk centre lies within
+    # the tracer's tolerance of the chord between the interval's end centres.
+    from incircu_plugin.core import adaptive
+
+    original = adaptive._Tracer._settled_at_event
+    settled = {"intervals": 0, "worst": 0.0}
+
+    def checking(self, intervals, u, radius, found):
+        mask = original(self, intervals, u, radius, found)
+        inside = intervals.subset(mask.nonzero()[0])
+        owner = np.repeat(np.arange(len(inside.span)), 15)
+        share = np.tile(np.arange(1, 16) / 16.0, len(inside.span))
+        at = inside.u0[owner] + share * (inside.u1 - inside.u0)[owner]
+        trial = 1.25 * np.maximum(self.t[inside.left], self.t[inside.right])[owner]
+        t, _, _, centre = self._solve_probes(inside.span[owner], at, trial)
+        start, end = self.centres(inside.left)[owner], self.centres(inside.right)[owner]
+        chord = end - start
+        along = np.clip(np.einsum("ij,ij->i", centre - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
+        distance = np.hypot(*(centre - start - along[:, None] * chord).T)
+        tolerance = self.of(self.tolerance, inside.span[owner])
+        excess = np.where(np.isfinite(t), distance - tolerance * (1.0 + 1e-9), -np.inf)
+        settled["intervals"] += len(inside.span)
+        settled["worst"] = max(settled["worst"], float(excess.max(initial=-np.inf)))
+        return mask
+
+    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", checking)
+    polygon_centerline(case.polygon, case.split_points)
+    assert settled["intervals"] > 0
+    assert settled["worst"] <= 0.0
+
+
+def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
+    """The axis touching one site between two parameters of a span (a parabola for an edge and a vertex or a
+    fan and a segment, else straight) lies within the sag of its chord, and the sag is not far above it (away
+    from the parabola's apex the bound's curvature 1 / h is several times the actual one)."""
+    from incircu_plugin.core.adaptive import _radius_at, _Tracer
+    from incircu_plugin.core.contacts import Boundary
+
+    bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
+    bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
+    tracer = _Tracer([1, 1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    spans, boundary = tracer.spans, tracer.boundary
+    site = np.concatenate([np.arange(4, 8), boundary.segment_count + 5 + np.arange(1, 4)])
+    span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
+    share = np.linspace(0.1, 0.9, 81)
+    u = share[:, None] * spans.length[span]
+    centres = []
+    for row in u:
+        radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site, row), row)
+        centres.append(spans.points(span, row)[0] + radius[:, None] * spans.directions(span, row))
+    centres = np.array(centres)
+    start, end = centres[0], centres[-1]
+    chord = end - start
+    along = np.clip(np.einsum("kij,ij->ki", centres - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
+    deviation = np.hypot(*(centres - start - along[..., None] * chord).transpose(2, 0, 1)).max(axis=0)
+    sag = tracer._sag(span, site, start, end)
+    touched = np.all(np.isfinite(centres), axis=(0, 2))
+    curved = (spans.kind[span] == 1) != (site >= boundary.segment_count)
+    assert touched[curved].sum() > 5 and touched[~curved].sum() > 5
+    assert np.all(deviation[touched] <= sag[touched] + 1e-9)
+    assert np.all(deviation[touched & curved] >= 0.1 * sag[touched & curved])

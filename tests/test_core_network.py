@@ -270,7 +270,10 @@ def test_three_arm_reservoir_is_the_oracle_axis():
     polygon, caps = cases.reservoir()
     network = polygon_network(polygon, caps)
     assert len(network.junctions) == 1
-    check_network(polygon, network, coverage=6.0 / 100.0)
+    # The branches' tolerance is 0.058 (typical width 11.65 / 200), and the line may use all of it (the tracer's
+    # chords settle within half of it, the simplification takes the other half): the coverage's bound on the
+    # distance from the axis to the line, 7/8 of it, is 0.061.
+    check_network(polygon, network, coverage=7.0 / 100.0)
 
 
 def test_confluence_with_an_island_passes_it_on_the_wide_side():

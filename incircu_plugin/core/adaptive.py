@@ -41,13 +41,39 @@ as an event.
 Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
 a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
 that touch the same site: the disks between them lie in the region enclosed by the span, that site and the
-two (empty) end disks, which the boundary cannot enter without crossing one of them. A probe whose first
+two (empty) end disks, which the boundary cannot enter without crossing one of them. That holds for the
+sites the samples really touch; a sample at a tie reports the lowest of its sites (a segment touched at its end
+vertex reports the segment), so two neighbours labelled alike may touch different sites (at a star's centre, a
+Y network's fork): a parabola's stations are therefore solved like any probe, and a station holds only where it
+touches the parabola's own site (else its interval is split there). A probe whose first
 contact is the vertex where its interval's two segments meet touches that vertex, not the segments: it is
 no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
 there touches the other chain too, whatever it touches first: it is a point of the axis. In general the disks
 between two samples first touch the boundary between the two samples' contacts, on the side away from the
 span: so where both contacts lie on the own chain, both before the span or both after it, every disk between
 touches its own chain first, and the interval is closed without a probe (:meth:`_Tracer._off_the_axis`).
+
+*Settled at the event.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
+sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1`` that follow each other in its site
+sequence (neither an end vertex of ``B``), and whose event lies inside it, is closed without a probe when the
+axis between its samples provably lies within the tolerance of the chord of their centres
+(:meth:`_Tracer._settled_at_event`). Every disk of the span between them touches ``B`` first between ``q0``
+and ``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1`` enclose a region
+that the boundary enters only across them. It does not cross the empty disks, and ``B`` does not cross itself or
+the own chain. The own chain leaves the span's piece at its ends along the edge's line, or turned away from the
+region at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0`` and is not emitted), or,
+at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0`` along the tangent of ``D0``
+(a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from the interval (the contacts
+move along ``B`` monotonically as the disk's foot moves along the span: two disks' spokes do not cross). Only
+at an end vertex of ``B`` does the own chain join it: excluded. Between two consecutive sites lie no other
+site (at most a convex vertex, never a first contact), so every disk between touches one of the two first,
+the first one up to the event and the second one after it (the contact moves monotonically). The axis is then
+two known arcs, each a segment or a parabola's arc (an edge and a vertex, a fan and a segment), from each end
+centre to the event's centre, computed in closed form. Each arc lies within its sag of its own chord (at most
+``d**2 / (8 h)`` for a parabola of focal height ``h``, ``d`` the chord's extent along its directrix), and every
+point of those two chords within the event's distance to the interval's chord (the distance to a segment is
+convex and zero at its ends): the interval closes when the sum is within the tolerance, the
+simplification's share of the engine's tolerance coming on top of it, as for a parabola's chords.
 
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
@@ -422,9 +448,10 @@ def _radius_at(spans, span, terms, u):
     return np.where(np.isfinite(radius) & (radius >= 0.0), radius, np.inf)
 
 
-def _crossing(spans, intervals, terms0, terms1):
+def _crossing(spans, intervals, terms0, terms1, counted=False):
     """Parameter inside ``(u0, u1)`` where both sites' radii are equal (else the middle), whether there is
-    one, and which end (0, 1; else -1) the crossing lies at when it lies at one."""
+    one, and which end (0, 1; else -1) the crossing lies at when it lies at one; if ``counted``, also how many
+    of the equation's two roots lie in ``[u0, u1]``."""
     u0, u1 = intervals.u0, intervals.u1
     d0, d1, d2 = (x - y for x, y in zip(terms0, terms1))
     middle = 0.5 * (u0 + u1)
@@ -438,12 +465,17 @@ def _crossing(spans, intervals, terms0, terms1):
         roots = _by_kind(spans.kind[intervals.span], (EDGE, FAN), roots_of, 2)
     slack = 1e-9 * (u1 - u0)
     chosen, found = np.full(len(u0), np.nan), np.zeros(len(u0), dtype=bool)
+    count = np.zeros(len(u0), dtype=int)
     for candidate in roots:
-        inside = ~found & np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
+        inside = np.isfinite(candidate) & (candidate >= u0 - slack) & (candidate <= u1 + slack)
+        # A double root (a segment's line and its end vertex) split by rounding counts once.
+        count += inside & ~(found & (np.abs(candidate - chosen) <= DOUBLE_ROOT * (u1 - u0)))
+        inside &= ~found
         chosen[inside], found[inside] = candidate[inside], True
     at_end = np.where(found & (chosen <= u0 + slack), 0, np.where(found & (chosen >= u1 - slack), 1, -1))
     found &= at_end < 0
-    return np.where(found, chosen, middle), found, at_end
+    crossing = np.where(found, chosen, middle), found, at_end
+    return crossing + (count,) if counted else crossing
 
 
 def _by_kind(kind, kinds, compute, columns):
@@ -568,6 +600,7 @@ class _Tracer:
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
+        self.chain_end = _split_vertices(boundary, np.ones(len(closed), dtype=bool))
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
@@ -628,12 +661,13 @@ class _Tracer:
             if len(events.span) + len(curves.span) == 0:
                 break
             report(0.8 + 0.2 * round_index / MAX_ROUNDS)
-            event_u, event_trial, found, at_end = self._event_candidates(events)
+            event_u, event_trial, found, at_end, event_radius = self._event_candidates(events)
             settled = self._settle_at_ends(events, at_end)
-            carried = []
-            if settled.any():
-                carried = [events.subset(settled.nonzero()[0])]
-                unsettled = (~settled).nonzero()[0]
+            # Intervals settled at their event close (their sites still differ: they are not carried on).
+            closed = self._settled_at_event(events, event_u, event_radius, found)
+            carried = [events.subset(settled.nonzero()[0])] if settled.any() else []
+            if settled.any() or closed.any():
+                unsettled = (~settled & ~closed).nonzero()[0]
                 events = events.subset(unsettled)
                 event_u, event_trial, found = event_u[unsettled], event_trial[unsettled], found[unsettled]
             owner, event_u, event_trial, found, pairs = self._event_nodes(events, event_u, event_trial, found)
@@ -899,7 +933,9 @@ class _Tracer:
         return curved & (fan | edge)
 
     def _event_candidates(self, intervals):
-        """Where to probe each open interval: its event candidate, the trial radius, and whether it is one."""
+        """Where to probe each open interval: its event candidate, the trial radius, whether it is one, which end
+        it lies at (see :func:`_crossing`) and its radius (CRS units) where it is the one crossing in the
+        interval (else NaN)."""
         span = intervals.span
         middle = 0.5 * (intervals.u0 + intervals.u1)
         # Both sites' terms in one call (each row depends on its own values only: the same floats).
@@ -910,9 +946,10 @@ class _Tracer:
             np.concatenate([middle, middle]),
         )
         terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
-        u, found, at_end = _crossing(self.spans, intervals, terms0, terms1)
+        u, found, at_end, roots = _crossing(self.spans, intervals, terms0, terms1, counted=True)
         radius = _radius_at(self.spans, span, terms0, u)
-        return u, self._trial(intervals, radius, found), found, at_end
+        # The radius at a single crossing (where two lie in the interval, which one is the event is not known).
+        return u, self._trial(intervals, radius, found), found, at_end, np.where(roots == 1, radius, np.nan)
 
     def _trial(self, intervals, radius, found):
         """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
@@ -1081,6 +1118,61 @@ class _Tracer:
             np.concatenate([found[single], np.ones(len(keep), dtype=bool)]),
             probe_pairs,
         )
+
+    def _settled_at_event(self, intervals, u, radius, found):
+        """Mask of the open intervals whose two sites follow each other on the other chain and whose axis
+        provably lies within the tolerance of the chord of their end centres (module docstring, *Settled at
+        the event*): the centre of their event (at ``u``, of ``radius``, CRS units, where ``found``) lies within
+        the tolerance of the chord, less the larger deviation of the two arcs beside it from their own chords."""
+        settled = np.zeros(len(intervals.span), dtype=bool)
+        row = self._beside_each_other(intervals, found & np.isfinite(radius))
+        if len(row) == 0:
+            return settled
+        spans = self.spans
+        span = intervals.span[row]
+        point, _ = spans.points(span, u[row])
+        event = point + radius[row, None] * spans.directions(span, u[row])
+        start, end = self.centres(intervals.left[row]), self.centres(intervals.right[row])
+        chord = end - start
+        along = np.clip(np.einsum("ij,ij->i", event - start, chord) / np.einsum("ij,ij->i", chord, chord), 0.0, 1.0)
+        distance = np.hypot(*(event - start - along[:, None] * chord).T)
+        sag = np.maximum(
+            self._sag(span, intervals.site0[row], start, event), self._sag(span, intervals.site1[row], event, end)
+        )
+        with np.errstate(invalid="ignore"):
+            settled[row] = distance + sag <= self.of(self.tolerance, span)
+        return settled
+
+    def _beside_each_other(self, intervals, judged):
+        """Of the intervals ``judged``, those whose end samples are emitted (empty disks touching their sites)
+        and whose two sites follow each other in the other chain's site sequence, neither at one of its ends."""
+        sites, b = self.sites, self.boundary
+        other = self.spans.chain[intervals.span] ^ 1
+        emit = self.store["emit"]
+        judged = judged & (sites.chain(intervals.site0) == other) & (sites.chain(intervals.site1) == other)
+        judged &= emit[intervals.left] & emit[intervals.right]
+        judged &= np.abs(sites.rank[intervals.site0] - sites.rank[intervals.site1]) == 1
+        for site in (intervals.site0, intervals.site1):
+            judged &= ~((site >= b.segment_count) & self.chain_end[np.clip(site - b.segment_count, 0, None)])
+        return judged.nonzero()[0]
+
+    def _sag(self, span, site, start, end):
+        """Largest distance between the axis touching ``site`` on ``span`` and its chord from ``start`` to ``end``
+        (centres on it), CRS units: 0 where it is straight (an edge and a segment, a fan and a vertex), else
+        at most ``d**2 / (8 h)`` for the parabola of focal height ``h`` (a vertex over the edge's line, the
+        fan's vertex over the segment's line), ``d`` the chord's length along the directrix (the parabola's
+        curvature is at most ``1 / h``)."""
+        spans, b = self.spans, self.boundary
+        on_fan, on_vertex = spans.kind[span] == FAN, site >= b.segment_count
+        segment = np.clip(site, 0, b.segment_count - 1)
+        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        direction = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
+        focus = np.where(on_fan[:, None], rows(spans.point, span), rows(b.vertex, vertex))
+        anchor = np.where(on_fan[:, None], rows(b.start, segment), rows(spans.point, span))
+        height = np.abs(np.einsum("ij,ij->i", focus - anchor, left_normal(direction)))
+        along = np.einsum("ij,ij->i", end - start, direction)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(on_fan != on_vertex, along * along / (8.0 * height), 0.0)
 
     def _settle_at_ends(self, intervals, at_end):
         """Intervals whose sites cross at an end sample that touches both: the other end's site holds inside.
