@@ -7,9 +7,10 @@ orchestrator: it checks the options, works in a local frame, gets the axis point
 and orders them into the line.
 
 - **Adaptive** (default, :mod:`.adaptive`): samples start at the boundary's vertices and are refined only
-  where the axis can leave the chord between two of them; events of the axis are located exactly and
-  parabolic pieces get vertices placed in closed form, so the line stays within ``tolerance`` of the exact
-  medial axis with about as many vertices as the boundary has.
+  where the axis can leave the chord between two of them; events of the axis are located exactly (or,
+  where the axis bends there by less than the tolerance, proven to need no vertex) and parabolic pieces get
+  vertices placed in closed form, so the line stays within ``tolerance`` of the exact medial axis with about
+  as many vertices as the boundary has.
 - **Fixed** (:mod:`.fixed_sampling`, with ``spacing`` or ``samples_per_chain``): the paper's equidistant
   sampling, e.g. to reproduce its Fig. 4.
 
