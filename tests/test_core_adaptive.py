@@ -23,7 +23,7 @@ import pytest
 import shapely
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from shapely.geometry import Polygon, box
+from shapely.geometry import LineString, Polygon, box
 
 from incircu_plugin.core import (
     IncirCuError,
@@ -562,7 +562,7 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
     u = 0.37 * spans.length[span]
     assert np.any(spans.kind == 1) and np.any(spans.kind == 0)
-    radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site, u), u)
+    radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), u)
     point, _ = spans.points(span, u)
     centre = point + radius[:, None] * spans.directions(span, u)
     on_segment = site < boundary.segment_count
@@ -643,6 +643,28 @@ def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(spike
     assert_adaptive_properties(Polygon(ring), [(0.0, 5.0), (100.0, 5.0)])
 
 
+@pytest.mark.parametrize("half_width", [5e-4, 1e-6])
+@pytest.mark.parametrize("spike", [False, True])
+@pytest.mark.parametrize("x", [2.3, 8.42])
+def test_the_axis_passes_under_a_needle_on_its_tips_parabola(half_width, spike, x):
+    # A needle (two nearly parallel edges, a digitising spike) reaches three quarters across a channel 1 wide.
+    # Each edge's line, extended, runs on past the tip, so a bottom sample on the far side of it lies on the
+    # needle's inner side of that line: a disk there never touches the edge. The events through the tip must be
+    # predicted on the region's side of the lines, else the walk from one edge to the other through the tip
+    # fails, the edges' own event is probed at the tip and its pieces take the wrong edge for the parabola.
+    needle = [(x + half_width, 1.0), (x, 0.25), (x - half_width, 1.0)]
+    end = [(10.0, 1.0), (9.077, 0.146), (9.035, 1.0)] if spike else [(10.0, 1.0)]
+    polygon = Polygon([(0.0, 0.0), (10.0, 0.0), *end, *needle, (0.0, 1.0)])
+    result = polygon_centerline(polygon, [(0.0, 0.5), (10.0, 0.5)])
+    chain_a, chain_b = split_polygon(polygon, [(0.0, 0.5), (10.0, 0.5)])
+    check_centerline(result, chain_a, chain_b, polygon, [tuple(chain_a[0]), tuple(chain_a[-1])])
+    tolerance = default_tolerance(chain_a, chain_b)
+    assert_within_tolerance(result, chain_a, chain_b, polygon, tolerance)
+    # Under the tip the axis is the tip's parabola, at half the tip's height above the bottom.
+    under_the_tip = shapely.intersection(result.line, LineString([(x, 0.0), (x, 0.25)]))
+    assert abs(under_the_tip.y - 0.125) <= tolerance
+
+
 def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
     # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
     # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).
@@ -719,7 +741,7 @@ def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
     u = share[:, None] * spans.length[span]
     centres = []
     for row in u:
-        radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site, row), row)
+        radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), row)
         centres.append(spans.points(span, row)[0] + radius[:, None] * spans.directions(span, row))
     centres = np.array(centres)
     start, end = centres[0], centres[-1]

@@ -311,11 +311,13 @@ class _Sites:
     """Site arithmetic: which chain a site is on, the site a segment stands for, the sites' order along their
     chains, feet and radii on spans."""
 
-    def __init__(self, boundary, kinds):
+    def __init__(self, boundary, geometry):
         self.boundary = boundary
-        self.kinds = kinds
-        self.line_of, self.run_end_position = _straight_runs(kinds, boundary)
-        self.sequence, self.rank = _site_sequence(boundary, kinds, self.line_of)
+        self.kinds = geometry.vertex_kind
+        #: Inward normal of every segment: a disk in the region touches a segment from that side of its line.
+        self.inward = geometry.normal
+        self.line_of, self.run_end_position = _straight_runs(self.kinds, boundary)
+        self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
 
@@ -378,12 +380,13 @@ class _Sites:
         distance1 = np.where(site1 >= 0, np.hypot(*(centre - foot1).T), np.inf)
         return foot0, foot1, distance0, distance1
 
-    def radius_terms(self, spans, span, site, u_ref):
+    def radius_terms(self, spans, span, site):
         """Closed form of the first-contact radius ``r(u)`` of ``site`` on ``span``.
 
         On an edge ``r(u) = a2 u**2 + a1 u + a0`` (a vertex: the parabola's height over the edge; a segment's
         line: linear). On a fan ``1 / r(u) = a0 + a1 cos(u) + a2 sin(u)``. Returns ``(a0, a1, a2)``. A segment's
-        line is touched from the side of it where the sample at ``u_ref`` lies. Each row depends on its own
+        line is touched from the region's side of it (where the span's point lies on the other side, the radius
+        is negative: no contact). Each row depends on its own
         values only: the four kinds (edge or fan, segment or vertex) are computed apart.
         """
         b = self.boundary
@@ -395,34 +398,31 @@ class _Sites:
         def terms(of_kind, row):
             on_edge = of_kind < 2
             if of_kind % 2 == 0:
-                return self._segment_terms(spans, span[row], segment[row], u_ref[row], on_edge)
+                return self._segment_terms(spans, span[row], segment[row], on_edge)
             return self._vertex_terms(spans, span[row], vertex[row], on_edge)
 
         with np.errstate(divide="ignore", invalid="ignore"):
             return _by_kind(kind, range(4), terms, 3)
 
-    def _segment_terms(self, spans, span, segment, u_ref, on_edge):
+    def _segment_terms(self, spans, span, segment, on_edge):
         """:meth:`radius_terms` of segment sites (their lines) seen from edge spans or from fan spans."""
         b = self.boundary
         # The gathered rows are the function's own copies: the differences are taken in place.
         offset, unit, normal = rows(spans.point, span), rows(spans.unit, span), rows(spans.normal, span)
         offset -= rows(b.start, segment)
-        across = left_normal(rows(b.unit, segment))
-        height = np.einsum("ij,ij->i", offset, across)
+        inward = rows(self.inward, segment)
+        # The span's point's height over the site's line, on the region's side of it.
+        height = np.einsum("ij,ij->i", offset, inward)
         del offset
         if on_edge:
-            # The signed height over the site's line changes by `slope` per unit of u.
-            slope = np.einsum("ij,ij->i", unit, across)
-            side = np.where(height + u_ref * slope < 0, -1.0, 1.0)
-            across *= side[:, None]
-            gap = np.subtract(normal, across, out=normal)
+            # The height changes by `slope` per unit of u.
+            slope = np.einsum("ij,ij->i", unit, inward)
+            gap = np.subtract(normal, inward, out=normal)
             closing = 0.5 * np.einsum("ij,ij->i", gap, gap)
-            return side * height / closing, side * slope / closing, np.zeros(len(span))
+            return height / closing, slope / closing, np.zeros(len(span))
         # Fan: 1/r = c + k.b(u) with b(u) = cos(u) unit + sin(u) normal.
-        side = np.where(height < 0, -1.0, 1.0)
-        distance = side * height
-        k = -(side / distance)[:, None] * across
-        return 1.0 / distance, np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
+        k = -(1.0 / height)[:, None] * inward
+        return 1.0 / height, np.einsum("ij,ij->i", k, unit), np.einsum("ij,ij->i", k, normal)
 
     def _vertex_terms(self, spans, span, vertex, on_edge):
         """:meth:`radius_terms` of vertex sites seen from edge spans or from fan spans."""
@@ -596,7 +596,7 @@ class _Tracer:
         self.traced = np.arange(len(closed)) % 2 == 0
         geometry = _geometry(boundary, sides)
         self.spans = _build_spans(boundary, geometry, self.traced)
-        self.sites = _Sites(boundary, geometry.vertex_kind)
+        self.sites = _Sites(boundary, geometry)
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
@@ -937,13 +937,11 @@ class _Tracer:
         it lies at (see :func:`_crossing`) and its radius (CRS units) where it is the one crossing in the
         interval (else NaN)."""
         span = intervals.span
-        middle = 0.5 * (intervals.u0 + intervals.u1)
         # Both sites' terms in one call (each row depends on its own values only: the same floats).
         terms = self.sites.radius_terms(
             self.spans,
             np.concatenate([span, span]),
             np.concatenate([intervals.site0, intervals.site1]),
-            np.concatenate([middle, middle]),
         )
         terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
         u, found, at_end, roots = _crossing(self.spans, intervals, terms0, terms1, counted=True)
@@ -1030,12 +1028,10 @@ class _Tracer:
         valid = valid.nonzero()[0]
         row_of, owner, k, candidate = row_of[valid], owner[valid], k[valid], candidate[valid]
         other_site = np.where(other_first, intervals.site0, intervals.site1)
-        middle = 0.5 * (intervals.u0 + intervals.u1)
         terms = self.sites.radius_terms(
             spans,
             np.concatenate([span[row], span[owner]]),
             np.concatenate([other_site[row], candidate]),
-            np.concatenate([middle[row], middle[owner]]),
         )
         u, radius, inside = self._pair_events(
             intervals.subset(owner), [x[row_of] for x in terms], [x[len(row) :] for x in terms]
@@ -1092,8 +1088,7 @@ class _Tracer:
             return np.arange(len(intervals.span)), event_u, event_trial, found, intervals
         predicted = np.bincount(owner, minlength=len(intervals.span)) > 0
         # Each site of a walk is the second site of one event and the first of the next: its terms serve both.
-        middle = 0.5 * (intervals.u0 + intervals.u1)
-        terms = self.sites.radius_terms(self.spans, intervals.span[owner], site, middle[owner])
+        terms = self.sites.radius_terms(self.spans, intervals.span[owner], site)
         pair = (owner[1:] == owner[:-1]).nonzero()[0]
         pair_owner = owner[pair]
         pieces = intervals.subset(pair_owner)
