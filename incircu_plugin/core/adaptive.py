@@ -386,8 +386,8 @@ class _Sites:
         On an edge ``r(u) = a2 u**2 + a1 u + a0`` (a vertex: the parabola's height over the edge; a segment's
         line: linear). On a fan ``1 / r(u) = a0 + a1 cos(u) + a2 sin(u)``. Returns ``(a0, a1, a2)``. A segment's
         line is touched from the region's side of it (where the span's point lies on the other side, the radius
-        is negative: no contact). Each row depends on its own
-        values only: the four kinds (edge or fan, segment or vertex) are computed apart.
+        is negative: no contact). Each row depends on its own values only: the four kinds (edge or fan, segment
+        or vertex) are computed apart.
         """
         b = self.boundary
         # Kinds 0, 1: a segment, a vertex seen from an edge; 2, 3: from a fan.
