@@ -285,18 +285,18 @@ def _straight_runs(kinds, boundary):
     return first, boundary.segment_end_position[last]
 
 
-def _site_sequence(boundary, kinds, line_of):
+def _site_sequence(boundary, kinds, line_of, chain_end):
     """The sites of every chain in their order along it, and each site's rank in that sequence.
 
     A chain's sequence is its start vertex, the first segment of each straight run with the reflex vertex
     that ends it, and its end vertex: every site a disk in the region can touch first. A convex vertex never
     is one: next to it the region is a wedge narrower than a half-plane, and a disk inside a wedge touching
     its apex is a point. A segment's rank is its run's; a convex (or straight) vertex's is -1. Both int32
-    (sites and ranks fit it, see :class:`.contacts.Boundary`).
+    (sites and ranks fit it, see :class:`.contacts.Boundary`). ``chain_end``: whether each vertex is the first
+    or last of its chain.
     """
     count = boundary.segment_count
     segment = np.flatnonzero(line_of == np.arange(count))
-    chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
     vertex = np.flatnonzero((kinds < 0) | chain_end)
     # Vertex ``g + chain`` starts segment ``g``: keys 2g (vertex), 2g + 1 (segment) follow the chains.
     keys = np.concatenate([2 * segment + 1, 2 * (vertex - boundary.vertex_chain[vertex])])
@@ -316,8 +316,10 @@ class _Sites:
         self.kinds = geometry.vertex_kind
         #: Inward normal of every segment: a disk in the region touches a segment from that side of its line.
         self.inward = geometry.normal
+        #: Whether each vertex is the first or last of its chain.
+        self.chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
         self.line_of, self.run_end_position = _straight_runs(self.kinds, boundary)
-        self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of)
+        self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of, self.chain_end)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
 
@@ -600,7 +602,6 @@ class _Tracer:
         self.boundary, self.closed, self.tolerance = boundary, closed, tolerance
         self.width, self.max_t, self.min_t = width, max_t, min_t
         self.split_vertex = _split_vertices(boundary, closed)
-        self.chain_end = _split_vertices(boundary, np.ones(len(closed), dtype=bool))
         self.own_ranks = _own_ranks(self.spans, self.sites, boundary)
         self.count = 0
         self.store = {}
@@ -1148,7 +1149,7 @@ class _Tracer:
         judged &= emit[intervals.left] & emit[intervals.right]
         judged &= np.abs(sites.rank[intervals.site0] - sites.rank[intervals.site1]) == 1
         for site in (intervals.site0, intervals.site1):
-            judged &= ~((site >= b.segment_count) & self.chain_end[np.clip(site - b.segment_count, 0, None)])
+            judged &= ~((site >= b.segment_count) & sites.chain_end[np.clip(site - b.segment_count, 0, None)])
         return judged.nonzero()[0]
 
     def _sag(self, span, site, start, end):
