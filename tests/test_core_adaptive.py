@@ -665,6 +665,42 @@ def test_the_axis_passes_under_a_needle_on_its_tips_parabola(half_width, spike, 
     assert abs(under_the_tip.y - 0.125) <= tolerance
 
 
+def _spiked_channel():
+    """A channel 1 wide split at its ends' middles, with a spike from the top bank down to 0.1 above the
+    bottom: the axis dips under the tip to 0.05, 0.45 below its straight course. Returns the polygon, the
+    split points and the width."""
+    polygon = Polygon([(0.0, 0.0), (10.0, 0.0), (10.0, 1.0), (5.01, 1.0), (5.0, 0.1), (4.99, 1.0), (0.0, 1.0)])
+    return polygon, [(0.0, 0.5), (10.0, 0.5)], 1.0
+
+
+def _u_bend():
+    """The annulus sector r = 40..60, 20 wide, whose axis is the half circle of radius 50."""
+    case = geometry_cases.annulus_sector()
+    return case.polygon, case.split_points, case.width
+
+
+@pytest.mark.parametrize(
+    "shape, widths",
+    # Tolerances in widths: their simplification share (half) exceeds the spike's dip (0.45 widths), and the
+    # sag of a quarter circle of radius 50 (14.6) exceeds the clearance to the inner bank (10, half a width).
+    [(_spiked_channel, [0.95, 1.5, 4.0]), (_u_bend, [1.5, 3.0, 10.0])],
+    ids=["spike", "u-bend"],
+)
+def test_a_tolerance_wider_than_the_channel_keeps_the_line_inside(shape, widths):
+    # A chord of the simplified line that would cut across the boundary (a bend's inner bank, a spike's tip)
+    # gets back the points it replaced, as few as keep it inside.
+    polygon, split_points, width = shape()
+    chain_a, chain_b = split_polygon(polygon, split_points)
+    oracle = MedialOracle(chain_a, chain_b, region=polygon)
+    default_count = len(polygon_centerline(polygon, split_points).line.coords)
+    for tolerance in np.array(widths) * width:
+        result = polygon_centerline(polygon, split_points, tolerance=tolerance)
+        outside = shapely.difference(result.line, polygon).length
+        assert outside <= 1e-9 * oracle.extent, f"tolerance {tolerance:g}: {outside:.3g} of the line outside"
+        assert_within_tolerance(result, chain_a, chain_b, polygon, tolerance, oracle=oracle)
+        assert len(result.line.coords) < default_count
+
+
 def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
     # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
     # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).

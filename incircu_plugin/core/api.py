@@ -166,10 +166,10 @@ def polygon_centerline_steps(
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
         steps = centerline_steps
-    result = yield from steps(
-        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
-    )
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+    result = yield from steps(
+        c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress, region=region
+    )
     result = _checked(result, region)
     values = {name: getattr(result, name) for name in _RESULT_FIELDS}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)

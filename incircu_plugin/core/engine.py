@@ -259,6 +259,62 @@ def _fewest_vertices(points, tolerance):
     return keep
 
 
+def _restore_leaving_chords(centre, distinct, keep, region, origin):
+    """``keep`` with points of ``distinct`` put back until no chord of the simplified line leaves ``region``.
+
+    A chord lies within the simplification tolerance of the axis points it replaces, so it can only leave the
+    region where the boundary comes that close to the axis: a bend tighter than the tolerance, a spike
+    reaching near the axis. The line between the first and the last axis point (without the stubs from the
+    split points, which end on the boundary up to rounding) is tested once; only when ``region`` does not
+    cover it are its chords tested, and each one that leaves is split at the point it replaced farthest from
+    it (a Douglas-Peucker step), round after round. Should the points put back make the line cross itself,
+    every distinct point is kept.
+
+    Parameters
+    ----------
+    centre : ndarray of shape (n, 2)
+        The ordered axis points, in the local frame of ``origin`` (CRS units).
+    distinct, keep : ndarray of shape (n,) of bool
+        The points before and after the simplification (both keep the two ends and their neighbours).
+    region : Polygon
+        CRS units, shifted by ``origin`` from the local frame (not modified: it may be the caller's).
+    origin : ndarray of shape (2,)
+        CRS units.
+
+    Returns
+    -------
+    ndarray of shape (n,) of bool
+    """
+    inner = np.flatnonzero(keep)[1:-1]
+    if shapely.covers(region, shapely.linestrings(rows(centre, inner) + origin)):
+        return keep
+    inside = shapely.force_2d(region)
+    shapely.prepare(inside)
+    keep = keep.copy()
+    chords = np.stack([inner[:-1], inner[1:]], axis=1)
+    while len(chords):
+        # Only chords that replaced points can be mended (the others join two neighbouring axis points).
+        count = np.cumsum(distinct)
+        chords = chords[count.take(chords[:, 1]) - count.take(chords[:, 0]) > 1]
+        ends = rows(centre, chords.reshape(-1)).reshape(-1, 2, 2) + origin
+        chords = chords[~shapely.covers(inside, shapely.linestrings(ends))]
+        split = [_farthest_between(centre, distinct, start, end) for start, end in chords]
+        keep[split] = True
+        chords = np.concatenate([np.stack([chords[:, 0], split], axis=1), np.stack([split, chords[:, 1]], axis=1)])
+    if not shapely.is_simple(shapely.linestrings(centre.compress(keep, axis=0))):
+        return distinct
+    return keep
+
+
+def _farthest_between(centre, distinct, start, end):
+    """Index of the point of ``distinct`` strictly between ``start`` and ``end`` farthest from the line through
+    ``centre[start]`` and ``centre[end]`` (there is one)."""
+    between = start + 1 + np.flatnonzero(distinct[start + 1 : end])
+    direction = centre[end] - centre[start]
+    offset = rows(centre, between) - centre[start]
+    return int(between[np.argmax(np.abs(offset[:, 0] * direction[1] - offset[:, 1] * direction[0]))])
+
+
 def _pieces(points, begin, end):
     """The line through ``points[begin : end + 1]`` as a list of linestrings of ``SIMPLIFY_PIECE`` segments (the
     last one shorter) that share their end vertices, each vertex with its index as its z."""
@@ -424,10 +480,13 @@ def centerline_from_chains(
     )
 
 
-def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None):
+def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None, region=None):
     """:func:`centerline_from_chains` as steps (see :mod:`.steps`): a generator that yields one
     :class:`.steps.TraceRequest` (adaptive sampling; none with fixed sampling), receives its axis points and
     returns the :class:`CenterlineResult`. Raises as :func:`centerline_from_chains` does.
+
+    ``region`` (a polygon, CRS units; None: the region between the chains) is where the adaptive line's
+    simplification keeps it: the polygon the chains come from, when their ring is not one (islands bridged).
     """
     return (
         yield from clean_chains_steps(
@@ -436,11 +495,12 @@ def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=
             samples_per_chain=samples_per_chain,
             tolerance=tolerance,
             progress=progress,
+            region=region,
         )
     )
 
 
-def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None):
+def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None, region=None):
     """:func:`centerline_steps` for chains :func:`.chains.clean_chain` returned at the chains' coincidence
     distance (those of :func:`.chains.split_polygon` and :func:`.chains.orient_bank_lines`): float arrays of
     shape (n, 2), CRS units, which are not checked or cleaned again.
@@ -467,7 +527,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         points = yield TraceRequest(
             frame.chains, sides, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
         )
-    centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance)
+    centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance, region)
     return CenterlineResult(
         line=LineString(centre + frame.origin),
         radii=radius,
@@ -511,16 +571,21 @@ class _Frame:
         return Boundary(self.chains)
 
 
-def _line_through(points, frame, simplification):
+def _line_through(points, frame, simplification, region=None):
     """The line's vertices, radii and feet (local frame) from the axis points, end to end.
 
     In open mode points outside the region between the chains are dropped; each junction is kept once;
-    ``simplification`` (CRS units, None: none) is the Douglas-Peucker tolerance.
+    ``simplification`` (CRS units, None: none) is the Douglas-Peucker tolerance; a chord of the simplified line
+    that leaves ``region`` (a polygon, CRS units; None: the region between the chains) gets back the points it
+    replaced (see :func:`_restore_leaving_chords`).
     """
+    origin = frame.origin
+    if region is None:
+        region, origin = Polygon(frame.ring), np.zeros(2)
     if not frame.closed:
-        region = Polygon(frame.ring)
-        shapely.prepare(region)
-        points = points.subset(shapely.intersects_xy(region, points.centre[:, 0], points.centre[:, 1]))
+        between = Polygon(frame.ring)
+        shapely.prepare(between)
+        points = points.subset(shapely.intersects_xy(between, points.centre[:, 0], points.centre[:, 1]))
     resolution = DISTINCT_TOLERANCE * frame.extent
     order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
     order = order[_first_of_each_centre(points.centre, order, resolution)]
@@ -530,9 +595,11 @@ def _line_through(points, frame, simplification):
     if simplification is not None and keep.sum() > 4:
         # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
         # meet the axis, so a straight channel keeps vertices that carry its width.
+        distinct = keep.copy()
         kept = np.flatnonzero(keep)
         inner = _fewest_vertices(rows(centre, kept[1:-1]), simplification)
         keep[kept[2:-2]] = inner[1:-1]
+        keep = _restore_leaving_chords(centre, distinct, keep, region, origin)
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
     # Both ends are always kept (see _distinct): the other values only for the kept points.
