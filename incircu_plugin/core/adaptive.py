@@ -51,7 +51,8 @@ no event, and the vertex's parabola is traced like any other. At a straight spli
 there touches the other chain too, whatever it touches first: it is a point of the axis. In general the disks
 between two samples first touch the boundary between the two samples' contacts, on the side away from the
 span: so where both contacts lie on the own chain, both before the span or both after it, every disk between
-touches its own chain first, and the interval is closed without a probe (:meth:`_Tracer._off_the_axis`).
+touches its own chain first, and the interval is closed without a probe (:meth:`_Tracer._off_the_axis`; in a
+closed pair only: two bank lines are joined nowhere, and the other one could lie wholly inside that stretch).
 
 *Settled at the event.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
 sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1`` that follow each other in its site
@@ -65,7 +66,9 @@ region at a reflex vertex (a convex corner's sample touches its neighbour at ``t
 at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0`` along the tangent of ``D0``
 (a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from the interval (the contacts
 move along ``B`` monotonically as the disk's foot moves along the span: two disks' spokes do not cross). Only
-at an end vertex of ``B`` does the own chain join it: excluded. Between two consecutive sites lie no other
+at an end vertex of ``B`` does the own chain join it: excluded. In open mode (two bank lines that share no end)
+``B`` has free ends, round which the contact can pass to the back of the next segment: closed pairs only. Between
+two consecutive sites lie no other
 site (at most a convex vertex, never a first contact), so every disk between touches one of the two first,
 the first one up to the event and the second one after it (the contact moves monotonically). The axis is then
 two known arcs, each a segment or a parabola's arc (an edge and a vertex, a fan and a segment), from each end
@@ -884,17 +887,20 @@ class _Tracer:
         return intervals.subset(event), intervals.subset(curve)
 
     def _off_the_axis(self, intervals, row):
-        """Which of the intervals ``row`` (both ends solved, touching two known different sites) hold no point of
-        the axis: both ends touch their own chain, on the same side of the span along it.
+        """Which of the intervals ``row`` (both ends solved, touching two known different sites) of closed pairs
+        of chains hold no point of the axis: both ends touch their own chain, on the same side of the span along
+        it.
 
         The disks between two samples first touch the boundary between the two contacts, on the side away from
         the span (module docstring); when both contacts lie on the own chain before the span, or both after it,
         that part of the boundary is the own chain between them, so every disk between touches its own chain
-        first: the samples there lie on side branches, and their events are not points of the axis.
+        first: the samples there lie on side branches, and their events are not points of the axis. (With two
+        bank lines the other chain, joined to the own one nowhere, could lie wholly inside that part: not
+        for open pairs.)
         """
         span, site0, site1 = intervals.span[row], intervals.site0[row], intervals.site1[row]
         own = self.spans.chain[span]
-        on_own = (self.sites.chain(site0) == own) & (self.sites.chain(site1) == own)
+        on_own = self.closed[own] & (self.sites.chain(site0) == own) & (self.sites.chain(site1) == own)
         start = self.spans.position[span]
         end = self.spans.position_at(span, self.spans.length[span])
         first0, last0 = self.sites.extent(site0)
@@ -1140,12 +1146,15 @@ class _Tracer:
         return settled
 
     def _beside_each_other(self, intervals, judged):
-        """Of the intervals ``judged``, those whose end samples are emitted (empty disks touching their sites)
-        and whose two sites follow each other in the other chain's site sequence, neither at one of its ends."""
+        """Of the intervals ``judged`` of closed pairs of chains, those whose end samples are emitted (empty disks
+        touching their sites) and whose two sites follow each other in the other chain's site sequence, neither
+        at one of its ends."""
         sites, b = self.sites, self.boundary
-        other = self.spans.chain[intervals.span] ^ 1
+        chain = self.spans.chain[intervals.span]
+        other = chain ^ 1
         emit = self.store["emit"]
-        judged = judged & (sites.chain(intervals.site0) == other) & (sites.chain(intervals.site1) == other)
+        judged = judged & self.closed[chain] & (sites.chain(intervals.site0) == other)
+        judged &= sites.chain(intervals.site1) == other
         judged &= emit[intervals.left] & emit[intervals.right]
         judged &= np.abs(sites.rank[intervals.site0] - sites.rank[intervals.site1]) == 1
         for site in (intervals.site0, intervals.site1):
