@@ -665,6 +665,23 @@ def test_the_axis_passes_under_a_needle_on_its_tips_parabola(half_width, spike, 
     assert abs(under_the_tip.y - 0.125) <= tolerance
 
 
+@pytest.mark.parametrize("reverse", [False, True])
+def test_a_split_point_in_a_concave_corner_traces_no_parabola_round_it(reverse):
+    # A channel 1 wide whose left end is a notch: its apex (a reflex vertex) is a split point, so it lies on
+    # both chains. The disks touching it there touch both chains only through it: no parabola round the apex
+    # is traced (it was, for the chain sampled first, dipping 0.14 below the axis), and the line runs straight
+    # from the apex along the axis y = 0.5, whichever split point comes first.
+    apex = (0.3, 0.5)
+    polygon = Polygon([(0.0, 0.0), (10.0, 0.0), (10.0, 1.0), (0.0, 1.0), apex])
+    split_points = [apex, (10.0, 0.5)][:: -1 if reverse else 1]
+    result = polygon_centerline(polygon, split_points)
+    coordinates = np.asarray(result.line.coords)
+    assert np.allclose(coordinates[[0, -1]], split_points, rtol=0, atol=1e-12)
+    assert np.abs(coordinates[:, 1] - 0.5).max() <= 1e-9
+    # The axis proper starts where the disk touching both banks reaches the apex: x = 0.3 + 0.5.
+    assert np.isclose(np.sort(coordinates[:, 0])[1], 0.8, rtol=0, atol=1e-9)
+
+
 def _spiked_channel():
     """A channel 1 wide split at its ends' middles, with a spike from the top bank down to 0.1 above the
     bottom: the axis dips under the tip to 0.05, 0.45 below its straight course. Returns the polygon, the

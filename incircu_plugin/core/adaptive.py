@@ -873,8 +873,10 @@ class _Tracer:
     def _open_and_curved(self, intervals):
         """The open intervals (:meth:`_is_open`) and the curved ones (:meth:`_is_curved`), each judged on the
         intervals that may be one only: both ends solved, and two known sites that differ (open) or one site
-        whose stations are not yet placed (curved). Each record is gathered once, by index, from the rows
-        judged (a mask would be scanned again for every column of the record)."""
+        whose stations are not yet placed (curved), not a split point (which lies on both chains: its disks touch
+        the other chain only through it, so no parabola round a split point in a concave corner is traced). Each
+        record is gathered once, by index, from the rows judged (a mask would be scanned again for every column
+        of the record)."""
         t_left, t_right = self.t[intervals.left], self.t[intervals.right]
         site0, site1 = intervals.site0, intervals.site1
         known = np.isfinite(t_left) & np.isfinite(t_right) & (site0 >= 0)
@@ -882,7 +884,7 @@ class _Tracer:
         event = (differ & known & (site1 >= 0)).nonzero()[0]
         event = event[~self._off_the_axis(intervals, event)]
         event = event[self._is_open(intervals, event, np.fmax(t_left[event], t_right[event]))]
-        curve = (~differ & known & ~intervals.verified).nonzero()[0]
+        curve = (~differ & known & ~intervals.verified & ~self._at_split_point(site0)).nonzero()[0]
         curve = curve[self._is_curved(intervals.span[curve], site0[curve])]
         return intervals.subset(event), intervals.subset(curve)
 
