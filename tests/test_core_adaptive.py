@@ -718,6 +718,18 @@ def test_a_tolerance_wider_than_the_channel_keeps_the_line_inside(shape, widths)
         assert len(result.line.coords) < default_count
 
 
+@pytest.mark.parametrize("tolerance", [30.0, 200.0])
+def test_two_bank_lines_keep_the_line_between_them_at_a_wide_tolerance(tolerance):
+    # A U-bend's banks (half circles of radii 40 and 60) as two lines (open mode): the chords are kept in the
+    # region between them.
+    angle = np.linspace(0.0, math.pi, 61)
+    inner, outer = (radius * np.stack([np.cos(angle), np.sin(angle)], axis=1) for radius in (40.0, 60.0))
+    result = lines_centerline(inner, outer, tolerance=tolerance)
+    between = Polygon(np.concatenate([inner, outer[::-1]]))
+    assert shapely.difference(result.line, between).length <= 1e-9 * 120.0
+    assert_within_tolerance(result, inner, outer, between, tolerance, near_ends=(inner[[0, -1]], 20.0))
+
+
 def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
     # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
     # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).
