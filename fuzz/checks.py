@@ -1,4 +1,5 @@
-"""What a result must satisfy: one simple, finite line inside its region, ending at its split points.
+"""What a result must satisfy: one simple, finite line inside its region (vertices and segments), ending at its
+split points.
 
 Tolerances are relative to the input's extent (the inputs span many orders of magnitude).
 """
@@ -47,6 +48,8 @@ def _line_problems(line, region, split_points, snap):
     outside = shapely.distance(region, shapely.points(coordinates))
     if outside.max() > tolerance:
         found.append(f"vertex {int(outside.argmax())} is {outside.max():.3g} outside the polygon")
+    elif _farthest_outside(line, region, tolerance) > tolerance:
+        found.append(f"a segment leaves the polygon by {_farthest_outside(line, region, tolerance):.3g}")
     if split_points is not None:
         gaps = np.hypot(*(coordinates[[0, -1]] - np.asarray(split_points, dtype=float)[:2]).T)
         if gaps.max() > snap + tolerance:
@@ -56,6 +59,16 @@ def _line_problems(line, region, split_points, snap):
         if region.geom_type == "Polygon" and len(region.interiors) == 0 and off.max() > tolerance:
             found.append(f"an automatic end is {off.max():.3g} off the boundary")
     return found
+
+
+def _farthest_outside(line, region, tolerance):
+    """Largest distance from ``region`` of the parts of ``line`` outside it (sampled at 200 points per part, and
+    at least every ``tolerance``); 0 when the line stays inside."""
+    outside = shapely.difference(line, region)
+    if outside.is_empty or outside.length <= tolerance:
+        return 0.0
+    points = shapely.get_coordinates(shapely.segmentize(outside, max(outside.length / 200.0, tolerance)))
+    return float(shapely.distance(region, shapely.points(points)).max())
 
 
 def _ends_problems(case, ends):
