@@ -579,9 +579,7 @@ def _line_through(points, frame, simplification, region=None):
     that leaves ``region`` (a polygon, CRS units; None: the region between the chains) gets back the points it
     replaced (see :func:`_restore_leaving_chords`).
     """
-    origin = frame.origin
-    if region is None:
-        region, origin = Polygon(frame.ring), np.zeros(2)
+    between = None
     if not frame.closed:
         between = Polygon(frame.ring)
         shapely.prepare(between)
@@ -599,7 +597,11 @@ def _line_through(points, frame, simplification, region=None):
         kept = np.flatnonzero(keep)
         inner = _fewest_vertices(rows(centre, kept[1:-1]), simplification)
         keep[kept[2:-2]] = inner[1:-1]
-        keep = _restore_leaving_chords(centre, distinct, keep, region, origin)
+        if region is None:
+            local = Polygon(frame.ring) if between is None else between
+            keep = _restore_leaving_chords(centre, distinct, keep, local, np.zeros(2))
+        else:
+            keep = _restore_leaving_chords(centre, distinct, keep, region, frame.origin)
     if keep.sum() < 2:
         raise IncirCuError("The chains are too close together or too short to carry a centerline.")
     # Both ends are always kept (see _distinct): the other values only for the kept points.
