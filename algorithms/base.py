@@ -190,8 +190,9 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             self.tr(
                 "Largest distance between the centerline and the exact medial axis, in layer units (metres for "
                 "a layer in degrees). The line keeps only the vertices it needs to stay that close, and every "
-                "vertex lies exactly on the axis. 0 uses 1/200 of the shape's typical width: the right choice "
-                "for maps.",
+                "vertex lies exactly on the axis; whatever the tolerance, the line stays inside the polygon (where "
+                "it would cut across a bend or a spike, it keeps the vertices it needs). 0 uses 1/200 of the "
+                "shape's typical width: the right choice for maps.",
             ),
         )
         self.add_length_parameter(
