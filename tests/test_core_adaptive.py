@@ -797,7 +797,7 @@ def test_intervals_settled_at_their_event_hold_the_axis(settled_intervals_checke
 
 def test_two_bank_lines_settle_no_interval_next_to_a_free_end(settled_intervals_checked):
     # Two bank lines are joined nowhere: between two consecutive sites of bank b the contact can pass round
-    # b's free end to the back of a wall (here its last-but-two segment, seen from both sides), which the
+    # b's free end to the back of a thin wall of b (seen from both sides), which the
     # argument for settling at the event excludes only where the chains share their ends. Found by an
     # adversarial campaign: the axis there lay 17.8 tolerances off the chord.
     ring = [(0.0, 1.0), (10.0, 1.0), (10.0, 0.0), (8.087, 0.0), (8.0197, 0.6949), (7.9524, 0.0), (3.3516, 0.0)]
