@@ -718,6 +718,24 @@ def test_a_tolerance_wider_than_the_channel_keeps_the_line_inside(shape, widths)
         assert len(result.line.coords) < default_count
 
 
+def test_a_leaving_chord_is_split_at_the_point_it_replaced_farthest_from_it(monkeypatch):
+    # An L-shaped corridor 2 wide; its axis points run along y = 1, then up x = 9. Kept: the two ends and their
+    # neighbours, so one chord from (1, 1) to (9, 9) cuts across the inner corner (8, 2). It is split at the
+    # corner point (9, 1), the replaced point farthest from it, and both halves stay inside.
+    region = shapely.union(box(0.0, 0.0, 10.0, 2.0), box(8.0, 0.0, 10.0, 10.0))
+    centre = np.array([(x, 1.0) for x in range(10)] + [(9.0, y) for y in range(2, 11)], dtype=float)
+    distinct = np.ones(len(centre), dtype=bool)
+    keep = np.zeros(len(centre), dtype=bool)
+    keep[[0, 1, -2, -1]] = True
+    restored = engine._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2))
+    assert np.flatnonzero(restored).tolist() == [0, 1, 9, len(centre) - 2, len(centre) - 1]
+    assert region.covers(LineString(centre[restored]))
+    assert keep.sum() == 4
+    # Should the points put back make the line cross itself, every distinct point is kept.
+    monkeypatch.setattr(shapely, "is_simple", lambda line: False)
+    assert engine._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2)).all()
+
+
 @pytest.mark.parametrize("tolerance", [30.0, 200.0])
 def test_two_bank_lines_keep_the_line_between_them_at_a_wide_tolerance(tolerance):
     # A U-bend's banks (half circles of radii 40 and 60) as two lines (open mode): the chords are kept in the
