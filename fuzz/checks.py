@@ -48,8 +48,8 @@ def _line_problems(line, region, split_points, snap):
     outside = shapely.distance(region, shapely.points(coordinates))
     if outside.max() > tolerance:
         found.append(f"vertex {int(outside.argmax())} is {outside.max():.3g} outside the polygon")
-    elif _farthest_outside(line, region, tolerance) > tolerance:
-        found.append(f"a segment leaves the polygon by {_farthest_outside(line, region, tolerance):.3g}")
+    elif (farthest := _farthest_outside(line, region, tolerance)) > tolerance:
+        found.append(f"a segment leaves the polygon by {farthest:.3g}")
     if split_points is not None:
         gaps = np.hypot(*(coordinates[[0, -1]] - np.asarray(split_points, dtype=float)[:2]).T)
         if gaps.max() > snap + tolerance:

@@ -14,6 +14,7 @@ import shapely
 from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygon
 
 from incircu_plugin import core
+from incircu_plugin.core.polyline import typical_width
 
 
 @dataclass
@@ -198,7 +199,8 @@ def valid_wide_tolerance(rng, small):
     the simplified line must still stay inside."""
     islands = int(rng.integers(0, 3))
     polygon, ends, (left, right) = random_channel(rng, small, islands=islands)
-    tolerance = {"tolerance": polygon.area / (0.5 * polygon.exterior.length) * 10.0 ** float(rng.uniform(-0.5, 1.0))}
+    width = typical_width(polygon.area, 0.5 * polygon.exterior.length)
+    tolerance = {"tolerance": width * 10.0 ** float(rng.uniform(-0.5, 1.0))}
     if islands or rng.random() < 0.6:
         return Case("valid wide tolerance", "polygon_centerline", (polygon, ends), tolerance, polygon, ends)
     banks = (LineString(left), LineString(right))

@@ -38,45 +38,44 @@ the junction; it is cut into both edges' intervals as a sample of each (their di
 would touch a segment beyond its interval (a short edge), or next to a chain's end, the rounds find the junction
 as an event.
 
-Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at
-a reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples
-that touch the same site: the disks between them lie in the region enclosed by the span, that site and the
-two (empty) end disks, which the boundary cannot enter without crossing one of them. That holds for the
-sites the samples really touch; a sample at a tie reports the lowest of its sites (a segment touched at its end
-vertex reports the segment), so two neighbours labelled alike may touch different sites (at a star's centre, a
-Y network's fork): a parabola's stations are therefore solved like any probe, and a station holds only where it
-touches the parabola's own site (else its interval is split there). A probe whose first
-contact is the vertex where its interval's two segments meet touches that vertex, not the segments: it is
-no event, and the vertex's parabola is traced like any other. At a straight split point the disk tangent
-there touches the other chain too, whatever it touches first: it is a point of the axis. In general the disks
-between two samples first touch the boundary between the two samples' contacts, on the side away from the
-span: so where both contacts lie on the own chain, both before the span or both after it, every disk between
-touches its own chain first, and the interval is closed without a probe (:meth:`_Tracer._off_the_axis`; in a
-closed pair only: two bank lines are joined nowhere, and the other one could lie wholly inside that stretch).
+Only the first chain of each pair is sampled. Every point of the axis touches that chain (on an edge, or at a
+reflex vertex), so its spans meet the whole axis; and no site hides between two neighbouring samples that touch
+the same site: the disks between them lie in the region enclosed by the span, that site and the two (empty) end
+disks, which the boundary cannot enter without crossing one of them. That holds for the sites the samples
+really touch; a sample at a tie reports the lowest of its sites (a segment touched at its end vertex reports
+the segment), so two neighbours labelled alike may touch different sites (at a star's centre, a Y network's
+fork): a parabola's stations are therefore solved like any probe, and a station holds only where it touches the
+parabola's own site (else its interval is split there). A probe whose first contact is the vertex where its
+interval's two segments meet touches that vertex, not the segments: it is no event, and the vertex's parabola
+is traced like any other. At a straight split point the disk tangent there touches the other chain too,
+whatever it touches first: it is a point of the axis. In general the disks between two samples first touch the
+boundary between the two samples' contacts, on the side away from the span: so where both contacts lie on the
+own chain, both before the span or both after it, every disk between touches its own chain first, and the
+interval is closed without a probe (:meth:`_Tracer._off_the_axis`; in a closed pair only: two bank lines are
+joined nowhere, and the other one could lie wholly inside that stretch).
 
 *Settled at the event.* An open interval whose end disks ``D0``, ``D1`` (emitted samples: empty, touching their
 sites first) touch two sites of the other chain ``B`` at ``q0``, ``q1`` that follow each other in its site
-sequence (neither an end vertex of ``B``), and whose event lies inside it, is closed without a probe when the
-axis between its samples provably lies within the tolerance of the chord of their centres
-(:meth:`_Tracer._settled_at_event`). Every disk of the span between them touches ``B`` first between ``q0``
-and ``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1`` enclose a region
-that the boundary enters only across them. It does not cross the empty disks, and ``B`` does not cross itself or
-the own chain. The own chain leaves the span's piece at its ends along the edge's line, or turned away from the
-region at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0`` and is not emitted), or,
-at a fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0`` along the tangent of ``D0``
-(a segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from the interval (the contacts
-move along ``B`` monotonically as the disk's foot moves along the span: two disks' spokes do not cross). Only
-at an end vertex of ``B`` does the own chain join it: excluded. In open mode (two bank lines that share no end)
-``B`` has free ends, round which the contact can pass to the back of the next segment: closed pairs only. Between
-two consecutive sites lie no other
-site (at most a convex vertex, never a first contact), so every disk between touches one of the two first,
-the first one up to the event and the second one after it (the contact moves monotonically). The axis is then
-two known arcs, each a segment or a parabola's arc (an edge and a vertex, a fan and a segment), from each end
-centre to the event's centre, computed in closed form. Each arc lies within its sag of its own chord (at most
-``d**2 / (8 h)`` for a parabola of focal height ``h``, ``d`` the chord's extent along its directrix), and every
-point of those two chords within the event's distance to the interval's chord (the distance to a segment is
-convex and zero at its ends): the interval closes when the sum is within the tolerance, the
-simplification's share of the engine's tolerance coming on top of it, as for a parabola's chords.
+sequence (neither an end vertex of ``B``), and whose event lies inside it, is closed without a probe when the axis
+between its samples provably lies within the tolerance of the chord of their centres
+(:meth:`_Tracer._settled_at_event`). Every disk of the span between them touches ``B`` first between ``q0`` and
+``q1``: the span's piece between the samples, ``D0``, ``D1`` and ``B`` from ``q0`` to ``q1`` enclose a region that
+the boundary enters only across them. It does not cross the empty disks, and ``B`` does not cross itself or the
+own chain. The own chain leaves the span's piece at its ends along the edge's line, or turned away from the region
+at a reflex vertex (a convex corner's sample touches its neighbour at ``t = 0`` and is not emitted), or, at a
+fan's vertex, along its two edges, outside the fan's disks. ``B`` leaves ``q0`` along the tangent of ``D0`` (a
+segment's interior) or, at a reflex vertex, outside ``D0`` on the side away from the interval (the contacts move
+along ``B`` monotonically as the disk's foot moves along the span: two disks' spokes do not cross). Only at an end
+vertex of ``B`` does the own chain join it: excluded. In open mode (two bank lines that share no end) ``B`` has
+free ends, round which the contact can pass to the back of the next segment: closed pairs only. Between two
+consecutive sites lie no other site (at most a convex vertex, never a first contact), so every disk between
+touches one of the two first, the first one up to the event and the second one after it (the contact moves
+monotonically). The axis is then two known arcs, each a segment or a parabola's arc (an edge and a vertex, a fan
+and a segment), from each end centre to the event's centre, computed in closed form. Each arc lies within its sag
+of its own chord (at most ``d**2 / (8 h)`` for a parabola of focal height ``h``, ``d`` the chord's extent along
+its directrix), and every point of those two chords within the event's distance to the interval's chord (the
+distance to a segment is convex and zero at its ends): the interval closes when the sum is within the tolerance,
+the simplification's share of the engine's tolerance coming on top of it, as for a parabola's chords.
 
 Several features are traced together (:func:`trace_together`) as pairs of chains ``2k``, ``2k + 1`` in one
 :class:`.contacts.Boundary`; contacts are only sought within a pair.
@@ -884,7 +883,8 @@ class _Tracer:
         event = (differ & known & (site1 >= 0)).nonzero()[0]
         event = event[~self._off_the_axis(intervals, event)]
         event = event[self._is_open(intervals, event, np.fmax(t_left[event], t_right[event]))]
-        curve = (~differ & known & ~intervals.verified & ~self._at_split_point(site0)).nonzero()[0]
+        curve = (~differ & known & ~intervals.verified).nonzero()[0]
+        curve = curve[~self._at_split_point(site0[curve])]
         curve = curve[self._is_curved(intervals.span[curve], site0[curve])]
         return intervals.subset(event), intervals.subset(curve)
 
