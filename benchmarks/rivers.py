@@ -144,7 +144,7 @@ def _draw_river(rng, vertices_per_bank):
     return polygon, ends, axis, width
 
 
-def river_layer(count=400, seed=0, boundary_vertices=290):
+def river_layer(count=400, seed=0, boundary_vertices=290, first=0):
     """The layer: ``count`` rivers from ``seed``, each with about ``boundary_vertices`` exterior vertices.
 
     Parameters
@@ -155,6 +155,9 @@ def river_layer(count=400, seed=0, boundary_vertices=290):
         Seed of every draw.
     boundary_vertices : int
         Exterior vertices of each river (both banks together; islands add 16 each).
+    first : int
+        Index of the first river: the rivers ``first`` to ``first + count - 1`` of a longer layer of ``seed``,
+        in their places (each river is drawn from its own index).
 
     Returns
     -------
@@ -163,7 +166,7 @@ def river_layer(count=400, seed=0, boundary_vertices=290):
     """
     vertices_per_bank = boundary_vertices // 2
     rivers = []
-    for index in range(count):
+    for index in range(first, first + count):
         rng = np.random.default_rng([seed, index])
         drawn = None
         while drawn is None:

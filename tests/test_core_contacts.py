@@ -502,6 +502,27 @@ def test_own_segments_never_count_even_when_rounding_puts_the_sample_inside_one(
     np.testing.assert_allclose(contact, [50.0, 20.0], atol=1e-9)
 
 
+@pytest.mark.parametrize("offset", [0.0, 1e3, 1e4, 1e5])
+def test_the_other_chains_copy_of_a_split_point_is_never_touched_from_the_own_end_segment(offset):
+    # A channel 10 wide split at the middle (0, 5) of its straight left cap, turned by 0.3 rad and moved by
+    # ``offset`` (a joint tracing's frame holds coordinates tens of extents from its origin). A sample ``hair``
+    # below the split point on the cap (chain a's first segment) grows its disk into the channel: it first
+    # touches the bottom bank, at t = 5 - hair. Chain b's copy of the split point lies on the sample's tangent
+    # line (the cap), so its contact t = hair**2 / (2 x) has a height x made of the rounding of the coordinates:
+    # at these offsets it came out anywhere from 1e-5 to 3, and a joint tracing lost features to it.
+    turn = np.array([[math.cos(0.3), -math.sin(0.3)], [math.sin(0.3), math.cos(0.3)]])
+    shift = offset * np.array([1.0, 0.7])
+    chain_a = np.array([[0.0, 5.0], [0.0, 0.0], [100.0, 0.0], [100.0, 5.0]]) @ turn.T + shift
+    chain_b = np.array([[0.0, 5.0], [0.0, 10.0], [100.0, 10.0], [100.0, 5.0]]) @ turn.T + shift
+    direction = turn @ np.array([1.0, 0.0])
+    cap = (chain_a[1] - chain_a[0]) / np.hypot(*(chain_a[1] - chain_a[0]))
+    split_site = Boundary([chain_a, chain_b]).segment_count + len(chain_a)  # chain b's first vertex
+    for hair in 10.0 ** np.arange(-12.0, -3.0, 0.25):
+        t, _, _, site = solved_alone(chain_a, chain_b, chain_a[0] + hair * cap, direction, (0, 0))
+        assert site != split_site, hair
+        assert t == pytest.approx(5.0 - hair, rel=1e-9), hair
+
+
 def test_a_convex_corners_disk_slides_past_the_far_end_of_a_short_own_segment():
     # A valley of half angle 75 degrees at the origin: the disk slides up the bisector with radius
     # t cos(15 deg), touching both edges t sin(15 deg) from the corner. The right edge is 1 long and is followed

@@ -30,6 +30,12 @@ GRAZING_TOLERANCE = 1e-10
 #: Relative distance (of the contact parameter) from the sample point within which a vertex is not touched.
 NEAR_VERTEX = 1e-7
 
+#: Height above a sample's tangent line, in units of the rounding of the coordinates (``eps`` times the largest
+#: coordinate of the boundary, see :attr:`Boundary.rounding`), below which a vertex is taken to lie on that line.
+#: Such a vertex is touched only through rounding, at any ``t``: the other chain's copy of a split point, seen
+#: from the own chain's end segment, which ends there.
+ON_LINE_ROUNDINGS = 16.0
+
 #: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
 #: ``TIE_TOLERANCE``, or on the other chain only.
 SKIPPED, TIED, CLEAR = 0, 1, 2
@@ -187,6 +193,9 @@ class Boundary:
         end /= self.length[:, None]
         self.unit = end
         self.mean_length = float(self.length.mean()) if count else 0.0
+        #: Height above a tangent line under which a vertex lies on it up to rounding (``ON_LINE_ROUNDINGS``
+        #: times the spacing of float64 at the boundary's largest coordinate), CRS units.
+        self.rounding = ON_LINE_ROUNDINGS * float(np.spacing(np.abs(self.vertex).max())) if len(self.vertex) else 0.0
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
@@ -478,7 +487,7 @@ def rotate(vectors, angles):
     return np.stack([cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1)
 
 
-def vertex_contact(offset, height, b_along, b_across, scale, slide):
+def vertex_contact(offset, height, b_along, b_across, scale, slide, on_line=0.0):
     """First contact ``t`` with a segment's vertex, inf when none.
 
     In the segment's frame the vertex lies ``offset`` along the segment from the sample point and ``-height``
@@ -488,7 +497,8 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     from an incident line of a convex corner. A vertex on that line is touched as the disks slide along it (a
     double root), so a factor that rounding pushed just below zero is taken as zero: the contact stays where it
     is under tiny perturbations of the input. A vertex closer to the sample point than ``NEAR_VERTEX`` times
-    its contact ``t`` is not touched (it lies on the tangent line up to rounding).
+    its contact ``t``, or at most ``on_line`` (CRS units) above the tangent line, is not touched (it lies on the
+    tangent line up to rounding).
     """
     x = b_along * offset - b_across * height
     squared = offset * offset + height * height
@@ -496,7 +506,7 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
         # No convex corner's disk (the samples of an edge or a fan): both factors are x, so t = |d|^2 / (2 x).
         with np.errstate(divide="ignore", invalid="ignore"):
             t = 0.5 * squared / x
-        return np.where((x > 0) & (squared > (NEAR_VERTEX * t) ** 2), t, np.inf)
+        return np.where((x > on_line) & (squared > (NEAR_VERTEX * t) ** 2), t, np.inf)
     y = np.abs(b_along * height + b_across * offset)
     near = x * scale - y * slide
     far = x * scale + y * slide
@@ -504,7 +514,7 @@ def vertex_contact(offset, height, b_along, b_across, scale, slide):
     with np.errstate(divide="ignore", invalid="ignore"):
         t = squared / (np.sqrt(np.maximum(near * far, 0.0)) + x)
     # A vertex a hair from the sample point, next to its tangent line, is touched only through rounding.
-    touched = (x > 0) & (near >= 0) & (squared > (NEAR_VERTEX * t) ** 2)
+    touched = (x > on_line) & (near >= 0) & (squared > (NEAR_VERTEX * t) ** 2)
     return np.where(touched, t, np.inf)
 
 
@@ -528,12 +538,18 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=T
     b_along = bx * ux + by * uy
     b_across = by * ux - bx * uy
 
-    t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide)
+    t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide, boundary.rounding)
     t_end = np.full(len(segment), np.inf)
     last = boundary.last_of_chain.take(segment).nonzero()[0]
     if len(last):
         t_end[last] = vertex_contact(
-            length[last] - along_p[last], height[last], b_along[last], b_across[last], scale[last], slide[last]
+            length[last] - along_p[last],
+            height[last],
+            b_along[last],
+            b_across[last],
+            scale[last],
+            slide[last],
+            boundary.rounding,
         )
 
     # With side = sign(height) (+1 at 0): distance = side * height, and bx + side * uy, by - side * ux.
