@@ -4,6 +4,8 @@ Expected values come from the shapes' construction (a rectangle's width, the num
 was given bad split points), never from a previous run.
 """
 
+import warnings
+
 import numpy as np
 import pytest
 import shapely
@@ -118,6 +120,27 @@ def test_split_polygon_inserts_a_split_point_inside_an_edge_as_a_vertex():
     for chain in (c1, c2):
         assert tuple(chain[0]) == (0.0, 3.0) and tuple(chain[-1]) == (100.0, 7.5)
     assert len(c1) + len(c2) - 2 == 4 + 2
+
+
+@pytest.mark.parametrize("ulps", [1, 2, 3])
+def test_a_split_point_that_rounds_onto_a_vertex_is_that_vertex(ulps):
+    # A 0.02 x 0.006 box turned by 0.4 rad, 1.5e5 from the origin (a fuzz input, seed 20261204 case 56841, was
+    # such a small star): there a coordinate's last place (2.9e-11 in x) is far above the coincidence distance
+    # (1e-12 of the extent). A split point ``ulps`` places below a corner in y projects onto the next edge a few
+    # 1e-14 from the corner, and that point rounds onto the corner: inserted, it made a zero-length segment (NaN
+    # directions, then an IndexError in the solver).
+    turn = np.array([[np.cos(0.4), -np.sin(0.4)], [np.sin(0.4), np.cos(0.4)]])
+    corners = np.array([[0.0, 0.0], [0.02, 0.0], [0.02, 0.006], [0.0, 0.006]]) @ turn.T + (148426.98, -723.87)
+    near_corner = corners[1] - (0.0, ulps * np.spacing(723.87))
+    far_end = (corners[3] + corners[0]) / 2.0
+    c1, c2 = split_polygon(shapely.Polygon(corners), [tuple(far_end), tuple(near_corner)])
+    for chain in (c1, c2):
+        assert np.min(np.hypot(*np.diff(chain, axis=0).T)) > 0.0
+        assert np.array_equal(chain[-1], corners[1])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = polygon_centerline(shapely.Polygon(corners), [tuple(far_end), tuple(near_corner)])
+    assert np.array_equal(result.line.coords[-1], corners[1])
 
 
 def test_split_checked_polygon_is_split_polygon_without_the_input_checks():

@@ -219,15 +219,24 @@ def _insert_at(ring, positions, along, tolerance):
 
     ``ring`` holds the ring's vertices (closed), ``positions`` their arc lengths; ``along`` are arc lengths
     farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point is
-    tested, and they are inserted in one pass. Returns the ring's vertices and their arc lengths.
+    tested, and they are inserted in one pass. A point whose coordinates round onto a vertex is not inserted
+    either. Returns the ring's vertices and their arc lengths.
     """
     along = np.sort(np.asarray(along, dtype=float))
     new = np.abs(positions[None, :-1] - along[:, None]).min(axis=1) > tolerance
     if not new.any():
         return ring, positions
     along = along[new]
-    index = np.searchsorted(positions, along, side="right").tolist()
+    index = np.searchsorted(positions, along, side="right")
     points = points_at(ring, positions, along)
+    # A small shape far from the origin: the coordinates' rounding can exceed ``tolerance``, and a point a hair
+    # from a vertex rounds onto it. That vertex is the split point (no zero-length segment).
+    apart = np.any(points != ring[index - 1], axis=1) & np.any(points != ring[index], axis=1)
+    if not apart.all():
+        along, index, points = along[apart], index[apart], points[apart]
+        if not len(along):
+            return ring, positions
+    index = index.tolist()
     # np.insert's result, from slices (a handful of points: np.insert's set-up costs more than the copy).
     bounds = [0, *index, len(ring)]
     ring_pieces, position_pieces = [ring[: bounds[1]]], [positions[: bounds[1]]]
