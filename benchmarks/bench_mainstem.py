@@ -8,7 +8,7 @@ river centerlines; ``tests/data/README.md``), projected with ``LocalProjection``
 share of the tool's line length within 3 local widths (at least 2 km) of the main stem, and the share of
 the main stem covered by the line within the same distance (``tests/support/real_rivers.py``); IncirCu has no split points: automatic ends with ``end_rule`` main stem
 or longest path, or the main stem given as ``guide``. Prints a Markdown table and writes it between the
-``mainstem`` markers of ``docs/benchmark.md`` (appended when the markers are missing).
+``mainstem`` markers of ``docs/benchmark.md`` (:func:`benchmarks.report.write_section`).
 """
 
 import multiprocessing
@@ -21,11 +21,10 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from benchmarks.peers import Case, as_lines, mean_width, run_label_centerlines, run_pygeoops
+from benchmarks.report import write_section
 from incircu_plugin.core import polygon_centerline
 from tests.support.real_rivers import TOLERANCE_WIDTHS, main_stem_cover, main_stem_share, real_rivers
 
-DOCS = ROOT / "docs" / "benchmark.md"
-BEGIN, END = "<!-- mainstem:begin -->", "<!-- mainstem:end -->"
 TIME_LIMIT = 300.0
 
 
@@ -110,17 +109,6 @@ def differences(rows, names):
     )
 
 
-def write_docs(markdown):
-    """Put ``markdown`` between the markers of ``docs/benchmark.md``."""
-    section = f"{BEGIN}\n{markdown}\n{END}"
-    page = DOCS.read_text(encoding="utf-8") if DOCS.exists() else ""
-    if BEGIN in page and END in page:
-        page = page[: page.index(BEGIN)] + section + page[page.index(END) + len(END) :]
-    else:
-        page = page.rstrip("\n") + "\n\n" + section + "\n"
-    DOCS.write_text(page, encoding="utf-8")
-
-
 def main():
     names = [river.name for river in real_rivers()]
     rows = []
@@ -145,7 +133,7 @@ w/10, w/100 of the mean width 2A/P), all in local metres.
 ends; a low share with a high cover, side branches left on the line.
 """
     print(markdown)
-    write_docs(markdown)
+    write_section("mainstem", markdown)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,22 @@
 """Markdown tables of the benchmark measurements (printed by the scripts and written to docs/benchmark.md)."""
 
+from pathlib import Path
+
+#: The benchmark page that ``write_docs.py`` writes and the later scripts add their sections to.
+BENCHMARK_PAGE = Path(__file__).resolve().parents[1] / "docs" / "benchmark.md"
+
+
+def write_section(name, markdown):
+    """Put ``markdown`` between the ``name`` markers of ``docs/benchmark.md`` (appended when they are missing)."""
+    begin, end = f"<!-- {name}:begin -->", f"<!-- {name}:end -->"
+    section = f"{begin}\n{markdown}\n{end}"
+    page = BENCHMARK_PAGE.read_text(encoding="utf-8") if BENCHMARK_PAGE.exists() else ""
+    if begin in page and end in page:
+        page = page[: page.index(begin)] + section + page[page.index(end) + len(end) :]
+    else:
+        page = page.rstrip("\n") + "\n\n" + section + "\n"
+    BENCHMARK_PAGE.write_text(page, encoding="utf-8")
+
 
 def _number(value, digits=3):
     if value is None:

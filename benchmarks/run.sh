@@ -12,8 +12,9 @@
 # polygons and the real outlines, issue 9), bench_core.py (10^6 vertices end to end, peak memory),
 # bench_paper.py (Fig. 4 and Table 1 of the paper), profile_incircu.py, and writes docs/benchmark.md,
 # docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/;
-# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page, and
-# bench_plugin.py prints the plugin's cost per feature against the core's.
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page,
+# bench_plugin.py prints the plugin's cost per feature against the core's, and bench_scale.py (50,000 rivers
+# through qgis_process: features written and skipped, time, peak memory) adds its section.
 #
 # Options: --quick (no GRASS, 40 rivers, smaller scaling range: a smoke run of a few minutes); --no-setup.
 set -euo pipefail
@@ -95,6 +96,13 @@ if [ -n "$QUICK" ]; then
   "$PYTHON" "$BENCH_DIR/bench_plugin.py" --count 500 --repeats 1
 else
   "$PYTHON" "$BENCH_DIR/bench_plugin.py"
+fi
+# A whole layer of 50,000 rivers through qgis_process: every feature written, time and peak memory; adds its
+# marked section to docs/benchmark.md.
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_scale.py" --count 1000
+else
+  "$PYTHON" "$BENCH_DIR/bench_scale.py"
 fi
 # Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
 # (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
