@@ -30,10 +30,10 @@ GRAZING_TOLERANCE = 1e-10
 #: Relative distance (of the contact parameter) from the sample point within which a vertex is not touched.
 NEAR_VERTEX = 1e-7
 
-#: Height above a sample's tangent line, in units of the rounding of the coordinates (``eps`` times the largest
-#: coordinate of the boundary, see :attr:`Boundary.rounding`), below which a vertex is taken to lie on that line.
-#: Such a vertex is touched only through rounding, at any ``t``: the other chain's copy of a split point, seen
-#: from the own chain's end segment, which ends there.
+#: Height above a sample's tangent line, in float64 spacings at the boundary's largest coordinate (see
+#: :attr:`Boundary.rounding`), up to which a vertex is taken to lie on that line. Such a vertex is touched only
+#: through rounding, at any ``t``: the other chain's copy of a split point, seen from the own chain's end segment
+#: (which ends there), in a joint tracing's frame far from the origin.
 ON_LINE_ROUNDINGS = 16.0
 
 #: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
