@@ -292,9 +292,10 @@ def _restore_leaving_chords(centre, distinct, keep, region, origin):
     shapely.prepare(inside)
     keep = keep.copy()
     chords = np.stack([inner[:-1], inner[1:]], axis=1)
+    # Distinct points up to each index: a chord replaced points where its ends' counts differ by more than 1.
+    count = np.cumsum(distinct)
     while len(chords):
         # Only chords that replaced points can be mended (the others join two neighbouring axis points).
-        count = np.cumsum(distinct)
         chords = chords[count.take(chords[:, 1]) - count.take(chords[:, 0]) > 1]
         ends = rows(centre, chords.reshape(-1)).reshape(-1, 2, 2) + origin
         chords = chords[~shapely.covers(inside, shapely.linestrings(ends))]
