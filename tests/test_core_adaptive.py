@@ -858,3 +858,31 @@ def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
     assert touched[curved].sum() > 5 and touched[~curved].sum() > 5
     assert np.all(deviation[touched] <= sag[touched] + 1e-9)
     assert np.all(deviation[touched & curved] >= 0.1 * sag[touched & curved])
+
+
+def test_a_junction_probed_for_another_pair_of_sites_is_a_vertex_of_the_line():
+    # Fuzz seed 20261205, input 1584 (coordinates rounded): both split points lie on the bottom edge, so one
+    # chain is a straight segment in line with the other chain's end segments. Where the axis's disks stop
+    # touching the right side and start touching the upper left side it has a corner (a junction with the
+    # branch between those two sides). The closed form placed a probe exactly there for another pair of sites,
+    # the bottom edge's extension beyond a split point and the upper left side: no event of that pair, so its
+    # tie went unemitted and the line cut the corner by 3.4 (tolerance 0.19), alone and in a batch.
+    polygon = Polygon(
+        [
+            (59.642, 52.202),
+            (35.129, 44.099),
+            (15.313, 47.171),
+            (18.706, 80.754),
+            (-45.117, 9.886),
+            (-58.933, -16.613),
+            (-62.479, -19.439),
+            (-45.172, -28.765),
+            (23.042, -56.158),
+        ]
+    )
+    low, high = np.array([-45.172, -28.765]), np.array([23.042, -56.158])
+    ends = [low + 0.48 * (high - low), low + 0.21 * (high - low)]
+    result = polygon_centerline(polygon, ends)
+    chain_a, chain_b = split_polygon(polygon, ends)
+    check_centerline(result, chain_a, chain_b, polygon, ends)
+    assert_within_tolerance(result, chain_a, chain_b, polygon, default_tolerance(chain_a, chain_b))

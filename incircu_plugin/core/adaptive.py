@@ -106,7 +106,8 @@ from .contacts import (
 EDGE, FAN = 0, 1
 
 #: Turn, radians, under which a vertex counts as straight (its two edges lie on one line; a split point
-#: inserted into an edge is straight to about the coordinates' rounding over the edge's length).
+#: inserted into an edge is straight to about the coordinates' rounding over the edge's length, which
+#: :func:`_straight_turns` allows for where it is more).
 STRAIGHT_TURN = 1e-9
 
 #: Relative agreement (of the radius) under which a probe's disk touches both sites of its interval: exactly
@@ -247,10 +248,20 @@ def _geometry(boundary, sides):
     turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
     turn = turn[joint]
     signed = side[joint] * turn
-    kind = np.where(signed > STRAIGHT_TURN, 1, np.where(signed < -STRAIGHT_TURN, -1, 0)).astype(np.int8)
+    straight = _straight_turns(boundary, joint, joint + 1)
+    kind = np.where(signed > straight, 1, np.where(signed < -straight, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
     vertex_kind[boundary.start_vertex(joint) + 1] = kind
     return _Geometry(normal, joint, turn, kind, vertex_kind)
+
+
+def _straight_turns(boundary, first, second):
+    """The turn, radians, under which the junction of segments ``first`` and ``second`` counts as straight:
+    ``STRAIGHT_TURN``, or the coordinates' rounding (:attr:`.contacts.Boundary.rounding`) over the shorter
+    segment where that is more (a split point inserted a hair from a corner: the hair's direction is known to
+    that angle only)."""
+    shorter = np.minimum(boundary.length.take(first), boundary.length.take(second))
+    return np.maximum(STRAIGHT_TURN, boundary.rounding / shorter)
 
 
 def _build_spans(boundary, geometry, traced):
@@ -1199,9 +1210,34 @@ class _Tracer:
             touching = np.abs(distance0 - self.t[end]) <= slack
             touching &= np.abs(distance1 - self.t[end]) <= slack
         settled[row] = touching
+        self._emit_junctions(intervals.subset(row[touching]), end[touching])
         intervals.site0[settled & (at_end == 0)] = intervals.site1[settled & (at_end == 0)]
         intervals.site1[settled & (at_end == 1)] = intervals.site0[settled & (at_end == 1)]
         return settled
+
+    def _emit_junctions(self, intervals, end):
+        """Emit the end samples ``end`` of ``intervals`` (their disks touch both sites of their interval, which is
+        settled at that end) that touch a site of each chain exactly (:meth:`_is_event`), not at a split point.
+
+        Such a disk touches both chains: its centre is a point of the axis, where a branch of the own chain joins
+        it. A probe placed there for another pair of sites (two of the own chain whose event falls on the same
+        disk: one of them touched only on its line's extension) is no event of its interval and, reported as a
+        tie, was not emitted; without it the line would cut the corner of the axis there.
+        """
+        if len(end) == 0:
+            return
+        chain = self.spans.chain[intervals.span]
+        other0 = self.sites.chain(intervals.site0) == chain ^ 1
+        one_each = other0 != (self.sites.chain(intervals.site1) == chain ^ 1)
+        candidate = (one_each & ~self.store["emit"][end]).nonzero()[0]
+        if len(candidate) == 0:
+            return
+        pairs, end = intervals.subset(candidate), end[candidate]
+        other_site = np.where(other0[candidate], pairs.site0, pairs.site1)
+        _, exact = self._is_event(pairs, self.centres(end), self.t[end], other_site, np.ones(len(end), dtype=bool))
+        junction = end[exact & ~self._at_split_point(other_site)]
+        self.store["emit"][junction] = True
+        self.store["other_site"][junction] = other_site[exact & ~self._at_split_point(other_site)]
 
     def _is_event(self, intervals, centre, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
@@ -1325,11 +1361,12 @@ def _initial_samples(spans, sites, closed, traced, boundary):
         own, other = edges[chain], edges[chain ^ 1]
         own_rank = np.searchsorted(edge, own)
         turn = np.einsum("ij,ij->i", outward * rows(boundary.unit, other), rows(spans.normal, own_rank))
-        convex = turn > STRAIGHT_TURN
+        straight_turn = _straight_turns(boundary, own, other)
+        convex = turn > straight_turn
         site[2 * own_rank[convex] + which] = other[convex]
         status[2 * own_rank[convex] + which] = CLEAR
         # The other chain's vertex at a straight split point (the other chain's end vertex of that side).
-        straight = np.abs(turn) <= STRAIGHT_TURN
+        straight = np.abs(turn) <= straight_turn
         vertex = other + (chain ^ 1) + which
         split_vertex[2 * own_rank[straight] + which] = boundary.segment_count + vertex[straight]
     return edge, site, status, split_vertex
