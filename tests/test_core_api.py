@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 import shapely
-from shapely.geometry import MultiPolygon, box
+from shapely.geometry import MultiPolygon, Polygon, box
 
 from incircu_plugin.core import (
     Cancelled,
@@ -17,10 +17,12 @@ from incircu_plugin.core import (
     OptionError,
     SplitPointError,
     centerline_from_chains,
+    centerlines_together,
     default_spacing,
     default_tolerance,
     multipolygon_centerlines,
     polygon_centerline,
+    polygon_centerline_steps,
     split_polygon,
 )
 from incircu_plugin.core.chains import split_checked_polygon
@@ -198,3 +200,57 @@ def test_progress_of_a_multipart_geometry_never_goes_back():
     assert all(outcome.error is None for outcome in outcomes)
     assert seen == sorted(seen) and seen[-1] == pytest.approx(1.0)
     assert sum(fraction <= 1.0 / 3.0 for fraction in seen) >= 1
+
+
+@pytest.mark.parametrize("turn", range(12))
+def test_a_split_point_a_hair_from_an_acute_tip_gives_the_line_of_the_tip(turn):
+    # Found by the batch fuzz (seed 20261205, input 11694, an automatic end 4e-9 from a star's tip). The 4e-9
+    # segment from the split point to the tip has a direction known to about the coordinates' rounding over
+    # its length (1e-4 rad here), far above the 1e-9 under which the split point counted as straight: rounding
+    # made it a convex corner now and then, the segment was sampled in its middle, its disk missed the tip's
+    # other side (closer than the smallest contact) and grew out of the polygon. Half of these kites, alone or
+    # traced together with a larger feature, raised "the computed centerline leaves the polygon".
+    angle = 0.37 * turn
+    rotation = np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
+    corners = np.array([[-500.0, -60.0], [500.0, 0.0], [-500.0, 60.0], [-520.0, 0.0]]) @ rotation.T
+    corners += np.array([137.0, -41.0]) * (turn % 5)
+    tip, far = corners[1], 0.5 * (corners[2] + corners[3])
+    hair = tip - 4e-9 * (tip - corners[0]) / np.hypot(*(tip - corners[0]))
+    kite = Polygon(corners)
+    at_tip = polygon_centerline(kite, [tip, far])
+    tolerance = default_tolerance(*split_polygon(kite, [tip, far]))
+    offset = corners[1] + 3000.0
+    slab = Polygon(np.array([[0.0, 0.0], [4000.0, 0.0], [4000.0, 300.0], [0.0, 300.0]]) + offset)
+    slab_ends = [offset + (0.0, 150.0), offset + (4000.0, 150.0)]
+    together = centerlines_together(
+        [polygon_centerline_steps(slab, slab_ends), polygon_centerline_steps(kite, [hair, far])]
+    )[1]
+    for result in (polygon_centerline(kite, [hair, far]), together):
+        assert not isinstance(result, Exception), result
+        assert result.line.hausdorff_distance(at_tip.line) <= tolerance + 1e-8
+
+
+@pytest.mark.parametrize("spacings", [1, 2, 4, 8])
+def test_a_split_point_a_few_spacings_from_a_tip_is_that_tip(spacings):
+    # A 4-unit kite 9e4 from the origin (the batch fuzz, seed 20261201 input 91 of its small sample, was such a
+    # star): a coordinate's float64 spacing there (1.5e-11) exceeds the coincidence distance (1e-12 of the
+    # extent). A split point a few spacings from the tip was inserted as a vertex: a segment with no direction,
+    # whose normal at the split point pointed anywhere. The tip is the split point.
+    angle = 0.3 + 0.2 * spacings
+    rotation = np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
+    corners = np.array([[-2.0, -0.3], [2.0, 0.0], [-2.0, 0.3], [-2.1, 0.0]]) @ rotation.T + (-91_900.0, -23_600.0)
+    tip, far = corners[1], 0.5 * (corners[2] + corners[3])
+    toward = (corners[0] - tip) / np.hypot(*(corners[0] - tip))
+    near_tip = tip + spacings * np.spacing(91_900.0) * toward
+    kite = Polygon(corners)
+    for chain in split_polygon(kite, [far, near_tip]):
+        assert np.array_equal(chain[-1], tip)
+    at_tip = polygon_centerline(kite, [far, tip])
+    tolerance = default_tolerance(*split_polygon(kite, [far, tip]))
+    offset = tip + 30.0
+    slab = Polygon(np.array([[0.0, 0.0], [40.0, 0.0], [40.0, 3.0], [0.0, 3.0]]) + offset)
+    steps = [polygon_centerline_steps(slab, [offset + (0.0, 1.5), offset + (40.0, 1.5)])]
+    together = centerlines_together([*steps, polygon_centerline_steps(kite, [far, near_tip])])[1]
+    for result in (polygon_centerline(kite, [far, near_tip]), together):
+        assert not isinstance(result, Exception), result
+        assert result.line.hausdorff_distance(at_tip.line) <= tolerance

@@ -18,7 +18,7 @@ from .errors import (
     SplitPointError,
     format_point,
 )
-from .polyline import as_coordinates, cumulative_lengths, nearest_entries, points_at
+from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, nearest_entries, points_at
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Relative tolerance (of the data's extent) under which two vertices are the same point.
@@ -219,8 +219,9 @@ def _insert_at(ring, positions, along, tolerance):
 
     ``ring`` holds the ring's vertices (closed), ``positions`` their arc lengths; ``along`` are arc lengths
     farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point is
-    tested, and they are inserted in one pass. A point whose coordinates round onto a vertex is not inserted
-    either. Returns the ring's vertices and their arc lengths.
+    tested, and they are inserted in one pass. A point within the coordinates' rounding of a vertex
+    (:func:`.polyline.coordinate_rounding`) is not inserted either. Returns the ring's vertices and their arc
+    lengths.
     """
     along = np.sort(np.asarray(along, dtype=float))
     new = np.abs(positions[None, :-1] - along[:, None]).min(axis=1) > tolerance
@@ -230,8 +231,10 @@ def _insert_at(ring, positions, along, tolerance):
     index = np.searchsorted(positions, along, side="right")
     points = points_at(ring, positions, along)
     # A small shape far from the origin: the coordinates' rounding can exceed ``tolerance``, and a point a hair
-    # from a vertex rounds onto it. That vertex is the split point (no zero-length segment).
-    apart = np.any(points != ring[index - 1], axis=1) & np.any(points != ring[index], axis=1)
+    # from a vertex rounds onto it, or next to it. That vertex is the split point: a segment a few spacings long
+    # would have no direction (its normal, where the line starts, would be anything).
+    rounding = coordinate_rounding(ring)
+    apart = (np.hypot(*(points - ring[index - 1]).T) > rounding) & (np.hypot(*(points - ring[index]).T) > rounding)
     if not apart.all():
         along, index, points = along[apart], index[apart], points[apart]
         if not len(along):

@@ -19,7 +19,7 @@ from functools import cache, partial
 import numpy as np
 
 from .errors import InvalidGeometryError
-from .polyline import cumulative_lengths
+from .polyline import coordinate_rounding, cumulative_lengths
 
 #: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
 ALONG_TOLERANCE = 1e-9
@@ -29,12 +29,6 @@ GRAZING_TOLERANCE = 1e-10
 
 #: Relative distance (of the contact parameter) from the sample point within which a vertex is not touched.
 NEAR_VERTEX = 1e-7
-
-#: Height above a sample's tangent line, in float64 spacings at the boundary's largest coordinate (see
-#: :attr:`Boundary.rounding`), up to which a vertex is taken to lie on that line. Such a vertex is touched only
-#: through rounding, at any ``t``: the other chain's copy of a split point, seen from the own chain's end segment
-#: (which ends there), in a joint tracing's frame far from the origin.
-ON_LINE_ROUNDINGS = 16.0
 
 #: Status of a sample: its first contact is on its own chain (or nowhere), on both chains within
 #: ``TIE_TOLERANCE``, or on the other chain only.
@@ -193,9 +187,11 @@ class Boundary:
         end /= self.length[:, None]
         self.unit = end
         self.mean_length = float(self.length.mean()) if count else 0.0
-        #: Height above a tangent line under which a vertex lies on it up to rounding (``ON_LINE_ROUNDINGS``
-        #: times the spacing of float64 at the boundary's largest coordinate), CRS units.
-        self.rounding = ON_LINE_ROUNDINGS * float(np.spacing(np.abs(self.vertex).max())) if len(self.vertex) else 0.0
+        #: Height above a sample's tangent line under which a vertex lies on it up to rounding
+        #: (:func:`.polyline.coordinate_rounding`), CRS units. Such a vertex is touched only through rounding, at
+        #: any ``t``: the other chain's copy of a split point, seen from the own chain's end segment (which ends
+        #: there), in a joint tracing's frame far from the origin.
+        self.rounding = coordinate_rounding(self.vertex)
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]

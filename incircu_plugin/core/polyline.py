@@ -482,6 +482,33 @@ def local_origin(*arrays):
     return 0.5 * (np.array([x.min(), y.min()]) + np.array([x.max(), y.max()]))
 
 
+#: Float64 spacings at a shape's largest coordinate under which two of its points, or a point and a line
+#: through its vertices, cannot be told apart: the rounding of its coordinates.
+ROUNDING_SPACINGS = 16.0
+
+
+def coordinate_rounding(points):
+    """Distance under which points of a shape are the same up to their coordinates' rounding.
+
+    Parameters
+    ----------
+    points : ndarray of shape (n, 2)
+        CRS units.
+
+    Returns
+    -------
+    float
+        ``ROUNDING_SPACINGS`` float64 spacings at the largest absolute coordinate, CRS units (0 without points).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> coordinate_rounding(np.array([[0.0, 1.0], [-2.0, 0.5]])) == 16 * np.spacing(2.0)
+    True
+    """
+    return ROUNDING_SPACINGS * float(np.spacing(np.abs(points).max())) if len(points) else 0.0
+
+
 def typical_width(area, length):
     """Return the typical width of an elongated region: its area divided by its length along the channel.
 
