@@ -42,7 +42,7 @@ help:
 	@echo "make deploy       copy the plugin into the QGIS profile $(PROFILE)"
 	@echo "make transup      update i18n/*.ts from the sources; make transcompile builds the .qm files"
 	@echo "make bench        benchmarks (bash benchmarks/run.sh)"
-	@echo "make fuzz N=100000  fuzz campaign of the core (fuzz/), prints the outcome table"
+	@echo "make fuzz N=100000  fuzz campaign of the core (fuzz/), alone and in batches, prints the outcome table"
 
 setup: system-packages $(VENV)/.installed $(QGIS_SITE)/.installed
 
@@ -123,8 +123,9 @@ bench: setup
 
 N ?= 100000
 SEED ?= 20261201
+TOGETHER ?= 16
 fuzz: $(VENV)/.installed
-	$(PYTHON) -m fuzz --count $(N) --seed $(SEED) --failures out/fuzz/failures-$(SEED).jsonl
+	$(PYTHON) -m fuzz --count $(N) --seed $(SEED) --together $(TOGETHER) --failures out/fuzz/failures-$(SEED).jsonl
 
 clean:
 	rm -rf $(DIST) out tests/artifacts

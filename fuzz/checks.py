@@ -1,11 +1,17 @@
 """What a result must satisfy: one simple, finite line inside its region (vertices and segments), ending at its
-split points.
+split points; and, traced together with other inputs in a batch, what it is alone up to the sampling tolerance.
 
 Tolerances are relative to the input's extent (the inputs span many orders of magnitude).
 """
 
+import math
+
 import numpy as np
 import shapely
+from shapely.geometry import Polygon
+
+from incircu_plugin.core.engine import DEFAULT_TOLERANCE_PER_WIDTH
+from incircu_plugin.core.polyline import typical_width
 
 #: Relative tolerance (of the input's extent) of the containment and end checks.
 RELATIVE_TOLERANCE = 1e-7
@@ -99,3 +105,112 @@ def _parts_problems(case, outcomes):
                 mine = mine if np.hypot(*(start - mine[0])) <= np.hypot(*(start - mine[1])) else mine[::-1]
         found += [f"part {outcome.part_index}: {p}" for p in _line_problems(outcome.result.line, part, mine, 0.0)]
     return found
+
+
+#: Relative difference (of the input's extent) allowed between a line's ends traced together and alone.
+BATCH_ROUNDING = 1e-9
+
+
+def together_problems(case, together, alone):
+    """Return a list of how ``together`` (the case's outcome in a batch of ``centerlines_together``) differs from
+    ``alone`` (the plain function's result or exception), and of what is wrong with it (:func:`problems`).
+
+    The two must be the same exception (type and message), or results whose lines lie within the case's
+    sampling tolerance of each other (a shared frame rounds differently, which can tip the simplification
+    between equally good axis vertices), whose ends and end radii agree to rounding, with every foot at its
+    vertex's radius and the same notes and ends; a multipart case part by part.
+    """
+    if case.function == "multipolygon_centerlines" and isinstance(together, list) and isinstance(alone, list):
+        if [outcome.part_index for outcome in together] != [outcome.part_index for outcome in alone]:
+            return ["together and alone give different parts"]
+        parts = list(getattr(case.args[0], "geoms", [case.args[0]]))
+        found = []
+        for one, other in zip(together, alone):
+            differences = _differences(
+                one.error or one.result, other.error or other.result, parts[one.part_index], case.kwargs
+            )
+            found += [f"part {one.part_index}: {difference}" for difference in differences]
+        return found + problems(case, together)
+    region = case.polygon if case.polygon is not None else case.args[0]
+    found = _differences(together, alone, region, case.kwargs)
+    return found if found or isinstance(together, Exception) else problems(case, together)
+
+
+def _outcome_name(outcome):
+    if isinstance(outcome, Exception):
+        return f"{type(outcome).__name__}: {outcome}"
+    return type(outcome).__name__
+
+
+def _differences(together, alone, region, options):
+    """How one outcome traced together differs from it alone (see :func:`together_problems`); ``region``: the
+    polygon or bank line the case gave, ``options``: its keywords."""
+    if isinstance(together, Exception) or isinstance(alone, Exception) or type(together) is not type(alone):
+        if type(together) is not type(alone) or str(together) != str(alone):
+            return [f"together {_outcome_name(together)}, alone {_outcome_name(alone)}"]
+        return []
+    coordinates = shapely.get_coordinates(alone.line)
+    extent = max(float(np.max(coordinates.max(axis=0) - coordinates.min(axis=0))), _extent(region))
+    rounding = BATCH_ROUNDING * extent + 16 * float(np.spacing(np.abs(coordinates).max()))
+    found = []
+    apart, tolerance = together.line.hausdorff_distance(alone.line), _axis_tolerance(region, options, alone.line)
+    if apart > tolerance + rounding and not ends_in_concave_corner(region, alone.line, rounding):
+        found.append(f"lines {apart:.3g} apart (tolerance {tolerance:.3g})")
+    for index, name in ((0, "start"), (-1, "end")):
+        gap = float(np.hypot(*np.subtract(together.line.coords[index], alone.line.coords[index])))
+        if gap > rounding or abs(together.radii[index] - alone.radii[index]) > rounding:
+            found.append(f"{name} {gap:.3g} apart, radii {together.radii[index]:.17g} and {alone.radii[index]:.17g}")
+    # A foot found through a vertex contact near a tangency keeps half the digits of its radius.
+    slack = rounding + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(together.radii, initial=0.0))
+    centres = shapely.get_coordinates(together.line)
+    for foot in (together.foot_a, together.foot_b):
+        off = float(np.max(np.abs(np.hypot(*(foot - centres).T) - together.radii), initial=0.0))
+        if off > slack:
+            found.append(f"a foot {off:.3g} off its disk")
+    for field in ("ends_found", "notes", "ends_from"):
+        if getattr(together, field, None) != getattr(alone, field, None):
+            found.append(f"{field} differ: {getattr(together, field, None)!r}, {getattr(alone, field, None)!r}")
+    return found
+
+
+def ends_in_concave_corner(region, line, rounding):
+    """Whether an end of ``line`` is a concave corner of ``region`` (a polygon's vertex where its inside angle
+    exceeds 180 degrees, to ``rounding``, CRS units).
+
+    A split point there lies on both chains, and round it the axis between them forks (README, *Reliability*):
+    which branch the line takes first is decided by rounding there, so a feature traced in a batch may take the
+    other one than alone. Such lines are not compared.
+    """
+    if not isinstance(region, Polygon):
+        return False
+    ends = shapely.get_coordinates(line)[[0, -1]]
+    for hole, ring in enumerate((region.exterior, *region.interiors)):
+        corners = shapely.get_coordinates(ring)[:-1]
+        if not ring.is_ccw:
+            corners = corners[::-1]
+        before, after = corners - np.roll(corners, 1, axis=0), np.roll(corners, -1, axis=0) - corners
+        # The exterior counter-clockwise: a right turn is concave (a hole's ring, taken the same way, the reverse).
+        turn = before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]
+        concave = corners[(turn > 0) if hole else (turn < 0)]
+        if len(concave) and np.min(np.hypot(*(concave[:, None] - ends[None]).T)) <= rounding:
+            return True
+    return False
+
+
+def _extent(geometry):
+    if geometry is None or not isinstance(geometry, shapely.Geometry) or geometry.is_empty:
+        return 0.0
+    bounds = np.asarray(geometry.bounds, dtype=float)
+    return float(np.max(bounds[2:] - bounds[:2]))
+
+
+def _axis_tolerance(region, options, line):
+    """Upper bound of the engine's tolerance on ``region`` with ``options``, CRS units: the tolerance given, else
+    the default of the region's outer ring (islands bridged into the chains only lengthen them, so only narrow
+    their typical width); a region that is no polygon is taken as the convex hull of ``line``."""
+    given = options.get("tolerance")
+    if isinstance(given, (int, float)) and math.isfinite(given) and given > 0:
+        return float(given)
+    outer = Polygon(region.exterior) if isinstance(region, Polygon) else shapely.convex_hull(line)
+    width = typical_width(outer.area, 0.5 * outer.length)
+    return DEFAULT_TOLERANCE_PER_WIDTH * (width if width > 0 else 1e-3 * _extent(region))

@@ -364,3 +364,18 @@ def make_case(seed, index, small=False):
 def call(case):
     """Run the case's function; return what it returns."""
     return getattr(core, case.function)(*case.args, **case.kwargs)
+
+
+#: The step-generator form of each function that has one (what a layer runs, traced together in batches).
+STEPS = {
+    "polygon_centerline": "polygon_centerline_steps",
+    "multipolygon_centerlines": "multipolygon_centerline_steps",
+    "lines_centerline": "lines_centerline_steps",
+}
+
+
+def steps(case):
+    """The case's call as a step generator for :func:`incircu_plugin.core.centerlines_together` (arguments are
+    bound here, so a misused keyword raises here as the plain call does), or None when its function has none."""
+    name = STEPS.get(case.function)
+    return None if name is None else getattr(core, name)(*case.args, **case.kwargs)

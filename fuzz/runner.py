@@ -3,6 +3,10 @@
 Outcomes: ``ok`` (a result that passes :mod:`fuzz.checks`), ``typed`` (an ``IncirCuError``), ``type error``
 (a ``TypeError`` on plain type misuse), ``untyped`` (any other exception), ``hang`` (over the time limit; the
 worker is killed and replaced), ``invalid`` (a result that fails the checks) and ``crash`` (the worker died).
+
+With ``--together K`` the inputs are also run as a layer is: each run of ``K`` consecutive inputs traced together
+in one batch (``centerlines_together`` on their step generators). An input whose outcome alone is ``ok``, ``typed``
+or ``type error`` but differs in the batch (:func:`fuzz.checks.together_problems`) is ``batch differs``.
 """
 
 import argparse
@@ -16,64 +20,125 @@ from collections import Counter, defaultdict
 from multiprocessing.connection import wait
 from pathlib import Path
 
-OUTCOMES = ("ok", "typed", "type error", "untyped", "hang", "invalid", "crash")
-FAILURES = ("untyped", "hang", "invalid", "crash")
+OUTCOMES = ("ok", "typed", "type error", "untyped", "hang", "invalid", "crash", "batch differs")
+FAILURES = ("untyped", "hang", "invalid", "crash", "batch differs")
+
+
+def _quietly(function, *args):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return function(*args)
 
 
 def run_case(seed, index, small):
     """Generate and run one input; return ``(category, outcome, detail, seconds)``."""
+    from .inputs import make_case
+
+    case = _quietly(make_case, seed, index, small)
+    return _run(case)[0]
+
+
+def _run(case):
+    """Run one input alone: ``((category, outcome, detail, seconds), value)``, the value being what the call
+    returned or raised."""
     from incircu_plugin.core import IncirCuError
 
     from .checks import problems
-    from .inputs import call, make_case
+    from .inputs import call
 
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        case = make_case(seed, index, small)
     started = time.perf_counter()
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            result = call(case)
+        result = _quietly(call, case)
     except IncirCuError as error:
-        return case.category, "typed", f"{type(error).__name__}: {error}", time.perf_counter() - started
+        return (case.category, "typed", f"{type(error).__name__}: {error}", time.perf_counter() - started), error
     except TypeError as error:
-        return case.category, "type error", str(error), time.perf_counter() - started
+        return (case.category, "type error", str(error), time.perf_counter() - started), error
     except Exception as error:  # noqa: BLE001 - an untyped exception is what the campaign looks for
         where = traceback.extract_tb(error.__traceback__)[-1]
         detail = f"{type(error).__name__}: {error} ({Path(where.filename).name}:{where.lineno} {where.name})"
-        return case.category, "untyped", detail, time.perf_counter() - started
+        return (case.category, "untyped", detail, time.perf_counter() - started), error
     seconds = time.perf_counter() - started
     found = problems(case, result)
-    return case.category, "invalid" if found else "ok", "; ".join(found), seconds
+    return (case.category, "invalid" if found else "ok", "; ".join(found), seconds), result
 
 
-def _worker(connection, seed, small):
+def run_batch(seed, first, size, small):
+    """Run inputs ``first .. first + size - 1`` alone, then those with a step form together in one batch.
+
+    Returns ``[(index, (category, outcome, detail, seconds)), ...]``: each input's outcome alone, or ``batch
+    differs`` where it was ``ok``, ``typed`` or ``type error`` alone and the batch gives something else.
+    """
+    from incircu_plugin.core import centerlines_together
+
+    from .checks import together_problems
+    from .inputs import make_case, steps
+
+    cases = [_quietly(make_case, seed, index, small) for index in range(first, first + size)]
+    runs = [_run(case) for case in cases]
+    outcomes = [outcome for outcome, _ in runs]
+    generators, members = [], []
+    for position, case in enumerate(cases):
+        try:
+            generator = steps(case)
+        except TypeError as error:
+            # Bound at the call, like the plain function: the batch sees the same error.
+            generators.append(None)
+            members.append((position, error))
+            continue
+        if generator is not None:
+            generators.append(generator)
+            members.append((position, None))
+    started = time.perf_counter()
+    together = iter(_quietly(centerlines_together, [g for g in generators if g is not None]))
+    seconds = time.perf_counter() - started
+    for position, bound_error in members:
+        category, kind, _, _ = outcomes[position]
+        value = bound_error if bound_error is not None else next(together)
+        if kind not in ("ok", "typed", "type error"):
+            continue
+        found = together_problems(cases[position], value, runs[position][1])
+        if found:
+            outcomes[position] = (category, "batch differs", "; ".join(found), seconds)
+    return list(zip(range(first, first + size), outcomes))
+
+
+def run_unit(seed, first, size, small):
+    """Run one unit of work (one input, or a batch of ``size`` when ``size > 1``):
+    ``[(index, (category, outcome, detail, seconds)), ...]``."""
+    if size == 1:
+        return [(first, run_case(seed, first, small))]
+    return run_batch(seed, first, size, small)
+
+
+def _worker(connection, seed, small, size):
     while True:
-        index = connection.recv()
-        if index is None:
+        first = connection.recv()
+        if first is None:
             return
-        connection.send((index, run_case(seed, index, small)))
+        connection.send((first, run_unit(seed, first, size, small)))
 
 
 class Pool:
-    """Worker processes fed one input at a time, so a hanging input can be killed alone."""
+    """Worker processes fed one unit at a time (an input, or a batch of ``size`` inputs), so a hanging unit can
+    be killed alone; its time limit is ``time_limit`` per input."""
 
-    def __init__(self, workers, seed, small, time_limit):
+    def __init__(self, workers, seed, small, time_limit, size=1):
         self.context = multiprocessing.get_context("fork")
-        self.seed, self.small, self.time_limit = seed, small, time_limit
+        self.seed, self.small, self.size, self.time_limit = seed, small, size, time_limit * size
         self.workers = [self._start() for _ in range(workers)]
 
     def _start(self):
         parent, child = self.context.Pipe()
-        process = self.context.Process(target=_worker, args=(child, self.seed, self.small), daemon=True)
+        arguments = (child, self.seed, self.small, self.size)
+        process = self.context.Process(target=_worker, args=arguments, daemon=True)
         process.start()
         child.close()
         return {"process": process, "connection": parent, "index": None, "deadline": None}
 
-    def run(self, indices, report):
-        """Run every index; call ``report(index, (category, outcome, detail, seconds))`` for each."""
-        pending = list(reversed(list(indices)))
+    def run(self, firsts, report):
+        """Run the unit starting at every index of ``firsts``; call ``report(index, (category, outcome, detail,
+        seconds))`` for each input of each."""
+        pending = list(reversed(list(firsts)))
         while pending or any(w["index"] is not None for w in self.workers):
             for slot, worker in enumerate(self.workers):
                 if worker["index"] is None and pending:
@@ -88,17 +153,23 @@ class Pool:
                     continue
                 if worker["connection"] in ready:
                     try:
-                        index, outcome = worker["connection"].recv()
+                        _, outcomes = worker["connection"].recv()
                     except (EOFError, OSError):
                         worker["process"].join(timeout=1)
-                        report(worker["index"], (None, "crash", f"exit code {worker['process'].exitcode}", None))
+                        self._report_unit(worker["index"], "crash", f"exit code {worker['process'].exitcode}", report)
                         self._replace(slot)
                         continue
                     worker["index"] = None
-                    report(index, outcome)
+                    for index, outcome in outcomes:
+                        report(index, outcome)
                 elif time.monotonic() >= worker["deadline"]:
-                    report(worker["index"], (None, "hang", f"over {self.time_limit:g} s", self.time_limit))
+                    self._report_unit(worker["index"], "hang", f"over {self.time_limit:g} s", report)
                     self._replace(slot)
+
+    def _report_unit(self, first, kind, detail, report):
+        """Report every input of the unit starting at ``first`` as ``kind`` (a crash or a hang of its worker)."""
+        for index in range(first, first + self.size):
+            report(index, (None, kind, detail, self.time_limit if kind == "hang" else None))
 
     def _replace(self, slot):
         old = self.workers[slot]
@@ -118,8 +189,10 @@ class Pool:
                 worker["process"].kill()
 
 
-def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, progress=None):
-    """Run inputs ``start .. start + count - 1``.
+def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, progress=None, together=1):
+    """Run inputs ``start .. start + count - 1`` (with ``together > 1``: in batches of that many, each input also
+    traced together with the others of its batch, see :func:`run_batch`; ``count`` is rounded up to whole
+    batches).
 
     Returns
     -------
@@ -153,9 +226,9 @@ def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, prog
         if progress and sum(sum(c.values()) for c in counts.values()) % progress == 0:
             print(f"  {sum(sum(c.values()) for c in counts.values())} inputs done", file=sys.stderr, flush=True)
 
-    pool = Pool(workers, seed, small, time_limit)
+    pool = Pool(workers, seed, small, time_limit, together)
     try:
-        pool.run(range(start, start + count), report)
+        pool.run(range(start, start + count, together), report)
     finally:
         pool.close()
     return counts, failures, typed
@@ -174,14 +247,20 @@ def table(counts):
     return "\n".join(lines)
 
 
-def show_case(seed, index, small):
-    """Print one input and run it here (a reproducer)."""
+def show_case(seed, index, small, together=1, start=0):
+    """Print one input and run it here (a reproducer): alone, or in its batch of ``together`` inputs (the
+    batches of a campaign from ``start``)."""
     from .inputs import make_case
 
     case = make_case(seed, index, small)
     print(f"# seed {seed}, index {index}{' (small)' if small else ''}: {case.category}")
     print(case.describe(limit=100_000))
-    print(run_case(seed, index, small))
+    if together == 1:
+        print(run_case(seed, index, small))
+        return
+    first = index - (index - start) % together
+    print(f"# in the batch of inputs {first} to {first + together - 1}")
+    print(dict(run_batch(seed, first, together, small))[index])
 
 
 def main(argv=None):
@@ -192,11 +271,16 @@ def main(argv=None):
     parser.add_argument("--small", action="store_true", help="short channels and milder thin boxes (test sample)")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--time-limit", type=float, default=10.0, help="seconds per input")
-    parser.add_argument("--case", type=int, help="print and run this one input in this process")
+    parser.add_argument(
+        "--together", type=int, default=1, metavar="K", help="also trace each run of K inputs together in one batch"
+    )
+    parser.add_argument(
+        "--case", type=int, help="print and run this one input in this process (with --together K: its batch)"
+    )
     parser.add_argument("--failures", type=Path, help="write the failures as JSON lines here")
     arguments = parser.parse_args(argv)
     if arguments.case is not None:
-        show_case(arguments.seed, arguments.case, arguments.small)
+        show_case(arguments.seed, arguments.case, arguments.small, arguments.together, arguments.start)
         return 0
     started = time.perf_counter()
     counts, failures, typed = campaign(
@@ -207,10 +291,13 @@ def main(argv=None):
         arguments.time_limit,
         arguments.start,
         progress=max(1000, arguments.count // 20),
+        together=arguments.together,
     )
     elapsed = time.perf_counter() - started
+    batches = f", in batches of {arguments.together}" if arguments.together > 1 else ""
     print(
-        f"{arguments.count} inputs, seed {arguments.seed}{', small' if arguments.small else ''}, "
+        f"{sum(sum(row.values()) for row in counts.values())} inputs, seed {arguments.seed}"
+        f"{', small' if arguments.small else ''}{batches}, "
         f"{arguments.workers} workers, {arguments.time_limit:g} s limit, {elapsed:.0f} s, "
         f"{time.strftime('%Y-%m-%d')}\n"
     )
@@ -225,6 +312,7 @@ def main(argv=None):
         print(
             "\nFailures (rerun one with: python -m fuzz --seed S --case I"
             + (" --small" if arguments.small else "")
+            + (f" --together {arguments.together} --start {arguments.start}" if arguments.together > 1 else "")
             + "):"
         )
         shown = Counter()
