@@ -886,3 +886,16 @@ def test_a_junction_probed_for_another_pair_of_sites_is_a_vertex_of_the_line():
     chain_a, chain_b = split_polygon(polygon, ends)
     check_centerline(result, chain_a, chain_b, polygon, ends)
     assert_within_tolerance(result, chain_a, chain_b, polygon, default_tolerance(chain_a, chain_b))
+
+
+def test_a_split_point_inside_an_edge_far_from_the_origin_is_straight():
+    # tests/data/star_far_from_origin.wkt: the automatic ends fall inside edges of a 0.065-wide star at x = -1.07e5,
+    # placed to that point's rounding (1.5e-11), so the edge's two pieces turn by about 1.6e-8 rad there. The
+    # shifted frame's own rounding is a million times finer: the split point read as a corner, and the line cut the
+    # axis's corner near it by 1.0e-3 (tolerance 1.6e-4). The input's rounding over the shorter piece counts.
+    polygon = shapely.from_wkt((geometry_cases.DATA_FOLDER / "star_far_from_origin.wkt").read_text())
+    result = polygon_centerline(polygon)
+    ends = shapely.get_coordinates(result.line)[[0, -1]]
+    chain_a, chain_b = split_polygon(polygon, ends)
+    check_centerline(result, chain_a, chain_b, polygon, ends)
+    assert_within_tolerance(result, chain_a, chain_b, polygon, default_tolerance(chain_a, chain_b))

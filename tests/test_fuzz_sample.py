@@ -18,7 +18,7 @@ from shapely.geometry import LineString, Polygon, box
 
 from fuzz.checks import ends_in_concave_corner, together_problems
 from fuzz.inputs import Case
-from incircu_plugin.core import SplitPointError, polygon_centerline
+from incircu_plugin.core import CenterlineError, SplitPointError, polygon_centerline
 from incircu_plugin.core.polyline import typical_width
 from tests.support.project import REPOSITORY
 
@@ -107,3 +107,15 @@ def test_a_line_ending_in_a_concave_corner_is_recognised(end, concave):
     line = LineString([(2.0, 2.0), end])
     assert ends_in_concave_corner(region, line, 1e-9) is concave
     assert ends_in_concave_corner(region, LineString([end, (2.0, 2.0)]), 1e-9) is concave
+
+
+def test_errors_that_differ_only_in_their_numbers_together_are_no_problem():
+    # Where a line leaves its polygon, and by how much, is found to rounding, which a batch's frame changes.
+    alone = CenterlineError(
+        "The computed centerline leaves the polygon at (-105839.7246, 21492.98771) (42.0838 outside)"
+    )
+    together = CenterlineError(
+        "The computed centerline leaves the polygon at (-105901.4311, 21429.91438) (42.094 outside)"
+    )
+    assert together_problems(CASE, together, alone) == []
+    assert together_problems(CASE, CenterlineError("The computed centerline crosses itself"), alone)

@@ -257,11 +257,12 @@ def _geometry(boundary, sides):
 
 def _straight_turns(boundary, first, second):
     """The turn, radians, under which the junction of segments ``first`` and ``second`` counts as straight:
-    ``STRAIGHT_TURN``, or the coordinates' rounding (:attr:`.contacts.Boundary.rounding`) over the shorter
-    segment where that is more (a split point inserted a hair from a corner: the hair's direction is known to
-    that angle only)."""
+    ``STRAIGHT_TURN``, or the rounding of the first one's chain (:attr:`.contacts.Boundary.chain_rounding`: the
+    coordinates' rounding where they come from) over the shorter segment where that is more (a split point
+    inserted a hair from a vertex, or into the edge of a small shape far from the origin: the pieces'
+    directions are known to that angle only)."""
     shorter = np.minimum(boundary.length.take(first), boundary.length.take(second))
-    return np.maximum(STRAIGHT_TURN, boundary.rounding / shorter)
+    return np.maximum(STRAIGHT_TURN, boundary.chain_rounding.take(boundary.chain_id.take(first)) / shorter)
 
 
 def _build_spans(boundary, geometry, traced):
@@ -1235,9 +1236,9 @@ class _Tracer:
         pairs, end = intervals.subset(candidate), end[candidate]
         other_site = np.where(other0[candidate], pairs.site0, pairs.site1)
         _, exact = self._is_event(pairs, self.centres(end), self.t[end], other_site, np.ones(len(end), dtype=bool))
-        junction = end[exact & ~self._at_split_point(other_site)]
-        self.store["emit"][junction] = True
-        self.store["other_site"][junction] = other_site[exact & ~self._at_split_point(other_site)]
+        junction = exact & ~self._at_split_point(other_site)
+        self.store["emit"][end[junction]] = True
+        self.store["other_site"][end[junction]] = other_site[junction]
 
     def _is_event(self, intervals, centre, t, site, found):
         """Probes whose disk touches both sites of their interval (their segments, not only their lines) first:
@@ -1463,7 +1464,7 @@ def trace_one(request, report):
     """
     return adaptive_axis_points(
         request.sides,
-        Boundary(request.chains),
+        Boundary(request.chains, np.full(2, request.rounding)),
         request.closed,
         request.tolerance,
         request.width,
@@ -1561,7 +1562,8 @@ def _trace_batch(requests, batch, report):
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
-    points, chain = _Tracer(sides, Boundary(chains), *per_chain).trace(report)
+    rounding = np.repeat([request.rounding for request in requests], 2)
+    points, chain = _Tracer(sides, Boundary(chains, rounding), *per_chain).trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
     feature = feature[order]

@@ -147,9 +147,13 @@ class Boundary:
     Per segment it holds one copy of each quantity (the x and y columns of ``start`` and ``unit`` are views;
     the bounding boxes are four contiguous columns, which the candidate search gathers from; end points are
     read from ``vertex``), coordinates and lengths in float64 (CRS units), chain ids and sites in int32.
+
+    ``input_rounding`` (per chain, CRS units; None: none) is the rounding of each chain's coordinates where they
+    come from (:func:`.polyline.coordinate_rounding` before the shift into this frame): a split point inserted
+    far from the origin is placed to that, not to this frame's rounding.
     """
 
-    def __init__(self, chains):
+    def __init__(self, chains, input_rounding=None):
         sizes = np.array([len(chain) - 1 for chain in chains])
         count = int(sizes.sum())
         if count + len(chains) > MAX_SEGMENTS:
@@ -192,6 +196,10 @@ class Boundary:
         #: any ``t``: the other chain's copy of a split point, seen from the own chain's end segment (which ends
         #: there), in a joint tracing's frame far from the origin.
         self.rounding = coordinate_rounding(self.vertex)
+        #: Per chain, the larger of ``rounding`` and the chain's ``input_rounding``, CRS units.
+        self.chain_rounding = np.full(len(chains), self.rounding)
+        if input_rounding is not None:
+            np.maximum(self.chain_rounding, input_rounding, out=self.chain_rounding)
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]

@@ -31,7 +31,7 @@ from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary, rows
 from .errors import IncirCuError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
-from .polyline import as_coordinates, cumulative_lengths, local_origin, typical_width
+from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
 from .steps import TraceRequest, reporter, run_alone
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
@@ -526,7 +526,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
             )
         sides = (frame.side, -frame.side)
         points = yield TraceRequest(
-            frame.chains, sides, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report
+            frame.chains, sides, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report, frame.rounding
         )
     centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance, region)
     return CenterlineResult(
@@ -545,6 +545,8 @@ class _Frame:
         ring = np.concatenate([chains[0], chains[1][::-1]])
         self.extent = extent_of(ring)
         self.coincidence = COINCIDENCE_TOLERANCE * self.extent
+        #: The rounding of the chains' coordinates as given, before the shift, CRS units.
+        self.rounding = coordinate_rounding(ring)
         self.origin = local_origin(ring)
         #: Both chains as one ring in the local frame (the region between them), CRS units (shifted in place:
         #: ``ring`` is a new array).

@@ -50,6 +50,9 @@ class TraceRequest:
         First trial radius, largest disk parameter searched, smallest contact, CRS units.
     report : callable
         ``report(fraction)`` for this request alone; raises :class:`Cancelled` to stop.
+    rounding : float
+        The rounding of the chains' coordinates in the input's frame (:func:`.polyline.coordinate_rounding`),
+        CRS units.
     """
 
     chains: list
@@ -60,6 +63,7 @@ class TraceRequest:
     max_t: float
     min_t: float
     report: Callable[[float], None]
+    rounding: float = 0.0
 
     @property
     def segment_count(self):
