@@ -30,20 +30,20 @@ def _quietly(function, *args):
         return function(*args)
 
 
-def run_case(seed, index, small):
+def run_case(seed, index, small, oracle=False):
     """Generate and run one input; return ``(category, outcome, detail, seconds)``."""
     from .inputs import make_case
 
     case = _quietly(make_case, seed, index, small)
-    return _run(case)[0]
+    return _run(case, oracle)[0]
 
 
-def _run(case):
+def _run(case, oracle=False):
     """Run one input alone: ``((category, outcome, detail, seconds), value)``, the value being what the call
-    returned or raised."""
+    returned or raised; with ``oracle``, a result is also checked against the exact axis."""
     from incircu_plugin.core import IncirCuError
 
-    from .checks import problems
+    from .checks import oracle_problems, problems
     from .inputs import call
 
     started = time.perf_counter()
@@ -59,10 +59,12 @@ def _run(case):
         return (case.category, "untyped", detail, time.perf_counter() - started), error
     seconds = time.perf_counter() - started
     found = problems(case, result)
+    if oracle and not found:
+        found = oracle_problems(case, result)
     return (case.category, "invalid" if found else "ok", "; ".join(found), seconds), result
 
 
-def run_batch(seed, first, size, small):
+def run_batch(seed, first, size, small, oracle=False):
     """Run inputs ``first .. first + size - 1`` alone, then those with a step form together in one batch.
 
     Returns ``[(index, (category, outcome, detail, seconds)), ...]``: each input's outcome alone, or ``batch
@@ -74,7 +76,7 @@ def run_batch(seed, first, size, small):
     from .inputs import make_case, steps
 
     cases = [_quietly(make_case, seed, index, small) for index in range(first, first + size)]
-    runs = [_run(case) for case in cases]
+    runs = [_run(case, oracle) for case in cases]
     outcomes = [outcome for outcome, _ in runs]
     generators, members = [], []
     for position, case in enumerate(cases):
@@ -102,34 +104,35 @@ def run_batch(seed, first, size, small):
     return list(zip(range(first, first + size), outcomes))
 
 
-def run_unit(seed, first, size, small):
+def run_unit(seed, first, size, small, oracle=False):
     """Run one unit of work (one input, or a batch of ``size`` when ``size > 1``):
     ``[(index, (category, outcome, detail, seconds)), ...]``."""
     if size == 1:
-        return [(first, run_case(seed, first, small))]
-    return run_batch(seed, first, size, small)
+        return [(first, run_case(seed, first, small, oracle))]
+    return run_batch(seed, first, size, small, oracle)
 
 
-def _worker(connection, seed, small, size):
+def _worker(connection, seed, small, size, oracle):
     while True:
         first = connection.recv()
         if first is None:
             return
-        connection.send((first, run_unit(seed, first, size, small)))
+        connection.send((first, run_unit(seed, first, size, small, oracle)))
 
 
 class Pool:
     """Worker processes fed one unit at a time (an input, or a batch of ``size`` inputs), so a hanging unit can
     be killed alone; its time limit is ``time_limit`` per input."""
 
-    def __init__(self, workers, seed, small, time_limit, size=1):
+    def __init__(self, workers, seed, small, time_limit, size=1, oracle=False):
         self.context = multiprocessing.get_context("fork")
         self.seed, self.small, self.size, self.time_limit = seed, small, size, time_limit * size
+        self.oracle = oracle
         self.workers = [self._start() for _ in range(workers)]
 
     def _start(self):
         parent, child = self.context.Pipe()
-        arguments = (child, self.seed, self.small, self.size)
+        arguments = (child, self.seed, self.small, self.size, self.oracle)
         process = self.context.Process(target=_worker, args=arguments, daemon=True)
         process.start()
         child.close()
@@ -189,10 +192,10 @@ class Pool:
                 worker["process"].kill()
 
 
-def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, progress=None, together=1):
+def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, progress=None, together=1, oracle=False):
     """Run inputs ``start .. start + count - 1`` (with ``together > 1``: in batches of that many, each input also
     traced together with the others of its batch, see :func:`run_batch`; ``count`` is rounded up to whole
-    batches).
+    batches; with ``oracle``, results are also checked against the exact axis, :func:`fuzz.checks.oracle_problems`).
 
     Returns
     -------
@@ -226,7 +229,7 @@ def campaign(count, seed, small=False, workers=2, time_limit=10.0, start=0, prog
         if progress and sum(sum(c.values()) for c in counts.values()) % progress == 0:
             print(f"  {sum(sum(c.values()) for c in counts.values())} inputs done", file=sys.stderr, flush=True)
 
-    pool = Pool(workers, seed, small, time_limit, together)
+    pool = Pool(workers, seed, small, time_limit, together, oracle)
     try:
         pool.run(range(start, start + count, together), report)
     finally:
@@ -247,7 +250,7 @@ def table(counts):
     return "\n".join(lines)
 
 
-def show_case(seed, index, small, together=1, start=0):
+def show_case(seed, index, small, together=1, start=0, oracle=False):
     """Print one input and run it here (a reproducer): alone, or in its batch of ``together`` inputs (the
     batches of a campaign from ``start``)."""
     from .inputs import make_case
@@ -256,11 +259,11 @@ def show_case(seed, index, small, together=1, start=0):
     print(f"# seed {seed}, index {index}{' (small)' if small else ''}: {case.category}")
     print(case.describe(limit=100_000))
     if together == 1:
-        print(run_case(seed, index, small))
+        print(run_case(seed, index, small, oracle))
         return
     first = index - (index - start) % together
     print(f"# in the batch of inputs {first} to {first + together - 1}")
-    print(dict(run_batch(seed, first, together, small))[index])
+    print(dict(run_batch(seed, first, together, small, oracle))[index])
 
 
 def main(argv=None):
@@ -275,12 +278,17 @@ def main(argv=None):
         "--together", type=int, default=1, metavar="K", help="also trace each run of K inputs together in one batch"
     )
     parser.add_argument(
+        "--oracle", action="store_true", help="also check each polygon's line against the exact medial axis (slower)"
+    )
+    parser.add_argument(
         "--case", type=int, help="print and run this one input in this process (with --together K: its batch)"
     )
     parser.add_argument("--failures", type=Path, help="write the failures as JSON lines here")
     arguments = parser.parse_args(argv)
     if arguments.case is not None:
-        show_case(arguments.seed, arguments.case, arguments.small, arguments.together, arguments.start)
+        show_case(
+            arguments.seed, arguments.case, arguments.small, arguments.together, arguments.start, arguments.oracle
+        )
         return 0
     started = time.perf_counter()
     counts, failures, typed = campaign(
@@ -292,9 +300,11 @@ def main(argv=None):
         arguments.start,
         progress=max(1000, arguments.count // 20),
         together=arguments.together,
+        oracle=arguments.oracle,
     )
     elapsed = time.perf_counter() - started
     batches = f", in batches of {arguments.together}" if arguments.together > 1 else ""
+    batches += ", against the oracle" if arguments.oracle else ""
     print(
         f"{sum(sum(row.values()) for row in counts.values())} inputs, seed {arguments.seed}"
         f"{', small' if arguments.small else ''}{batches}, "
@@ -313,6 +323,7 @@ def main(argv=None):
             "\nFailures (rerun one with: python -m fuzz --seed S --case I"
             + (" --small" if arguments.small else "")
             + (f" --together {arguments.together} --start {arguments.start}" if arguments.together > 1 else "")
+            + (" --oracle" if arguments.oracle else "")
             + "):"
         )
         shown = Counter()
