@@ -168,8 +168,9 @@ def _differences(together, alone, region, options):
         gap = float(np.hypot(*np.subtract(together.line.coords[index], alone.line.coords[index])))
         if gap > rounding or abs(together.radii[index] - alone.radii[index]) > rounding:
             found.append(f"{name} {gap:.3g} apart, radii {together.radii[index]:.17g} and {alone.radii[index]:.17g}")
-    # A foot found through a vertex contact near a tangency keeps half the digits of its radius.
-    slack = rounding + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(together.radii, initial=0.0))
+    # A foot found through a vertex contact near a tangency keeps half the digits of its radius; a foot of a small
+    # shape far from the origin is placed to a few roundings of its coordinates (16 spacings each).
+    slack = 4.0 * rounding + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(together.radii, initial=0.0))
     centres = shapely.get_coordinates(together.line)
     for foot in (together.foot_a, together.foot_b):
         off = float(np.max(np.abs(np.hypot(*(foot - centres).T) - together.radii), initial=0.0))

@@ -254,3 +254,20 @@ def test_a_split_point_a_few_spacings_from_a_tip_is_that_tip(spacings):
     for result in (polygon_centerline(kite, [far, near_tip]), together):
         assert not isinstance(result, Exception), result
         assert result.line.hausdorff_distance(at_tip.line) <= tolerance
+
+
+@pytest.mark.parametrize("spacings", [1, 3])
+def test_a_split_point_a_few_spacings_before_the_rings_first_vertex_is_that_vertex(spacings):
+    # Fuzz seed 20261208 input 97634: an automatic end a spacing short of the ring's closing vertex (its arc
+    # length a rounding below the perimeter) was taken as that vertex, then matched to the vertex before it:
+    # both chains came out one point long (an IndexError in the solver).
+    corners = np.array([[0.0, 0.0], [0.0024, 0.0007], [0.003, 0.003], [0.0012, 0.0047], [-0.0012, 0.004]])
+    corners += (-774.795, 1189.535)
+    kite = Polygon(corners)
+    toward = (corners[-1] - corners[0]) / np.hypot(*(corners[-1] - corners[0]))
+    near_first = corners[0] + spacings * np.spacing(1189.535) * toward
+    far = 0.5 * (corners[2] + corners[3])
+    for chain in split_polygon(kite, [near_first, far]):
+        assert len(chain) > 2 and np.array_equal(chain[0], corners[0])
+    result = polygon_centerline(kite, [near_first, far])
+    assert np.array_equal(result.line.coords[0], corners[0])

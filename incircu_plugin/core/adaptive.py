@@ -110,6 +110,11 @@ EDGE, FAN = 0, 1
 #: :func:`_straight_turns` allows for where it is more).
 STRAIGHT_TURN = 1e-9
 
+#: Largest turn that counts as straight through the rounding of a short segment (:func:`_straight_turns`): a
+#: split point is never placed closer to a vertex than that direction allows (``chains.SPLIT_SNAP_ROUNDINGS``),
+#: and a real corner next to a shorter segment of the input stays a corner.
+MAX_STRAIGHT_TURN = 1e-3
+
 #: Relative agreement (of the radius) under which a probe's disk touches both sites of its interval: exactly
 #: (the probe is emitted as the event even when rounding called it skipped), and loosely (its interval is
 #: resolved; near a nearly straight convex corner the junction is known to about 1e-7 only). The exact one is
@@ -260,9 +265,10 @@ def _straight_turns(boundary, first, second):
     ``STRAIGHT_TURN``, or the rounding of the first one's chain (:attr:`.contacts.Boundary.chain_rounding`: the
     coordinates' rounding where they come from) over the shorter segment where that is more (a split point
     inserted a hair from a vertex, or into the edge of a small shape far from the origin: the pieces'
-    directions are known to that angle only)."""
+    directions are known to that angle only), at most ``MAX_STRAIGHT_TURN``."""
     shorter = np.minimum(boundary.length.take(first), boundary.length.take(second))
-    return np.maximum(STRAIGHT_TURN, boundary.chain_rounding.take(boundary.chain_id.take(first)) / shorter)
+    uncertain = boundary.chain_rounding.take(boundary.chain_id.take(first)) / shorter
+    return np.clip(uncertain, STRAIGHT_TURN, MAX_STRAIGHT_TURN)
 
 
 def _build_spans(boundary, geometry, traced):

@@ -214,13 +214,19 @@ def validate_polygon(polygon):
     _Validated.remember(polygon)
 
 
+#: Coordinate roundings (:func:`.polyline.coordinate_rounding`) within which a split point next to a vertex is
+#: that vertex: the piece between would be too short for its direction to be known to a thousandth of a radian
+#: (at 1e6 from the origin, 1.9e-6 units).
+SPLIT_SNAP_ROUNDINGS = 1e3
+
+
 def _insert_at(ring, positions, along, tolerance):
     """Insert the points at arc lengths ``along`` into a closed ring, each unless a vertex is already there.
 
     ``ring`` holds the ring's vertices (closed), ``positions`` their arc lengths; ``along`` are arc lengths
     farther than ``tolerance`` apart (CRS units), so no inserted vertex stands where another point is
-    tested, and they are inserted in one pass. A point within the coordinates' rounding of a vertex
-    (:func:`.polyline.coordinate_rounding`) is not inserted either. Returns the ring's vertices and their arc
+    tested, and they are inserted in one pass. A point within ``SPLIT_SNAP_ROUNDINGS`` times the coordinates'
+    rounding of a vertex (:func:`.polyline.coordinate_rounding`) is not inserted either. Returns the ring's vertices and their arc
     lengths.
     """
     along = np.sort(np.asarray(along, dtype=float))
@@ -231,10 +237,10 @@ def _insert_at(ring, positions, along, tolerance):
     index = np.searchsorted(positions, along, side="right")
     points = points_at(ring, positions, along)
     # A small shape far from the origin: the coordinates' rounding can exceed ``tolerance``, and a point a hair
-    # from a vertex rounds onto it, or next to it. That vertex is the split point: a segment a few spacings long
-    # would have no direction (its normal, where the line starts, would be anything).
-    rounding = coordinate_rounding(ring)
-    apart = (np.hypot(*(points - ring[index - 1]).T) > rounding) & (np.hypot(*(points - ring[index]).T) > rounding)
+    # from a vertex rounds onto it, or next to it. That vertex is the split point: a piece a few roundings long
+    # would have no direction (its normal, where the line starts, would be anything; see SPLIT_SNAP_ROUNDINGS).
+    near = SPLIT_SNAP_ROUNDINGS * coordinate_rounding(ring)
+    apart = (np.hypot(*(points - ring[index - 1]).T) > near) & (np.hypot(*(points - ring[index]).T) > near)
     if not apart.all():
         along, index, points = along[apart], index[apart], points[apart]
         if not len(along):
@@ -349,9 +355,12 @@ def split_checked_polygon(polygon, points, tolerance=None):
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
         raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     ring, positions = _insert_at(ring, positions, along, coincidence)
-    start, end = nearest_entries(positions[:-1], along).tolist()
     loop = ring[:-1]
     n = len(loop)
+    # The closing vertex is the first one: a split point a rounding short of the perimeter is the ring's start.
+    start, end = (nearest_entries(positions, along) % n).tolist()
+    if start == end:
+        raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
     forward = np.arange(start, start + (end - start) % n + 1) % n
     backward = np.arange(start, start - (start - end) % n - 1, -1) % n
     return loop[forward], loop[backward]
