@@ -503,8 +503,8 @@ def coordinate_rounding(points):
     Examples
     --------
     >>> import numpy as np
-    >>> coordinate_rounding(np.array([[0.0, 1.0], [-2.0, 0.5]])) == 16 * np.spacing(2.0)
-    True
+    >>> float(coordinate_rounding(np.array([[0.0, 1.0], [-2.0, 0.5]])) / np.spacing(2.0))
+    16.0
     """
     return ROUNDING_SPACINGS * float(np.spacing(np.abs(points).max())) if len(points) else 0.0
 
