@@ -13,7 +13,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from incircu_plugin.core.engine import DEFAULT_TOLERANCE_PER_WIDTH
-from incircu_plugin.core.polyline import typical_width
+from incircu_plugin.core.polyline import coordinate_rounding, typical_width
 
 #: Relative tolerance (of the input's extent) of the containment and end checks.
 RELATIVE_TOLERANCE = 1e-7
@@ -117,9 +117,9 @@ def together_problems(case, together, alone):
     """Return a list of how ``together`` (the case's outcome in a batch of ``centerlines_together``) differs from
     ``alone`` (the plain function's result or exception), and of what is wrong with it (:func:`problems`).
 
-    The two must be the same exception (type and message), or results whose lines lie within the case's
-    sampling tolerance of each other (a shared frame rounds differently, which can tip the simplification
-    between equally good axis vertices), whose ends and end radii agree to rounding, with every foot at its
+    The two must be the same exception (type, and message up to its numbers), or results whose lines lie within
+    the case's sampling tolerance of each other (a shared frame rounds differently, which can tip the
+    simplification between equally good axis vertices), whose ends and end radii agree to rounding, with every foot at its
     vertex's radius and the same notes and ends; a multipart case part by part.
     """
     if case.function == "multipolygon_centerlines" and isinstance(together, list) and isinstance(alone, list):
@@ -159,7 +159,7 @@ def _differences(together, alone, region, options):
         return []
     coordinates = shapely.get_coordinates(alone.line)
     extent = max(float(np.max(coordinates.max(axis=0) - coordinates.min(axis=0))), _extent(region))
-    rounding = BATCH_ROUNDING * extent + 16 * float(np.spacing(np.abs(coordinates).max()))
+    rounding = BATCH_ROUNDING * extent + coordinate_rounding(coordinates)
     found = []
     apart, tolerance = together.line.hausdorff_distance(alone.line), _axis_tolerance(region, options, alone.line)
     if apart > tolerance + rounding and not ends_in_concave_corner(region, alone.line, rounding):
