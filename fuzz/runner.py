@@ -84,14 +84,13 @@ def run_batch(seed, first, size, small, oracle=False):
             generator = steps(case)
         except TypeError as error:
             # Bound at the call, like the plain function: the batch sees the same error.
-            generators.append(None)
             members.append((position, error))
             continue
         if generator is not None:
             generators.append(generator)
             members.append((position, None))
     started = time.perf_counter()
-    together = iter(_quietly(centerlines_together, [g for g in generators if g is not None]))
+    together = iter(_quietly(centerlines_together, generators))
     seconds = time.perf_counter() - started
     for position, bound_error in members:
         category, kind, _, _ = outcomes[position]
