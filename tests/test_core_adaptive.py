@@ -28,10 +28,12 @@ from shapely.geometry import LineString, Polygon, box
 from incircu_plugin.core import (
     IncirCuError,
     centerline_from_chains,
+    centerlines_together,
     default_tolerance,
     engine,
     lines_centerline,
     polygon_centerline,
+    polygon_centerline_steps,
     split_polygon,
 )
 from incircu_plugin.core.errors import OptionError
@@ -899,3 +901,26 @@ def test_a_split_point_inside_an_edge_far_from_the_origin_is_straight():
     chain_a, chain_b = split_polygon(polygon, ends)
     check_centerline(result, chain_a, chain_b, polygon, ends)
     assert_within_tolerance(result, chain_a, chain_b, polygon, default_tolerance(chain_a, chain_b))
+
+
+@pytest.mark.parametrize("vertex, other_end", [(167, (1, 2)), (91, (2, 2))])
+def test_a_split_point_a_hair_from_a_vertex_keeps_every_foot_on_its_disk(vertex, other_end):
+    # Fuzz seed 20261209 input 98318: a square densified every 209 units, its automatic end 7.3e-8 after a vertex
+    # inside an edge. The piece between the end and that vertex turns by about 1e-4 rad through rounding, and it
+    # gave its direction to the whole straight side it starts (the side's line): a foot 5,000 units along it was
+    # 0.03 off its disk alone and 0.2 off in a batch. A side's line is now its chord, joined across a straight
+    # split point with the other chain's. ``other_end``: the other split point, between two corners of the square.
+    angle = 0.82
+    rotation = np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
+    corners = np.array([[0.0, 0.0], [9000.0, 0.0], [9000.0, 9000.0], [0.0, 9000.0]]) @ rotation.T + (-6557.0, -132.0)
+    square = Polygon(corners).segmentize(214.0)
+    ring = shapely.get_coordinates(square.exterior)
+    toward = (ring[vertex + 1] - ring[vertex]) / np.hypot(*(ring[vertex + 1] - ring[vertex]))
+    split_points = [ring[vertex] + 7.3e-8 * toward, 0.5 * (corners[other_end[0]] + corners[other_end[1]])]
+    alone = polygon_centerline(square, split_points)
+    slab = box(30_000.0, 0.0, 30_040.0, 3.0)
+    steps = [polygon_centerline_steps(slab, [(30_000.0, 1.5), (30_040.0, 1.5)])]
+    batch = centerlines_together([*steps, polygon_centerline_steps(square, split_points)])[1]
+    chain_a, chain_b = split_polygon(square, split_points)
+    for result in (alone, batch):
+        check_centerline(result, chain_a, chain_b, square, [chain_a[0], chain_a[-1]])

@@ -227,37 +227,63 @@ class _Intervals(ArrayRecord):
 
 @dataclass(frozen=True)
 class _Geometry:
-    """Inward normals of every segment, and the turn and kind of every junction of two segments of a chain.
+    """The straight lines of the chains, and the turn and kind of every junction of two segments of a chain.
 
     Junction ``j`` joins segments ``joint[j]`` and ``joint[j] + 1``; its kind is +1 (convex), -1 (reflex) or 0
-    (straight). ``vertex_kind`` is the kind of every vertex, chain after chain (0 at the chains' ends).
+    (straight), and ``turn`` (radians) is the turn between the lines of its two segments. ``vertex_kind`` is
+    the kind of every vertex, chain after chain (0 at the chains' ends). Segments joined by straight junctions
+    form a straight run, one line (:func:`_straight_runs`): per segment, ``line_of`` is its run's first
+    segment, ``run_end_position`` the arc length at the run's end (CRS units), and ``unit`` and ``normal``
+    (inward) are the run's direction (:func:`_line_units`).
     """
 
+    unit: np.ndarray
     normal: np.ndarray
     joint: np.ndarray
     turn: np.ndarray
     kind: np.ndarray
     vertex_kind: np.ndarray
+    line_of: np.ndarray
+    run_end_position: np.ndarray
+
+
+def _turns(before, after):
+    """Turns, radians, from the unit vectors ``before`` to the unit vectors ``after`` (row by row)."""
+    return np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
 
 
 def _geometry(boundary, sides):
     """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
     side = np.asarray(sides, dtype=float)[boundary.chain_id]
-    unit = boundary.unit
-    normal = left_normal(unit)
-    normal *= side[:, None]
     joint = np.flatnonzero(~boundary.last_of_chain)
     # The turn at every pair of consecutive segments (views, no gathered copies), then at the junctions: each
     # row is computed from its own two units, so the same floats as from the junctions' rows alone.
-    before, after = unit[:-1], unit[1:]
-    turn = np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
-    turn = turn[joint]
+    turn = _turns(boundary.unit[:-1], boundary.unit[1:])[joint]
     signed = side[joint] * turn
     straight = _straight_turns(boundary, joint, joint + 1)
     kind = np.where(signed > straight, 1, np.where(signed < -straight, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
     vertex_kind[boundary.start_vertex(joint) + 1] = kind
-    return _Geometry(normal, joint, turn, kind, vertex_kind)
+    line_of, line_end, run_end_position = _straight_runs(vertex_kind, boundary)
+    unit = _line_units(boundary, line_of, line_end)
+    normal = left_normal(unit)
+    normal *= side[:, None]
+    turn = _turns(rows(unit, joint), rows(unit, joint + 1))
+    return _Geometry(unit, normal, joint, turn, kind, vertex_kind, line_of, run_end_position)
+
+
+def _line_units(boundary, line_of, line_end):
+    """Per segment, the unit direction of its straight run: the run's chord, from its first vertex to its last.
+
+    A short segment's own direction is known only to the coordinates' rounding over its length (a split point
+    a hair from a vertex: 1e-4 rad for 1e-8 of the extent); a run's chord is as good as the whole run, so the
+    feet on a run that starts with such a piece stay on their disks all along it.
+    """
+    first = np.flatnonzero(line_of == np.arange(boundary.segment_count))
+    chord = boundary.end(line_end[first])
+    chord -= rows(boundary.start, first)
+    chord /= np.hypot(chord[:, 0], chord[:, 1])[:, None]
+    return rows(chord, np.searchsorted(first, line_of))
 
 
 def _straight_turns(boundary, first, second):
@@ -294,15 +320,15 @@ def _build_spans(boundary, geometry, traced):
 
 
 def _straight_runs(kinds, boundary):
-    """For each segment, the first segment of its run of segments on one line (the site it stands for), and
-    the arc length at the run's end."""
+    """For each segment, the first and the last segment of its run of segments on one line (the first is the
+    site it stands for), and the arc length at the run's end (CRS units)."""
     # ``kinds`` holds the vertex kinds, chain after chain (as ``boundary.vertex``).
     segment = np.arange(boundary.segment_count, dtype=np.int32)
     starts_run = boundary.first_of_chain | (kinds[boundary.start_vertex(segment)] != 0)
     first = np.maximum.accumulate(np.where(starts_run, segment, 0))
     ends_run = np.append(starts_run[1:], True)
     last = np.minimum.accumulate(np.where(ends_run, segment, np.int32(boundary.segment_count))[::-1])[::-1]
-    return first, boundary.segment_end_position[last]
+    return first, last, boundary.segment_end_position[last]
 
 
 def _site_sequence(boundary, kinds, line_of, chain_end):
@@ -334,11 +360,12 @@ class _Sites:
     def __init__(self, boundary, geometry):
         self.boundary = boundary
         self.kinds = geometry.vertex_kind
-        #: Inward normal of every segment: a disk in the region touches a segment from that side of its line.
-        self.inward = geometry.normal
+        #: Direction and inward normal of every segment's line (its straight run's): a disk in the region
+        #: touches a segment from that side of its line.
+        self.unit, self.inward = geometry.unit, geometry.normal
         #: Whether each vertex is the first or last of its chain.
         self.chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
-        self.line_of, self.run_end_position = _straight_runs(self.kinds, boundary)
+        self.line_of, self.run_end_position = geometry.line_of, geometry.run_end_position
         self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of, self.chain_end)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
@@ -381,7 +408,7 @@ class _Sites:
         if len(row) == 0:
             return foot, position
         segment = np.maximum(site[row], 0)
-        start, unit = rows(b.start, segment), rows(b.unit, segment)
+        start, unit = rows(b.start, segment), rows(self.unit, segment)
         segment_position = b.segment_position[segment]
         run_length = self.run_end_position[segment] - segment_position
         along = np.clip(np.einsum("ij,ij->i", rows(centre, row) - start, unit), 0.0, run_length)
@@ -1096,7 +1123,7 @@ class _Tracer:
         point, _ = self.spans.points(span, u)
         centre = point + radius[:, None] * self.spans.directions(span, u)
         segment = np.clip(site, 0, b.segment_count - 1)
-        along = np.einsum("ij,ij->i", centre - rows(b.start, segment), rows(b.unit, segment))
+        along = np.einsum("ij,ij->i", centre - rows(b.start, segment), rows(self.sites.unit, segment))
         run_length = self.sites.run_end_position[segment] - b.segment_position[segment]
         with np.errstate(invalid="ignore"):
             return (site >= b.segment_count) | ((along >= 0.0) & (along <= run_length))
@@ -1191,7 +1218,7 @@ class _Tracer:
         on_fan, on_vertex = spans.kind[span] == FAN, site >= b.segment_count
         segment = np.clip(site, 0, b.segment_count - 1)
         vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
-        direction = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
+        direction = np.where(on_fan[:, None], rows(self.sites.unit, segment), rows(spans.unit, span))
         focus = np.where(on_fan[:, None], rows(spans.point, span), rows(b.vertex, vertex))
         anchor = np.where(on_fan[:, None], rows(b.start, segment), rows(spans.point, span))
         height = np.abs(np.einsum("ij,ij->i", focus - anchor, left_normal(direction)))
@@ -1301,7 +1328,7 @@ class _Tracer:
         point = rows(spans.point, span)
         focus = np.where(on_fan[:, None], point, rows(b.vertex, vertex))
         anchor = np.where(on_fan[:, None], rows(b.start, segment), point)
-        unit = np.where(on_fan[:, None], rows(b.unit, segment), rows(spans.unit, span))
+        unit = np.where(on_fan[:, None], rows(self.sites.unit, segment), rows(spans.unit, span))
         ends = np.stack([self.centres(intervals.left), self.centres(intervals.right)], axis=1)
         owner, centre, radius = _parabola_stations(focus, anchor, unit, ends, self.of(self.tolerance, intervals.span))
         offset = centre - rows(spans.point, span[owner])
@@ -1367,7 +1394,7 @@ def _initial_samples(spans, sites, closed, traced, boundary):
     for edges, which, outward in ((first_edge, 0, 1.0), (last_edge, 1, -1.0)):
         own, other = edges[chain], edges[chain ^ 1]
         own_rank = np.searchsorted(edge, own)
-        turn = np.einsum("ij,ij->i", outward * rows(boundary.unit, other), rows(spans.normal, own_rank))
+        turn = np.einsum("ij,ij->i", outward * rows(sites.unit, other), rows(spans.normal, own_rank))
         straight_turn = _straight_turns(boundary, own, other)
         convex = turn > straight_turn
         site[2 * own_rank[convex] + which] = other[convex]
