@@ -908,8 +908,8 @@ def test_a_split_point_a_hair_from_a_vertex_keeps_every_foot_on_its_disk(vertex,
     # Fuzz seed 20261209 input 98318: a square densified every 209 units, its automatic end 7.3e-8 after a vertex
     # inside an edge. The piece between the end and that vertex turns by about 1e-4 rad through rounding, and it
     # gave its direction to the whole straight side it starts (the side's line): a foot 5,000 units along it was
-    # 0.03 off its disk alone and 0.2 off in a batch. A side's line is now its chord, joined across a straight
-    # split point with the other chain's. ``other_end``: the other split point, between two corners of the square.
+    # 0.03 off its disk alone and 0.2 off in a batch. A straight run's line is now its chord. ``other_end``: the
+    # other split point, midway between two corners of the square (the same corner twice: that corner).
     angle = 0.82
     rotation = np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
     corners = np.array([[0.0, 0.0], [9000.0, 0.0], [9000.0, 9000.0], [0.0, 9000.0]]) @ rotation.T + (-6557.0, -132.0)

@@ -145,9 +145,10 @@ class _Spans:
     """The spans of the traced chains (see :class:`_Tracer`).
 
     A sample at parameter ``u`` of span ``i`` lies at ``point + u * unit`` with direction ``normal`` on an
-    edge, and at ``point`` with direction ``cos(u) * unit + sin(u) * normal`` on a fan; ``segment`` is the
-    edge's global segment (a fan's incoming segment), ``length`` the parameter range (an angle on a fan),
-    ``position`` the arc length of ``point`` along its chain.
+    edge (the segment's own direction, so the samples lie on it, and its straight run's inward normal, see
+    :func:`_line_units`), and at ``point`` with direction ``cos(u) * unit + sin(u) * normal`` on a fan;
+    ``segment`` is the edge's global segment (a fan's incoming segment), ``length`` the parameter range (an
+    angle on a fan), ``position`` the arc length of ``point`` along its chain.
     """
 
     kind: np.ndarray
@@ -279,11 +280,13 @@ def _line_units(boundary, line_of, line_end):
     a hair from a vertex: 1e-4 rad for 1e-8 of the extent); a run's chord is as good as the whole run, so the
     feet on a run that starts with such a piece stay on their disks all along it.
     """
-    first = np.flatnonzero(line_of == np.arange(boundary.segment_count))
+    starts = line_of == np.arange(boundary.segment_count)
+    first = np.flatnonzero(starts)
     chord = boundary.end(line_end[first])
     chord -= rows(boundary.start, first)
     chord /= np.hypot(chord[:, 0], chord[:, 1])[:, None]
-    return rows(chord, np.searchsorted(first, line_of))
+    # Each segment's run, counted along the chains.
+    return rows(chord, np.cumsum(starts) - 1)
 
 
 def _straight_turns(boundary, first, second):
