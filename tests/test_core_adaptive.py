@@ -924,3 +924,22 @@ def test_a_split_point_a_hair_from_a_vertex_keeps_every_foot_on_its_disk(vertex,
     chain_a, chain_b = split_polygon(square, split_points)
     for result in (alone, batch):
         check_centerline(result, chain_a, chain_b, square, [chain_a[0], chain_a[-1]])
+
+
+def test_a_probe_a_hair_from_an_acute_tip_is_skipped_not_grown_through_it():
+    # Fuzz seed 20261210 input 5755: a star whose automatic end lies 6e-9 past a tip of 27 degrees, on the tip's
+    # other edge. A probe 3e-10 from that tip touched the tip's other side at a radius below the smallest contact
+    # the solver sees (1e-12 of the extent): its disk grew through the tip to a contact 20.5 away, its centre 18
+    # outside the star, and the line was refused (``CenterlineError``) alone, though not in a batch.
+    star = shapely.from_wkt(
+        "POLYGON ((-995.1877662056351 -567.9216961814047, -974.7931273049137 -544.8442390012672, "
+        "-953.0407547133572 -566.6466382369018, -962.8290994357433 -537.4456342577979, "
+        "-933.0714815384549 -529.508726618743, -963.2544651615624 -523.3851798197768, "
+        "-955.2492198558306 -493.6458729450872, -975.6438587565519 -516.7233301252247, "
+        "-997.3962313481085 -494.9209308895901, -987.6078866257224 -524.1219348686939, "
+        "-1017.3655045230107 -532.0588425077489, -987.1825208999032 -538.1823893067151, "
+        "-995.1877662056351 -567.9216961814047))"
+    )
+    split_points = [(-995.1877662056351, -567.9216961814047), (-955.2492198599119, -493.64587294970545)]
+    chain_a, chain_b = split_polygon(star, split_points)
+    check_centerline(polygon_centerline(star, split_points), chain_a, chain_b, star, [chain_a[0], chain_a[-1]])

@@ -232,7 +232,8 @@ class _Geometry:
 
     Junction ``j`` joins segments ``joint[j]`` and ``joint[j] + 1``; its kind is +1 (convex), -1 (reflex) or 0
     (straight), and ``turn`` (radians) is the turn between the lines of its two segments. ``vertex_kind`` is
-    the kind of every vertex, chain after chain (0 at the chains' ends). Segments joined by straight junctions
+    the kind of every vertex, chain after chain (0 at the chains' ends), and ``vertex_turn`` its turn towards the
+    region (radians, positive at a convex vertex, 0 at the chains' ends). Segments joined by straight junctions
     form a straight run, one line (:func:`_straight_runs`): per segment, ``line_of`` is its run's first
     segment, ``run_end_position`` the arc length at the run's end (CRS units), and ``unit`` and ``normal``
     (inward) are the run's direction (:func:`_line_units`).
@@ -244,6 +245,7 @@ class _Geometry:
     turn: np.ndarray
     kind: np.ndarray
     vertex_kind: np.ndarray
+    vertex_turn: np.ndarray
     line_of: np.ndarray
     run_end_position: np.ndarray
 
@@ -265,12 +267,14 @@ def _geometry(boundary, sides):
     kind = np.where(signed > straight, 1, np.where(signed < -straight, -1, 0)).astype(np.int8)
     vertex_kind = np.zeros(len(boundary.vertex), dtype=kind.dtype)
     vertex_kind[boundary.start_vertex(joint) + 1] = kind
+    vertex_turn = np.zeros(len(boundary.vertex))
+    vertex_turn[boundary.start_vertex(joint) + 1] = signed
     line_of, line_end, run_end_position = _straight_runs(vertex_kind, boundary)
     unit = _line_units(boundary, line_of, line_end)
     normal = left_normal(unit)
     normal *= side[:, None]
     turn = _turns(rows(unit, joint), rows(unit, joint + 1))
-    return _Geometry(unit, normal, joint, turn, kind, vertex_kind, line_of, run_end_position)
+    return _Geometry(unit, normal, joint, turn, kind, vertex_kind, vertex_turn, line_of, run_end_position)
 
 
 def _line_units(boundary, line_of, line_end):
@@ -362,7 +366,7 @@ class _Sites:
 
     def __init__(self, boundary, geometry):
         self.boundary = boundary
-        self.kinds = geometry.vertex_kind
+        self.kinds, self.turns = geometry.vertex_kind, geometry.vertex_turn
         #: Direction and inward normal of every segment's line (its straight run's): a disk in the region
         #: touches a segment from that side of its line.
         self.unit, self.inward = geometry.unit, geometry.normal
@@ -762,7 +766,39 @@ class _Tracer:
                 probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
             put_rows(centre, chunk, probes.point + t[chunk, None] * probes.direction)
+        row, corner_segment, reach = self._beside_convex_corners(span, u)
+        if len(row):
+            t[row], status[row], site[row] = reach, SKIPPED, corner_segment
+            point, _ = self.spans.points(span[row], u[row])
+            put_rows(centre, row, point + reach[:, None] * self.spans.directions(span[row], u[row]))
         return t, status, self.sites.canonical(site), centre
+
+    def _beside_convex_corners(self, span, u):
+        """The probes (at parameters ``u`` of spans ``span``) so close to a convex corner at an end of their edge
+        that the disk touches the corner's other segment below the smallest contact the solver sees (``min_t``):
+        their rows, that segment and the radius of that contact (CRS units).
+
+        Such a disk crosses its own chain at once (it is skipped, like a sample at the corner); the solver, not
+        seeing that contact, would let it grow through the corner to a far one (a probe 3e-10 from a star's tip
+        of 27 degrees: a centre 18 units outside the polygon, fuzz seed 20261210 input 5755).
+        """
+        spans, b, sites = self.spans, self.boundary, self.sites
+        segment = spans.segment[span]
+        edge = spans.kind[span] == EDGE
+        min_t = self.of(self.min_t, span)
+        found = []
+        for vertex, beside, distance, inner in (
+            (b.start_vertex(segment) + 1, segment + 1, spans.length[span] - u, ~b.last_of_chain[segment]),
+            (b.start_vertex(segment), segment - 1, u, ~b.first_of_chain[segment]),
+        ):
+            turn = sites.turns[vertex]
+            corner = (edge & inner & (sites.kinds[vertex] > 0)).nonzero()[0]
+            # A disk tangent at ``distance`` from a corner of interior angle pi - turn touches its other line at
+            # radius distance * tan((pi - turn) / 2).
+            reach = np.maximum(distance[corner], 0.0) * np.tan(0.5 * (np.pi - turn[corner]))
+            blind = reach <= min_t[corner]
+            found.append((corner[blind], beside[corner[blind]], reach[blind]))
+        return tuple(np.concatenate(parts) for parts in zip(*found))
 
     def _initial(self, report):
         """Solve the samples at both ends of every traced edge, in the middle of an edge between two convex
