@@ -766,22 +766,29 @@ class _Tracer:
                 probes, np.arange(len(chunk)), self.boundary, trial[chunk], self.max_t, self.min_t
             )
             put_rows(centre, chunk, probes.point + t[chunk, None] * probes.direction)
-        row, corner_segment, reach = self._beside_convex_corners(span, u)
-        if len(row):
-            t[row], status[row], site[row] = reach, SKIPPED, corner_segment
-            point, _ = self.spans.points(span[row], u[row])
-            put_rows(centre, row, point + reach[:, None] * self.spans.directions(span[row], u[row]))
-        return t, status, self.sites.canonical(site), centre
+        site = self.sites.canonical(site)
+        self._skip_beside_convex_corners(span, u, t, status, site, centre)
+        return t, status, site, centre
 
-    def _beside_convex_corners(self, span, u):
-        """The probes (at parameters ``u`` of spans ``span``) so close to a convex corner at an end of their edge
-        that the disk touches the corner's other segment below the smallest contact the solver sees (``min_t``):
-        their rows, that segment and the radius of that contact (CRS units).
+    def _skip_beside_convex_corners(self, span, u, t, status, site, centre):
+        """Mark skipped, in place, the solved samples (at parameters ``u`` of spans ``span``; ``t``, status,
+        canonical site and disk centre) so close to a convex corner at an end of their edge that their disks
+        touch the corner's other segment below the smallest contact the solver sees (``min_t``).
 
         Such a disk crosses its own chain at once (it is skipped, like a sample at the corner); the solver, not
         seeing that contact, would let it grow through the corner to a far one (a probe 3e-10 from a star's tip
         of 27 degrees: a centre 18 units outside the polygon, fuzz seed 20261210 input 5755).
         """
+        row, corner_segment, reach = self._beside_convex_corners(span, u)
+        if len(row):
+            t[row], status[row], site[row] = reach, SKIPPED, self.sites.canonical(corner_segment)
+            point, _ = self.spans.points(span[row], u[row])
+            put_rows(centre, row, point + reach[:, None] * self.spans.directions(span[row], u[row]))
+
+    def _beside_convex_corners(self, span, u):
+        """Of the samples at parameters ``u`` of spans ``span``, those whose disks touch the other segment of a
+        convex corner at an end of their edge below ``min_t``: their rows, that segment and the radius of that
+        contact (CRS units)."""
         spans, b, sites = self.spans, self.boundary, self.sites
         segment = spans.segment[span]
         edge = spans.kind[span] == EDGE
@@ -826,6 +833,8 @@ class _Tracer:
         count = len(span)
         solved = (t[count:], status[count:], site[count:], centre[count:])
         t, status, site, centre = t[:count], status[:count], site[:count], centre[:count]
+        # A middle of a tiny edge between two corners may lie that close to them (the ends there are given).
+        self._skip_beside_convex_corners(span, u, t, status, site, centre)
         emit = np.isfinite(t) & ((status == CLEAR) | ((status == TIED) & ~self._at_split_point(site)))
         # A disk tangent at a straight split point touches the other chain there: whatever it touches first
         # (a branch of its own chain's corner meets the axis there), it is a point of the axis.
