@@ -101,6 +101,7 @@ from .contacts import (
     solve,
     solve_in_chunks,
 )
+from .polyline import turns_between
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).
 EDGE, FAN = 0, 1
@@ -250,18 +251,13 @@ class _Geometry:
     run_end_position: np.ndarray
 
 
-def _turns(before, after):
-    """Turns, radians, from the unit vectors ``before`` to the unit vectors ``after`` (row by row)."""
-    return np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
-
-
 def _geometry(boundary, sides):
     """:class:`_Geometry` of all chains at once (``sides``: +1 when the region lies left of a chain, -1 right)."""
     side = np.asarray(sides, dtype=float)[boundary.chain_id]
     joint = np.flatnonzero(~boundary.last_of_chain)
     # The turn at every pair of consecutive segments (views, no gathered copies), then at the junctions: each
     # row is computed from its own two units, so the same floats as from the junctions' rows alone.
-    turn = _turns(boundary.unit[:-1], boundary.unit[1:])[joint]
+    turn = turns_between(boundary.unit[:-1], boundary.unit[1:])[joint]
     signed = side[joint] * turn
     straight = _straight_turns(boundary, joint, joint + 1)
     kind = np.where(signed > straight, 1, np.where(signed < -straight, -1, 0)).astype(np.int8)
@@ -273,7 +269,7 @@ def _geometry(boundary, sides):
     unit = _line_units(boundary, line_of, line_end)
     normal = left_normal(unit)
     normal *= side[:, None]
-    turn = _turns(rows(unit, joint), rows(unit, joint + 1))
+    turn = turns_between(rows(unit, joint), rows(unit, joint + 1))
     return _Geometry(unit, normal, joint, turn, kind, vertex_kind, vertex_turn, line_of, run_end_position)
 
 

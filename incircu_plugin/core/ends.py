@@ -73,7 +73,7 @@ from .chains import extent_of, validate_polygon
 from .contacts import ranges
 from .errors import Cancelled, IncirCuError, InvalidGeometryError
 from .paths import heaviest_paths
-from .polyline import counterclockwise, typical_width
+from .polyline import counterclockwise, turns_between, typical_width
 from .skeleton import joint_skeletons
 
 #: Rules for the automatic ends (see the module docstring).
@@ -744,10 +744,7 @@ class _Rings:
         rank = vertex - self.starts[owner]
         incoming = self.vertices[vertex] - np.take(self.vertices, self.starts[owner] + (rank - 1) % size, axis=0)
         outgoing = np.take(self.vertices, self.starts[owner] + (rank + 1) % size, axis=0) - self.vertices[vertex]
-        return np.arctan2(
-            incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
-            np.einsum("ij,ij->i", incoming, outgoing),
-        )
+        return turns_between(incoming, outgoing)
 
 
 def _last_trunk_positions(tips):

@@ -20,6 +20,7 @@ from .contacts import (
     solve,
     solve_in_chunks,
 )
+from .polyline import turns_between
 
 #: Default spacing as a fraction of the typical width (see :func:`default_spacing`).
 DEFAULT_SPACING_PER_WIDTH = 1.0 / 20.0
@@ -79,10 +80,7 @@ def _sample_chain(chain_id, chain, positions, side, spacing, offset, fan_step):
 
     inner = np.arange(1, n_segments)
     incoming, outgoing = unit[inner - 1], unit[inner]
-    turn = np.arctan2(
-        incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0],
-        np.einsum("ij,ij->i", incoming, outgoing),
-    )
+    turn = turns_between(incoming, outgoing)
     convex = side * turn > 0
     bisector = normal[inner - 1] + normal[inner]
     bisector /= np.linalg.norm(bisector, axis=1, keepdims=True)

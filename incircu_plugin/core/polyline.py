@@ -448,6 +448,19 @@ def turn_angles(xy, closed=False):
     else:
         step = np.diff(xy, axis=0)
         incoming, outgoing = step[:-1], step[1:]
+    return turns_between(incoming, outgoing)
+
+
+def turns_between(incoming, outgoing):
+    """Return the signed turn, radians (positive to the left, in ``(-pi, pi]``), from each vector of
+    ``incoming`` to the vector of ``outgoing`` in the same row (two ``(n, 2)`` arrays of any lengths).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.degrees(turns_between(np.array([[1.0, 0.0]]), np.array([[0.0, 2.0]]))).tolist()
+    [90.0]
+    """
     cross = incoming[:, 0] * outgoing[:, 1] - incoming[:, 1] * outgoing[:, 0]
     return np.arctan2(cross, np.einsum("ij,ij->i", incoming, outgoing))
 
