@@ -392,10 +392,10 @@ def approach_sites(monkeypatch):
 
 @pytest.mark.parametrize("widths", [None, 1.0 / 2000.0], ids=["default", "tight"])
 def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays_on_the_axis(approach_sites, widths):
-    # Near the sector's split points an interval's disks first touch the other chain at one end and the own
-    # chain's arc at the other; its two sites' radii do not cross inside it: the own contact walks on along
-    # the arc first (predicted and probed in one round).
-    case = next(c for c in ANALYTIC if c.name == "annulus sector r=40..60 span=3.142 n=61 unit")
+    # Near the meander's split points an interval's disks first touch the other chain at one end and the own
+    # chain's bank at the other; its two sites' radii do not cross inside it: the own contact walks on along
+    # the bank first (predicted and probed in one round).
+    case = next(c for c in ANALYTIC if c.name == "meander L=800 W=20 A=40 lambda=400 n=(301, 287) unit")
     tolerance = None if widths is None else widths * case.width
     result = polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
@@ -427,6 +427,36 @@ def test_predicted_walks_save_the_meanders_rounds(monkeypatch):
     tolerance = default_tolerance(case.chain_a, case.chain_b)
     assert predicted.line.hausdorff_distance(halved.line) <= 2.0 * tolerance
     check_centerline(predicted, case.chain_a, case.chain_b, case.polygon, case.split_points)
+
+
+@pytest.mark.parametrize("split_points", [[(0.0, 3.0), (100.0, 27.0)], [(0.0, 8.5), (100.0, 21.0)]])
+def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(monkeypatch, split_points):
+    # Split off the middle of its straight caps, a bent channel's disks near a cap touch the cap on the own
+    # chain's side of the split point, then on the other's: one line, so the two sites' radii never cross.
+    # The contact passes where the disk is tangent at the split point, in closed form; halving the interval
+    # instead takes a round per halving, down to the chord that settles it.
+    from incircu_plugin.core import adaptive
+
+    polygon = Polygon([(0.0, 0.0), (50.0, 0.0), (100.0, 20.0), (100.0, 30.0), (45.0, 10.0), (0.0, 10.0)])
+    rounds = {"count": 0}
+    solve_probes = adaptive._Tracer._solve_probes
+
+    def counting(self, *arguments):
+        rounds["count"] += 1
+        return solve_probes(self, *arguments)
+
+    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", counting)
+    assert_adaptive_properties(polygon, split_points)
+    in_closed_form = rounds["count"]
+    rounds["count"] = 0
+    monkeypatch.setattr(adaptive._Tracer, "_across_split_points", lambda self, *arguments: None)
+    halved = polygon_centerline(polygon, split_points)
+    chain_a, chain_b = split_polygon(polygon, split_points)
+    tolerance = default_tolerance(chain_a, chain_b)
+    # Halving from the cap's length (at least the width's 10 / 2) down to the settled chord.
+    halvings = math.log2(5.0 / (adaptive.SETTLED_CHORD * tolerance))
+    assert in_closed_form < halvings / 2.0 < rounds["count"]
+    assert polygon_centerline(polygon, split_points).line.hausdorff_distance(halved.line) <= 2.0 * tolerance
 
 
 def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monkeypatch):

@@ -369,6 +369,10 @@ class _Sites:
         #: Whether each vertex is the first or last of its chain.
         self.chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
         self.line_of, self.run_end_position = geometry.line_of, geometry.run_end_position
+        #: Per chain, its last vertex and the arc length there (CRS units).
+        self.chain_last_vertex = np.append(np.asarray(boundary.offset[1:], dtype=int), boundary.segment_count)
+        self.chain_last_vertex += np.arange(len(boundary.offset))
+        self.chain_end_position = boundary.vertex_position[self.chain_last_vertex]
         self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of, self.chain_end)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
         self.site_chain = np.concatenate([boundary.chain_id, boundary.vertex_chain, np.array([-1], dtype=np.int32)])
@@ -1043,9 +1047,58 @@ class _Tracer:
         )
         terms0, terms1 = tuple(x[: len(span)] for x in terms), tuple(x[len(span) :] for x in terms)
         u, found, at_end, roots = _crossing(self.spans, intervals, terms0, terms1, counted=True)
+        self._across_split_points(intervals, terms0, u, found, at_end)
         radius = _radius_at(self.spans, span, terms0, u)
         # The radius at a single crossing (where two lie in the interval, which one is the event is not known).
         return u, self._trial(intervals, radius, found), found, at_end, np.where(roots == 1, radius, np.nan)
+
+    def _across_split_points(self, intervals, terms0, u, found, at_end):
+        """Where the contact crosses a straight split point, for the intervals whose two sites are the runs on
+        both sides of one (a run of each chain, on one line) and whose crossing is neither found nor at an end.
+
+        Both sites' radii are that line's, so they never cross: the contact passes from one run to the other
+        where the disk is tangent to the line at the split point. That parameter, where the foot on the line
+        (``terms0``: the first site's :meth:`_Sites.radius_terms`) is the split point, is a root of ``D0 + D1 u``
+        on an edge and of ``D0 + D1 cos(u) + D2 sin(u)`` on a fan: written into ``u`` and ``found`` in place
+        where it lies inside the interval (its probe is judged like any event's), into ``at_end`` where it lies at
+        an end (the interval is settled there, :meth:`_settle_at_ends`).
+        """
+        b, sites, spans = self.boundary, self.sites, self.spans
+        site0, site1 = intervals.site0, intervals.site1
+        count = b.segment_count
+        row = ~found & (at_end < 0) & (site0 >= 0) & (site0 < count) & (site1 >= 0) & (site1 < count)
+        row &= self.closed[spans.chain[intervals.span]]
+        row = row.nonzero()[0]
+        first, other = site0[row], site1[row]
+        chain = b.chain_id[first]
+        # Both runs start at the chains' first split point, or both end at their last one.
+        at_first = b.first_of_chain[first] & b.first_of_chain[other]
+        at_last = sites.run_end_position[first] == sites.chain_end_position[chain]
+        at_last &= sites.run_end_position[other] == sites.chain_end_position[b.chain_id[other]]
+        keep = ((at_first | at_last) & (chain != b.chain_id[other])).nonzero()[0]
+        if len(keep) == 0:
+            return
+        row, first, at_first = row[keep], first[keep], at_first[keep]
+        last_vertex = rows(b.vertex, sites.chain_last_vertex[chain[keep]])
+        split_point = np.where(at_first[:, None], rows(b.start, first), last_vertex)
+        span = intervals.span[row]
+        line = rows(sites.unit, first)
+        # Along the line from the split point: the span's point, and per unit of u (on a fan, of the disk's
+        # parameter) its direction and its normal.
+        offset = np.einsum("ij,ij->i", rows(spans.point, span) - split_point, line)
+        along = np.einsum("ij,ij->i", rows(spans.unit, span), line)
+        across = np.einsum("ij,ij->i", rows(spans.normal, span), line)
+        a0, a1, a2 = (x[row] for x in terms0)
+        edge = spans.kind[span] == EDGE
+        # On an edge the foot lies offset + u along + r(u) across from the split point, r = a0 + a1 u; on a fan
+        # (offset + r(u) (cos(u) along + sin(u) across)), with 1 / r = a0 + a1 cos(u) + a2 sin(u).
+        equation = (
+            np.where(edge, offset + a0 * across, offset * a0),
+            np.where(edge, along + a1 * across, offset * a1 + along),
+            np.where(edge, 0.0, offset * a2 + across),
+        )
+        zero = (np.zeros(len(row)),) * 3
+        u[row], found[row], at_end[row] = _crossing(spans, intervals.subset(row), equation, zero)
 
     def _trial(self, intervals, radius, found):
         """Trial radius of a probe in each interval whose event (where ``found``) has ``radius``, CRS units."""
