@@ -429,15 +429,28 @@ def test_predicted_walks_save_the_meanders_rounds(monkeypatch):
     check_centerline(predicted, case.chain_a, case.chain_b, case.polygon, case.split_points)
 
 
-@pytest.mark.parametrize("split_points", [[(0.0, 3.0), (100.0, 27.0)], [(0.0, 8.5), (100.0, 21.0)]])
-def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(monkeypatch, split_points):
-    # Split off the middle of its straight caps, a bent channel's disks near a cap touch the cap on the own
-    # chain's side of the split point, then on the other's: one line, so the two sites' radii never cross.
-    # The contact passes where the disk is tangent at the split point, in closed form; halving the interval
-    # instead takes a round per halving, down to the chord that settles it.
+BENT_CHANNEL = Polygon([(0.0, 0.0), (50.0, 0.0), (100.0, 20.0), (100.0, 30.0), (45.0, 10.0), (0.0, 10.0)])
+#: A reflex corner of the bottom bank next to the left cap: the disks of its fan touch the cap.
+NOTCHED_CHANNEL = Polygon([(0.0, 0.0), (2.0, 0.0), (4.0, -2.0), (100.0, -2.0), (100.0, 8.0), (0.0, 10.0)])
+
+
+@pytest.mark.parametrize(
+    "polygon, split_points",
+    [
+        (BENT_CHANNEL, [(0.0, 3.0), (100.0, 27.0)]),
+        (BENT_CHANNEL, [(0.0, 8.5), (100.0, 21.0)]),
+        (NOTCHED_CHANNEL, [(0.0, 3.0), (100.0, 3.0)]),
+        (NOTCHED_CHANNEL, [(0.0, 2.5), (100.0, 5.0)]),
+    ],
+    ids=["bent low", "bent high", "notched fan", "notched fan, other end"],
+)
+def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(monkeypatch, polygon, split_points):
+    # Split off the middle of its straight caps, a channel's disks near a cap touch the cap on the own chain's
+    # side of the split point, then on the other's: one line, so the two sites' radii never cross. The contact
+    # passes where the disk is tangent at the split point, in closed form (on an edge, and on a reflex corner's
+    # fan); halving the interval instead takes a round per halving, down to the chord that settles it.
     from incircu_plugin.core import adaptive
 
-    polygon = Polygon([(0.0, 0.0), (50.0, 0.0), (100.0, 20.0), (100.0, 30.0), (45.0, 10.0), (0.0, 10.0)])
     rounds = {"count": 0}
     solve_probes = adaptive._Tracer._solve_probes
 
@@ -453,7 +466,7 @@ def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(mon
     halved = polygon_centerline(polygon, split_points)
     chain_a, chain_b = split_polygon(polygon, split_points)
     tolerance = default_tolerance(chain_a, chain_b)
-    # Halving from the cap's length (at least the width's 10 / 2) down to the settled chord.
+    # The halvings of an interval half the width (10) long down to the chord that settles it.
     halvings = math.log2(5.0 / (adaptive.SETTLED_CHORD * tolerance))
     assert in_closed_form < halvings / 2.0 < rounds["count"]
     assert polygon_centerline(polygon, split_points).line.hausdorff_distance(halved.line) <= 2.0 * tolerance
