@@ -9,7 +9,9 @@ events the medial axis is a straight line (two lines, or two points) or a parabo
 Samples start at the ends of every span. Between two neighbouring samples of a span whose first contacts
 are different sites, the event where the two contacts are equally far is computed in closed form (a
 quadratic along an edge, ``R cos(u - psi) = c`` on a fan) and probed with the exact contact solver; if a
-third site is nearer, the interval is split there and the next round looks again. Every round handles all
+third site is nearer, the interval is split there and the next round looks again. The two runs on both sides of
+a straight split point lie on one line, equally far everywhere: the contact passes from one to the other where
+the disk is tangent at the split point, which is computed in closed form the same way. Every round handles all
 open intervals at once (numpy). When neighbours share their site the axis between them is known: a straight
 piece needs no vertex; a parabola gets stations placed analytically so that each chord stays within the
 tolerance of it. Every vertex is therefore exactly on the medial axis: a solved sample, an event or a
