@@ -381,8 +381,15 @@ class _Sites:
 
     def canonical(self, site):
         """Segment sites replaced by the first segment of their straight run (one line, one site)."""
-        count = self.boundary.segment_count
-        return np.where((site >= 0) & (site < count), self.line_of[np.clip(site, 0, count - 1)], site)
+        return np.where((site >= 0) & (site < self.boundary.segment_count), self.line_of[self.indices(site)[0]], site)
+
+    def indices(self, site):
+        """The segment and the vertex each site stands for, each clipped into its range: for a segment site its
+        vertex (and for a vertex site its segment) is only a placeholder to gather with, never to use."""
+        b = self.boundary
+        segment = np.minimum(np.maximum(site, 0), b.segment_count - 1)
+        vertex = np.minimum(np.maximum(site - b.segment_count, 0), len(b.vertex) - 1)
+        return segment, vertex
 
     def chain(self, site):
         """Chain of each site (-1 for no site); ``site`` is -1 or a segment or vertex index (below
@@ -394,8 +401,8 @@ class _Sites:
         units (a segment site: its whole straight run)."""
         b = self.boundary
         count = b.segment_count
-        segment = self.line_of[np.clip(site, 0, count - 1)]
-        vertex = np.clip(site - count, 0, len(b.vertex) - 1)
+        segment, vertex = self.indices(site)
+        segment = self.line_of[segment]
         on_vertex = site >= count
         first = np.where(on_vertex, b.vertex_position[vertex], b.segment_position[segment])
         last = np.where(on_vertex, first, self.run_end_position[segment])
@@ -450,8 +457,7 @@ class _Sites:
         b = self.boundary
         # Kinds 0, 1: a segment, a vertex seen from an edge; 2, 3: from a fan.
         kind = 2 * spans.kind[span] + (site >= b.segment_count)
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        segment, vertex = self.indices(site)
 
         def terms(of_kind, row):
             on_edge = of_kind < 2
@@ -1030,7 +1036,7 @@ class _Tracer:
         """
         spans, sites, b = self.spans, self.sites, self.boundary
         curved = sites.chain(site) == spans.chain[span] ^ 1
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        vertex = sites.indices(site)[1]
         fan = (spans.kind[span] == FAN) & (site < b.segment_count)
         untraced_fan = ~self.traced[b.vertex_chain[vertex]]
         edge = (spans.kind[span] == EDGE) & (site >= b.segment_count) & ((sites.kinds[vertex] == 0) | untraced_fan)
@@ -1221,7 +1227,7 @@ class _Tracer:
         b = self.boundary
         point, _ = self.spans.points(span, u)
         centre = point + radius[:, None] * self.spans.directions(span, u)
-        segment = np.clip(site, 0, b.segment_count - 1)
+        segment = self.sites.indices(site)[0]
         along = np.einsum("ij,ij->i", centre - rows(b.start, segment), rows(self.sites.unit, segment))
         run_length = self.sites.run_end_position[segment] - b.segment_position[segment]
         with np.errstate(invalid="ignore"):
@@ -1304,7 +1310,7 @@ class _Tracer:
         judged &= emit[intervals.left] & emit[intervals.right]
         judged &= np.abs(sites.rank[intervals.site0] - sites.rank[intervals.site1]) == 1
         for site in (intervals.site0, intervals.site1):
-            judged &= ~((site >= b.segment_count) & sites.chain_end[np.clip(site - b.segment_count, 0, None)])
+            judged &= ~((site >= b.segment_count) & sites.chain_end[sites.indices(site)[1]])
         return judged.nonzero()[0]
 
     def _sag(self, span, site, start, end):
@@ -1315,8 +1321,7 @@ class _Tracer:
         curvature is at most ``1 / h``)."""
         spans, b = self.spans, self.boundary
         on_fan, on_vertex = spans.kind[span] == FAN, site >= b.segment_count
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        segment, vertex = self.sites.indices(site)
         direction = np.where(on_fan[:, None], rows(self.sites.unit, segment), rows(spans.unit, span))
         focus = np.where(on_fan[:, None], rows(spans.point, span), rows(b.vertex, vertex))
         anchor = np.where(on_fan[:, None], rows(b.start, segment), rows(spans.point, span))
@@ -1397,8 +1402,7 @@ class _Tracer:
     def _at_split_point(self, site):
         """Whether each site is a split point (closed mode): a vertex of both chains. A tie with it is no
         evidence of a contact with the other chain (it also lies on the own one)."""
-        vertex = site - self.boundary.segment_count
-        return (vertex >= 0) & self.split_vertex[np.clip(vertex, 0, len(self.split_vertex) - 1)]
+        return (site >= self.boundary.segment_count) & self.split_vertex[self.sites.indices(site)[1]]
 
     def _event_emission(self, intervals, status, site, event):
         """Which probes are axis points, and the site of their foot on the other chain.
@@ -1422,8 +1426,7 @@ class _Tracer:
         spans, b = self.spans, self.boundary
         span, site = intervals.span, intervals.site0
         on_fan = spans.kind[span] == FAN
-        segment = np.clip(site, 0, b.segment_count - 1)
-        vertex = np.clip(site - b.segment_count, 0, len(b.vertex) - 1)
+        segment, vertex = self.sites.indices(site)
         point = rows(spans.point, span)
         focus = np.where(on_fan[:, None], point, rows(b.vertex, vertex))
         anchor = np.where(on_fan[:, None], rows(b.start, segment), point)
