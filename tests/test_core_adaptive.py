@@ -404,12 +404,11 @@ def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays
     assert approach_sites["sites"] > 0
 
 
-def test_predicted_walks_save_the_meanders_rounds(monkeypatch):
-    # On the meander, intervals at the chain starts see the own contact walk across several own sites before
-    # the other bank takes over: predicted, the walk is probed in one round; halved, one site per round.
+@pytest.fixture
+def probe_rounds(monkeypatch):
+    """Counts the tracer's rounds of probes (its calls of the contact solver on them)."""
     from incircu_plugin.core import adaptive
 
-    case = geometry_cases.meander_with_vertex_count(2333)
     rounds = {"count": 0}
     solve_probes = adaptive._Tracer._solve_probes
 
@@ -418,6 +417,16 @@ def test_predicted_walks_save_the_meanders_rounds(monkeypatch):
         return solve_probes(self, *arguments)
 
     monkeypatch.setattr(adaptive._Tracer, "_solve_probes", counting)
+    return rounds
+
+
+def test_predicted_walks_save_the_meanders_rounds(monkeypatch, probe_rounds):
+    # On the meander, intervals at the chain starts see the own contact walk across several own sites before
+    # the other bank takes over: predicted, the walk is probed in one round; halved, one site per round.
+    from incircu_plugin.core import adaptive
+
+    case = geometry_cases.meander_with_vertex_count(2333)
+    rounds = probe_rounds
     predicted = polygon_centerline(case.polygon, case.split_points)
     with_walks = rounds["count"]
     rounds["count"] = 0
@@ -444,21 +453,16 @@ NOTCHED_CHANNEL = Polygon([(0.0, 0.0), (2.0, 0.0), (4.0, -2.0), (100.0, -2.0), (
     ],
     ids=["bent low", "bent high", "notched fan", "notched fan, other end"],
 )
-def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(monkeypatch, polygon, split_points):
+def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(
+    monkeypatch, probe_rounds, polygon, split_points
+):
     # Split off the middle of its straight caps, a channel's disks near a cap touch the cap on the own chain's
     # side of the split point, then on the other's: one line, so the two sites' radii never cross. The contact
     # passes where the disk is tangent at the split point, in closed form (on an edge, and on a reflex corner's
     # fan); halving the interval instead takes a round per halving, down to the chord that settles it.
     from incircu_plugin.core import adaptive
 
-    rounds = {"count": 0}
-    solve_probes = adaptive._Tracer._solve_probes
-
-    def counting(self, *arguments):
-        rounds["count"] += 1
-        return solve_probes(self, *arguments)
-
-    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", counting)
+    rounds = probe_rounds
     assert_adaptive_properties(polygon, split_points)
     in_closed_form = rounds["count"]
     rounds["count"] = 0
