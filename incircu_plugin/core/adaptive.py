@@ -1061,15 +1061,17 @@ class _Tracer:
         return u, self._trial(intervals, radius, found), found, at_end, np.where(roots == 1, radius, np.nan)
 
     def _across_split_points(self, intervals, terms0, u, found, at_end):
-        """Where the contact crosses a straight split point, for the intervals whose two sites are the runs on
-        both sides of one (a run of each chain, on one line) and whose crossing is neither found nor at an end.
+        """Where the contact crosses a split point, for the intervals whose two sites are the runs of both chains
+        at one split point and whose crossing is neither found nor at an end.
 
-        Both sites' radii are that line's, so they never cross: the contact passes from one run to the other
-        where the disk is tangent to the line at the split point. That parameter, where the foot on the line
-        (``terms0``: the first site's :meth:`_Sites.radius_terms`) is the split point, is a root of ``D0 + D1 u``
-        on an edge and of ``D0 + D1 cos(u) + D2 sin(u)`` on a fan: written into ``u`` and ``found`` in place
-        where it lies inside the interval (its probe is judged like any event's), into ``at_end`` where it lies at
-        an end (the interval is settled there, :meth:`_settle_at_ends`).
+        At a straight split point both runs lie on one line: their radii are that line's, so they never cross, and
+        the contact passes from one run to the other where the disk is tangent to the line at the split point.
+        That parameter, where the foot on the first site's line (``terms0``: its :meth:`_Sites.radius_terms`) is
+        the split point, is a root of ``D0 + D1 u`` on an edge and of ``D0 + D1 cos(u) + D2 sin(u)`` on a fan:
+        written into ``u`` and ``found`` in place where it lies inside the interval, into ``at_end`` where it lies
+        at an end. Like any event candidate it is only a candidate: its probe is judged as an event's
+        (:meth:`_is_event`), an end by :meth:`_settle_at_ends` (at a split point that is not straight, where a
+        crossing outside the interval was found, neither may hold, and the interval is split as usual).
         """
         b, sites, spans = self.boundary, self.sites, self.spans
         site0, site1 = intervals.site0, intervals.site1
