@@ -372,8 +372,7 @@ class _Sites:
         self.chain_end = _split_vertices(boundary, np.ones(len(boundary.offset), dtype=bool))
         self.line_of, self.run_end_position = geometry.line_of, geometry.run_end_position
         #: Per chain, its last vertex and the arc length there (CRS units).
-        self.chain_last_vertex = np.append(np.asarray(boundary.offset[1:], dtype=int), boundary.segment_count)
-        self.chain_last_vertex += np.arange(len(boundary.offset))
+        self.chain_last_vertex = _chain_end_vertices(boundary)[1]
         self.chain_end_position = boundary.vertex_position[self.chain_last_vertex]
         self.sequence, self.rank = _site_sequence(boundary, self.kinds, self.line_of, self.chain_end)
         #: The chain of every site, segments then vertices, and -1 last (for site -1: no site).
@@ -1575,10 +1574,15 @@ def _unsettled_pieces(curves, owner, u, index, site):
 def _split_vertices(boundary, closed):
     """Mask of the vertices that are split points: both ends of every chain whose pair is closed."""
     mask = np.zeros(len(boundary.vertex), dtype=bool)
-    first = np.asarray(boundary.offset) + np.arange(len(boundary.offset))
-    last = np.append(first[1:], len(boundary.vertex)) - 1
+    first, last = _chain_end_vertices(boundary)
     mask[first[closed]] = mask[last[closed]] = True
     return mask
+
+
+def _chain_end_vertices(boundary):
+    """The first and the last vertex of every chain (indices in ``boundary.vertex``)."""
+    first = np.asarray(boundary.offset) + np.arange(len(boundary.offset))
+    return first, np.append(first[1:], len(boundary.vertex)) - 1
 
 
 def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t, report):
