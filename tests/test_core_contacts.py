@@ -395,9 +395,9 @@ def straight_features(features, samples_each):
     return samples, Boundary(chains)
 
 
-@pytest.mark.parametrize(("features", "levels"), [(1, 3), (8, 2), (80, 1)])
+@pytest.mark.parametrize(("features", "levels"), [(1, 3), (8, 1), (80, 1)])
 def test_coarse_to_fine_levels_follow_the_samples_per_feature(monkeypatch, features, levels):
-    # 800 samples in all: one feature gets three levels (strides 64, 8, 1), eight features of 100 samples two,
+    # 800 samples in all: one feature gets three levels (strides 64, 8, 1), eight features of 100 samples and
     # eighty of 10 one; every level settles its samples exactly as one solve of all.
     samples, boundary = straight_features(features, 800 // features)
     index = np.arange(800)
