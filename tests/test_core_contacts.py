@@ -570,9 +570,10 @@ def test_a_disk_touching_its_own_chain_twice_at_once_reports_the_lower_site(monk
     assert site == 0
 
 
-def solved_between_dense_banks():
+def solved_between_dense_banks(small_trials=False):
     """``solve`` for samples at the inner vertices of the lower of two banks 20 apart with a vertex every 0.1:
-    a disk of the trial radius 10 meets about 400 segments."""
+    a disk of the trial radius 10 meets about 400 segments (with ``small_trials``, every third sample's trial
+    radius is 1)."""
     x = np.linspace(0.0, 100.0, 1001)
     chains = [np.stack([x, np.zeros(1001)], axis=1), np.stack([x[::-1], np.full(1001, 20.0)], axis=1)]
     count = 999
@@ -587,7 +588,10 @@ def solved_between_dense_banks():
         vertex - 1,
         vertex,
     )
-    return solve(samples, np.arange(count), Boundary(chains), np.full(count, 10.0), 30.0, 1e-9, points=True)
+    trial = np.full(count, 10.0)
+    if small_trials:
+        trial[::3] = 1.0
+    return solve(samples, np.arange(count), Boundary(chains), trial, 30.0, 1e-9, points=True)
 
 
 def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypatch):
@@ -596,7 +600,7 @@ def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypa
 
     def recorded(samples, sample, *arguments):
         best, pairs = solve_round(samples, sample, *arguments)
-        rounds.append((len(sample), pairs))
+        rounds.append((sample, pairs))
         return best, pairs
 
     monkeypatch.setattr(contacts, "_solve_round", recorded)
@@ -606,9 +610,17 @@ def test_solve_blocks_hold_about_solve_pairs_pairs_and_change_no_result(monkeypa
     np.testing.assert_allclose(contact, np.stack([x, np.full(999, 20.0)], axis=1), atol=1e-12)
     np.testing.assert_allclose(position, 100.0 - x, atol=1e-12)
     # About 400 pairs per sample: blocks of 4096 samples would hold 400,000 pairs.
-    pairs_per_sample = max(pairs / samples for samples, pairs in rounds)
+    pairs_per_sample = max(pairs / len(sample) for sample, pairs in rounds)
     assert 300 < pairs_per_sample < 500
     assert max(pairs for _, pairs in rounds) <= 2 * contacts.SOLVE_PAIRS
+    # From a trial ten times too small, every third sample takes four more rounds (radius 1, 2, 4, 8; 16 settles
+    # it), shared with the fresh samples of the blocks after its own: only the last block's slow samples have
+    # rounds of their own, and nothing else changes.
+    rounds.clear()
+    for result, wanted in zip(solved_between_dense_banks(small_trials=True), expected, strict=True):
+        assert result.tobytes() == wanted.tobytes()
+    assert sum(len(sample) for sample, _ in rounds) == 999 + 4 * 333
+    assert len(rounds) > 8 and sum(np.all(sample % 3 == 0) for sample, _ in rounds) == 4
     for block, budget in ((1, 1 << 62), (7, 1 << 62), (1 << 20, 1 << 62), (4096, 1)):
         monkeypatch.setattr(contacts, "SOLVE_BLOCK", block)
         monkeypatch.setattr(contacts, "SOLVE_PAIRS", budget)

@@ -41,13 +41,14 @@ TIE_TOLERANCE = 1e-10
 #: bound that of the candidate pairs).
 CHUNK = 16_384
 
-#: Most samples whose rounds :func:`solve` runs together, block after block: the arrays of a block's (sample,
-#: segment) pairs stay in the processor's cache, which makes a solve about a fifth faster than one pass over a
-#: whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy call (10^6 vertices: the rounds
-#: about 4 % faster). A block also holds at most about ``SOLVE_PAIRS`` pairs, judged from the pairs per sample
-#: of the block before: a boundary with many vertices per width has hundreds of pairs per sample, and 4096 such
-#: samples would take hundreds of MiB (the first block's from the boundary's mean segment length). Each sample
-#: is solved from its own candidate pairs, so the blocks change no result.
+#: Most samples in one round of :func:`solve` (a block: the samples still pending, then fresh ones): the arrays
+#: of a block's (sample, segment) pairs stay in the processor's cache, which makes a solve about a fifth faster
+#: than one pass over a whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy call (10^6
+#: vertices: the rounds about 4 % faster). A block also holds at most about ``SOLVE_PAIRS`` pairs, judged from
+#: the pairs per sample of the round before that took fresh samples: a boundary with many vertices per width has
+#: hundreds of pairs per sample, and 4096 such samples would take hundreds of MiB (the first block's from the
+#: boundary's mean segment length). Each sample is solved from its own candidate pairs, so the blocks change no
+#: result.
 SOLVE_BLOCK = 4096
 SOLVE_PAIRS = 1 << 16
 
@@ -660,23 +661,21 @@ def solve(samples, index, boundary, trial, max_t, min_t, points=False):
         np.zeros(count) if points else None,
         np.full(count, -1, dtype=np.int32),
     )
+    # Each round solves the samples still pending and, up to a block, the next fresh ones: a block's few slow
+    # samples ride along with the next block instead of taking rounds of their own.
     begin, block = 0, _first_block(boundary, radius[:SOLVE_BLOCK])
-    while begin < count:
-        active = np.arange(begin, min(begin + block, count))
-        begin += len(active)
-        first_round = True
-        while len(active):
-            best, pairs = _solve_round(
-                samples, index[active], boundary, radius[active], min_t[active], active, solution
-            )
-            if first_round:
-                block = min(max(SOLVE_PAIRS * len(active) // max(pairs, 1), 1), SOLVE_BLOCK)
-                first_round = False
-            settled = best <= radius[active]
-            pending = active[~settled]
-            best = best[~settled]
-            radius[pending] = np.minimum(best, 2.0 * radius[pending])
-            active = pending[radius[pending] <= max_t[pending]]
+    pending = np.empty(0, dtype=np.intp)
+    while begin < count or len(pending):
+        fresh = np.arange(begin, min(begin + max(block - len(pending), 0), count))
+        begin += len(fresh)
+        active = np.concatenate([pending, fresh]) if len(pending) else fresh
+        best, pairs = _solve_round(samples, index[active], boundary, radius[active], min_t[active], active, solution)
+        if len(fresh):
+            block = min(max(SOLVE_PAIRS * len(active) // max(pairs, 1), 1), SOLVE_BLOCK)
+        settled = best <= radius[active]
+        pending = active[~settled]
+        radius[pending] = np.minimum(best[~settled], 2.0 * radius[pending])
+        pending = pending[radius[pending] <= max_t[pending]]
     return solution.contact_t, solution.status, solution.contact, solution.position, solution.site
 
 
