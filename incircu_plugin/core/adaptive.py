@@ -874,9 +874,9 @@ class _Tracer:
     def _solve_initial(self, samples, given_site, given_status, report):
         """Solve the initial samples: the ends of the traced edges (``given_site``: -1 where to be solved;
         ``given_status`` for the ends), the middles and the corners' samples (the samples after the ends),
-        together in the order of their points along the chains (one coarse-to-fine solution: each sample's trial
-        interpolated between the radii found around it). Returns ``t``, status and canonical site of every
-        sample."""
+        together in the order of their points along the chains (one coarse-to-fine solution: on a feature with
+        many samples each sample's trial is interpolated between the radii found around it, on a small one it is
+        a fraction of the typical width). Returns ``t``, status and canonical site of every sample."""
         count = len(given_site)
         middles = np.arange(count, len(samples.chain))
         index = np.concatenate([np.flatnonzero(given_site < 0), middles])
