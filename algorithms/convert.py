@@ -64,10 +64,10 @@ def line_with_m(coordinates, m_values=None):
     -------
     QgsLineString
     """
-    xs = [float(x) for x, _ in coordinates]
-    ys = [float(y) for _, y in coordinates]
-    ms = [] if m_values is None else [float(m) for m in m_values]
-    return QgsLineString(xs, ys, [], ms)
+    # Columns to Python floats in one call each (a Python loop over numpy rows costs about 1 µs per vertex).
+    coordinates = np.asarray(coordinates, dtype=float).reshape(-1, 2)
+    ms = [] if m_values is None else np.asarray(m_values, dtype=float).tolist()
+    return QgsLineString(coordinates[:, 0].tolist(), coordinates[:, 1].tolist(), [], ms)
 
 
 def collect_lines(lines):

@@ -141,3 +141,22 @@ def test_layer_margin_in_a_geographic_layer_is_in_degrees(plugin_module, latitud
     # Safe: the margin covers the distance along the parallel (the shorter degree) with room to spare.
     metres_per_degree = 111_000.0 * max(math.cos(math.radians(latitude)), 0.01)
     assert layer_margin(111.0, geometry, True) * metres_per_degree >= 111.0
+
+
+# line_with_m (algorithms/convert.py) ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("as_array", [True, False])
+def test_line_with_m_keeps_every_coordinate_and_width_exactly(plugin_module, as_array):
+    line_with_m = plugin_module("algorithms.convert").line_with_m
+    coordinates = [(0.1, 7.0), (1e6 + 0.3, -2.5), (3.0, 1e-7)]
+    widths = [0.0, 12.25, 1.0 / 3.0]
+    given = np.array(coordinates) if as_array else coordinates
+    line = line_with_m(given, np.array(widths) if as_array else widths)
+    assert line.isMeasure() and not line.is3D()
+    assert [(vertex.x(), vertex.y(), vertex.m()) for vertex in line.vertices()] == [
+        (x, y, m) for (x, y), m in zip(coordinates, widths)
+    ]
+    plain = line_with_m(given)
+    assert not plain.isMeasure()
+    assert [(vertex.x(), vertex.y()) for vertex in plain.vertices()] == coordinates
