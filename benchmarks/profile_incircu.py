@@ -36,14 +36,14 @@ LAYER_RIVERS = 20
 RECTANGLE_CALLS = 200
 
 #: Stages of ``polygon_centerline`` whose cumulative time is reported (``trace_alone``: the adaptive tracing;
-#: ``centerline_from_chains`` holds it, the chains' cleaning, the engine's frame and the line).
+#: ``centerline_from_chains`` holds it, the chains' cleaning and the engine's frame; ``lines_together``: the line).
 STAGES = (
     "validate_polygon",
     "split_polygon",
     "bridge_islands",
     "_clean_chains",
     "trace_alone",
-    "_line_through",
+    "lines_together",
     "_checked",
     "centerline_from_chains",
 )

@@ -30,7 +30,7 @@ from incircu_plugin.core import (
     centerline_from_chains,
     centerlines_together,
     default_tolerance,
-    engine,
+    lines,
     lines_centerline,
     polygon_centerline,
     polygon_centerline_steps,
@@ -88,7 +88,7 @@ def test_a_tight_tolerance_bounds_the_distance_to_the_medial_axis(case):
 def test_a_line_simplified_in_pieces_stays_within_the_tolerance(monkeypatch, piece):
     # Long lines are simplified in pieces that share their end vertices (SIMPLIFY_PIECE points each).
     case = geometry_cases.meander()
-    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", piece)
+    monkeypatch.setattr(lines, "SIMPLIFY_PIECE", piece)
     result = polygon_centerline(case.polygon, case.split_points)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
     tolerance = default_tolerance(case.chain_a, case.chain_b)
@@ -103,8 +103,8 @@ def test_pieces_keep_their_ends_and_every_dropped_vertex_near_its_chord(monkeypa
         np.abs(rng.normal(size=(1_000, 2))) * [1.0, 0.0] + rng.normal(size=(1_000, 2)) * [0.0, 1.0], axis=0
     )
     tolerance = 0.5
-    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", piece)
-    keep = engine._fewest_vertices(points, tolerance)
+    monkeypatch.setattr(lines, "SIMPLIFY_PIECE", piece)
+    keep = lines._fewest_vertices(points, tolerance)
     assert keep[::piece].all() and keep[-1]
     kept = np.flatnonzero(keep)
     chords = shapely.linestrings(np.stack([points[kept[:-1]], points[kept[1:]]], axis=1))
@@ -122,11 +122,11 @@ def test_the_pieces_are_the_same_in_any_batches(monkeypatch):
     points = np.cumsum(
         np.abs(rng.normal(size=(1_001, 2))) * [1.0, 0.0] + rng.normal(size=(1_001, 2)) * [0.0, 1.0], axis=0
     )
-    monkeypatch.setattr(engine, "SIMPLIFY_PIECE", 40)
+    monkeypatch.setattr(lines, "SIMPLIFY_PIECE", 40)
     masks = []
     for batch in (1, 3, 100):
-        monkeypatch.setattr(engine, "SIMPLIFY_BATCH", batch)
-        masks.append(engine._fewest_vertices(points, 0.5))
+        monkeypatch.setattr(lines, "SIMPLIFY_BATCH", batch)
+        masks.append(lines._fewest_vertices(points, 0.5))
     # 1000 segments: 25 pieces, in batches of 1, 3 (the last one shorter) or all at once.
     assert masks[0][::40].all() and masks[0][-1]
     assert np.array_equal(masks[0], masks[1]) and np.array_equal(masks[0], masks[2])
@@ -777,13 +777,13 @@ def test_a_leaving_chord_is_split_at_the_point_it_replaced_farthest_from_it(monk
     distinct = np.ones(len(centre), dtype=bool)
     keep = np.zeros(len(centre), dtype=bool)
     keep[[0, 1, -2, -1]] = True
-    restored = engine._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2))
+    restored = lines._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2))
     assert np.flatnonzero(restored).tolist() == [0, 1, 9, len(centre) - 2, len(centre) - 1]
     assert region.covers(LineString(centre[restored]))
     assert keep.sum() == 4
     # Should the points put back make the line cross itself, every distinct point is kept.
     monkeypatch.setattr(shapely, "is_simple", lambda line: False)
-    assert engine._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2)).all()
+    assert lines._restore_leaving_chords(centre, distinct, keep, region, np.zeros(2)).all()
 
 
 @pytest.mark.parametrize("tolerance", [30.0, 200.0])

@@ -38,7 +38,14 @@ from incircu_plugin.core import (
     split_polygon,
 )
 from incircu_plugin.core import steps as steps_module
-from incircu_plugin.core.steps import _huge_page_advice_setter, run_alone, run_settings_paused, trace_alone
+from incircu_plugin.core.lines import LineRequest
+from incircu_plugin.core.steps import (
+    _huge_page_advice_setter,
+    answer_alone,
+    run_alone,
+    run_settings_paused,
+    trace_alone,
+)
 from tests.support import geometry_cases
 
 #: Largest difference allowed between a feature traced together and alone at the line's ends, as a fraction
@@ -243,8 +250,11 @@ def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
     )
     next(generator)
     request = generator.throw(CenterlineError("the tracing failed"))
+    # The second part's axis points, then its line, finish the generator.
+    line_request = generator.send(trace_alone(request))
+    assert isinstance(line_request, LineRequest)
     with pytest.raises(StopIteration) as stop:
-        generator.send(trace_alone(request))
+        generator.send(answer_alone(line_request))
     first, second = stop.value.value
     assert (first.result, str(first.error)) == (None, "the tracing failed") and first.error.__traceback__ is None
     assert second.error is None and second.result.line.length == pytest.approx(50.0, rel=1e-9)

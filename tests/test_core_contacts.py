@@ -27,7 +27,7 @@ from incircu_plugin.core.contacts import (
     solve,
     vertex_contact,
 )
-from incircu_plugin.core.engine import ORDER_RESOLUTION, _distinct, _first_of_each_centre, _ordered, _with_ends
+from incircu_plugin.core.lines import ORDER_RESOLUTION, _Blocks, _distinct, _first_of_each_centre, _ordered, _with_ends
 
 
 def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
@@ -272,22 +272,22 @@ def test_parabola_stations_lie_on_the_parabola_with_chords_within_the_tolerance(
 def test_distinct_keeps_the_ends_and_drops_points_within_tolerance_of_their_predecessor():
     points = np.array([[0.0, 0.0], [0.0, 5e-10], [1.0, 0.0], [1.0, 5e-10]])
     # p1 is within 1e-9 of p0: dropped; p3 is the last point: kept, so p2 (within 1e-9 of it) is dropped.
-    assert _distinct(points, 1e-9).tolist() == [True, False, False, True]
+    assert _distinct(points, 1e-9, _Blocks([4])).tolist() == [True, False, False, True]
 
 
 def test_first_of_each_centre_keeps_a_junction_at_its_first_place():
     centres = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1e-15], [2.0, 0.0]])
-    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9, _Blocks([4])).tolist() == [0, 1, 3]
     # The cells sort otherwise than the indices (1, 3, then 0 and 2): the kept indices still ascend.
     centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
-    assert _first_of_each_centre(centres, np.arange(4), 1e-9).tolist() == [0, 1, 3]
+    assert _first_of_each_centre(centres, np.arange(4), 1e-9, _Blocks([4])).tolist() == [0, 1, 3]
 
 
 def test_first_of_each_centre_counts_places_in_the_order_and_leaves_the_centres_alone():
     centres = np.array([[5.0, 0.0], [1.0, 0.0], [5.0, 1e-15], [3.0, 0.0]])
     before = centres.copy()
     # In the order 3, 2, 1, 0 the junction (points 2 and 0) is first met at place 1.
-    assert _first_of_each_centre(centres, np.array([3, 2, 1, 0]), 1e-9).tolist() == [0, 1, 2]
+    assert _first_of_each_centre(centres, np.array([3, 2, 1, 0]), 1e-9, _Blocks([4])).tolist() == [0, 1, 2]
     assert np.array_equal(centres, before)
 
 
@@ -341,8 +341,14 @@ def test_with_ends_gathers_the_ordered_values_between_the_two_ends():
     order = np.array([2, 0, 1])
     centres = np.array([[0.0, 1.0], [2.0, 3.0], [4.0, 5.0]])
     ends = np.array([[-1.0, -1.0], [9.0, 9.0]])
-    assert _with_ends(centres, order, ends).tolist() == [[-1, -1], [4, 5], [0, 1], [2, 3], [9, 9]]
-    assert _with_ends(np.array([7.0, 8.0, 9.0]), order, np.array([0.0, 1.0])).tolist() == [0, 9, 7, 8, 1]
+    assert _with_ends(centres, order, [ends], _Blocks([5])).tolist() == [[-1, -1], [4, 5], [0, 1], [2, 3], [9, 9]]
+    assert _with_ends(np.array([7.0, 8.0, 9.0]), order, [np.array([0.0, 1.0])], _Blocks([5])).tolist() == [
+        0,
+        9,
+        7,
+        8,
+        1,
+    ]
 
 
 def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
@@ -358,7 +364,7 @@ def test_order_along_the_axis_breaks_ties_of_the_feet_by_travel_then_radius():
     radius = rng.integers(1, 4, count).astype(float)
     points = AxisPoints(centre, radius, foot_a, foot_b, position_a, position_b)
     lengths, side = (50.0, 50.0), 1.0
-    order = _ordered(points, side, lengths, 1e-12)
+    order = _ordered(points, side, lengths, 1e-12, _Blocks([count]))
     # The three keys by their definitions: the feet's relative arc lengths, the centre's component along
     # the direction of travel side * (across_y, -across_x) with across = foot_b - foot_a = (0, 2), and the
     # radius, growing before the middle of the axis and shrinking after it.

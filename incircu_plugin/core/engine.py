@@ -4,7 +4,7 @@ IncirCu (the *Curve of Incircles*; Buczek, M. M., "A new algorithm to compute an
 medial axis") finds maximal empty disks touching both chains: their centres lie on the medial axis between
 the chains, and ordered by where they touch the chains they form one unbranched line. This module is the
 orchestrator: it checks the options, works in a local frame, gets the axis points from one of two samplers
-and orders them into the line.
+and has them ordered into the line (:mod:`.lines`).
 
 - **Adaptive** (default, :mod:`.adaptive`): samples start at the boundary's vertices and are refined only
   where the axis can leave the chord between two of them; events of the axis are located exactly (or,
@@ -24,41 +24,26 @@ from numbers import Real
 from typing import Callable, Optional
 
 import numpy as np
-import shapely
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import LineString
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
-from .contacts import Boundary, rows
-from .errors import IncirCuError, OptionError
+from .contacts import Boundary
+from .errors import OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
+from .lines import LineRequest
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
 from .steps import TraceRequest, reporter, run_alone
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
 DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
 
-#: Relative distance (of the extent) under which two consecutive centres are one point.
-DISTINCT_TOLERANCE = 1e-9
-
 #: Smallest tolerance, relative to the chains' extent: below it the parabola stations would outnumber what
 #: float64 can place distinctly (and what memory holds).
 MIN_TOLERANCE = 1e-9
 
-#: Resolution of the ordering key (a sum of two arc lengths relative to their chains' lengths, 0 to 2):
-#: keys closer than this are ties, ordered by the direction of travel.
-ORDER_RESOLUTION = 1e-11
-
 #: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
 PARABOLA_SHARE = 0.5
 SIMPLIFY_SHARE = 0.5
-
-#: Most points simplified in one piece: GEOS's Douglas-Peucker slows down far more than linearly on longer
-#: lines (a million points: 1.3 s in one piece, 0.1 s in pieces of this size).
-SIMPLIFY_PIECE = 32_768
-
-#: Pieces simplified in one GEOS call: their indexed coordinates (about 12 MiB) then reuse freed memory, where
-#: those of a million points at once (44 MiB) would take fresh pages every time.
-SIMPLIFY_BATCH = 16
 
 
 @dataclass(frozen=True)
@@ -196,221 +181,6 @@ def _fixed_spacings(spacing, samples_per_chain, chains, lengths, width):
     return spacings
 
 
-def _distinct(points, tolerance):
-    """Mask keeping both ends and every point farther than ``tolerance`` from the point before it.
-
-    The last point is always kept; the kept point before it is dropped when within ``tolerance`` of it.
-    """
-    step = points[1:] - points[:-1]
-    keep = np.empty(len(points), dtype=bool)
-    keep[0] = True
-    # The steps' lengths into their x column (no second array of the size of the line).
-    np.greater(np.hypot(step[:, 0], step[:, 1], out=step[:, 0]), tolerance, out=keep[1:])
-    keep[-1] = True
-    kept = np.flatnonzero(keep)
-    if len(kept) > 2 and np.hypot(*(points[kept[-2]] - points[-1])) <= tolerance:
-        keep[kept[-2]] = False
-    return keep
-
-
-def _first_of_each_centre(centres, order, resolution):
-    """Sorted positions in ``order`` (indices of ``centres``) of the first of the points sharing one centre (to
-    ``resolution``, CRS units).
-
-    A junction of the axis is found from several sides, with different feet and so different places in the
-    order; keeping its first place only, the line passes it once.
-    """
-    # The cells as complex numbers sort by x, then y in one stable sort: the indices
-    # np.unique(cells, axis=0, return_index=True) gives, without its slow structured-array path. Gathered,
-    # then scaled and rounded in place (one array of 16 bytes per point).
-    cells = rows(centres, order)
-    cells /= resolution
-    np.round(cells, out=cells)
-    cells = cells.view(np.complex128).ravel()
-    order = np.argsort(cells, kind="stable")
-    cells = cells.take(order)
-    first = np.ones(len(order), dtype=bool)
-    first[1:] = cells[1:] != cells[:-1]
-    # The kept indices in ascending order: marked in a mask (linear) rather than sorted.
-    kept = np.zeros(len(order), dtype=bool)
-    kept[order[first]] = True
-    return np.flatnonzero(kept)
-
-
-def _fewest_vertices(points, tolerance):
-    """Mask of the vertices a Douglas-Peucker simplification to ``tolerance`` keeps (the ends among them).
-
-    The kept vertices are a subset of the given ones, so they stay on the medial axis; every dropped vertex
-    lies within ``tolerance`` of the chord that replaces it, so the line moves by at most ``tolerance``.
-    A long line is simplified in pieces of ``SIMPLIFY_PIECE`` points that share their end vertices (which
-    are kept). When the plain simplification crosses itself, GEOS's (slower) topology-preserving one of the
-    whole line keeps it simple.
-    """
-    # Each vertex carries its index as its z: GEOS simplifies in the plane and keeps the z of the vertices it
-    # keeps, so the kept ones are known without matching coordinates.
-    keep = np.zeros(len(points), dtype=bool)
-    last, batch = len(points) - 1, SIMPLIFY_PIECE * SIMPLIFY_BATCH
-    for begin in range(0, last, batch):
-        _keep_simplified(keep, _pieces(points, begin, min(begin + batch, last)), tolerance)
-    if not shapely.is_simple(shapely.linestrings(points.compress(keep, axis=0))):
-        line = shapely.simplify(_indexed_line(points, 0, last), tolerance, preserve_topology=True)
-        keep[:] = False
-        keep[shapely.get_coordinates(line, include_z=True)[:, 2].astype(np.intp)] = True
-    return keep
-
-
-def _restore_leaving_chords(centre, distinct, keep, region, origin):
-    """``keep`` with points of ``distinct`` put back until no chord of the simplified line leaves ``region``.
-
-    A chord lies within the simplification tolerance of the axis points it replaces, so it can only leave the
-    region where the boundary comes that close to the axis: a bend tighter than the tolerance, a spike
-    reaching near the axis. The line between the first and the last axis point (without the stubs from the
-    split points, which end on the boundary up to rounding) is tested once; only when ``region`` does not
-    cover it are its chords tested, and each one that leaves is split at the point it replaced farthest from
-    it (a Douglas-Peucker step), round after round. Should the points put back make the line cross itself,
-    every distinct point is kept.
-
-    Parameters
-    ----------
-    centre : ndarray of shape (n, 2)
-        The ordered axis points, in the local frame of ``origin`` (CRS units).
-    distinct, keep : ndarray of shape (n,) of bool
-        The points before and after the simplification (both keep the two ends and their neighbours).
-    region : Polygon
-        CRS units, shifted by ``origin`` from the local frame (not modified: it may be the caller's).
-    origin : ndarray of shape (2,)
-        CRS units.
-
-    Returns
-    -------
-    ndarray of shape (n,) of bool
-    """
-    inner = np.flatnonzero(keep)[1:-1]
-    if shapely.covers(region, shapely.linestrings(rows(centre, inner) + origin)):
-        return keep
-    inside = shapely.force_2d(region)
-    shapely.prepare(inside)
-    keep = keep.copy()
-    chords = np.stack([inner[:-1], inner[1:]], axis=1)
-    # Distinct points up to each index: a chord replaced points where its ends' counts differ by more than 1.
-    count = np.cumsum(distinct)
-    while len(chords):
-        # Only chords that replaced points can be mended (the others join two neighbouring axis points).
-        chords = chords[count.take(chords[:, 1]) - count.take(chords[:, 0]) > 1]
-        ends = rows(centre, chords.reshape(-1)).reshape(-1, 2, 2) + origin
-        chords = chords[~shapely.covers(inside, shapely.linestrings(ends))]
-        split = [_farthest_between(centre, distinct, start, end) for start, end in chords]
-        keep[split] = True
-        chords = np.concatenate([np.stack([chords[:, 0], split], axis=1), np.stack([split, chords[:, 1]], axis=1)])
-    if not shapely.is_simple(shapely.linestrings(centre.compress(keep, axis=0))):
-        return distinct
-    return keep
-
-
-def _farthest_between(centre, distinct, start, end):
-    """Index of the point of ``distinct`` strictly between ``start`` and ``end`` farthest from the line through
-    ``centre[start]`` and ``centre[end]`` (there is one)."""
-    between = start + 1 + np.flatnonzero(distinct[start + 1 : end])
-    direction = centre[end] - centre[start]
-    offset = rows(centre, between) - centre[start]
-    return int(between[np.argmax(np.abs(offset[:, 0] * direction[1] - offset[:, 1] * direction[0]))])
-
-
-def _pieces(points, begin, end):
-    """The line through ``points[begin : end + 1]`` as a list of linestrings of ``SIMPLIFY_PIECE`` segments (the
-    last one shorter) that share their end vertices, each vertex with its index as its z."""
-    # One linestring per piece: shapely's ``indices`` path (one call for all) costs more than the calls it saves.
-    return [
-        _indexed_line(points, start, min(start + SIMPLIFY_PIECE, end)) for start in range(begin, end, SIMPLIFY_PIECE)
-    ]
-
-
-def _indexed_line(points, begin, end):
-    """The linestring through ``points[begin : end + 1]`` (CRS units), each vertex with its index as its z."""
-    return shapely.linestrings(_with_index(points, np.arange(begin, end + 1)))
-
-
-def _keep_simplified(keep, lines, tolerance):
-    """Mark in ``keep`` the vertices that the Douglas-Peucker simplification of ``lines`` (their z: the vertices'
-    indices) to ``tolerance`` (CRS units) keeps."""
-    kept = shapely.get_coordinates(shapely.simplify(lines, tolerance, preserve_topology=False), include_z=True)
-    keep[kept[:, 2].astype(np.intp)] = True
-
-
-def _with_index(points, index):
-    """The points ``index`` of ``points`` (an ``(n, 2)`` array, CRS units), with their index as a third column."""
-    indexed = np.empty((len(index), 3))
-    indexed[:, :2] = rows(points, index)
-    indexed[:, 2] = index
-    return indexed
-
-
-def _ordered(points, side, lengths, coincidence):
-    """Indices putting the axis points in order along the axis: by where their disks touch the two chains.
-
-    Those arc lengths grow monotonically along the axis between the chains. Points whose feet are the same
-    two vertices (two facing reflex corners) tie on them; they lie on the bisector of those vertices,
-    ordered by the direction of travel, perpendicular to ``foot_b - foot_a``. Points whose feet are both a
-    split point lie on the stub from it: their disks grow away from the first split point and shrink into
-    the last, so they are ordered by radius.
-    """
-    # In place where the values allow: at 10^6 boundary vertices each temporary is a fresh 16 MB array.
-    across_x = np.subtract(points.foot_b[:, 0], points.foot_a[:, 0])
-    across_y = np.subtract(points.foot_b[:, 1], points.foot_a[:, 1])
-    spare = np.hypot(across_x, across_y)
-    # Feet one point up to rounding: a split point, where both chains start (0) or end (2). No direction of
-    # travel there; the radius orders the points.
-    one_foot = spare <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
-    # The centre's component along the direction of travel, side * (across_y, -across_x).
-    crossing = np.multiply(points.centre[:, 0], across_y)
-    crossing -= np.multiply(points.centre[:, 1], across_x, out=spare)
-    crossing *= side
-    # The sum of the relative arc lengths, into the memory of ``across_x`` (no longer needed).
-    along = np.divide(points.position_a, max(lengths[0], coincidence), out=across_x)
-    along += np.divide(points.position_b, max(lengths[1], coincidence), out=spare)
-    if one_foot.any():
-        along[one_foot] = np.round(along[one_foot])
-        crossing[one_foot] = 0.0
-    growing = np.negative(points.radius, out=spare)
-    np.copyto(growing, points.radius, where=along < 1.0)
-    # Feet at the same two vertices may come from different computations: equal up to rounding.
-    along /= ORDER_RESOLUTION
-    np.round(along, out=along)
-    # np.lexsort((growing, crossing, along)), with the two other keys looked at only where ``along`` ties: a
-    # stable sort by ``along``, then each run of ties (contiguous, in input order) sorted by all three keys.
-    order = np.argsort(along, kind="stable")
-    key = along.take(order, out=across_y, mode="clip")
-    tied = np.zeros(len(order), dtype=bool)
-    tied[1:] = key[1:] == key[:-1]
-    tied[:-1] |= tied[1:]
-    if tied.any():
-        runs = order[tied]
-        order[tied] = runs[np.lexsort((growing[runs], crossing[runs], along[runs]))]
-    return order
-
-
-def _line_ends(chains, closed):
-    """The line's two ends: the split points, or the midpoints of the end gaps.
-
-    Returns their centres, radii and both feet, each an array of two rows (start, end).
-    """
-    foot_a = chains[0][[0, -1]]
-    if closed:
-        return foot_a, np.zeros(2), foot_a, foot_a
-    foot_b = chains[1][[0, -1]]
-    radius = np.array([0.5 * np.hypot(*(foot_a[i] - foot_b[i])) for i in (0, 1)])
-    return 0.5 * (foot_a + foot_b), radius, foot_a, foot_b
-
-
-def _with_ends(values, order, ends):
-    """``values[order]`` (an array of the axis points) between its two ``ends`` (an array of two rows)."""
-    joined = np.empty((len(order) + 2,) + values.shape[1:])
-    joined[0], joined[-1] = ends
-    # Gathered straight into place; "clip" (the indices are valid) lets take skip its buffered copy.
-    values.take(order, axis=0, out=joined[1:-1], mode="clip")
-    return joined
-
-
 def _clean_chains(c1, c2):
     """Both chains as coordinate arrays without zero-length segments (see :func:`.chains.clean_chain`)."""
     chains = [as_coordinates(c1, "first chain"), as_coordinates(c2, "second chain")]
@@ -528,7 +298,9 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         points = yield TraceRequest(
             frame.chains, sides, frame.closed, PARABOLA_SHARE * tolerance, *frame.limits, report, frame.rounding
         )
-    centre, radius, foot_a, foot_b = _line_through(points, frame, None if fixed else SIMPLIFY_SHARE * tolerance, region)
+    centre, radius, foot_a, foot_b = yield LineRequest(
+        points, frame, None if fixed else SIMPLIFY_SHARE * tolerance, region
+    )
     return CenterlineResult(
         line=LineString(centre + frame.origin),
         radii=radius,
@@ -572,44 +344,3 @@ class _Frame:
         """The chains' segments (:class:`.contacts.Boundary`), built on first use: a feature traced together
         with others never needs its own."""
         return Boundary(self.chains)
-
-
-def _line_through(points, frame, simplification, region=None):
-    """The line's vertices, radii and feet (local frame) from the axis points, end to end.
-
-    In open mode points outside the region between the chains are dropped; each junction is kept once;
-    ``simplification`` (CRS units, None: none) is the Douglas-Peucker tolerance; a chord of the simplified line
-    that leaves ``region`` (a polygon, CRS units; None: the region between the chains) gets back the points it
-    replaced (see :func:`_restore_leaving_chords`).
-    """
-    between = None
-    if not frame.closed:
-        between = Polygon(frame.ring)
-        shapely.prepare(between)
-        points = points.subset(shapely.intersects_xy(between, points.centre[:, 0], points.centre[:, 1]))
-    resolution = DISTINCT_TOLERANCE * frame.extent
-    order = _ordered(points, frame.side, frame.lengths, frame.coincidence)
-    order = order[_first_of_each_centre(points.centre, order, resolution)]
-    ends = _line_ends(frame.chains, frame.closed)
-    centre = _with_ends(points.centre, order, ends[0])
-    keep = _distinct(centre, resolution)
-    if simplification is not None and keep.sum() > 4:
-        # The first and last points of the axis proper stay: there the stubs from the split points (radius 0)
-        # meet the axis, so a straight channel keeps vertices that carry its width.
-        distinct = keep.copy()
-        kept = np.flatnonzero(keep)
-        inner = _fewest_vertices(rows(centre, kept[1:-1]), simplification)
-        keep[kept[2:-2]] = inner[1:-1]
-        if region is None:
-            local = Polygon(frame.ring) if between is None else between
-            keep = _restore_leaving_chords(centre, distinct, keep, local, np.zeros(2))
-        else:
-            keep = _restore_leaving_chords(centre, distinct, keep, region, frame.origin)
-    if keep.sum() < 2:
-        raise IncirCuError("The chains are too close together or too short to carry a centerline.")
-    # Both ends are always kept (see _distinct): the other values only for the kept points.
-    order = order[keep[1:-1]]
-    radius, foot_a, foot_b = (
-        _with_ends(values, order, end) for values, end in zip((points.radius, points.foot_a, points.foot_b), ends[1:])
-    )
-    return centre.compress(keep, axis=0), radius, foot_a, foot_b

@@ -4,10 +4,12 @@ Tracing one small feature costs a few dozen rounds of numpy calls on arrays of a
 calls' overhead, not the arithmetic, sets the time. The public functions are therefore written as
 generators (``*_steps``) that do all their per-feature work in Python and *yield* a :class:`TraceRequest`
 where they need the axis points of a pair of chains; the driver sends the :class:`.contacts.AxisPoints`
-back. :func:`run_alone` answers each request at once (what ``polygon_centerline`` and the other plain
+back, and then a :class:`.lines.LineRequest` to have those points made into its line. :func:`run_alone`
+answers each request at once (what ``polygon_centerline`` and the other plain
 functions do); :func:`run_together` advances many generators side by side and answers all their pending
-requests with one tracing (:func:`.adaptive.trace_together`), so a layer of small features pays the
-rounds' overhead once per batch instead of once per feature. A polygon without split points first yields
+requests with one tracing (:func:`.adaptive.trace_together`), and makes all their lines at once
+(:func:`.lines.lines_together`), so a layer of small features pays the rounds' overhead once per batch
+instead of once per feature. A polygon without split points first yields
 an :class:`EndsRequest` (its automatic ends, :func:`.ends.find_ends`); :func:`run_together` answers all
 those of a batch at once (:func:`.ends.find_ends_together`) before the tracing.
 
@@ -27,6 +29,7 @@ import numpy as np
 from .adaptive import trace_one, trace_together
 from .ends import find_ends, find_ends_together
 from .errors import Cancelled
+from .lines import LineRequest, lines_together
 
 #: Share of a batch's progress taken by its round of automatic ends (the tracing takes the rest).
 ENDS_SHARE = 0.2
@@ -158,11 +161,20 @@ class EndsRequest:
     progress: Callable[[float], object] = None
 
 
+#: The order in which :func:`run_together` answers the kinds of request pending together.
+_ORDER = (EndsRequest, TraceRequest, LineRequest)
+
+
 def answer_alone(request):
-    """The answer to one request: the :class:`.ends.EndsResult` of an :class:`EndsRequest`, else the axis
-    points of a :class:`TraceRequest`."""
+    """The answer to one request: the :class:`.ends.EndsResult` of an :class:`EndsRequest`, the line of a
+    :class:`.lines.LineRequest`, else the axis points of a :class:`TraceRequest`."""
     if isinstance(request, EndsRequest):
         return find_ends(request.polygon, rule=request.rule, guide=request.guide, progress=request.progress)
+    if isinstance(request, LineRequest):
+        line = lines_together([request])[0]
+        if isinstance(line, Exception):
+            raise line
+        return line
     return trace_alone(request)
 
 
@@ -230,14 +242,15 @@ def _run_together(generators, progress):
     report = reporter(progress)
     done, traced = 0.0, False
     while pending:
-        ends = [index for index, request in pending.items() if isinstance(request, EndsRequest)]
-        indices = ends or list(pending)
+        # Ends before tracings (so the tracings that follow go together), tracings before lines.
+        kind = next(kind for kind in _ORDER if any(isinstance(request, kind) for request in pending.values()))
+        indices = [index for index, request in pending.items() if isinstance(request, kind)]
         requests = [pending.pop(index) for index in indices]
         # The ends take ENDS_SHARE of what is left; the first round of tracing 0.9, each later round (a
-        # multipart feature asks once per part) half of what is left.
-        share = (ENDS_SHARE if ends else 0.5 if traced else 0.9) * (1.0 - done)
-        traced = traced or not ends
-        answer = _found_ends if ends else _traced
+        # multipart feature asks once per part) half of what is left; lines take no share.
+        share = {EndsRequest: ENDS_SHARE, TraceRequest: 0.5 if traced else 0.9}.get(kind, 0.0) * (1.0 - done)
+        traced = traced or kind is TraceRequest
+        answer = {EndsRequest: _found_ends, TraceRequest: _traced}.get(kind, _lines)
         answers = answer(requests, lambda fraction, begin=done, width=share: report(begin + width * fraction))
         done += share
         for index, value in zip(indices, answers):
@@ -298,6 +311,21 @@ def _traced(requests, report):
                 results.append(trace_alone(request))
             except Cancelled:
                 raise
+            except Exception as error:  # noqa: BLE001
+                results.append(error)
+        return results
+
+
+def _lines(requests, report):
+    """The line of every :class:`.lines.LineRequest` (or the exception it raised), made together; each request
+    alone when that fails unexpectedly."""
+    try:
+        return lines_together(requests)
+    except Exception:  # noqa: BLE001 - find which request fails, and let the others through
+        results = []
+        for request in requests:
+            try:
+                results.append(lines_together([request])[0])
             except Exception as error:  # noqa: BLE001
                 results.append(error)
         return results
