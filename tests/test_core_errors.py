@@ -621,3 +621,11 @@ def test_the_magnitude_of_negative_coordinates_counts(coordinates, words):
     # The largest |coordinate| is a negative one: its magnitude decides both checks.
     with pytest.raises(InvalidGeometryError, match=words):
         check_coordinates(np.array(coordinates), "polygon")
+
+
+def test_checked_coordinates_give_their_extent_when_whole():
+    # The bounding box's diagonal (what a polygon's default snap tolerance is a millionth of).
+    coordinates = np.array([[-3.0, 1.0], [0.0, 5.0], [-1.0, 2.0]])
+    assert check_coordinates(coordinates, "polygon") == 5.0
+    assert check_coordinates(coordinates[:1], "polygon") == 0.0
+    assert check_coordinates(coordinates, "pair of lines", whole=False) is None

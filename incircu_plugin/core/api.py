@@ -365,10 +365,10 @@ def polygon_parts(geometry, split_points=None, snap_tolerance=None):
         raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {kind}.")
     if geometry.is_empty:
         raise InvalidGeometryError("The polygon is empty.")
-    check_coordinates(shapely.get_coordinates(geometry), "polygon")
+    extent = check_coordinates(shapely.get_coordinates(geometry), "polygon")
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     if snap_tolerance is None:
-        snap_tolerance = 1e-6 * extent_of(np.reshape(geometry.bounds, (2, 2)))
+        snap_tolerance = 1e-6 * extent
     points = list(shapely.points(split_point_coordinates(split_points)))
     near = [np.flatnonzero(shapely.distance(part.exterior, points) <= snap_tolerance).tolist() for part in parts]
     return list(zip(parts, near)), points, snap_tolerance

@@ -40,6 +40,12 @@ def check_coordinates(coordinates, name, whole=True):
     whole : bool
         The coordinates are the whole input, so their extent is checked too (not for one of two lines).
 
+    Returns
+    -------
+    float or None
+        With ``whole``, the coordinates' extent (their bounding box's diagonal, CRS units; 0 for none or one
+        point); else None.
+
     Raises
     ------
     InvalidGeometryError
@@ -52,7 +58,7 @@ def check_coordinates(coordinates, name, whole=True):
         bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
         raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
     if len(coordinates) == 0:
-        return
+        return 0.0 if whole else None
     # The largest |coordinate| from the extremes: no array of absolute values.
     magnitude = max(float(coordinates.max()), -float(coordinates.min()))
     if magnitude > MAX_COORDINATE:
@@ -61,11 +67,11 @@ def check_coordinates(coordinates, name, whole=True):
             "such coordinates overflow float64. Use a projected CRS in metres, or scale the data down."
         )
     if not whole:
-        return
+        return None
     x, y = coordinates[:, 0], coordinates[:, 1]
     extent = float(np.hypot(x.max() - x.min(), y.max() - y.min()))
     if extent == 0:
-        return
+        return extent
     if extent < MIN_EXTENT:
         raise InvalidGeometryError(
             f"The {name} is {extent:.3g} across, under {MIN_EXTENT:.0e}: products of its lengths underflow "
@@ -77,6 +83,7 @@ def check_coordinates(coordinates, name, whole=True):
             f"resolve a shape smaller than {MIN_RELATIVE_EXTENT:.0e} of its distance from the origin. "
             "Shift the data nearer the origin (subtract an offset) or use a local projected CRS."
         )
+    return extent
 
 
 def tolerance_length(value, name):
