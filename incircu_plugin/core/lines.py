@@ -11,6 +11,7 @@ each point.
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Optional
 
 import numpy as np
 import shapely
@@ -58,8 +59,8 @@ class LineRequest:
 
     points: AxisPoints
     frame: object
-    simplification: float = None
-    region: object = None
+    simplification: Optional[float] = None
+    region: Optional[Polygon] = None
 
 
 class _NotExact(Exception):
@@ -108,6 +109,11 @@ class _Blocks:
 
 def lines_together(requests):
     """The lines of many :class:`LineRequest`\\ s, each as it would be alone.
+
+    Parameters
+    ----------
+    requests : list of LineRequest
+        In any mix: closed or open chains, simplified or not, of any sizes; made ``LINE_GROUP`` at a time.
 
     Returns
     -------
@@ -393,8 +399,8 @@ def _restored(centre, distinct, keep, joined, chosen, regions):
 
 
 def _results(points, order, centre, keep, joined, ends):
-    """Each feature's line from its ``kept`` points of ``joined``: its vertices, their incircle radii and feet
-    (local frame, CRS units), or the :class:`.errors.IncirCuError` of a line of fewer than two points."""
+    """Each feature's line from the points of ``joined`` that ``keep`` marks: its vertices, their incircle radii
+    and feet (local frame, CRS units), or the :class:`.errors.IncirCuError` of a line of fewer than two points."""
     kept = joined.of(np.flatnonzero(keep))
     # The kept points between the ends, by their index in ``order`` (the ends are always kept).
     order = order.compress(keep[1:-1] if joined.count == 1 else keep[joined.within(1)])
