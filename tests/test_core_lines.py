@@ -5,9 +5,9 @@ feature's points with its own only, and each feature's values (tolerances, lengt
 with its points. Checked on the line requests of a mix of features (the analytic shapes, rivers with and
 without islands, bank lines whose points are first cut to the region between them, the fixed sampling, which
 is not simplified, a feature whose simplified chords leave its polygon, a feature without axis points, a
-feature twice), with
-lines simplified in pieces, in groups smaller than the batch, and when the sort keys cannot be offset exactly;
-and the simplification's fallback for a line it would make cross itself.
+feature twice), with lines simplified in pieces, in groups smaller than the batch, and when the sort keys cannot
+be offset exactly; the simplification's fallback for a line it would make cross itself, and the batch's fallback
+when the joint pass fails.
 """
 
 import dataclasses
@@ -17,7 +17,14 @@ import pytest
 import shapely
 
 from benchmarks.rivers import river_layer
-from incircu_plugin.core import lines, lines_centerline_steps, polygon_centerline_steps
+from incircu_plugin.core import (
+    centerlines_together,
+    lines,
+    lines_centerline_steps,
+    polygon_centerline,
+    polygon_centerline_steps,
+)
+from incircu_plugin.core import steps as steps_module
 from incircu_plugin.core.lines import LineRequest, _Blocks, _fewest_of_features, _fewest_vertices, lines_together
 from incircu_plugin.core.steps import answer_alone
 from tests.support import geometry_cases
@@ -128,3 +135,23 @@ def test_a_simplification_that_would_cross_itself_falls_back_feature_by_feature(
     # The crossing line's own fallback (GEOS's topology-preserving simplification), not the plain one.
     kept = CROSSING_LINE[simplified[len(straight) : -len(straight)]]
     assert shapely.LineString(kept).is_simple and len(kept) > len(plain.coords)
+
+
+def test_a_batch_whose_lines_fail_together_makes_each_alone(monkeypatch):
+    # run_together's fallback: an unexpected failure of the joint pass costs the batch its speed, not its lines.
+    cases = [geometry_cases.rectangle(), geometry_cases.tapered_channel(), geometry_cases.meander()]
+    joint = steps_module.lines_together
+    calls = []
+
+    def failing_together(requests):
+        calls.append(len(requests))
+        if len(requests) > 1:
+            raise RuntimeError("the joint pass failed")
+        return joint(requests)
+
+    monkeypatch.setattr(steps_module, "lines_together", failing_together)
+    outcomes = centerlines_together([polygon_centerline_steps(case.polygon, case.split_points) for case in cases])
+    assert calls == [3, 1, 1, 1]
+    for case, outcome in zip(cases, outcomes):
+        alone = polygon_centerline(case.polygon, case.split_points)
+        assert outcome.line.equals_exact(alone.line, 1e-9 * case.width)
