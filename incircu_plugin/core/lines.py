@@ -351,8 +351,9 @@ def _fewest_of_features(centre, seen, blocks, tolerances):
     alone = features[blocks.sizes.take(features) > SIMPLIFY_PIECE + 1]
     together = np.setdiff1d(features, alone, assume_unique=True)
     if len(together):
-        points = seen.compress(np.isin(blocks.ids, together))
-        lines = _lines_by_owner(_with_index(centre, points), blocks.ids.take(np.searchsorted(seen, points)))
+        mine = np.isin(blocks.ids, together)
+        points = seen.compress(mine)
+        lines = _lines_by_owner(_with_index(centre, points), blocks.ids.compress(mine))
         lines = shapely.simplify(lines, tolerances.take(together), preserve_topology=False)
         simplified[shapely.get_coordinates(lines, include_z=True)[:, 2].astype(np.intp)] = True
         points = points.compress(simplified.take(points))
