@@ -352,12 +352,12 @@ def _fewest_of_features(centre, seen, blocks, tolerances):
     together = np.setdiff1d(features, alone, assume_unique=True)
     if len(together):
         mine = np.isin(blocks.ids, together)
-        points = seen.compress(mine)
-        lines = _lines_by_owner(_with_index(centre, points), blocks.ids.compress(mine))
+        points, owner = seen.compress(mine), blocks.ids.compress(mine)
+        lines = _lines_by_owner(_with_index(centre, points), owner)
         lines = shapely.simplify(lines, tolerances.take(together), preserve_topology=False)
         simplified[shapely.get_coordinates(lines, include_z=True)[:, 2].astype(np.intp)] = True
-        points = points.compress(simplified.take(points))
-        lines = _lines_by_owner(rows(centre, points), blocks.ids.take(np.searchsorted(seen, points)))
+        kept = simplified.take(points)
+        lines = _lines_by_owner(rows(centre, points.compress(kept)), owner.compress(kept))
         alone = np.concatenate([alone, together[~shapely.is_simple(lines)]])
     for feature in alone:
         points = seen[blocks.starts[feature] : blocks.ends[feature]]

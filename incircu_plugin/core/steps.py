@@ -250,7 +250,7 @@ def _run_together(generators, progress):
         # multipart feature asks once per part) half of what is left; lines take no share.
         share = {EndsRequest: ENDS_SHARE, TraceRequest: 0.5 if traced else 0.9}.get(kind, 0.0) * (1.0 - done)
         traced = traced or kind is TraceRequest
-        answer = {EndsRequest: _found_ends, TraceRequest: _traced}.get(kind, _lines)
+        answer = {EndsRequest: _found_ends, TraceRequest: _traced, LineRequest: _lines}[kind]
         answers = answer(requests, lambda fraction, begin=done, width=share: report(begin + width * fraction))
         done += share
         for index, value in zip(indices, answers):
@@ -300,32 +300,29 @@ def _found_ends(requests, report):
 def _traced(requests, report):
     """Axis points of every request, traced together; per request alone when the joint tracing fails
     (then a request whose own tracing fails gets its exception instead)."""
+    return _together_else_alone(requests, lambda together: trace_together(together, report), trace_alone)
+
+
+def _lines(requests, report):
+    """The line of every :class:`.lines.LineRequest` (or the exception it raised), made together; each request
+    alone when that fails unexpectedly."""
+    return _together_else_alone(requests, lines_together, lambda request: lines_together([request])[0])
+
+
+def _together_else_alone(requests, together, alone):
+    """``together(requests)``; when it fails (unless cancelled), ``alone(request)`` for each request, or the
+    exception that raised, so one failing request does not take the others with it."""
     try:
-        return trace_together(requests, report)
+        return together(requests)
     except Cancelled:
         raise
     except Exception:  # noqa: BLE001 - find which request fails, and let the others through
         results = []
         for request in requests:
             try:
-                results.append(trace_alone(request))
+                results.append(alone(request))
             except Cancelled:
                 raise
-            except Exception as error:  # noqa: BLE001
-                results.append(error)
-        return results
-
-
-def _lines(requests, report):
-    """The line of every :class:`.lines.LineRequest` (or the exception it raised), made together; each request
-    alone when that fails unexpectedly."""
-    try:
-        return lines_together(requests)
-    except Exception:  # noqa: BLE001 - find which request fails, and let the others through
-        results = []
-        for request in requests:
-            try:
-                results.append(lines_together([request])[0])
             except Exception as error:  # noqa: BLE001
                 results.append(error)
         return results
