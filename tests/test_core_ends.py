@@ -411,3 +411,50 @@ def test_arc_vertices_hold_every_vertex_strictly_within_each_arc():
     expected = np.arctan2(cross, np.sum(incoming * outgoing, axis=1))
     own = rings.starts[1] + np.arange(rings.lengths[1])
     assert np.allclose(rings.turns(own), expected, rtol=0.0, atol=1e-12)
+
+
+def test_first_crossings_find_the_nearest_crossing_of_each_ray_as_shapely_does():
+    """Rays from inside and outside a star, a box and an L (through a vertex, along a side, from a point on the
+    ring, missing it, crossing it several times): each first crossing is the nearest point of
+    ``shapely.intersection`` along the ray, and its arc length is where ``line_locate_point`` puts it."""
+    star = Polygon(
+        [
+            (np.cos(a) * (1.0 + 0.5 * (k % 2)), np.sin(a) * (1.0 + 0.5 * (k % 2)))
+            for k, a in enumerate(np.linspace(0.0, 2.0 * np.pi, 10, endpoint=False))
+        ]
+    )
+    ell = Polygon([(0, 0), (2, 0), (2, 0.5), (0.5, 0.5), (0.5, 2), (0, 2)])
+    exteriors = shapely.get_exterior_ring(np.array([orient(star), orient(box(0, 0, 1, 0.5)), orient(ell)]))
+    rings = ends_module._Rings(exteriors)
+    rng = np.random.default_rng(11)
+    ring = np.concatenate([np.repeat([0, 1, 2], 30), [1, 1, 1, 2, 2, 0]])
+    origin = rng.uniform(-0.5, 1.0, (len(ring), 2))
+    direction = rng.normal(size=(len(ring), 2)) * 2.0
+    special = np.array(
+        [
+            [(0.5, 0.25), (0.5, 0.25)],  # box: through the corner (1, 0.5)
+            [(0.0, 0.0), (0.25, 0.0)],  # box: from a corner along its bottom side
+            [(-0.5, 0.25), (-0.5, 0.0)],  # box: outside, missing it
+            [(0.25, 1.0), (0.5, -1.0)],  # L: through its inner corner (0.5, 0.5), on to the bottom
+            [(3.0, 0.25), (-4.0, 0.0)],  # L: from outside, across both its arms' ends
+            [(0.0, 0.0), (2.0, 0.0)],  # star: from its centre through its vertex (1, 0)
+        ]
+    )
+    origin[-6:], direction[-6:] = special[:, 0], special[:, 1]
+    points, positions, found = rings.first_crossings(ring, origin, direction)
+    rays = shapely.linestrings(np.stack([origin, origin + direction], axis=1))
+    for number in range(len(ring)):
+        hits = shapely.get_coordinates(shapely.intersection(rays[number], exteriors[ring[number]]))
+        assert found[number] == (len(hits) > 0)
+        if not len(hits):
+            assert np.array_equal(points[number], origin[number])
+            continue
+        expected = hits[np.argmin(np.hypot(*(hits - origin[number]).T))]
+        assert np.allclose(points[number], expected, rtol=0.0, atol=1e-12)
+        located = shapely.line_locate_point(exteriors[ring[number]], shapely.Point(points[number]))
+        perimeter = rings.perimeters[ring[number]]
+        gap = abs(positions[number] - located)
+        assert min(gap, perimeter - gap) <= 1e-12
+    expected = [(1.0, 0.5), (0.0, 0.0), (-0.5, 0.25), (0.5, 0.5), (2.0, 0.25), (1.0, 0.0)]
+    assert np.allclose(points[-6:], expected, rtol=0.0, atol=1e-12)
+    assert found[-6:].tolist() == [True, True, False, True, True, True]

@@ -18,6 +18,8 @@ from incircu_plugin.core import Cancelled, centerlines_together, find_ends, poly
 from incircu_plugin.core import ends as ends_module
 from incircu_plugin.core.ends import find_ends_together
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
+from incircu_plugin.core.polyline import typical_width
+from incircu_plugin.core.skeleton import connected_labels, joint_skeletons
 from tests.support import geometry_cases
 
 #: Largest distance between a batched end and the lone one, as a fraction of the polygon's bounding-box
@@ -204,3 +206,24 @@ def test_a_features_own_progress_can_cancel_the_ends_round(monkeypatch):
     ]
     with pytest.raises(Cancelled):
         centerlines_together(generators)
+
+
+@pytest.mark.parametrize("index", [178, 840])
+def test_a_river_whose_skeleton_keeps_a_cycle_gets_the_ends_of_its_caps(index):
+    """Two rivers without islands (``river_layer`` seed 7) whose skeletons keep a cycle (triangles across a
+    narrow gap between two reaches stay inside): the sweeps traverse such a skeleton as a tree, each node
+    reached once, and the ends stay within two typical widths of the river's caps, alone and in a batch,
+    where shortest distances would cut across the gap."""
+    river = river_layer(1, seed=7, first=index)[0]
+    polygon = river.polygon
+    origin, scale = ends_module._local_box(polygon, None)
+    local = shapely.transform(polygon, lambda xy: (xy - origin) / scale)
+    skeleton = joint_skeletons([local])
+    components = len(np.unique(connected_labels(len(skeleton.nodes), *skeleton.edges.T)))
+    assert len(skeleton.edges) > len(skeleton.nodes) - components
+    width = typical_width(polygon.area, polygon.length / 2.0)
+    caps = np.array([point.coords[0] for point in river.ends])
+    for ends in (find_ends(polygon), find_ends_together([box(0, 0, 10, 1), polygon])[1]):
+        found = np.array([ends.start.coords[0], ends.end.coords[0]])
+        gaps = np.hypot(*(found[:, None, :] - caps[None, :, :]).transpose(2, 0, 1))
+        assert min(gaps[0, 0] + gaps[1, 1], gaps[0, 1] + gaps[1, 0]) <= 2.0 * width

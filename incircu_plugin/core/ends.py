@@ -52,14 +52,13 @@ on where the ring starts or which way it turns.
 
 **Batches.** :func:`find_ends_together` finds the ends of many polygons with the same answers as
 :func:`find_ends` on each (which runs the same code on a batch of one): the triangulations (one GEOS call per
-refinement round for all), the skeletons, the chain contraction and the cap centring work on flat arrays
-of all polygons, each polygon numbered and summed on its own, and so do the double sweeps of the skeletons
-that are trees (polygons without islands, see :mod:`.paths`); only the sweeps around islands and the results
-are Python per polygon. About 0.2 ms of CPU per 24-vertex rectangle in a batch of 1,000 (1.6 ms alone),
-1.4 ms per 290-vertex river (2.9 ms alone), about 4.6 us per boundary vertex; GEOS takes about 2.6 us of
-it (the Delaunay triangulation, reading and freeing its triangles about 1.8 us; simplifying, validating and
-densifying the outline, moving it to its frame, the rays and the ring look-ups of the cap centring the rest).
-The triangles outside a river (about half of them) are dropped as soon as they are read.
+refinement round for all), the skeletons, the chain contraction, the double sweeps (see :mod:`.paths`) and
+the cap centring work on flat arrays of all polygons, each polygon numbered and summed on its own; only the
+results are Python per polygon. About 0.16 ms of CPU per 24-vertex rectangle in a batch of 1,000 (1.6 ms
+alone), 1.0 ms per 290-vertex river (2.7 ms alone), about 3.4 us per boundary vertex; GEOS takes about
+2.0 us of it (the Delaunay triangulation, reading and freeing its triangles about 1.6 us; simplifying the
+outline, moving it to its frame and the ring look-ups of the cap centring the rest). The triangles outside a
+river (about half of them) are dropped as soon as they are read.
 """
 
 from dataclasses import dataclass
@@ -736,6 +735,65 @@ class _Rings:
         below = np.searchsorted(self._lifted, within + self._base[ring]) - self.starts[ring]
         return below + turns.astype(np.int64) * self.lengths[ring]
 
+    def first_crossings(self, ring, origin, direction):
+        """Return where each ray first meets its ring: the point, its arc length on the ring, and whether it does.
+
+        A ray runs from ``origin`` to ``origin + direction``; it meets a segment whose ends lie on both sides
+        of the ray's line or on it (each vertex's side is computed once per ray, so no ray slips between two
+        segments at their shared vertex), or, when both ends lie on the line, at the segment's point nearest
+        to ``origin``. The crossing nearest to ``origin`` along the ray is kept (the first segment's on a tie).
+
+        Parameters
+        ----------
+        ring : ndarray of shape (k,) of int
+            Ring of each ray.
+        origin, direction : ndarray of shape (k, 2)
+            Local units.
+
+        Returns
+        -------
+        points : ndarray of shape (k, 2)
+            The first crossing (``origin`` where there is none), local units.
+        positions : ndarray of shape (k,)
+            Its arc length on the ring (0 where there is none), local units.
+        found : ndarray of shape (k,) of bool
+        """
+        sizes = self.lengths[ring]
+        ray, rank = ranges(sizes)
+        size = np.repeat(sizes, sizes)
+        vertex = np.repeat(self.starts[ring], sizes) + rank
+        x, y = np.take(self.vertices, vertex, axis=0).T
+        along_x, along_y = direction.T
+        # Each vertex's side of its ray's line: the cross product of the direction with (vertex - origin).
+        side = np.repeat(along_x, sizes) * y - np.repeat(along_y, sizes) * x
+        side -= np.repeat(along_x * origin[:, 1] - along_y * origin[:, 0], sizes)
+        following = np.arange(len(rank)) + np.where(rank + 1 == size, 1 - size, 1)
+        side_after = side[following]
+        crossing = np.sign(side) != np.sign(side_after)
+        on_line = (side == 0.0) & (side_after == 0.0)
+        pair = np.flatnonzero(crossing | on_line)
+        ray, crossing, on_line = ray[pair], crossing[pair], on_line[pair]
+        start = np.take(self.vertices, vertex[pair], axis=0)
+        segment = np.take(self.vertices, vertex[following[pair]], axis=0) - start
+        corner = start - origin[ray]
+        squared = np.einsum("ij,ij->i", segment, segment)
+        nearest = np.clip(-np.einsum("ij,ij->i", corner, segment) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
+        through = side[pair] / np.where(crossing, side[pair] - side_after[pair], 1.0)
+        fraction = np.where(on_line, nearest, through)
+        offset = corner + fraction[:, None] * segment
+        reach = np.einsum("ij,ij->i", offset, direction[ray]) / np.einsum("ij,ij->i", direction, direction)[ray]
+        met = np.flatnonzero((reach >= 0.0) & (reach <= 1.0))
+        points, positions = origin.copy(), np.zeros(len(ring))
+        found = np.zeros(len(ring), dtype=bool)
+        if len(met):
+            ordered = met[np.lexsort((reach[met], ray[met]))]
+            chosen = ordered[np.append(True, ray[ordered][1:] != ray[ordered][:-1])]
+            points[ray[chosen]] = origin[ray[chosen]] + offset[chosen]
+            arc = self.positions[vertex[pair[chosen]]] + fraction[chosen] * np.sqrt(squared[chosen])
+            positions[ray[chosen]] = arc
+            found[ray[chosen]] = True
+        return points, positions, found
+
     def turns(self, vertex):
         """Return the signed turn of the rings at ``vertex`` (into ``positions``), radians (positive to the
         left)."""
@@ -799,23 +857,15 @@ def _centred_ends(tips, rings):
     sign[sign == 0.0] = 1.0
     tangent = tangent / np.where(tangent_norm > 0.0, tangent_norm, 1.0)[:, None] * sign[:, None]
     tangent[tangent_norm <= 1e-9] = chord[tangent_norm <= 1e-9]
-    rays = shapely.linestrings(np.stack([point, point + tangent * 2.0], axis=1))
-    hits, ray = shapely.get_coordinates(shapely.intersection(rays, exteriors), return_index=True)
-    exit_points = point.copy()
-    found = np.zeros(len(point), dtype=bool)
-    if len(ray):
-        nearest = np.lexsort((np.hypot(*(hits - point[ray]).T), ray))
-        first = nearest[np.concatenate([[True], ray[nearest][1:] != ray[nearest][:-1]])]
-        exit_points[ray[first]] = hits[first]
-        found[ray[first]] = True
-    ends = _cap_middles(rings, owner, left, right, exit_points)
+    exit_points, at_exit, found = rings.first_crossings(owner, point, tangent * 2.0)
+    ends = _cap_middles(rings, owner, left, right, exit_points, at_exit)
     fallback = stuck | ~found
     if np.any(fallback):
         ends[fallback] = _nearest_boundary_points(exteriors[fallback], point[fallback])
     return ends
 
 
-def _cap_middles(rings, owner, left, right, exit_points):
+def _cap_middles(rings, owner, left, right, exit_points, at_exit):
     """Return the middle of each end cap: the ring arc from ``right`` to ``left`` through the exit point.
 
     Corners are the arc's vertices where a counter-clockwise ring turns left by ``CORNER_TURN`` or more.
@@ -831,6 +881,8 @@ def _cap_middles(rings, owner, left, right, exit_points):
     left, right, exit_points : ndarray of shape (k, 2)
         Where each end's last trunk disk touches the two banks, and where the trunk's continuation leaves
         the polygon, local units.
+    at_exit : ndarray of shape (k,)
+        Arc length of each exit point on its ring, local units.
 
     Returns
     -------
@@ -838,10 +890,8 @@ def _cap_middles(rings, owner, left, right, exit_points):
         Local units.
     """
     exteriors, perimeter = rings.exteriors[owner], rings.perimeters[owner]
-    located = shapely.line_locate_point(
-        np.tile(exteriors, 3), shapely.points(np.concatenate([left, right, exit_points]))
-    )
-    at_left, at_right, at_exit = located.reshape(3, -1)
+    located = shapely.line_locate_point(np.tile(exteriors, 2), shapely.points(np.concatenate([left, right])))
+    at_left, at_right = located.reshape(2, -1)
     forward = (at_left - at_right) % perimeter
     through = (at_exit - at_right) % perimeter <= forward
     start = np.where(through, at_right, at_left)

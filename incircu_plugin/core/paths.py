@@ -2,29 +2,30 @@
 
 The skeleton of an elongated polygon is mostly long chains of nodes with two neighbours. The chains are
 contracted first, with numpy only (pointer jumping over directed edges: ``log2`` of the longest chain
-rounds), into a graph of its *key* nodes (one or three or more neighbours); the double sweep then runs in
-Python on that graph only, and the chosen path is expanded back to skeleton nodes.
+rounds), into a graph of its *key* nodes (one or three or more neighbours); the double sweeps then run on
+that graph only, all components at once, and the chosen paths are expanded back to skeleton nodes.
 
-The components that are trees (all of them for polygons without holes) are swept together instead: one
-numpy step per level of their contracted graphs, all components at once, while many nodes are on the
-front; the last, thin levels of the deepest components go on in Python. The distances are the same sums
-in the same order, so the paths are the same as one component's sweep in Python gives.
+The components that are trees (all of them for polygons without holes) are swept level by level: one numpy
+step per level of their contracted graphs while many nodes are on the front; the last, thin levels of the
+deepest components go on in Python. The components with cycles (around islands) are swept by rounds of
+Bellman-Ford: each round relaxes, in numpy, the edges out of the nodes whose distance fell in the round
+before. Either way a node's distance is the sum of the weights along its path from the source, edge by edge.
 
 **Double sweep.** From a start node, the node ``a`` at the largest distance, then from ``a`` the node ``b``
 at the largest distance: ``a -> b`` is the heaviest path. Distances are sums of non-negative edge weights
 (length, swept area, ...). On a tree (a polygon without holes) each sweep is a plain traversal and the
-result is exact; around islands each sweep is a Dijkstra search and the result a close approximation.
+result is exact; around islands each sweep finds the shortest distances and the result is a close
+approximation.
 """
 
 import functools
-import heapq
 
 import numpy as np
 
 from .contacts import ranges, stable_order
 from .skeleton import connected_labels
 
-#: Node pops of a sweep between two calls of the cancel check.
+#: Nodes or edges a sweep handles between two calls of the cancel check.
 CHECK_EVERY = 4096
 
 #: Fewest nodes on the front of the trees' joint sweep for a numpy step; a thinner front goes on in Python.
@@ -35,8 +36,9 @@ def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
     """Return the heaviest path of each start's component, found by a double sweep from the start.
 
     The chains of the whole graph are contracted at once; the components that are trees are then swept
-    together (see :func:`_forest_sweep`), each other one in Python over its contracted nodes only, so many
-    small components (the skeletons of a batch of polygons) cost one contraction and a few numpy calls.
+    together (see :func:`_forest_sweep`), and so are those with cycles (see :func:`_shortest_sweep`), so many
+    small components (the skeletons of a batch of polygons) cost one contraction and a few numpy calls per
+    level.
 
     Parameters
     ----------
@@ -49,8 +51,10 @@ def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
     starts : sequence of int
         One node per path, each in a different component: the node its first sweep starts from.
     acyclic : sequence of bool
-        Per start, whether its component is a tree (each sweep a plain traversal, the double sweep exact);
-        a component found to be a tree is swept as one whatever this says (a tree's Dijkstra gives the same).
+        Per start, whether its component should be a tree. A component found to be a tree is swept as one
+        whatever this says; one with cycles is swept for shortest distances, unless it should be a tree (the
+        skeleton of a polygon without holes): then each sweep is a plain traversal in Python that reaches
+        each node once, by the first way it finds (depth first), as on a tree.
     check : callable, optional
         Called with no argument now and then; may raise to stop.
 
@@ -59,36 +63,57 @@ def heaviest_paths(count, edges, weights, starts, acyclic, check=None):
     list of ndarray of int
         Per start, the node indices of its path from one end to the other (one node when the start has no
         edge).
+
+    Examples
+    --------
+    A path of three edges with a twig at its second node, and a lone node:
+
+    >>> import numpy as np
+    >>> edges = np.array([[0, 1], [1, 2], [2, 3], [1, 4]])
+    >>> weights = np.array([1.0, 1.0, 1.0, 0.5])
+    >>> [path.tolist() for path in heaviest_paths(6, edges, weights, [2, 5], [True, True])]
+    [[0, 1, 2, 3], [5]]
     """
     chains = _Chains(count, edges, weights)
     graph = chains.contracted()
     starts = np.asarray(starts, dtype=np.int64)
     in_tree = chains.in_tree(starts)
+    should_be_tree = np.asarray(acyclic, dtype=bool)
     paths = [None] * len(starts)
-    together = np.flatnonzero(in_tree)
-    if len(together):
-        sources = chains.key_index[chains.nearest_keys(starts[together])]
-        firsts = _farthest_of_sources(_forest_sweep(graph, sources, check), len(sources))
-        sweep = _forest_sweep(graph, firsts, check)
-        lasts = _farthest_of_sources(sweep, len(firsts))
-        parent, parent_via = sweep[1].tolist(), sweep[2].tolist()
-        for index, first, last in zip(together.tolist(), firsts.tolist(), lasts.tolist()):
-            key_path, via = [last], []
-            while key_path[-1] != first:
-                via.append(parent_via[key_path[-1]])
-                key_path.append(parent[key_path[-1]])
-            paths[index] = (key_path[::-1], via[::-1])
-    for index in np.flatnonzero(~in_tree).tolist():
-        paths[index] = _swept_path(chains, graph.lists, int(starts[index]), acyclic[index], check)
+    cyclic = np.flatnonzero(~in_tree & ~should_be_tree)
+    for group, sweep in ((np.flatnonzero(in_tree), _forest_sweep), (cyclic, _shortest_sweep)):
+        if len(group):
+            sources = chains.key_index[chains.nearest_keys(starts[group])]
+            for index, path in zip(group.tolist(), _double_sweeps(graph, sources, sweep, check)):
+                paths[index] = path
+    for index in np.flatnonzero(~in_tree & should_be_tree).tolist():
+        paths[index] = _traversed_path(chains, graph.lists, int(starts[index]), check)
     return chains.expand_all(paths)
 
 
-def _swept_path(chains, graph, start, acyclic, check):
-    """Return the contracted path ``(key_path, via)`` of a double sweep in Python from ``start``."""
-    first = chains.key_index[_farthest_key(chains, graph, start, acyclic, check)]
-    distance, predecessor = _sweep(graph, first, acyclic, check)
-    last = _farthest(distance)
-    key_path = [last]
+def _double_sweeps(graph, sources, sweep, check):
+    """Return the contracted path ``(key_path, via)`` of the double sweep from each source, by ``sweep``
+    (:func:`_forest_sweep` or :func:`_shortest_sweep`, all sources at once)."""
+    firsts = _farthest_of_sources(sweep(graph, sources, check), len(sources))
+    second = sweep(graph, firsts, check)
+    lasts = _farthest_of_sources(second, len(firsts))
+    parent, parent_via = second[1].tolist(), second[2].tolist()
+    paths = []
+    for first, last in zip(firsts.tolist(), lasts.tolist()):
+        key_path, via = [last], []
+        while key_path[-1] != first:
+            via.append(parent_via[key_path[-1]])
+            key_path.append(parent[key_path[-1]])
+        paths.append((key_path[::-1], via[::-1]))
+    return paths
+
+
+def _traversed_path(chains, graph, start, check):
+    """Return the contracted path ``(key_path, via)`` of a double sweep by :func:`_traversal` from ``start``."""
+    source = int(chains.key_index[chains.nearest_keys(np.array([start]))[0]])
+    first = _farthest(_traversal(graph, source, check)[0])
+    distance, predecessor = _traversal(graph, first, check)
+    key_path = [_farthest(distance)]
     while key_path[-1] != first:
         key_path.append(predecessor[key_path[-1]][0])
     via = [predecessor[node][1] for node in key_path[:-1]]
@@ -101,11 +126,31 @@ def _farthest(distance):
     return min(node for node, reached in distance.items() if reached == largest)
 
 
-def _farthest_key(chains, graph, start, acyclic, check):
-    """Return the key node farthest from ``start`` (a key node of its component)."""
-    source = chains.nearest_key(start)
-    distance, _ = _sweep(graph, int(chains.key_index[source]), acyclic, check)
-    return chains.keys[_farthest(distance)]
+def _traversal(graph, source, check):
+    """Return the distance from ``source`` to each contracted node it reaches and each one's ``(predecessor, via)``,
+    by a depth-first traversal that reaches each node once (the first way it finds, as on a tree).
+
+    Both are ``{node: ...}`` maps holding the reached nodes only. ``graph`` is :attr:`_Contracted.lists`.
+    """
+    start, neighbours, lengths, vias = graph
+    distance = {source: 0.0}
+    predecessor = {}
+    stack = [(0.0, source)]
+    pops = 0
+    while stack:
+        reached, node = stack.pop()
+        pops += 1
+        if check is not None and pops % CHECK_EVERY == 0:
+            check()
+        for k in range(start[node], start[node + 1]):
+            neighbour = neighbours[k]
+            if neighbour in distance:
+                continue
+            distance[neighbour] = reached + lengths[k]
+            predecessor[neighbour] = (node, vias[k])
+            if start[neighbour + 1] - start[neighbour] > 1:
+                stack.append((distance[neighbour], neighbour))
+    return distance, predecessor
 
 
 class _Contracted:
@@ -186,12 +231,8 @@ class _Chains:
         """Return whether each node's component is a tree (as many edges as nodes less one)."""
         return self.tree[self.labels[self.key_index[self.nearest_keys(nodes)]]]
 
-    def nearest_key(self, node):
-        """Return a key node of ``node``'s component: ``node`` itself or the end of one of its chains."""
-        return int(self.nearest_keys(np.array([node]))[0])
-
     def nearest_keys(self, nodes):
-        """Return :meth:`nearest_key` of each of the ``nodes`` (an int array)."""
+        """Return a key node of each node's component: the node itself or the end of one of its chains."""
         nodes = np.array(nodes, dtype=np.int64)
         through = ~self.key[nodes]
         nodes[through] = self.head[self.last[self.first_out[nodes[through]]]]
@@ -348,37 +389,44 @@ def _farthest_of_sources(sweep, count):
     return farthest
 
 
-def _sweep(graph, source, acyclic, check):
-    """Return the distance from ``source`` to each contracted node it reaches and each one's ``(predecessor, via)``.
+def _shortest_sweep(graph, sources, check):
+    """Return what :func:`_forest_sweep` returns, for components that may have cycles: shortest distances.
 
-    A plain traversal on a forest (every reachable node has one path from the source), else Dijkstra. Both
-    are ``{node: ...}`` maps holding the reached nodes only, so a sweep costs its component's size only. A
-    leaf is not queued: from it the only way leads back (no shorter, the weights being non-negative).
+    Rounds of Bellman-Ford, all components at once: each round relaxes the edges out of the nodes whose
+    distance fell in the round before (a leaf's only edge leads back, so leaves are not relaxed from). A node
+    takes the shortest of its round's candidates; of equally short ways it keeps the one found first (the
+    earlier round, then the earlier edge). A node's distance is its predecessor's plus the edge's weight, as
+    a Dijkstra search sums it.
     """
-    start, neighbours, lengths, vias = graph
-    distance = {source: 0.0}
-    predecessor = {}
-    queue = [(0.0, source)]
-    pops = 0
-    while queue:
-        reached, node = queue.pop() if acyclic else heapq.heappop(queue)
-        pops += 1
-        if check is not None and pops % CHECK_EVERY == 0:
+    start, neighbours, lengths, vias = graph.arrays
+    size = len(start) - 1
+    degree = np.diff(start)
+    distance = np.full(size, np.inf)
+    parent = np.full(size, -1, dtype=np.int64)
+    parent_via = np.full(size, -1, dtype=np.int64)
+    origin = np.full(size, -1, dtype=np.int64)
+    distance[sources] = 0.0
+    origin[sources] = np.arange(len(sources))
+    front = np.asarray(sources, dtype=np.int64)
+    relaxed = 0
+    while len(front):
+        owner, rank = ranges(degree[front])
+        edge = start[front][owner] + rank
+        node = front[owner]
+        neighbour = neighbours[edge]
+        candidate = distance[node] + lengths[edge]
+        shorter = np.flatnonzero(candidate < distance[neighbour])
+        edge, node, neighbour, candidate = edge[shorter], node[shorter], neighbour[shorter], candidate[shorter]
+        order = np.lexsort((candidate, neighbour))
+        best = order[np.append(True, neighbour[order][1:] != neighbour[order][:-1])] if len(order) else order
+        reached = neighbour[best]
+        distance[reached] = candidate[best]
+        parent[reached] = node[best]
+        parent_via[reached] = vias[edge[best]]
+        origin[reached] = origin[node[best]]
+        front = reached[degree[reached] > 1]
+        if check is not None and (relaxed + len(edge)) // CHECK_EVERY > relaxed // CHECK_EVERY:
             check()
-        if reached > distance[node]:
-            continue
-        for k in range(start[node], start[node + 1]):
-            neighbour = neighbours[k]
-            candidate = reached + lengths[k]
-            if acyclic and (neighbour in predecessor or neighbour == source):
-                continue
-            if candidate < distance.get(neighbour, float("inf")):
-                distance[neighbour] = candidate
-                predecessor[neighbour] = (node, vias[k])
-                if start[neighbour + 1] - start[neighbour] == 1:
-                    continue
-                if acyclic:
-                    queue.append((candidate, neighbour))
-                else:
-                    heapq.heappush(queue, (candidate, neighbour))
-    return distance, predecessor
+        relaxed += len(edge)
+    distance[origin < 0] = -np.inf
+    return distance, parent, parent_via, origin

@@ -1,7 +1,8 @@
 """Skeleton of a polygon for the automatic ends: the dual graph of a conforming Delaunay triangulation.
 
-The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` (Douglas-Peucker; the slower
-topology-preserving variant only when that gives an invalid polygon) and densified to
+The boundary (exterior and holes) is simplified by ``SIMPLIFY_FRACTION`` (Douglas-Peucker, whose result GEOS
+repairs where it crosses itself; the slower topology-preserving variant only when that leaves other than one
+polygon) and densified to
 ``1 / SAMPLES_PER_WIDTH`` of the typical width ``2 * area / perimeter`` (a coarser step when that would add
 more than ``MAX_SAMPLES`` samples), then triangulated (Delaunay, made conforming by splitting the boundary
 segments that are not edges of it; a polygon whose first triangulation has only slivers, thinner than its
@@ -348,15 +349,39 @@ def _boundary_sample_arrays(polygons):
     widths = typical_width(shapely.area(polygons), shapely.length(polygons) / 2.0)
     tolerance = SIMPLIFY_FRACTION * widths
     simplified = shapely.simplify(polygons, tolerance, preserve_topology=False)
-    bad = (shapely.get_type_id(simplified) != 3) | ~shapely.is_valid(simplified)
+    # GEOS repairs a self-crossing result (its buffer by 0), which may leave several polygons or none.
+    bad = shapely.get_type_id(simplified) != 3
     if np.any(bad):
         simplified[bad] = shapely.simplify(polygons[bad], tolerance[bad], preserve_topology=True)
     simplified = counterclockwise(simplified)
     steps = np.maximum(widths / SAMPLES_PER_WIDTH, shapely.length(simplified) / MAX_SAMPLES)
-    rings, ring_owner = shapely.get_rings(shapely.segmentize(simplified, steps), return_index=True)
-    coordinates, ring = shapely.get_coordinates(rings, return_index=True)
-    closing = np.append(ring[1:] != ring[:-1], True)[: len(ring)]
-    return coordinates[~closing], ring[~closing], ring_owner[ring[~closing]], steps
+    rings, ring_owner = shapely.get_rings(simplified, return_index=True)
+    samples, ring = _densified(*shapely.get_coordinates(rings, return_index=True), steps[ring_owner])
+    return samples, ring, ring_owner[ring], steps
+
+
+def _densified(coordinates, ring, steps):
+    """Return closed rings' vertices with every segment split into ``ceil(length / step)`` equal pieces, each
+    ring without its closing vertex, and the ring of each (the points of GEOS's ``segmentize``, computed as it
+    computes them; a segment of no length adds nothing).
+
+    Parameters
+    ----------
+    coordinates : ndarray of shape (n, 2)
+        The rings' vertices, ring after ring, each ring closed, CRS units.
+    ring : ndarray of shape (n,) of int
+        Ring of each vertex (non-decreasing).
+    steps : ndarray
+        Largest piece of each ring, CRS units.
+    """
+    delta = coordinates[1:] - coordinates[:-1]
+    length = np.sqrt(delta[:, 0] * delta[:, 0] + delta[:, 1] * delta[:, 1])
+    within = (ring[1:] == ring[:-1]) & (length > 0.0)
+    pieces = np.where(within, np.maximum(np.ceil(length / steps[ring[:-1]]), 1.0), 0.0).astype(np.int64)
+    segment, rank = ranges(pieces)
+    piece = length / np.maximum(pieces, 1)
+    fraction = rank * piece[segment] / np.where(within, length, 1.0)[segment]
+    return coordinates[segment] + fraction[:, None] * delta[segment], ring[segment]
 
 
 def boundary_samples(polygon):
