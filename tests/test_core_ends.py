@@ -444,7 +444,10 @@ def test_first_crossings_find_the_nearest_crossing_of_each_ray_as_shapely_does()
     points, positions, found = rings.first_crossings(ring, origin, direction)
     rays = shapely.linestrings(np.stack([origin, origin + direction], axis=1))
     for number in range(len(ring)):
-        hits = shapely.get_coordinates(shapely.intersection(rays[number], exteriors[ring[number]]))
+        with warnings.catch_warnings():
+            # GEOS 3.11 returns a missing ray's intersection as an empty line with z, and numpy warns about it.
+            warnings.simplefilter("ignore", RuntimeWarning)
+            hits = shapely.get_coordinates(shapely.intersection(rays[number], exteriors[ring[number]]))
         assert found[number] == (len(hits) > 0)
         if not len(hits):
             assert np.array_equal(points[number], origin[number])

@@ -260,3 +260,23 @@ def test_kept_triangles_drop_the_clearly_outside_ones_of_finished_conforming_pol
     assert kept([False, True], [True, False]) == list(range(count, 2 * count))
     assert kept([True, False], [True, True]) == walled
     assert kept([False, False], [True, True]) == []
+
+
+def test_densified_rings_are_those_of_shapely_segmentize():
+    """An uneven polygon with a hole, its rings split with a different step each (segments from a tenth of the
+    step to forty steps long, and one of no length): the same points as ``shapely.segmentize`` gives, in the
+    same order, each ring without its closing point."""
+    rng = np.random.default_rng(3)
+    angles = np.sort(rng.random(40)) * 2.0 * np.pi
+    radii = 1.0 + 0.4 * rng.random(40)
+    outer = np.stack([radii * np.cos(angles), radii * np.sin(angles)], axis=1)
+    outer = np.insert(outer, 5, outer[5], axis=0)
+    hole = np.array([(0.1, 0.1), (0.3, 0.1), (0.3, 0.25), (0.1, 0.3)])[::-1]
+    polygon = shapely.Polygon(outer, [hole])
+    steps = np.array([0.037, 0.011])
+    rings = shapely.get_rings(polygon)
+    samples, ring = skeleton_module._densified(*shapely.get_coordinates(rings, return_index=True), steps)
+    for number, step in enumerate(steps):
+        expected = shapely.get_coordinates(shapely.segmentize(rings[number], step))[:-1]
+        expected = expected[np.append(True, np.any(expected[1:] != expected[:-1], axis=1))]
+        assert np.allclose(samples[ring == number], expected, rtol=0.0, atol=1e-15)

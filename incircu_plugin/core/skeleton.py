@@ -362,8 +362,8 @@ def _boundary_sample_arrays(polygons):
 
 def _densified(coordinates, ring, steps):
     """Return closed rings' vertices with every segment split into ``ceil(length / step)`` equal pieces, each
-    ring without its closing vertex, and the ring of each (the points of GEOS's ``segmentize``, computed as it
-    computes them; a segment of no length adds nothing).
+    ring without its closing vertex, and the ring of each (the points GEOS 3.14's ``segmentize`` gives, computed
+    as it computes them; a segment of no length adds nothing).
 
     Parameters
     ----------
