@@ -16,9 +16,9 @@ together (``find_ends_together``, what a batch of ``centerlines_together`` uses)
 ``100 x (10 + i / 100)`` segmentized every 10 (24 vertices each) and the 400 rivers of
 ``rivers.river_layer(count=400)`` (about 290 vertices each, some with islands). Columns: CPU microseconds per
 boundary vertex and per polygon, median of ``--repeats`` runs. Target (issue 9): <= 3 us per boundary vertex
-in batches; not met: 3.9 us on the 400 rivers together in the run of 2026-12-03 (4.6 in an earlier run of the
-same algorithm, 4.8 before branch ``ends2``, 5.0 to 5.3 before branch ``ends``), of which the GEOS calls take about
-2.2 us (see ``docs/ends-benchmark.md``).
+in batches; not met: 3.5 us on the 400 rivers together in the run of 2026-12-04 (3.9 before stop 33, 4.8 before
+branch ``ends2``, 5.0 to 5.3 before branch ``ends``), of which the GEOS calls take about 1.9 us (see
+``docs/ends-benchmark.md``).
 """
 
 import argparse
