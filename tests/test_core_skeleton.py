@@ -263,8 +263,8 @@ def test_kept_triangles_drop_the_clearly_outside_ones_of_finished_conforming_pol
 
 
 def test_densified_rings_are_those_of_shapely_segmentize():
-    """An uneven polygon with a hole, its rings split with a different step each (segments from a tenth of the
-    step to forty steps long, and one of no length): the same points as ``shapely.segmentize`` gives, in the
+    """An uneven polygon with a hole, its rings split with a different step each (segments from under one step
+    to nineteen steps long, and one of no length): the same points as ``shapely.segmentize`` gives, in the
     same order, each ring without its closing point."""
     rng = np.random.default_rng(3)
     angles = np.sort(rng.random(40)) * 2.0 * np.pi

@@ -373,6 +373,13 @@ def _densified(coordinates, ring, steps):
         Ring of each vertex (non-decreasing).
     steps : ndarray
         Largest piece of each ring, CRS units.
+
+    Returns
+    -------
+    samples : ndarray of shape (m, 2)
+        CRS units.
+    ring : ndarray of shape (m,) of int
+        Ring of each sample.
     """
     delta = coordinates[1:] - coordinates[:-1]
     length = np.sqrt(delta[:, 0] * delta[:, 0] + delta[:, 1] * delta[:, 1])
