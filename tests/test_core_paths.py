@@ -18,9 +18,8 @@ def random_forest(rng, sizes):
     return sum(sizes), edges, rng.random(len(edges)) + 0.01
 
 
-def heaviest_by_brute_force(edges, weights, first, size):
-    """The weight of the heaviest path in the tree of nodes ``first`` to ``first + size - 1``, from all pairs'
-    distances."""
+def shortest_distances(edges, weights, first, size):
+    """All pairs' shortest distances in the graph of nodes ``first`` to ``first + size - 1`` (Floyd-Warshall)."""
     own = (edges[:, 0] >= first) & (edges[:, 0] < first + size)
     local = edges[own] - first
     distance = np.full((size, size), np.inf)
@@ -28,7 +27,13 @@ def heaviest_by_brute_force(edges, weights, first, size):
     distance[local[:, 0], local[:, 1]] = distance[local[:, 1], local[:, 0]] = weights[own]
     for middle in range(size):
         distance = np.minimum(distance, distance[:, middle, None] + distance[None, middle, :])
-    return distance.max()
+    return distance
+
+
+def heaviest_by_brute_force(edges, weights, first, size):
+    """The weight of the heaviest path in the tree of nodes ``first`` to ``first + size - 1``, from all pairs'
+    distances."""
+    return shortest_distances(edges, weights, first, size).max()
 
 
 def path_weight(path, edges, weights):
@@ -138,18 +143,6 @@ def random_graph_with_cycles(rng, sizes):
         first += size
     edges = np.unique(np.sort(np.concatenate([edges, np.array(extra)]), axis=1), axis=0)
     return count, edges, rng.random(len(edges)) + 0.01
-
-
-def shortest_distances(edges, weights, first, size):
-    """All pairs' shortest distances in the graph of nodes ``first`` to ``first + size - 1`` (Floyd-Warshall)."""
-    own = (edges[:, 0] >= first) & (edges[:, 0] < first + size)
-    local = edges[own] - first
-    distance = np.full((size, size), np.inf)
-    np.fill_diagonal(distance, 0.0)
-    distance[local[:, 0], local[:, 1]] = distance[local[:, 1], local[:, 0]] = weights[own]
-    for middle in range(size):
-        distance = np.minimum(distance, distance[:, middle, None] + distance[None, middle, :])
-    return distance
 
 
 def test_components_with_cycles_get_the_double_sweep_of_shortest_distances(monkeypatch):

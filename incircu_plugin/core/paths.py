@@ -319,17 +319,10 @@ def _forest_sweep(graph, sources, check):
 
     ``sources`` lie in different components, each a tree; nodes they do not reach get distance ``-inf``,
     predecessor and chain ``-1``. The distance of a node is summed from its source edge by edge, as
-    :func:`_sweep` sums it.
+    :func:`_traversal` sums it.
     """
     start, neighbours, lengths, vias = graph.arrays
-    size = len(start) - 1
-    distance = np.full(size, -np.inf)
-    parent = np.full(size, -1, dtype=np.int64)
-    parent_via = np.full(size, -1, dtype=np.int64)
-    origin = np.full(size, -1, dtype=np.int64)
-    distance[sources] = 0.0
-    origin[sources] = np.arange(len(sources))
-    front = np.asarray(sources, dtype=np.int64)
+    distance, parent, parent_via, origin, front = _sweep_start(len(start) - 1, sources, -np.inf)
     reached = len(front)
     while len(front) >= FRONT_IN_NUMPY:
         owner, rank = ranges(start[front + 1] - start[front])
@@ -377,8 +370,23 @@ def _finish_forest_sweep(graph, front, sweep, check):
         distance[nodes], parent[nodes], parent_via[nodes], origin[nodes] = distances, parents, chains, sources
 
 
+def _sweep_start(size, sources, unreached):
+    """Return a sweep's arrays over ``size`` contracted nodes before its first step: distance (0 at the
+    ``sources``, ``unreached`` elsewhere), predecessor, chain and source number (``-1`` where not reached), and
+    its first front, the sources."""
+    distance = np.full(size, unreached)
+    parent = np.full(size, -1, dtype=np.int64)
+    parent_via = np.full(size, -1, dtype=np.int64)
+    origin = np.full(size, -1, dtype=np.int64)
+    front = np.asarray(sources, dtype=np.int64)
+    distance[front] = 0.0
+    origin[front] = np.arange(len(front))
+    return distance, parent, parent_via, origin, front
+
+
 def _farthest_of_sources(sweep, count):
-    """Return, per source of a :func:`_forest_sweep`, the node of largest distance (the smallest on a tie)."""
+    """Return, per source of a sweep (:func:`_forest_sweep` or :func:`_shortest_sweep`), the node of largest
+    distance (the smallest on a tie)."""
     distance, _, _, origin = sweep
     reached = np.flatnonzero(origin >= 0)
     largest = np.full(count, -np.inf)
@@ -399,15 +407,8 @@ def _shortest_sweep(graph, sources, check):
     a Dijkstra search sums it.
     """
     start, neighbours, lengths, vias = graph.arrays
-    size = len(start) - 1
     degree = np.diff(start)
-    distance = np.full(size, np.inf)
-    parent = np.full(size, -1, dtype=np.int64)
-    parent_via = np.full(size, -1, dtype=np.int64)
-    origin = np.full(size, -1, dtype=np.int64)
-    distance[sources] = 0.0
-    origin[sources] = np.arange(len(sources))
-    front = np.asarray(sources, dtype=np.int64)
+    distance, parent, parent_via, origin, front = _sweep_start(len(start) - 1, sources, np.inf)
     relaxed = 0
     while len(front):
         owner, rank = ranges(degree[front])
