@@ -167,6 +167,60 @@ def test_the_skeleton_path_goes_around_an_island():
     assert polygon.buffer(1e-9).covers(ends.trunk)
 
 
+@pytest.mark.parametrize(
+    "island",
+    [
+        Point(2780.0, -120.0).buffer(8.0, 4),
+        Point(2700.0, -125.0).buffer(10.0, 4),
+        Point(2850.0, 120.0).buffer(8.0, 4),
+        Point(200.0, 100.0).buffer(12.0, 4),
+        box(1000.0, -60.0, 2000.0, 60.0),
+    ],
+    ids=["small, near a bank near the end", "larger, nearer the bank", "near the other bank", "near the start", "big"],
+)
+def test_islands_do_not_move_the_ends(island):
+    """A straight channel 3,000 x 300 with one island: the ends are the middles of its flat caps, as without the
+    island. (A small island beside a bank near an end used to pull the path through the gap between them and
+    the end to a corner of the cap, 150 away: islands smaller than the typical width are left out of the
+    skeleton; the big one is kept, and the path goes around it.)"""
+    outline = box(0.0, -150.0, 3000.0, 150.0)
+    found, ends = found_pair(Polygon(outline.exterior.coords, [island.exterior.coords]))
+    assert pair_error(found, [(0.0, 0.0), (3000.0, 0.0)]) <= FLAT_CAP_TOLERANCE * 300.0
+    assert ends.elongated
+
+
+def test_ignored_islands_do_not_move_the_automatic_ends():
+    """With the islands ignored the ends are those of the outline, even beside an island wider than the
+    channel's typical width near an end (which, kept, may pull that end to a corner of the cap)."""
+    outline = box(0.0, -150.0, 3000.0, 150.0)
+    polygon = Polygon(outline.exterior.coords, [box(2600.0, -140.0, 2900.0, -20.0).exterior.coords])
+    line = polygon_centerline(polygon, islands="ignore").line
+    found = np.array([line.coords[0], line.coords[-1]])
+    assert pair_error(found, [(0.0, 0.0), (3000.0, 0.0)]) <= FLAT_CAP_TOLERANCE * 300.0
+
+
+def test_ends_with_islands_are_those_of_the_outline():
+    """A meandering river 5 km long and 300 wide strewn with 300 small islands gets the ends of its outline
+    alone (which lie on the middles of its flat caps), so ignoring the islands or going around them starts
+    from the same ends."""
+    along = np.linspace(0.0, 5000.0, 400)
+    river = LineString(np.c_[along, 200.0 * np.sin(along / 500.0)]).buffer(150.0, cap_style="flat")
+    rng = np.random.default_rng(3)
+    islands = []
+    while len(islands) < 300:
+        island = Point(rng.uniform(0.0, 5000.0), rng.uniform(-350.0, 350.0)).buffer(rng.uniform(2.0, 12.0), 4)
+        if river.buffer(-3.0).contains(island) and all(island.distance(other) > 3.0 for other in islands):
+            islands.append(island)
+    polygon = Polygon(river.exterior.coords, [island.exterior.coords for island in islands])
+    outline_ends, _ = found_pair(Polygon(river.exterior.coords))
+    found, _ = found_pair(polygon)
+    assert np.array_equal(found, outline_ends)
+    assert pair_error(found, [(0.0, 0.0), (5000.0, 200.0 * np.sin(10.0))]) <= FLAT_CAP_TOLERANCE * 300.0
+    for islands_mode in ("main_channel", "ignore"):
+        line = polygon_centerline(polygon, islands=islands_mode).line
+        assert pair_error(np.array([line.coords[0], line.coords[-1]]), found) <= 1e-9 * 5000.0
+
+
 @pytest.mark.parametrize("name", sorted(geometry_cases.PLACEMENTS))
 def test_result_does_not_depend_on_ring_start_or_orientation(name):
     placement = geometry_cases.PLACEMENTS[name]

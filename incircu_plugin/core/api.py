@@ -83,7 +83,8 @@ def polygon_centerline(
         the polygon's extent.
     islands : {"main_channel", "ignore"}
         ``"main_channel"``: the line goes around every island on the side of the wider channel (each island
-        joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped.
+        joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped (filled), for the
+        automatic ends too.
     end_rule : {"main_stem", "longest_path"}
         How automatic ends are chosen (see :mod:`.ends`): the skeleton path sweeping the largest channel
         area (the main stem), or the longest one.
@@ -154,9 +155,10 @@ def polygon_centerline_steps(
     notes = []
     ends_found = len(split_points) == 0
     ends_from = "split_points"
+    region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
     if ends_found:
         ends = yield from _automatic_ends(
-            polygon, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
+            region, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
         split_points = split_point_coordinates((ends.start, ends.end))
@@ -166,7 +168,6 @@ def polygon_centerline_steps(
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
         steps = centerline_steps
-    region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
     result = yield from steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress, region=region
     )

@@ -7,7 +7,9 @@ gets its two tips, a Y-shaped one the tips of two of its arms.
 Rule, step by step (deterministic, about O(n log n) in the number ``n`` of boundary samples):
 
 1. **Skeleton.** See :mod:`.skeleton`. The polygon is first moved to the origin and scaled to a unit
-   bounding-box diagonal, so any coordinate size (1e-170 to 1e155) gives the same answer.
+   bounding-box diagonal, so any coordinate size (1e-170 to 1e155) gives the same answer. Its islands
+   smaller than the typical width are left out (see :func:`_without_small_islands`): they never decide which
+   tips are the ends, but one beside a bank could pull the path through the gap to a corner of the cap.
 2. **Path.** The path between two skeleton leaves that is heaviest under the chosen rule, by a double sweep
    (see :mod:`.paths`; exact without holes, a close approximation around islands):
 
@@ -44,7 +46,9 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
 
 Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at its acute corner; the
 skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
-missed (they do not change the ends of an elongated shape).
+missed (they do not change the ends of an elongated shape); an island wider than the typical width close to
+an end can still pull that end to a corner of the cap (the ends of the outline alone are those found with the
+islands ignored).
 
 The *start* is the end with the smaller ``x`` coordinate (the smaller ``y`` when their ``x`` differ by at most
 ``SAME_X`` of the extent, as the two ends of a north-south box do up to rounding), so the answer does not depend
@@ -309,6 +313,25 @@ def _local_box(polygon, guide):
     return origin, scale
 
 
+def _without_small_islands(polygon):
+    """Return the polygon without its holes smaller than its outline's typical width (their bounding boxes'
+    diagonals, CRS units).
+
+    Such an island never decides which tips are the ends, but around it the skeleton has a cycle, and the
+    sweeps' shortest way around a cycle takes its narrower side: a small island beside a bank near an end
+    would pull the path through that gap and the end to a corner of the cap, and a field of them would turn
+    the skeleton into a maze.
+    """
+    if not polygon.interiors:
+        return polygon
+    outline = shapely.Polygon(polygon.exterior)
+    width = typical_width(outline.area, outline.length / 2.0)
+    holes = np.array(polygon.interiors, dtype=object)
+    west, south, east, north = shapely.bounds(holes).T
+    kept = holes[np.hypot(east - west, north - south) >= width]
+    return shapely.Polygon(polygon.exterior, kept.tolist())
+
+
 def _moved(geometries, origin, scale):
     """Return the geometries with each coordinate ``xy`` moved to ``(xy - origin) / scale`` (the origin and
     scale of its frame, or one row of them per coordinate)."""
@@ -332,7 +355,7 @@ def _frames(polygons, guides, boxes):
     origins = np.array([boxes[index][0] for index in chosen])
     scales = np.array([boxes[index][1] for index in chosen])
     geometries = np.empty(len(chosen), dtype=object)
-    geometries[:] = [polygons[index] for index in chosen]
+    geometries[:] = [_without_small_islands(polygons[index]) for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
     local = counterclockwise(_moved(geometries, origins[owner], scales[owner, None]))
     for number, index in enumerate(chosen):
