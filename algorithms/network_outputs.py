@@ -6,14 +6,15 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import WkbType
 from .convert import line_with_m
-from .outputs import DOUBLE, INTEGER, STRING, make_fields, release_sinks, width_statistics
+from .outputs import DOUBLE, INTEGER, STRING, make_fields, primary_key_sink, release_sinks, width_statistics
 from .styles import CENTERLINE, style_outputs_on_load
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
 #: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
 #: ``right_chain``/``left_chain``: the boundary chain on either side, named "a-b" after the ids of the split
-#: points at its ends (counter-clockwise).
+#: points at its ends (counter-clockwise); ``source_fid``: the id of the input feature.
 BRANCH_FIELDS = (
+    ("source_fid", INTEGER),
     ("from_point", STRING),
     ("to_point", STRING),
     ("right_chain", STRING),
@@ -47,11 +48,7 @@ class NetworkWriter:
         self.add_m = add_m
         line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
-        # A GeoPackage's ``fid`` must stay unique: only the first branch of a feature keeps it.
-        self.fid_index = input_fields.lookupField("fid")
-        self.sink, self.sink_id = algorithm.parameterAsSink(
-            parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
-        )
+        self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, line_type, crs)
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
         style_outputs_on_load(context, {CENTERLINE: self.sink_id})
@@ -67,12 +64,11 @@ class NetworkWriter:
     def write(self, attributes, source_fid, parts, frame):
         """Write one feature per branch of the networks of one input feature.
 
-        Every branch carries ``attributes`` (the input feature's values) and its own statistics;
-        ``source_fid`` is unused. ``parts`` holds, per successful part, its index, its ``NetworkResult`` and
+        Every branch carries ``attributes`` (the input feature's values), ``source_fid`` (the input feature's
+        id) and its own statistics. ``parts`` holds, per successful part, its index, its ``NetworkResult`` and
         the ids of the split points the network's indices refer to; ``frame`` is the working frame the
         networks are expressed in.
         """
-        first = True
         for _, network, ids in parts:
             names = [str(point_id) for point_id in ids]
             chains = [f"{names[start]}-{names[end]}" for start, end in network.chains]
@@ -80,19 +76,17 @@ class NetworkWriter:
                 result = branch.result
                 coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
                 statistics = width_statistics([result])
-                values = list(attributes)
-                if not first and self.fid_index >= 0:
-                    values[self.fid_index] = None
-                values += [
-                    JUNCTION if branch.start_point is None else names[branch.start_point],
-                    JUNCTION if branch.end_point is None else names[branch.end_point],
-                    chains[branch.right_chain],
-                    chains[branch.left_chain],
-                ]
-                values += [statistics[name] for name, _ in BRANCH_FIELDS[4:]]
+                added = {
+                    "source_fid": source_fid,
+                    "from_point": JUNCTION if branch.start_point is None else names[branch.start_point],
+                    "to_point": JUNCTION if branch.end_point is None else names[branch.end_point],
+                    "right_chain": chains[branch.right_chain],
+                    "left_chain": chains[branch.left_chain],
+                    **statistics,
+                }
                 feature = QgsFeature(self.fields)
                 feature.setGeometry(QgsGeometry(line_with_m(coordinates, result.widths if self.add_m else None)))
-                feature.setAttributes(values)
+                feature.setAttributes([*attributes, *(added[name] for name, _ in BRANCH_FIELDS)])
                 if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
                     raise QgsProcessingException(
                         QCoreApplication.translate("IncirCuAlgorithm", "Could not write a branch: {}").format(
@@ -100,4 +94,3 @@ class NetworkWriter:
                         )
                     )
                 self.centerline_count += 1
-                first = False

@@ -31,7 +31,9 @@ def make_fields(definitions):
 
 
 #: Fields added to the input attributes on every centerline (lengths and widths in layer units, metres when geographic).
+#: ``source_fid`` is the id of the input feature, as on the optional outputs.
 CENTERLINE_FIELDS = (
+    ("source_fid", INTEGER),
     ("length", DOUBLE),
     ("width_min", DOUBLE),
     ("width_mean", DOUBLE),
@@ -76,6 +78,26 @@ def release_sinks(writer, names):
         del sink
 
 
+def primary_key_sink(algorithm, parameters, context, fields, wkb_type, crs):
+    """Create the ``OUTPUT`` sink of ``algorithm`` with a primary key of its own; return (sink, destination id).
+
+    The output copies the input attributes, but one input feature can give several output features (parts
+    written separately, branches), and an input's ``fid`` need not be unique. A GeoPackage takes a field named
+    ``fid`` as its primary key and would refuse a repeated value, so the sink numbers the features afresh
+    (``RegeneratePrimaryKey``, as QGIS's own algorithms that split features do); ``source_fid`` keeps the link
+    to the input.
+    """
+    return algorithm.parameterAsSink(
+        parameters,
+        algorithm.OUTPUT,
+        context,
+        fields,
+        wkb_type,
+        crs,
+        QgsFeatureSink.SinkFlag.RegeneratePrimaryKey,
+    )
+
+
 class CenterlineWriter:
     """Creates the output sinks of an algorithm and writes centerline results into them.
 
@@ -106,12 +128,7 @@ class CenterlineWriter:
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(CENTERLINE_FIELDS))
-        # A GeoPackage's ``fid`` must stay unique: the second and later parts of a feature written separately
-        # leave it empty, so the provider assigns one.
-        self.fid_index = input_fields.lookupField("fid")
-        self.sink, self.sink_id = algorithm.parameterAsSink(
-            parameters, algorithm.OUTPUT, context, self.fields, line_type, crs
-        )
+        self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, line_type, crs)
         self.vertices, self.vertices_id = algorithm.parameterAsSink(
             parameters, algorithm.OUTPUT_VERTICES, context, make_fields(VERTEX_FIELDS), WkbType.Point, crs
         )
@@ -159,7 +176,7 @@ class CenterlineWriter:
         attributes : list
             Attribute values of the input feature.
         source_fid : int
-            Id of the input feature (for the optional outputs).
+            Id of the input feature, written in every output's ``source_fid``.
         parts : sequence of (int, CenterlineResult)
             Part index and result of every successful part.
         frame : WorkingFrame
@@ -175,12 +192,10 @@ class CenterlineWriter:
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
             statistics = width_statistics([result for _, result in group])
-            values = list(attributes)
-            if group is not groups[0] and self.fid_index >= 0:
-                values[self.fid_index] = None
             feature = QgsFeature(self.fields)
             feature.setGeometry(geometry)
-            feature.setAttributes(values + [statistics[name] for name, _ in CENTERLINE_FIELDS])
+            added = {"source_fid": source_fid, **statistics}
+            feature.setAttributes([*attributes, *(added[name] for name, _ in CENTERLINE_FIELDS)])
             if not self.sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(
                     QCoreApplication.translate("IncirCuAlgorithm", "Could not write a centerline: {}").format(

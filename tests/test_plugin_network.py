@@ -151,20 +151,26 @@ def test_geographic_layer_is_computed_in_metres(provider):
         assert feature["width_max"] == pytest.approx(2.0 * radius, rel=5e-3)
 
 
-def test_branches_of_a_geopackage_feature_get_their_own_fid(provider, tmp_path):
-    # A GeoPackage's fid is unique: only the first branch of a feature keeps the input's fid.
+def test_branches_of_geopackage_features_get_their_own_fid(provider, tmp_path):
+    # A GeoPackage's fid is unique: the branches of the first polygon must not take the fid of the second.
     polygon, caps, _, _ = cases.t_junction()
+    offset = 200.0
+    shifted = shapely.affinity.translate(polygon, xoff=offset)
     written = processing.run(
         "native:reprojectlayer",
         {
-            "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "T")]),
+            "INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "T1"), (shifted, "T2")]),
             "TARGET_CRS": "EPSG:2180",
             "OUTPUT": str(tmp_path / "in.gpkg"),
         },
     )["OUTPUT"]
     target = tmp_path / "network.gpkg"
-    results, feedback = run({"INPUT": written, "SPLIT_POINTS": split_layer(caps), "OUTPUT": str(target)})
-    assert results["CENTERLINE_COUNT"] == 3, feedback.warnings
-    output = QgsVectorLayer(str(target), "network", "ogr")
-    assert output.featureCount() == 3
-    assert len({feature["fid"] for feature in output.getFeatures()}) == 3
+    points = [*caps, *((x + offset, y) for x, y in caps)]
+    results, feedback = run({"INPUT": written, "SPLIT_POINTS": split_layer(points), "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 6, feedback.warnings
+    names = {feature.id(): feature["name"] for feature in QgsVectorLayer(written, "in", "ogr").getFeatures()}
+    branches = list(QgsVectorLayer(str(target), "network", "ogr").getFeatures())
+    assert sorted(branch["name"] for branch in branches) == ["T1"] * 3 + ["T2"] * 3
+    assert len({branch.id() for branch in branches}) == len(branches)
+    for branch in branches:
+        assert names[branch["source_fid"]] == branch["name"]

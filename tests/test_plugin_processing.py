@@ -11,6 +11,7 @@ import numpy as np
 import processing
 import pytest
 import shapely
+import shapely.affinity
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
@@ -233,9 +234,11 @@ def test_lines_centerline_pairs_by_field(provider, banks_b):
     assert results["SKIPPED_COUNT"] == 0, feedback.warnings
     output = results["OUTPUT"]
     assert output.crs().authid() == "EPSG:2180"
+    first_lines = features_by(layer("banks_a_2180.geojson"), "reach")
     for reach, feature in features_by(output, "reach").items():
         axis, width = bank_axes()[reach]
         assert feature["side"] == "left"
+        assert feature["source_fid"] == first_lines[reach].id()
         line = as_shapely(feature.geometry())
         assert line.hausdorff_distance(axis) < 0.1 * width
         assert feature["width_mean"] == pytest.approx(width, rel=0.02)
@@ -456,17 +459,63 @@ def test_missing_or_old_shapely_gives_an_install_message(provider, monkeypatch):
     assert "1.8.5" in str(raised.value) and "pip install" in str(raised.value)
 
 
+def polygon_layer(rows, fields="name:string"):
+    """A memory layer of EPSG:2180 polygons; ``rows`` holds (shapely geometry, attribute values) pairs."""
+    memory = QgsVectorLayer(
+        "MultiPolygon?crs=EPSG:2180&" + "&".join(f"field={f}" for f in fields.split(",")), "in", "memory"
+    )
+    features = []
+    for geometry, values in rows:
+        feature = QgsFeature(memory.fields())
+        feature.setGeometry(QgsGeometry.fromWkt(geometry.wkt))
+        feature.setAttributes(values)
+        features.append(feature)
+    assert memory.dataProvider().addFeatures(features)
+    return memory
+
+
+def geopackage(source, path):
+    """Write ``source`` to the GeoPackage ``path`` and return it as an input."""
+    return processing.run("native:reprojectlayer", {"INPUT": source, "TARGET_CRS": "EPSG:2180", "OUTPUT": str(path)})[
+        "OUTPUT"
+    ]
+
+
+def assert_each_centerline_has_its_source(source, output_path, expected):
+    """Every input feature of ``source`` got ``expected[name]`` centerlines in the GeoPackage ``output_path``.
+
+    Each centerline carries its input's ``name`` and its input's id in ``source_fid``; the fids are unique.
+    """
+    names = {feature.id(): feature["name"] for feature in source.getFeatures()}
+    centerlines = list(QgsVectorLayer(str(output_path), "centerlines", "ogr").getFeatures())
+    assert sorted(feature["name"] for feature in centerlines) == sorted(
+        name for name, count in expected.items() for _ in range(count)
+    )
+    assert len({feature.id() for feature in centerlines}) == len(centerlines)
+    for feature in centerlines:
+        assert names[feature["source_fid"]] == feature["name"]
+
+
 def test_separate_parts_from_a_geopackage_keep_every_part(provider, tmp_path):
-    # A GeoPackage's fid is unique: the second part of a feature written on its own must not reuse it.
-    written = processing.run(
-        "native:reprojectlayer",
-        {"INPUT": str(DATA / "multipart_2180.geojson"), "TARGET_CRS": "EPSG:2180", "OUTPUT": str(tmp_path / "in.gpkg")},
-    )["OUTPUT"]
+    # A GeoPackage's fid is unique: the second part of the first feature must not take the second's fid.
+    multipart = as_shapely(next(layer("multipart_2180.geojson").getFeatures()).geometry())
+    second = shapely.affinity.translate(multipart, yoff=1000.0)
+    written = geopackage(polygon_layer([(multipart, ["first"]), (second, ["second"])]), tmp_path / "in.gpkg")
     target = tmp_path / "parts.gpkg"
-    results, _ = run("polygoncenterline", {"INPUT": written, "SEPARATE_PARTS": True, "OUTPUT": str(target)})
-    assert results["CENTERLINE_COUNT"] == 2
-    output = QgsVectorLayer(str(target), "parts", "ogr")
-    assert output.featureCount() == 2
+    results, feedback = run("polygoncenterline", {"INPUT": written, "SEPARATE_PARTS": True, "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 4, feedback.warnings
+    assert_each_centerline_has_its_source(QgsVectorLayer(written, "in", "ogr"), target, {"first": 2, "second": 2})
+
+
+def test_an_attribute_named_fid_with_repeated_values_loses_no_feature(provider, tmp_path):
+    # A GeoPackage takes a field named fid as its primary key: repeated values must not stop the writing.
+    rectangle = shapely.box(0.0, 0.0, 400.0, 40.0)
+    rows = [(rectangle, [7, "a"]), (shapely.affinity.translate(rectangle, yoff=100.0), [7, "b"])]
+    source = polygon_layer(rows, "fid:integer,name:string")
+    target = tmp_path / "centerlines.gpkg"
+    results, feedback = run("polygoncenterline", {"INPUT": source, "OUTPUT": str(target)})
+    assert results["CENTERLINE_COUNT"] == 2, feedback.warnings
+    assert_each_centerline_has_its_source(source, target, {"a": 1, "b": 1})
 
 
 def test_curved_polygons_are_linearised(provider):
