@@ -30,6 +30,7 @@ RULES = (
     (r"\bQgsMapLayerType\b", "Qgis.LayerType"),
     (r"\bQgis\.(Info|Warning|Critical|Success)\b", "Qgis.MessageLevel.X"),
     (r"\bQgsFeatureSink\.FastInsert\b", "QgsFeatureSink.Flag.FastInsert"),
+    (r"\bQgsFeatureSink\.RegeneratePrimaryKey\b", "QgsFeatureSink.SinkFlag.RegeneratePrimaryKey"),
 )
 #: The one home of the QGIS 3.22 fallbacks.
 COMPAT = REPOSITORY / "algorithms" / "compat.py"
