@@ -204,3 +204,120 @@ def test_width_statistics_of_a_rectangle_and_of_two_parts():
     assert both["width_max"] == pytest.approx(2 * width, rel=1e-9)
     assert width < both["width_mean"] < 2 * width
     assert both["ends_found"] is False and width_statistics([wide])["ends_found"] is True
+
+
+def adaptive_centerline(case, tolerance):
+    """The default (adaptive) centerline of a case within ``tolerance`` (CRS units) of its axis."""
+    return polygon_centerline(case.polygon, case.split_points, tolerance=tolerance)
+
+
+def stations_between(length, interval, low, high, slack):
+    """The multiples of ``interval`` from ``low`` to ``high`` (within ``slack``) on a line of ``length``."""
+    stations = interval * np.arange(int(np.floor(length / interval)) + 1)
+    return stations[(stations >= low - slack) & (stations <= high + slack)]
+
+
+@pytest.mark.parametrize("interval", [40.0, 100.0])
+def test_transects_cover_a_long_straight_channel_whose_line_has_few_vertices(interval):
+    # The adaptive line of a rectangle has four vertices: the ends and where the stubs from the split points
+    # meet the axis, half a width in. Transects belong everywhere between those two, not only past the next
+    # vertex (the far one).
+    case = geometry_cases.rectangle(length=1000.0, width=40.0)
+    tolerance = case.width / 200.0
+    result = adaptive_centerline(case, tolerance)
+    assert len(result.line.coords) < 10
+    cuts = transects(result, interval)
+    # The line is within ``tolerance`` of the axis and each foot lies at the radius from it, so a width is off
+    # by at most twice that.
+    half_width, length = case.width / 2.0, result.line.length
+    expected = stations_between(length, interval, half_width, length - half_width, tolerance)
+    assert len(expected) == {40.0: 24, 100.0: 9}[interval]
+    assert [cut.chainage for cut in cuts] == pytest.approx(list(expected), abs=tolerance)
+    bank_a, bank_b = LineString(case.bank_a), LineString(case.bank_b)
+    for cut in cuts:
+        assert cut.width == pytest.approx(case.width, abs=2.0 * tolerance)
+        start, middle, end = (Point(xy) for xy in cut.line.coords)
+        assert bank_a.distance(start) <= 2.0 * tolerance
+        assert bank_b.distance(end) <= 2.0 * tolerance
+        assert case.axis_distance(np.array([middle.coords[0]]))[0] <= tolerance + case.axis_tolerance
+
+
+def test_tapered_channel_transects_follow_its_width_along_the_whole_line():
+    width_start, width_end, length = 60.0, 20.0, 1000.0
+    case = geometry_cases.tapered_channel(length=length, width_start=width_start, width_end=width_end)
+    tolerance = case.width / 200.0
+    result = adaptive_centerline(case, tolerance)
+    interval = 25.0
+    cuts = transects(result, interval)
+    # The axis is the x-axis; the incircle at x touches both banks, which slope by ``slope``, so its diameter
+    # is the vertical width at x times the cosine of the slope.
+    slope = 0.5 * (width_start - width_end) / length
+    cosine = 1.0 / math.sqrt(1.0 + slope**2)
+
+    def width_at(x):
+        return (width_start + (width_end - width_start) * x / length) * cosine
+
+    # End caps: the line reaches the full width within half the width of each end.
+    assert len(cuts) >= int((length - 0.5 * (width_start + width_end) * cosine) / interval) - 1
+    assert cuts[0].chainage <= width_start / 2.0 + interval
+    assert cuts[-1].chainage >= length - width_end / 2.0 - interval
+    bank_a, bank_b = LineString(case.bank_a), LineString(case.bank_b)
+    for cut in cuts:
+        start, middle, end = (Point(xy) for xy in cut.line.coords)
+        assert cut.width == pytest.approx(width_at(middle.x), abs=2.0 * tolerance)
+        assert bank_a.distance(start) <= 2.0 * tolerance
+        assert bank_b.distance(end) <= 2.0 * tolerance
+    assert np.all(np.diff([cut.width for cut in cuts]) < 0.0)
+
+
+@pytest.mark.parametrize(
+    "case, bend",
+    [
+        (geometry_cases.rectangle(length=1000.0, width=40.0), None),
+        (geometry_cases.tapered_channel(length=1000.0, width_start=60.0, width_end=20.0), None),
+        # The meander's axis bends at radius wavelength**2 / (4 pi**2 amplitude) at the tightest.
+        (
+            geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0),
+            (400.0 / (2.0 * math.pi)) ** 2 / 40.0,
+        ),
+    ],
+    ids=["rectangle", "tapered", "meander"],
+)
+def test_adaptive_and_fixed_sampling_give_the_same_transects(case, bend):
+    tolerance = case.width / 200.0
+    adaptive = adaptive_centerline(case, tolerance)
+    fixed = centerline(case, divisions=20)
+    # Both lines lie near the axis: the adaptive one within ``tolerance``, the fixed one (straight on a straight
+    # axis) within its chords' sagitta on the tightest bend.
+    sagitta = 0.0 if bend is None else chord_sagitta(fixed, bend)
+    offset = tolerance + sagitta + case.axis_tolerance + ENGINE_ACCURACY * case.extent
+    # Chainages on the two lines drift apart by at most the difference of their lengths.
+    drift = abs(adaptive.line.length - fixed.line.length)
+    interval = case.width
+    ours, theirs = transects(adaptive, interval), transects(fixed, interval)
+    assert len(ours) >= int(adaptive.line.length / interval) - 2
+    assert len(ours) == len(theirs)
+    for a, b in zip(ours, theirs):
+        assert a.chainage == pytest.approx(b.chainage, abs=drift + offset)
+        middle_a, middle_b = np.asarray(a.line.coords)[1], np.asarray(b.line.coords)[1]
+        assert np.hypot(*(middle_a - middle_b)) <= drift + 2.0 * offset
+        assert a.width == pytest.approx(b.width, abs=4.0 * offset)
+
+
+@pytest.mark.parametrize("offset", [0.01, 2.0, 12.0, 18.0])
+def test_split_points_off_the_middle_leave_the_end_caps_out(offset):
+    # Off the middle of a flat end, the line first runs along the end's normal (incircles touching the end
+    # only), then bisects the end and the nearer bank (touching one bank): no cross-section until the
+    # incircle spans the channel, at x = width / 2.
+    length, width = 1000.0, 40.0
+    ends = [(0.0, width / 2.0 - offset), (length, width / 2.0 + offset)]
+    tolerance = width / 200.0
+    result = polygon_centerline(shapely.box(0.0, 0.0, length, width), ends, tolerance=tolerance)
+    interval = 5.0
+    cuts = transects(result, interval)
+    assert len(cuts) >= int((length - 2.0 * width) / interval) - 1
+    for cut in cuts:
+        (x_a, y_a), _, (x_b, y_b) = cut.line.coords
+        assert cut.width == pytest.approx(width, abs=2.0 * tolerance)
+        assert sorted([y_a, y_b]) == pytest.approx([0.0, width], abs=2.0 * tolerance)
+        assert width / 2.0 - 2.0 * tolerance <= min(x_a, x_b) <= max(x_a, x_b) <= length - width / 2.0 + 2.0 * tolerance

@@ -14,6 +14,13 @@ from shapely.geometry import LineString, Polygon
 from .errors import IncirCuError
 from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, points_at
 
+#: Share of the radius within which the mirror image of a stretch end's bank foot, across the line, counts as
+#: the end's foot: the incircle touches the bank and the end, not the other bank (see :func:`_measured_stretch`).
+GENUINE_END_CONTACT = 0.1
+
+#: Halvings of a segment when finding where an end cap ends on it (2**-60 of its length: float64 precision).
+BISECTION_STEPS = 60
+
 
 @dataclass(frozen=True)
 class Incircle:
@@ -163,10 +170,9 @@ def transects(result, interval, chains=None):
 
     Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*: near a split
     point the line first crosses the end cap (about half a width long), where the channel has no
-    cross-section, so the stretch starts at the vertex after the innermost one whose incircle reaches the
-    split point or touches the boundary nearer to it than its radius (at least one vertex in); at an open
-    end it starts at the end. At a station
-    between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
+    cross-section, so the stretch starts at the innermost vertex whose incircle reaches the split point or
+    touches the boundary nearer to it than its radius (at least one vertex in), however far the next vertex
+    is (see :func:`_measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
     linearly; each foot is the point at distance ``r`` from ``C`` towards the linearly interpolated foot of
     that side (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case). When
     ``chains`` are given, the feet are instead the nearest points of each chain to ``C``.
@@ -212,7 +218,9 @@ def transects(result, interval, chains=None):
     length = float(chainages[-1])
     radii = np.asarray(result.radii, dtype=float)
     foot_a, foot_b = np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float)
-    low, high = _measured_stretch(vertices, radii, chainages, foot_a, foot_b)
+    low, high, vertices, radii, chainages, foot_a, foot_b = _measured_stretch(
+        vertices, radii, chainages, foot_a, foot_b
+    )
     stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
     stations = stations[(stations >= low) & (stations <= high)]
     if len(stations) == 0:
@@ -235,14 +243,33 @@ def transects(result, interval, chains=None):
 
 
 def _measured_stretch(vertices, radii, chainages, foot_a, foot_b):
-    """Return the chainages between which a centerline crosses its channel rather than an end cap.
+    """Return the chainages between which a centerline crosses its channel rather than an end cap, with the
+    vertices to interpolate there.
 
-    Near a split point (an end with zero radius) the line first crosses the end cap, about half a width
-    long, where the channel has no cross-section. An *end-cap vertex* is an inner vertex, in the half of the
-    line on that side, whose incircle reaches the end point or touches the boundary nearer to it than its
-    radius. The measured stretch starts at the vertex after the innermost end-cap vertex (after the end
-    itself when there is none) and ends symmetrically; at an open end (positive radius) it starts at the
-    end.
+    Near a split point (an end with zero radius) the line first crosses the end cap, about half a width long,
+    where the channel has no cross-section. An *end-cap vertex* is an inner vertex, in the half of the line on
+    that side, whose incircle reaches the end point or touches the boundary nearer to it than its radius. The
+    innermost one is where the line from the split point meets the axis (both samplings keep it: the adaptive
+    line keeps the neighbours of its ends), so the stretch is found whatever the distance to the next vertex;
+    at an open end (positive radius) it starts at the end.
+
+    When that vertex's incircle spans the channel it also touches the end, and the foot recorded on one side
+    may be that contact rather than the bank. Such a foot (nearer to the end than the radius) is replaced by
+    the mirror image of the other foot across the line towards the next vertex: on the medial axis the two
+    contact directions are symmetric about the axis, so this is the bank's foot where the axis runs straight,
+    as it does along the chord to the next vertex. The stretch starts at that vertex.
+
+    Its incircle spans no bank when the split point lies a little off the middle of a flat end (the line
+    first runs along the end's normal, its incircles touching the end only): both feet are on the end. The
+    end cap then ends on the segment to the next vertex, where the end stops being nearer than both banks;
+    the banks there are the tangents at the next vertex's feet (exact on straight banks). That point becomes
+    the stretch's first vertex: its radius is the mean distance to the two tangents, its feet lie at that
+    distance in the directions of the next vertex's feet. When the next vertex is the other end's cap vertex
+    (a straight line carrying no bank), the feet lie at the radius square to the line. Farther off the middle
+    the incircle touches one bank and the end: the mirror image of the bank's foot falls on the end's foot
+    (within ``GENUINE_END_CONTACT`` of the radius), the line there bisects the bank and the end, and the
+    stretch starts at the next vertex, where the line bends onto the axis. The last vertex is found the same
+    way from the other end.
 
     Parameters
     ----------
@@ -259,26 +286,99 @@ def _measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     -------
     low, high : float
         Chainages bounding the measured stretch (both included), CRS units; ``low > high`` when empty.
+    vertices, radii, chainages, foot_a, foot_b : ndarray
+        Copies of the arguments with the stretch's first and last vertices as described, CRS units.
     """
     count = len(vertices)
     slack = 1e-9 * max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
     half = chainages[-1] / 2.0
     inner = np.zeros(count, dtype=bool)
     inner[1:-1] = True
+    vertices, radii, chainages = np.array(vertices, dtype=float), np.array(radii, dtype=float), np.array(chainages)
+    feet = np.array(foot_a, dtype=float), np.array(foot_b, dtype=float)
 
     def end_cap(end, side):
-        nearest_foot = np.minimum(np.hypot(*(foot_a - end).T), np.hypot(*(foot_b - end).T))
+        nearest_foot = np.minimum(np.hypot(*(feet[0] - end).T), np.hypot(*(feet[1] - end).T))
         reaches = np.hypot(*(vertices - end).T) <= radii + slack
         return np.flatnonzero(inner & side & (reaches | (nearest_foot < radii)))
 
+    def contacts(index, end, towards):
+        """What the incircle of end-cap vertex ``index`` touches: ``"banks"`` (its feet then put on them),
+        ``"end"`` (both feet on the end) or ``"bank and end"``."""
+        distances = [float(np.hypot(*(foot[index] - end))) for foot in feet]
+        on_end = int(np.argmin(distances))
+        along = vertices[towards] - vertices[index]
+        norm = float(np.hypot(*along))
+        if distances[on_end] >= radii[index] or norm <= 0.0:
+            return "banks"
+        if max(distances) < radii[index]:
+            return "end"
+        along /= norm
+        other = feet[1 - on_end][index] - vertices[index]
+        mirrored = vertices[index] + 2.0 * float(other @ along) * along - other
+        if np.hypot(*(mirrored - feet[on_end][index])) < GENUINE_END_CONTACT * radii[index]:
+            return "bank and end"
+        feet[on_end][index] = mirrored
+        return "banks"
+
+    def cap_ends_between(index, end, towards):
+        """Move vertex ``index`` to where the end cap ends on the segment to vertex ``towards``."""
+        start, target = vertices[index].copy(), vertices[towards]
+        normals = [(foot[towards] - target) / radii[towards] for foot in feet]
+
+        def bank_distances(t):
+            point = start + t * (target - start)
+            return point, [radii[towards] - float((point - target) @ normal) for normal in normals]
+
+        # The end is nearer than a bank before the crossing and not after it (at ``towards``, outside the cap).
+        low, high = 0.0, 1.0
+        for _ in range(BISECTION_STEPS):
+            middle = 0.5 * (low + high)
+            point, distances = bank_distances(middle)
+            low, high = (middle, high) if np.hypot(*(point - end)) < max(distances) else (low, middle)
+        point, distances = bank_distances(high)
+        radius = 0.5 * sum(distances)
+        vertices[index] = point
+        radii[index] = radius
+        for foot, normal in zip(feet, normals):
+            foot[index] = point + radius * normal
+        chainages[index] = chainages[towards] - np.sign(towards - index) * float(np.hypot(*(target - point)))
+
+    def on_the_normal(index, towards):
+        """Give vertex ``index`` feet at its radius square to the segment to vertex ``towards``."""
+        along = vertices[towards] - vertices[index]
+        normal = np.array([-along[1], along[0]]) / max(float(np.hypot(*along)), np.finfo(float).tiny)
+        side = np.sign(float((feet[0][towards] - vertices[towards]) @ normal)) or 1.0
+        feet[0][index] = vertices[index] + side * radii[index] * normal
+        feet[1][index] = vertices[index] - side * radii[index] * normal
+
+    ends = [vertices[0].copy(), vertices[-1].copy()]
     first, last = 0, count - 1
     if radii[0] <= slack:
-        first = int(np.max(end_cap(vertices[0], chainages <= half), initial=0)) + 1
+        first = max(int(np.max(end_cap(ends[0], chainages <= half), initial=0)), 1)
     if radii[-1] <= slack:
-        last = int(np.min(end_cap(vertices[-1], chainages >= half), initial=count - 1)) - 1
-    if first > last:
-        return 1.0, 0.0
-    return float(chainages[first]), float(chainages[last])
+        last = min(int(np.min(end_cap(ends[1], chainages >= half), initial=count - 1)), count - 2)
+    # The vertices of the stretch, if any, carry the banks' feet; an end-cap vertex whose incircle spans no
+    # bank moves to where the cap ends, on the segment to one of them; one that touches a bank and the end
+    # leaves the stretch to the next vertex.
+    bounds = [first, last]
+    for side, (index, end, step) in enumerate(((first, ends[0], 1), (last, ends[1], -1))):
+        towards = index + step
+        if radii[0 if step == 1 else -1] > slack or not 0 < towards < count - 1:
+            continue
+        touches = contacts(index, end, towards)
+        if touches == "bank and end":
+            bounds[side] = towards
+        elif touches == "end" and first < towards < last:
+            cap_ends_between(index, end, towards)
+        elif touches == "end":
+            # No vertex between the two ends' caps: a straight channel whose line carries no bank; its
+            # incircles' feet lie square to it.
+            on_the_normal(index, towards)
+    first, last = bounds
+    if first > last or chainages[first] > chainages[last]:
+        return 1.0, 0.0, vertices, radii, chainages, *feet
+    return float(chainages[first]), float(chainages[last]), vertices, radii, chainages, *feet
 
 
 def _foot_towards(centres, radius, towards):
