@@ -563,3 +563,38 @@ def test_tolerance_and_fixed_spacing_together_stop_the_run(provider):
     parameters = {"INPUT": str(DATA / "river_2180.geojson"), "TOLERANCE": 0.1, "SPACING": 0.5}
     with pytest.raises(QgsProcessingException, match="not both"):
         run("polygoncenterline", parameters)
+
+
+@pytest.mark.parametrize("interval, count", [(0.0, 24), (100.0, 9)])
+def test_transects_cover_a_long_rectangle(provider, interval, count):
+    """A 1000 x 40 channel: its adaptive line has four vertices, yet transects span all but the end caps."""
+    length, width = 1000.0, 40.0
+    source = QgsVectorLayer("Polygon?crs=EPSG:2180", "channel", "memory")
+    channel = QgsFeature()
+    channel.setGeometry(QgsGeometry.fromWkt(f"POLYGON((0 0, {length} 0, {length} {width}, 0 {width}, 0 0))"))
+    source.dataProvider().addFeatures([channel])
+    ends = QgsVectorLayer("Point?crs=EPSG:2180", "ends", "memory")
+    points = [QgsFeature(), QgsFeature()]
+    for point, x in zip(points, (0.0, length)):
+        point.setGeometry(QgsGeometry.fromWkt(f"POINT({x} {width / 2})"))
+    ends.dataProvider().addFeatures(points)
+    results, feedback = run(
+        "polygoncenterline",
+        {"INPUT": source, "SPLIT_POINTS": ends, "OUTPUT_TRANSECTS": "memory:", "TRANSECT_INTERVAL": interval},
+    )
+    assert results["CENTERLINE_COUNT"] == 1, feedback.warnings
+    # The default tolerance is width / 200: the line, and so each foot, is within it of the exact position.
+    tolerance = width / 200.0
+    step = interval or width
+    transects = list(results["OUTPUT_TRANSECTS"].getFeatures())
+    # Stations are the multiples of the interval from half a width in to half a width before the far end.
+    expected = [station for station in step * np.arange(1, length / step) if width / 2 <= station <= length - width / 2]
+    assert len(expected) == count
+    assert [transect["chainage"] for transect in transects] == pytest.approx(expected, abs=tolerance)
+    for transect in transects:
+        section = as_shapely(transect.geometry())
+        assert transect["width"] == pytest.approx(width, abs=2.0 * tolerance)
+        start, end = section.boundary.geoms
+        assert sorted([start.y, end.y]) == pytest.approx([0.0, width], abs=2.0 * tolerance)
+        assert start.x == pytest.approx(transect["chainage"], abs=2.0 * tolerance)
+        assert end.x == pytest.approx(transect["chainage"], abs=2.0 * tolerance)
