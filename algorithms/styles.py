@@ -1,8 +1,8 @@
-"""How the outputs look when QGIS loads them: one symbol per output and the centerline on top.
+"""How the outputs look when QGIS loads them: one symbol per output, stacked so that each one shows.
 
 The algorithm attaches a layer post-processor to every output QGIS will load on completion (the toolbox
 dialog, the modeler, ``processing.runAndLoadResults``). When the layer is loaded it gets its symbol, and the
-outputs of the run are ordered in the layer tree: centerline on top, then vertices, transects and incircles.
+outputs of the run are ordered in the layer tree: vertices on top, then the centerline, transects and incircles.
 Outputs written to files and opened later keep QGIS's default style.
 """
 
@@ -10,13 +10,12 @@ import uuid
 
 from qgis.core import (
     QgsFillSymbol,
-    QgsGeometryGeneratorSymbolLayer,
     QgsLineSymbol,
     QgsMarkerSymbol,
     QgsProcessingLayerPostProcessorInterface,
     QgsProject,
+    QgsSimpleLineSymbolLayer,
     QgsSingleSymbolRenderer,
-    QgsWkbTypes,
 )
 
 #: Layer custom properties marking the outputs of one run and their place in the layer tree.
@@ -26,74 +25,101 @@ RANK_PROPERTY = "incircu/rank"
 #: QGIS does not keep Python post-processors alive: every one made is held here (a few bytes per output).
 LIVE_STYLERS = []
 
-#: Place of each output in the layer tree, top first.
-CENTERLINE, VERTICES, TRANSECTS, INCIRCLES = range(4)
+#: Place of each output in the layer tree, top first: the vertices sit on the centerline, so they go above it.
+VERTICES, CENTERLINE, TRANSECTS, INCIRCLES = range(4)
 
-CENTERLINE_COLOUR = "200,30,45,255"
-WIDTH_BAND_COLOUR = "240,150,40,80"
-INCIRCLE_COLOUR = "30,110,180,45"
-TRANSECT_COLOUR = "60,60,60,220"
-VERTEX_COLOUR = "120,20,30,200"
+CENTERLINE_COLOUR = "215,25,40,255"
+CASING_COLOUR = "255,255,255,210"
+VERTEX_COLOUR = "80,10,20,255"
+TRANSECT_COLOUR = "30,120,30,230"
+INCIRCLE_COLOUR = "30,100,200,230"
+
+#: Widths in millimetres on the map: a line narrow enough to leave the polygon's fill readable around it, even
+#: where a river is a few millimetres wide at the scale of a whole-country map.
+CENTERLINE_WIDTH_MM = 0.6
+CASING_WIDTH_MM = 1.0
+TRANSECT_WIDTH_MM = 0.26
+INCIRCLE_WIDTH_MM = 0.26
+#: Diameter of the vertex dots, millimetres: wider than the casing, so each dot stands out of the line.
+VERTEX_SIZE_MM = 1.6
 
 
-def centerline_symbol(width_band):
-    """A bold red line with a white casing, optionally over the band of local widths.
+def round_line_properties(colour, width):
+    """Properties of a simple line layer with round caps and joins, ``width`` in millimetres."""
+    return {
+        "line_color": colour,
+        "line_width": str(width),
+        "line_width_unit": "MM",
+        "capstyle": "round",
+        "joinstyle": "round",
+    }
 
-    Parameters
-    ----------
-    width_band : bool
-        Draw, under the line, the band whose width is the M value of each vertex (the local width), built by
-        the ``buffer_by_m`` expression; only meaningful when M is in the layer's units.
+
+def centerline_symbol():
+    """A red line in a thin white casing, readable over any fill and leaving the polygon's fill visible.
+
+    The local width (the M values) is not drawn: a band as wide as the channel repaints the polygon itself,
+    and its buffer would be recomputed for every feature at every redraw. The width stays in the M values,
+    the vertices' ``width`` field and the incircles.
 
     Returns
     -------
     QgsLineSymbol
+        The casing on rendering pass 0 and the red line on pass 1, so that with symbol levels every casing
+        is drawn before any line and centerlines meeting at a junction stay joined.
     """
-    symbol = QgsLineSymbol.createSimple(
-        {"line_color": "255,255,255,230", "line_width": "1.6", "line_width_unit": "MM", "capstyle": "round"}
-    )
-    line = QgsLineSymbol.createSimple(
-        {"line_color": CENTERLINE_COLOUR, "line_width": "0.9", "line_width_unit": "MM", "capstyle": "round"}
-    )
-    symbol.appendSymbolLayer(line.symbolLayer(0).clone())
-    if width_band:
-        band = QgsGeometryGeneratorSymbolLayer.create(
-            {"geometryModifier": "buffer_by_m($geometry)", "SymbolType": "Fill"}
-        )
-        band.setSubSymbol(QgsFillSymbol.createSimple({"color": WIDTH_BAND_COLOUR, "outline_style": "no"}))
-        symbol.insertSymbolLayer(0, band)
+    symbol = QgsLineSymbol.createSimple(round_line_properties(CASING_COLOUR, CASING_WIDTH_MM))
+    line = QgsSimpleLineSymbolLayer.create(round_line_properties(CENTERLINE_COLOUR, CENTERLINE_WIDTH_MM))
+    line.setRenderingPass(1)
+    symbol.appendSymbolLayer(line)
     return symbol
 
 
 def incircle_symbol():
-    """Thin translucent outlines without fill, so the circles never hide what lies below."""
+    """Thin blue outlines without fill, so the circles show what lies below and the legend shows a circle's colour."""
     return QgsFillSymbol.createSimple(
         {
             "style": "no",
             "outline_color": INCIRCLE_COLOUR,
-            "outline_width": "0.1",
+            "outline_width": str(INCIRCLE_WIDTH_MM),
             "outline_width_unit": "MM",
         }
     )
 
 
 def transect_symbol():
-    """Thin dark lines."""
-    return QgsLineSymbol.createSimple({"line_color": TRANSECT_COLOUR, "line_width": "0.25", "line_width_unit": "MM"})
-
-
-def vertex_symbol():
-    """Small dark red dots."""
-    return QgsMarkerSymbol.createSimple(
-        {"name": "circle", "color": VERTEX_COLOUR, "size": "1.8", "size_unit": "MM", "outline_style": "no"}
+    """Thin green lines: another hue than the centerline and than the dark outlines of polygons."""
+    return QgsLineSymbol.createSimple(
+        {"line_color": TRANSECT_COLOUR, "line_width": str(TRANSECT_WIDTH_MM), "line_width_unit": "MM"}
     )
 
 
-def output_symbol(rank, layer):
-    """Return the symbol of the output of ``rank`` (:data:`CENTERLINE`...) for ``layer``."""
-    if rank == CENTERLINE:
-        return centerline_symbol(QgsWkbTypes.hasM(layer.wkbType()) and not layer.crs().isGeographic())
-    return {VERTICES: vertex_symbol, TRANSECTS: transect_symbol, INCIRCLES: incircle_symbol}[rank]()
+def vertex_symbol():
+    """Small dark red dots with a white rim, standing out of the centerline they lie on."""
+    return QgsMarkerSymbol.createSimple(
+        {
+            "name": "circle",
+            "color": VERTEX_COLOUR,
+            "size": str(VERTEX_SIZE_MM),
+            "size_unit": "MM",
+            "outline_color": "255,255,255,255",
+            "outline_width": "0.2",
+            "outline_width_unit": "MM",
+        }
+    )
+
+
+def output_renderer(rank):
+    """Return the renderer of the output of ``rank`` (:data:`CENTERLINE`...): one symbol, levels for the centerline."""
+    symbol = {
+        CENTERLINE: centerline_symbol,
+        VERTICES: vertex_symbol,
+        TRANSECTS: transect_symbol,
+        INCIRCLES: incircle_symbol,
+    }[rank]()
+    renderer = QgsSingleSymbolRenderer(symbol)
+    renderer.setUsingSymbolLevels(rank == CENTERLINE)
+    return renderer
 
 
 class OutputStyler(QgsProcessingLayerPostProcessorInterface):
@@ -113,7 +139,7 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
         self.rank = rank
 
     def postProcessLayer(self, layer, context, feedback):
-        layer.setRenderer(QgsSingleSymbolRenderer(output_symbol(self.rank, layer)))
+        layer.setRenderer(output_renderer(self.rank))
         layer.setCustomProperty(RUN_PROPERTY, self.run_id)
         layer.setCustomProperty(RANK_PROPERTY, self.rank)
         layer.triggerRepaint()
