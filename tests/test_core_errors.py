@@ -29,9 +29,11 @@ from incircu_plugin.core import (
     find_ends,
     lines_centerline,
     multipolygon_centerlines,
+    multipolygon_networks,
     polygon_centerline,
     split_polygon,
 )
+from incircu_plugin.core.api import BANK_LENGTH_RATIO
 from incircu_plugin.core.chains import validate_polygon
 from incircu_plugin.core.validation import check_coordinates
 
@@ -629,3 +631,42 @@ def test_checked_coordinates_give_their_extent_when_whole():
     assert check_coordinates(coordinates, "polygon") == 5.0
     assert check_coordinates(coordinates[:1], "polygon") == 0.0
     assert check_coordinates(coordinates, "pair of lines", whole=False) is None
+
+
+@pytest.mark.parametrize("find", [multipolygon_centerlines, multipolygon_networks], ids=["centerline", "network"])
+def test_a_wrong_split_point_count_names_no_part_of_a_single_polygon(find):
+    # One split point on a plain polygon: there is no "part 0" to speak of, one point is singular, and the
+    # tolerance has its unit.
+    (outcome,) = find(box(0.0, 0.0, 50.0, 4.0), [(0.0, 2.0)], snap_tolerance=0.5)
+    message = str(outcome.error)
+    assert message.startswith("The polygon has 1 split point within the snap tolerance (0.5, CRS units) of"), message
+    assert "Part" not in message
+
+
+def test_a_wrong_split_point_count_of_a_part_speaks_of_the_part():
+    # Three split points on the second part: its outcome's index says which part; the message says "the part".
+    parts = MultiPolygon([box(0.0, 0.0, 50.0, 4.0), box(0.0, 10.0, 50.0, 14.0)])
+    points = [(0.0, 2.0), (50.0, 2.0), (0.0, 12.0), (50.0, 12.0), (25.0, 14.0)]
+    outcomes = multipolygon_centerlines(parts, points, snap_tolerance=0.5)
+    assert outcomes[0].error is None and outcomes[1].part_index == 1
+    assert str(outcomes[1].error).startswith("The part has 3 split points within the snap tolerance (0.5, CRS units)")
+
+
+def test_a_far_split_point_names_the_unit_of_the_distances():
+    with pytest.raises(SplitPointError, match=r"is 3 away .* the snap tolerance is 0\.5 \(CRS units\)"):
+        polygon_centerline(box(0.0, 0.0, 50.0, 4.0), [(-3.0, 2.0), (50.0, 2.0)], snap_tolerance=0.5)
+
+
+@pytest.mark.parametrize("ratio", [0.5 * BANK_LENGTH_RATIO, 5.0 * BANK_LENGTH_RATIO])
+def test_banks_of_very_different_lengths_are_noted(ratio):
+    # A channel 10 wide: the second bank covers the first's first 100 units, the first runs on to 100 * ratio.
+    # Beyond the shorter bank the region is closed by the chord from (100, 10) to the first bank's end.
+    result = lines_centerline([(0.0, 0.0), (100.0 * ratio, 0.0)], [(0.0, 10.0), (100.0, 10.0)])
+    if ratio <= BANK_LENGTH_RATIO:
+        assert result.notes == ()
+        return
+    (note,) = result.notes
+    assert note.startswith(f"The first line is {100.0 * ratio:g} long, {ratio:g} times the second one (100, ")
+    assert "follows that gap" in note
+    # What the note warns of: the widest incircle is far wider than the channel.
+    assert result.widths.max() > 2.0 * 10.0

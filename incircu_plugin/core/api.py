@@ -1,6 +1,6 @@
 """Public entry points: the centerline of a polygon, of a multipart polygon, and between two lines."""
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from functools import partial
 from typing import Optional
 
@@ -20,6 +20,7 @@ from .ends import END_RULES
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
+from .polyline import cumulative_lengths
 from .steps import EndsRequest, run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
@@ -32,6 +33,13 @@ ISLAND_MODES = ("main_channel", "ignore")
 
 #: Share of a polygon's progress taken by finding its ends automatically.
 ENDS_PROGRESS_SHARE = 0.2
+
+#: Ratio of the longer bank line's length to the shorter's above which :func:`lines_centerline` notes that the
+#: longer runs beyond the other. Banks facing each other over their whole length differ by less: in a bend of
+#: centerline radius R and width w the outer bank is (R + w/2) / (R - w/2) times the inner, 2 at the tightest
+#: river bends (R = 1.5 w; R/w is rarely below 2), and a reach of alternating bends brings the ratio back
+#: towards 1. Above it the region is closed by the long straight gaps between the lines' ends.
+BANK_LENGTH_RATIO = 2.0
 
 #: Most features in one batch of :func:`batches` (traced together by :func:`centerlines_together`).
 BATCH_FEATURES = 256
@@ -249,13 +257,84 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
 
 def lines_centerline_steps(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
     """:func:`lines_centerline` as steps (see :func:`polygon_centerline_steps`); returns the
-    :class:`CenterlineResult`.
+    :class:`CenterlineResult`, whose ``notes`` say when one line is more than :data:`BANK_LENGTH_RATIO` times
+    as long as the other (see :func:`bank_length_note`).
     """
     c1, c2 = orient_bank_lines(line_a, line_b)
     result = yield from clean_chains_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
-    return _checked(result)
+    note = bank_length_note(c1, c2)
+    return replace(_checked(result), notes=(note,) if note else ())
+
+
+def bank_length_note(line_a, line_b):
+    """Say, when one bank line is more than :data:`BANK_LENGTH_RATIO` times as long as the other, that the
+    centerline follows the straight gaps between their ends where the longer runs beyond the shorter.
+
+    The region between two lines is closed by the segments joining their starts and their ends; where one
+    line runs on beyond the other, that segment is long and the region's middle, so the centerline, follows it.
+
+    Parameters
+    ----------
+    line_a, line_b : ndarray of shape (n, 2)
+        The first and the second line, CRS units.
+
+    Returns
+    -------
+    str or None
+        The note; None when the lengths are comparable.
+
+    Examples
+    --------
+    >>> bank_length_note(np.array([(0.0, 0.0), (1000.0, 0.0)]), np.array([(0.0, 40.0), (100.0, 40.0)]))[:59]
+    'The first line is 1000 long, 10 times the second one (100, '
+    >>> bank_length_note(np.array([(0.0, 0.0), (100.0, 0.0)]), np.array([(0.0, 40.0), (150.0, 40.0)])) is None
+    True
+    """
+    lengths = float(cumulative_lengths(line_a)[-1]), float(cumulative_lengths(line_b)[-1])
+    longer = int(lengths[1] > lengths[0])
+    if lengths[longer] <= BANK_LENGTH_RATIO * lengths[1 - longer]:
+        return None
+    names = ("first", "second")
+    return (
+        f"The {names[longer]} line is {lengths[longer]:.6g} long, {lengths[longer] / lengths[1 - longer]:.3g} "
+        f"times the {names[1 - longer]} one ({lengths[1 - longer]:.6g}, CRS units): it runs on beyond the other, "
+        "where the region between them is closed by the straight gap between their ends, and the centerline "
+        "follows that gap there. Cut the lines to where they face each other."
+    )
+
+
+def split_point_count_error(count, snap_tolerance, several, needed):
+    """The :class:`SplitPointError` of a (multi)polygon's part with the wrong number of split points.
+
+    Parameters
+    ----------
+    count : int
+        Split points within ``snap_tolerance`` of the part's exterior ring.
+    snap_tolerance : float
+        CRS units.
+    several : bool
+        The geometry has several parts: the message speaks of "the part" (its caller knows which, see
+        :class:`PartOutcome`), else of "the polygon".
+    needed : str
+        What the part needs, e.g. ``"it needs 2 (or none, to find its ends automatically)"``.
+
+    Returns
+    -------
+    SplitPointError
+
+    Examples
+    --------
+    >>> str(split_point_count_error(1, 2.5, False, "it needs 2"))
+    'The polygon has 1 split point within the snap tolerance (2.5, CRS units) of its exterior ring; it needs 2.'
+    """
+    subject = "The part" if several else "The polygon"
+    points = "split point" if count == 1 else "split points"
+    return SplitPointError(
+        f"{subject} has {count} {points} within the snap tolerance ({snap_tolerance:.6g}, CRS units) of its "
+        f"exterior ring; {needed}."
+    )
 
 
 def _checked(result, region=None):
@@ -435,9 +514,8 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
             validate_polygon(part)
             mine = coordinates[near]
             if len(mine) not in (0, 2):
-                raise SplitPointError(
-                    f"Part {index} has {len(mine)} split points within {snap_tolerance:.6g} of its boundary; "
-                    "it needs 2 (or none, to find its ends automatically)."
+                raise split_point_count_error(
+                    len(mine), snap_tolerance, len(parts) > 1, "it needs 2 (or none, to find its ends automatically)"
                 )
             result = yield from polygon_centerline_steps(
                 part,

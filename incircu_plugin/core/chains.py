@@ -290,7 +290,7 @@ def positions_on_ring(ring, points, tolerance):
         if distance > tolerance:
             raise SplitPointError(
                 f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
-                f"the snap tolerance is {tolerance:.6g}."
+                f"the snap tolerance is {tolerance:.6g} (CRS units)."
                 " Move the point onto the boundary or raise the tolerance."
             )
     return shapely.line_locate_point(exterior, geometries).tolist()

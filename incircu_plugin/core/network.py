@@ -37,7 +37,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
+from .api import PartOutcome, check_island_mode, part_progress, polygon_parts, split_point_count_error
 from .chains import (
     COINCIDENCE_TOLERANCE,
     counter_clockwise_exterior,
@@ -228,10 +228,7 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
     for index, (part, near) in enumerate(parts):
         try:
             if len(near) < 2:
-                raise SplitPointError(
-                    f"Part {index} has {len(near)} split points within {snap_tolerance:.6g} of its boundary; "
-                    "a network needs at least 2."
-                )
+                raise split_point_count_error(len(near), snap_tolerance, len(parts) > 1, "a network needs at least 2")
             network = polygon_network(
                 part,
                 [points[i] for i in near],
