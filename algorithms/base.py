@@ -12,6 +12,7 @@ from qgis.core import (
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingUtils,
+    QgsUnitTypes,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
@@ -57,6 +58,18 @@ def length_parameter(name, description, default, parent_layer):
     return parameter
 
 
+def length_unit(crs):
+    """Return the unit IncirCu reads a length in for a layer of ``crs``, for messages: "m", "ft"...
+
+    QGIS's abbreviation of the layer's map unit, "m" for a layer in degrees (computed in a local metric
+    projection, see :class:`.convert.WorkingFrame`); "layer units" (translated) when QGIS has no name for it.
+    """
+    unit = DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits()
+    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(unit)) or QCoreApplication.translate(
+        "IncirCuAlgorithm", "layer units"
+    )
+
+
 class IncirCuAlgorithm(QgsProcessingAlgorithm):
     """Common behaviour of the IncirCu Processing algorithms.
 
@@ -98,6 +111,46 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def process_features(self, run, parameters, context, feedback):
         """Compute and write the outputs through ``run`` (a ``FeatureRun``); return the result map."""
         raise NotImplementedError
+
+    def parameter_label(self, name):
+        """Return how messages name parameter ``name``: its dialog label, then its name for ``qgis_process``.
+
+        ``'Second lines (bank B)' (LINES_B)``; the bare name for a parameter the algorithm does not have.
+        """
+        definition = self.parameterDefinition(name)
+        if definition is None:
+            return name
+        return f"'{definition.description()}' ({name})"
+
+    def field_parameter(self, parameters, name, source, context):
+        """Return the field named by parameter ``name`` (empty when none is given), checked against ``source``.
+
+        Parameters
+        ----------
+        parameters : dict
+        name : str
+            A ``QgsProcessingParameterField`` of the algorithm.
+        source : QgsProcessingFeatureSource
+            The layer of its parent parameter.
+        context : QgsProcessingContext
+
+        Raises
+        ------
+        QgsProcessingException
+            When ``source`` has no field of that name (``qgis_process`` and models accept any text).
+        """
+        field = self.parameterAsString(parameters, name, context)
+        if field and source.fields().lookupField(field) < 0:
+            parent = self.parameterDefinition(name).parentLayerParameterName()
+            raise QgsProcessingException(
+                self.tr("{}: {} has no field '{}'; its fields are: {}.").format(
+                    self.parameter_label(name),
+                    self.parameter_label(parent),
+                    field,
+                    ", ".join(source.fields().names()) or self.tr("none"),
+                )
+            )
+        return field
 
     def tr(self, text):
         """Translate ``text`` with the class name as context.

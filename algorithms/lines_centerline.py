@@ -1,5 +1,7 @@
 """Processing algorithm ``incircu:linescenterline``: the centerline between two bank lines."""
 
+from functools import partial
+
 from qgis.core import (
     QgsFeatureRequest,
     QgsGeometry,
@@ -87,11 +89,15 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         line_type = GeometryType.Line
         source_a = run.source(self.LINES_A, line_type)
         source_b = run.source(self.LINES_B, line_type)
-        field_a = self.parameterAsString(parameters, self.PAIR_FIELD_A, context)
-        field_b = self.parameterAsString(parameters, self.PAIR_FIELD_B, context)
+        run.warn_dropped_z(source_a)
+        run.warn_dropped_z(source_b)
+        field_a = self.field_parameter(parameters, self.PAIR_FIELD_A, source_a, context)
+        field_b = self.field_parameter(parameters, self.PAIR_FIELD_B, source_b, context)
         if bool(field_a) != bool(field_b):
             raise QgsProcessingException(
-                self.tr("Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).")
+                self.tr("Give both {} and {}, or neither (then each layer holds one line).").format(
+                    self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B)
+                )
             )
         sampling = self.sampling_options(parameters, context)
         crs = source_a.sourceCrs()
@@ -103,14 +109,19 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         if not field_a:
             for name, groups in ((self.LINES_A, groups_a), (self.LINES_B, groups_b)):
                 if not groups:
-                    raise QgsProcessingException(self.tr("{} holds no line.").format(name))
+                    raise QgsProcessingException(self.tr("{} holds no line.").format(self.parameter_label(name)))
                 merged = self.merged_line(groups[None][1])
                 if merged.isMultipart() and len(merged.asGeometryCollection()) > 1:
                     raise QgsProcessingException(
                         self.tr(
-                            "{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and "
-                            "PAIR_FIELD_B to pair them, or merge them into one line."
-                        ).format(name, len(merged.asGeometryCollection()))
+                            "{} holds {} separate lines that do not join into one; give {} and {} to pair them, "
+                            "or merge them into one line."
+                        ).format(
+                            self.parameter_label(name),
+                            len(merged.asGeometryCollection()),
+                            self.parameter_label(self.PAIR_FIELD_A),
+                            self.parameter_label(self.PAIR_FIELD_B),
+                        )
                     )
 
         tasks = (
@@ -121,8 +132,8 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         for key, (first, _) in groups_b.items():
             if key not in groups_a:
                 run.warn(
-                    self.tr("No line in LINES_A has {} = {!r}; line {} of LINES_B unused.").format(
-                        field_a, key, first.id()
+                    self.tr("No line in {} has {} = {!r}; line {} of {} unused.").format(
+                        self.parameter_label(self.LINES_A), field_a, key, first.id(), self.parameter_label(self.LINES_B)
                     )
                 )
         return run.finish()
@@ -130,19 +141,33 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     def _task(self, run, key, first, geometries, groups_b, field_b, sampling):
         """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines."""
         if key not in groups_b:
-            return run.skip_task(first, self.tr("no line in LINES_B has {} = {!r}").format(field_b, key))
+            return run.skip_task(
+                first, self.tr("no line in {} has {} = {!r}").format(self.parameter_label(self.LINES_B), field_b, key)
+            )
         line_a = self.merged_line(geometries)
         line_b = self.merged_line(groups_b[key][1])
         if line_a.isMultipart() and len(line_a.asGeometryCollection()) > 1:
-            return run.skip_task(first, self.tr("the lines of LINES_A with this pairing value do not join into one"))
+            return run.skip_task(first, self.not_joined(self.LINES_A))
         if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
-            return run.skip_task(first, self.tr("the lines of LINES_B with this pairing value do not join into one"))
+            return run.skip_task(first, self.not_joined(self.LINES_B))
         run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
         steps = run.core.lines_centerline_steps(
             run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, **sampling
         )
         vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
-        return run.task(first, steps, lambda result: [(0, result)], vertices)
+        return run.task(first, steps, partial(self._parts, run, first.id()), vertices)
+
+    def not_joined(self, name):
+        """Why a pair is skipped when its lines of layer parameter ``name`` do not join into one (translated)."""
+        return self.tr("the lines of {} with this pairing value do not join into one").format(
+            self.parameter_label(name)
+        )
+
+    def _parts(self, run, feature_id, result):
+        """The pair's centerline to write; warn about what the core noted (banks of very different lengths)."""
+        for note in result.notes:
+            run.warn(self.tr("Feature {}: {}").format(feature_id, note))
+        return [(0, result)]
 
     @staticmethod
     def group_features(source, field_name, request):

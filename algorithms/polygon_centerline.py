@@ -11,7 +11,7 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
-from .base import IncirCuAlgorithm
+from .base import IncirCuAlgorithm, length_unit
 from .compat import GeometryType, ProcessingSourceType
 from .running import no_geometry
 from .split_points import SplitPoints
@@ -125,6 +125,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
 
     def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, GeometryType.Polygon)
+        run.warn_dropped_z(source)
         crs = source.sourceCrs()
         split_source = None
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
@@ -138,6 +139,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
         split_points = SplitPoints(split_source, crs, context)
+        unit = length_unit(crs)
 
         guides, guide_index = [], QgsSpatialIndex()
         if parameters.get(self.GUIDE_LINES) not in (None, ""):
@@ -156,21 +158,39 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
+            core_geometry = run.frame.to_core(geometry)
             steps = run.core.multipolygon_centerline_steps(
-                run.frame.to_core(geometry),
+                core_geometry,
                 candidates if len(candidates) else None,
                 guide=_guide_near(run.frame, geometry, guides, guide_index),
                 progress=run.keep_going,
                 **options,
             )
-            parts = partial(self._parts, run, feature.id(), split_source is not None)
+            given = split_points if split_source is not None else None
+            parts = partial(self._parts, run, feature.id(), given, (snap_tolerance, unit), core_geometry)
             return run.task(feature, steps, parts, geometry.constGet().nCoordinates())
 
         run.run_batches(map(task, run.source_features(source)), source.featureCount())
         return run.finish()
 
-    def _parts(self, run, feature_id, split_points_given, outcomes):
-        """The successful parts of a polygon to write; warn about the others and about automatic ends."""
+    def _parts(self, run, feature_id, split_points, snap_tolerance, geometry, outcomes):
+        """The successful parts of a polygon to write; warn about the others and about automatic ends.
+
+        Parameters
+        ----------
+        run : FeatureRun
+        feature_id : int
+        split_points : SplitPoints or None
+            The layer's split points; None when no split point layer is given.
+        snap_tolerance : (float, str)
+            The snap tolerance as given, layer units (metres for a layer in degrees; 0: the core's default), and
+            the name of that unit.
+        geometry : Polygon or MultiPolygon
+            The feature's geometry in the working frame it was computed in.
+        outcomes : list of PartOutcome
+        """
+        import shapely  # after require_core, like the core: a missing Shapely gets its install message
+
         several = len(outcomes) > 1
         parts = []
         for outcome in outcomes:
@@ -180,10 +200,41 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 continue
             for note in getattr(outcome.result, "notes", ()):
                 run.warn(self.tr("Feature {}: {}").format(run.where(feature_id, part_index), note))
-            if outcome.result.ends_found and split_points_given:
-                run.note(feature_id, self.tr("no split points given, ends found automatically"), part_index)
+            if outcome.result.ends_found and split_points is not None:
+                part = shapely.get_parts(geometry)[outcome.part_index]
+                nearest = split_points.nearest_distance(part.exterior, run.frame)
+                run.warn(
+                    self.tr("Feature {}: {} Its ends were found automatically.").format(
+                        run.where(feature_id, part_index), self._no_split_point(nearest, *snap_tolerance)
+                    )
+                )
             parts.append((outcome.part_index, outcome.result))
         return parts
+
+    def _no_split_point(self, nearest, snap_tolerance, unit):
+        """Say that a polygon (part) has no split point within the snap tolerance, and how far the nearest is.
+
+        Parameters
+        ----------
+        nearest : float or None
+            Distance from the outline to the nearest split point, ``unit``; None when the layer has none.
+        snap_tolerance : float
+            As given, ``unit``; 0: the core's default.
+        unit : str
+            Name of the unit of the lengths.
+        """
+        if snap_tolerance > 0:
+            tolerance = f"{snap_tolerance:.6g} {unit}"
+        else:
+            tolerance = self.tr("0: a millionth of the polygon's size")
+        if nearest is None:
+            return self.tr("no split point lies within the split point snapping tolerance ({}): {} holds none.").format(
+                tolerance, self.parameter_label(self.SPLIT_POINTS)
+            )
+        return self.tr(
+            "no split point lies within the split point snapping tolerance ({}) of its outline; the nearest is "
+            "{:.6g} {} away."
+        ).format(tolerance, nearest, unit)
 
 
 def _guide_near(frame, geometry, guides, index):

@@ -111,8 +111,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
         source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
+        run.warn_dropped_z(source)
         split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        id_field = self.parameterAsString(parameters, self.SPLIT_ID_FIELD, context)
+        id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         sampling = self.sampling_options(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.

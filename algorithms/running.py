@@ -79,6 +79,7 @@ class FeatureRun:
         self.frame = None
         self.writer = None
         self.skipped = 0
+        self.z_warned = False
         self.progress_base = 0.0
         self.progress_step = 100.0
 
@@ -99,13 +100,26 @@ class FeatureRun:
                 QCoreApplication.translate(
                     "IncirCuAlgorithm", "{} must be a {} layer, but '{}' holds {} geometries."
                 ).format(
-                    name,
+                    self.algorithm.parameter_label(name),
                     GEOMETRY_TYPE_NAMES[geometry_type],
                     source.sourceName(),
                     GEOMETRY_TYPE_NAMES.get(actual, "no"),
                 )
             )
         return source
+
+    def warn_dropped_z(self, source):
+        """Warn, once per run, when ``source`` has Z values: the core computes in the plane and drops them."""
+        if self.z_warned or not QgsWkbTypes.hasZ(source.wkbType()):
+            return
+        self.z_warned = True
+        self.warn(
+            QCoreApplication.translate(
+                "IncirCuAlgorithm",
+                "Z values are ignored: '{}' has Z, but the centerline is computed in the plane and written "
+                "without Z (its M values, when stored, are the local width).",
+            ).format(source.sourceName())
+        )
 
     def open_outputs(self, fields, crs, multi):
         """Create the output sinks and the working frame of the layer's CRS."""
@@ -324,10 +338,13 @@ class FeatureRun:
     def finish(self):
         """Return the algorithm's result map and report the totals."""
         self.feedback.setProgress(100.0)
+        # Named as the count outputs are (centerlines, or a network's branches): no plural to get wrong.
+        counts = (
+            (self.algorithm.CENTERLINE_COUNT, self.writer.centerline_count),
+            (self.algorithm.SKIPPED_COUNT, self.skipped),
+        )
         self.feedback.pushInfo(
-            QCoreApplication.translate(
-                "IncirCuAlgorithm", "{} centerlines written, {} features or parts skipped."
-            ).format(self.writer.centerline_count, self.skipped)
+            "; ".join(f"{self.algorithm.outputDefinition(name).description()}: {count}" for name, count in counts)
         )
         results = {name: value for name, value in self.writer.destinations().items() if value}
         results[self.algorithm.CENTERLINE_COUNT] = self.writer.centerline_count

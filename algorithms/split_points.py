@@ -29,6 +29,7 @@ class SplitPoints:
 
     def __init__(self, source, crs, context, id_field=None):
         self.points, self.ids = [], []
+        self.tree = None
         self.index = QgsSpatialIndex()
         self.geographic = crs.isGeographic()
         if source is None:
@@ -64,3 +65,30 @@ class SplitPoints:
         margin = layer_margin(distance, geometry, self.geographic)
         found = self.index.intersects(geometry.boundingBox().buffered(margin))
         return frame.coordinates_to_core([self.points[i] for i in found]), [self.ids[i] for i in found]
+
+    def nearest_distance(self, ring, frame):
+        """Return the distance from a ring of the working frame to the nearest split point, or None without any.
+
+        The nearest point is picked in the layer's CRS (for a message: in degrees, nearly the nearest in metres),
+        its distance measured in the working frame.
+
+        Parameters
+        ----------
+        ring : shapely.LinearRing
+            A polygon's exterior ring, working frame.
+        frame : WorkingFrame
+            The frame ``ring`` is in.
+
+        Returns
+        -------
+        float or None
+            Working frame units: layer units, metres for a layer in degrees.
+        """
+        import shapely  # after require_core, like the core: a missing Shapely gets its install message
+
+        if not self.points:
+            return None
+        if self.tree is None:
+            self.tree = shapely.STRtree(shapely.points(self.points))
+        nearest = int(self.tree.query_nearest(frame.to_layer(ring))[0])
+        return float(shapely.distance(ring, shapely.points(frame.coordinates_to_core([self.points[nearest]]))[0]))

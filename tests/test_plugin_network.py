@@ -124,7 +124,7 @@ def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provi
     )
     assert results["CENTERLINE_COUNT"] == 3
     assert results["SKIPPED_COUNT"] == 1
-    assert any("has 1 split points" in warning for warning in feedback.warnings), feedback.warnings
+    assert any("has 1 split point within" in warning for warning in feedback.warnings), feedback.warnings
     ids = {feature["from_point"] for feature in results["OUTPUT"].getFeatures()}
     assert ids == {"1", "2", "3"}
     for feature in results["OUTPUT"].getFeatures():

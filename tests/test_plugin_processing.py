@@ -598,3 +598,131 @@ def test_transects_cover_a_long_rectangle(provider, interval, count):
         assert sorted([start.y, end.y]) == pytest.approx([0.0, width], abs=2.0 * tolerance)
         assert start.x == pytest.approx(transect["chainage"], abs=2.0 * tolerance)
         assert end.x == pytest.approx(transect["chainage"], abs=2.0 * tolerance)
+
+
+def memory_layer(kind, rows, fields="field=name:string"):
+    """A memory layer in EPSG:2180 of ``kind`` ("Polygon", "PointZ"...) with one feature per (name, WKT) row."""
+    memory = QgsVectorLayer(f"{kind}?crs=EPSG:2180&{fields}", kind, "memory")
+    features = []
+    for name, wkt in rows:
+        feature = QgsFeature(memory.fields())
+        feature.setAttributes([name])
+        feature.setGeometry(QgsGeometry.fromWkt(wkt))
+        features.append(feature)
+    assert memory.dataProvider().addFeatures(features)
+    return memory
+
+
+CHANNEL = "POLYGON((0 0, 300 0, 300 40, 0 40, 0 0))"
+
+
+def test_split_points_beyond_the_snap_tolerance_are_warned_about(provider):
+    # The two split points lie 100 m beyond the channel's ends: ends are found automatically, with a warning
+    # saying how far the nearest point is and what the tolerance is.
+    polygons = memory_layer("Polygon", [("channel", CHANNEL)])
+    points = memory_layer("Point", [("west", "POINT(-100 20)"), ("east", "POINT(400 20)")])
+    results, feedback = run(
+        "polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": points, "SNAP_TOLERANCE": SNAP_TOLERANCE}
+    )
+    assert results["CENTERLINE_COUNT"] == 1 and results["SKIPPED_COUNT"] == 0
+    (warning,) = [message for message in feedback.warnings if message.startswith("Feature 1:")]
+    assert f"snapping tolerance ({SNAP_TOLERANCE:g} m)" in warning, warning
+    assert "the nearest is 100 m away" in warning and "found automatically" in warning, warning
+
+
+def test_split_points_within_the_snap_tolerance_bring_no_warning(provider):
+    polygons = memory_layer("Polygon", [("channel", CHANNEL)])
+    points = memory_layer("Point", [("west", "POINT(0 20)"), ("east", "POINT(300 20)")])
+    results, feedback = run("polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": points})
+    assert results["CENTERLINE_COUNT"] == 1 and feedback.warnings == []
+
+
+@pytest.mark.parametrize(
+    "algorithm, parameters, words",
+    [
+        (
+            "linescenterline",
+            {
+                "LINES_A": str(DATA / "banks_a_2180.geojson"),
+                "LINES_B": str(DATA / "banks_b_2180.geojson"),
+                "PAIR_FIELD_A": "reach",
+                "PAIR_FIELD_B": "rech",
+            },
+            "'Second lines (bank B)' (LINES_B) has no field 'rech'; its fields are: ",
+        ),
+        (
+            "linescenterline",
+            {
+                "LINES_A": str(DATA / "banks_a_2180.geojson"),
+                "LINES_B": str(DATA / "banks_b_2180.geojson"),
+                "PAIR_FIELD_A": "rech",
+                "PAIR_FIELD_B": "reach",
+            },
+            "'First lines (bank A)' (LINES_A) has no field 'rech'; its fields are: ",
+        ),
+        (
+            "polygonnetwork",
+            {
+                "INPUT": str(DATA / "river_2180.geojson"),
+                "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+                "SPLIT_ID_FIELD": "arms",
+            },
+            "'Split points' (SPLIT_POINTS) has no field 'arms'; its fields are: ",
+        ),
+    ],
+    ids=["pair-field-b", "pair-field-a", "split-id-field"],
+)
+def test_a_field_the_layer_does_not_have_stops_the_run(provider, algorithm, parameters, words):
+    with pytest.raises(QgsProcessingException) as raised:
+        run(algorithm, parameters)
+    assert words in str(raised.value)
+
+
+def test_z_values_are_warned_about_once(provider):
+    rows = [
+        (name, f"POLYGON Z(({x} 0 5, {x + 300} 0 5, {x + 300} 40 6, {x} 40 6, {x} 0 5))")
+        for name, x in [("a", 0), ("b", 500)]
+    ]
+    results, feedback = run("polygoncenterline", {"INPUT": memory_layer("PolygonZ", rows)})
+    assert results["CENTERLINE_COUNT"] == 2
+    assert [message for message in feedback.warnings if "Z values are ignored" in message] == feedback.warnings
+    assert len(feedback.warnings) == 1
+
+
+def test_messages_name_the_dialog_labels_and_count_branches(provider):
+    with pytest.raises(QgsProcessingException) as raised:
+        run(
+            "linescenterline",
+            {
+                "LINES_A": str(DATA / "banks_a_2180.geojson"),
+                "LINES_B": str(DATA / "banks_b_2180.geojson"),
+                "PAIR_FIELD_A": "reach",
+            },
+        )
+    assert "'Pairing field of the second lines' (PAIR_FIELD_B)" in str(raised.value)
+    points = memory_layer("Point", [("west", "POINT(0 20)"), ("east", "POINT(300 20)")])
+    results, feedback = run(
+        "polygonnetwork", {"INPUT": memory_layer("Polygon", [("channel", CHANNEL)]), "SPLIT_POINTS": points}
+    )
+    assert results["CENTERLINE_COUNT"] == 1
+    assert "Number of branches: 1; Number of skipped features: 0" in feedback.infos, feedback.infos
+
+
+def test_a_wrong_split_point_count_names_no_part_of_a_single_polygon(provider):
+    points = memory_layer("Point", [("west", "POINT(0 20)")])
+    results, feedback = run(
+        "polygoncenterline", {"INPUT": memory_layer("Polygon", [("channel", CHANNEL)]), "SPLIT_POINTS": points}
+    )
+    assert results["SKIPPED_COUNT"] == 1
+    (warning,) = feedback.warnings
+    assert warning.startswith("Feature 1 skipped: The polygon has 1 split point within the snap tolerance"), warning
+
+
+def test_banks_of_very_different_lengths_are_warned_about(provider):
+    # Bank A 1000 m, bank B 100 m, 40 m apart: beyond bank B the line follows the closing chord.
+    bank_a = memory_layer("LineString", [("a", "LINESTRING(0 0, 1000 0)")])
+    bank_b = memory_layer("LineString", [("b", "LINESTRING(0 40, 100 40)")])
+    results, feedback = run("linescenterline", {"LINES_A": bank_a, "LINES_B": bank_b})
+    assert results["CENTERLINE_COUNT"] == 1
+    (warning,) = feedback.warnings
+    assert warning.startswith("Feature 1: The first line is 1000 long, 10 times the second one (100, "), warning
