@@ -55,7 +55,10 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         line = [ProcessingSourceType.VectorLine]
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.LINES_A, self.tr("First lines (bank A)"), line),
-            self.tr("Line layer of one side; the output has its CRS and its attributes."),
+            self.tr(
+                "Line layer of one side; the output has its CRS and its attributes. Z values (of both layers) are "
+                "ignored: the centerline is computed in the plane."
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.LINES_B, self.tr("Second lines (bank B)"), line),

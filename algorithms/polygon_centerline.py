@@ -64,7 +64,10 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             QgsProcessingParameterFeatureSource(
                 self.INPUT, self.tr("Polygon layer"), [ProcessingSourceType.VectorPolygon]
             ),
-            self.tr("Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part."),
+            self.tr(
+                "Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part. Z values "
+                "are ignored: the centerline is computed in the plane."
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(

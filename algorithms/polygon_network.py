@@ -59,7 +59,10 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             QgsProcessingParameterFeatureSource(
                 self.INPUT, self.tr("Polygon layer"), [ProcessingSourceType.VectorPolygon]
             ),
-            self.tr("Polygons with several arms (confluences, deltas, road junctions); each part gets its network."),
+            self.tr(
+                "Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z "
+                "values are ignored: the network is computed in the plane."
+            ),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
