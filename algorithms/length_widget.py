@@ -4,11 +4,12 @@ QGIS's own distance widget labels a length "degrees" when the layer is geographi
 layers in a local metric projection, so its lengths are metres there. The parameters name this wrapper in
 their metadata (:func:`.base.length_parameter`); Processing imports it only when it builds a dialog, so
 ``qgis_process`` never loads this module. The batch dialog and the modeler keep QGIS's own widgets.
+The label is QGIS's own (translated "[optional]", help text as tooltip), so it reads like every other one.
 """
 
 from processing.gui.wrappers import DIALOG_STANDARD, WidgetWrapper, WidgetWrapperFactory, dialogTypes
 from qgis.core import QgsProcessingParameters, QgsUnitTypes
-from qgis.gui import QgsDoubleSpinBox
+from qgis.gui import QgsAbstractProcessingParameterWidgetWrapper, QgsDoubleSpinBox
 from qgis.PyQt.QtWidgets import QHBoxLayout, QLabel, QWidget
 
 from .compat import DistanceUnit
@@ -32,6 +33,17 @@ def unit_text(crs):
     return QgsUnitTypes.toString(DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits())
 
 
+class LengthSpinBox(QgsDoubleSpinBox):
+    """A spin box keeping six decimals but showing only the significant ones: "1", "2.5", not "1.000000"."""
+
+    def textFromValue(self, value):
+        text = super().textFromValue(value)
+        decimal_point = self.locale().decimalPoint()
+        if decimal_point in text:
+            text = text.rstrip("0").rstrip(decimal_point)
+        return text
+
+
 class LengthWidgetWrapper(WidgetWrapper):
     """A non-negative number with the unit of the parent layer next to it (metres for degrees)."""
 
@@ -40,9 +52,13 @@ class LengthWidgetWrapper(WidgetWrapper):
             return default_wrapper(parameter, dialog, row, col)
         return super().__new__(cls)
 
+    def createLabel(self):
+        """Return the label QGIS gives its own widgets: translated "[optional]", the help text as tooltip."""
+        return QgsAbstractProcessingParameterWidgetWrapper.createLabel(self)
+
     def createWidget(self):
         parameter = self.parameterDefinition()
-        self.spin_box = QgsDoubleSpinBox()
+        self.spin_box = LengthSpinBox()
         self.spin_box.setDecimals(6)
         self.spin_box.setRange(max(parameter.minimum(), 0.0), parameter.maximum())
         self.spin_box.setShowClearButton(True)

@@ -117,3 +117,61 @@ def test_modeler_keeps_the_qgis_distance_widget_with_model_inputs(provider):
     dialog.close()
     dialog.deleteLater()
     QApplication.processEvents()
+
+
+def parameter_label(dialog, name):
+    """Return the label the dialog shows above parameter ``name`` (QGIS's wrappers and the plugin's alike)."""
+    wrapper = dialog.mainWidget().wrappers[name]
+    return wrapper.label if hasattr(wrapper, "label") else wrapper.wrappedLabel()
+
+
+@pytest.mark.parametrize("algorithm_name", sorted(DIALOGS))
+def test_length_labels_show_the_help_as_every_other_label(toolbox_dialog, algorithm_name):
+    layer, distances = DIALOGS[algorithm_name]
+    algorithm, dialog = toolbox_dialog(algorithm_name, f"{layer}_2180.geojson")
+    for name in distances:
+        definition = algorithm.parameterDefinition(name)
+        label = parameter_label(dialog, name)
+        assert label.toolTip() == definition.toolTip(), name
+        assert definition.help() in label.toolTip(), name
+    other = "PAIR_FIELD_A" if algorithm_name == "linescenterline" else "ISLANDS"
+    assert parameter_label(dialog, other).toolTip() == algorithm.parameterDefinition(other).toolTip()
+
+
+@pytest.fixture
+def qgis_polish():
+    """QGIS's own Polish translation installed in the application (what ``qgis --lang pl`` loads)."""
+    from qgis.PyQt.QtCore import QTranslator
+
+    path = QgsApplication.i18nPath()
+    translator = QTranslator()
+    if not translator.load("qgis_pl", path):
+        pytest.skip(f"QGIS's Polish translation is not installed in {path}")
+    QApplication.installTranslator(translator)
+    yield translator
+    QApplication.removeTranslator(translator)
+
+
+def test_polish_length_labels_say_optional_as_qgis_does(toolbox_dialog, qgis_polish):
+    _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
+    islands = parameter_label(dialog, "ISLANDS").text()
+    description = dialog.mainWidget().wrappers["ISLANDS"].parameterDefinition().description()
+    optional = islands.replace(description, "")
+    assert optional and "[optional]" not in optional, "QGIS's Polish translation gives another suffix"
+    for name in DIALOGS["polygoncenterline"][1]:
+        definition = dialog.mainWidget().wrappers[name].parameterDefinition()
+        assert parameter_label(dialog, name).text() == definition.description() + optional, name
+
+
+def test_length_boxes_show_only_the_significant_decimals(toolbox_dialog):
+    _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
+    wrappers = dialog.mainWidget().wrappers
+    assert wrappers["SNAP_TOLERANCE"].spin_box.text() == "1"
+    assert wrappers["TOLERANCE"].spin_box.text() == "0"
+    wrappers["SPACING"].setValue(0.125)
+    assert wrappers["SPACING"].spin_box.text() == "0.125"
+    wrappers["TRANSECT_INTERVAL"].setValue(12.000001)
+    assert wrappers["TRANSECT_INTERVAL"].spin_box.text() == "12.000001"
+    parameters = dialog.createProcessingParameters()
+    assert parameters["SPACING"] == 0.125
+    assert parameters["TRANSECT_INTERVAL"] == pytest.approx(12.000001, abs=1e-9)
