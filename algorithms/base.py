@@ -1,6 +1,7 @@
 """Base class of the IncirCu algorithms: translation, instances, help, icon and shared parameters."""
 
 import configparser
+import html
 from pathlib import Path
 
 from qgis.core import (
@@ -73,9 +74,10 @@ def length_unit(crs):
 class IncirCuAlgorithm(QgsProcessingAlgorithm):
     """Common behaviour of the IncirCu Processing algorithms.
 
-    Subclasses define ``name``, ``displayName``, ``shortDescription``, ``shortHelpString``,
+    Subclasses define ``name``, ``displayName``, ``shortDescription``, ``summary``,
     ``centerline_output_name``, ``initAlgorithm``, ``HELP_ANCHOR`` and ``LENGTH_PARENT``, and add their
-    parameters with :meth:`add_parameter`, which also records the parameter's help text.
+    parameters with :meth:`add_parameter`, which also records the parameter's help text; the dialog's help
+    panel (``shortHelpString``) shows the summary and then every parameter and output with that text.
     """
 
     TOLERANCE = "TOLERANCE"
@@ -184,8 +186,47 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def helpUrl(self):
         return f"{homepage()}#{self.HELP_ANCHOR}"
 
+    def summary(self):
+        """Return what the algorithm does, translated: the first paragraph of its help."""
+        raise NotImplementedError
+
+    def shortHelpString(self):
+        """Return the help of the dialog's side panel: the summary, then the parameters and outputs.
+
+        Each parameter and output is listed under its dialog label with its help text (the tooltip, units
+        included), in the order the dialog shows them: parameters, advanced parameters, outputs.
+        """
+        parameters, advanced, outputs = [], [], []
+        for definition in self.parameterDefinitions():
+            if definition.isDestination():
+                outputs.append(definition)
+            elif definition.flags() & ProcessingParameterFlag.Advanced:
+                advanced.append(definition)
+            else:
+                parameters.append(definition)
+        destinations = {definition.name() for definition in outputs}
+        outputs += [output for output in self.outputDefinitions() if output.name() not in destinations]
+        sections = (
+            (self.tr("Parameters"), parameters),
+            (self.tr("Advanced parameters"), advanced),
+            (self.tr("Outputs"), outputs),
+        )
+        listed = "".join(self._help_section(title, definitions) for title, definitions in sections if definitions)
+        return self.summary() + "\n" + listed
+
+    def _help_section(self, title, definitions):
+        """Return one heading of the help panel and a line per parameter or output: label in bold, help."""
+        lines = "".join(
+            "<p style='margin: 3px 0'><b>{}</b>: {}</p>".format(
+                html.escape(definition.description(), quote=False),
+                html.escape(self.parameter_help.get(definition.name(), ""), quote=False),
+            )
+            for definition in definitions
+        )
+        return f"<h3>{html.escape(title, quote=False)}</h3>{lines}"
+
     def helpString(self):
-        help_map = {"ALG_DESC": self.shortHelpString(), "ALG_CREATOR": "IncirCu", **self.parameter_help}
+        help_map = {"ALG_DESC": self.summary(), "ALG_CREATOR": "IncirCu", **self.parameter_help}
         return QgsProcessingUtils.formatHelpMapAsHtml(help_map, self)
 
     def add_parameter(self, parameter, help_text, advanced=False):
@@ -242,9 +283,8 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             0.0,
             self.tr(
                 "Largest distance between the centerline and the exact medial axis, in layer units (metres for "
-                "a layer in degrees). The line keeps only the vertices it needs to stay that close, and every "
-                "vertex lies exactly on the axis; whatever the tolerance, the line stays inside the polygon (where "
-                "it would cut across a bend or a spike, it keeps the vertices it needs). 0 uses 1/200 of the "
+                "a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying "
+                "exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the "
                 "shape's typical width: the right choice for maps.",
             ),
         )
@@ -292,24 +332,21 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
         )
 
-    def add_islands_parameter(self, help_text, name="ISLANDS"):
+    def add_islands_parameter(self, help_template, name="ISLANDS"):
         """Add the island mode, its choices in the order of the core's ``ISLAND_MODES``.
 
         Parameters
         ----------
-        help_text : str
-            What the choices do in this algorithm, already translated.
+        help_template : str
+            What the choices do in this algorithm, already translated, naming them ``{pass_through}`` and
+            ``{ignore}``: the help then names them exactly as the drop-down does, in every language.
         name : str
             Parameter name.
         """
+        pass_through, ignore = self.tr("Pass through the main channel"), self.tr("Ignore islands")
         self.add_optional_parameter(
-            QgsProcessingParameterEnum(
-                name,
-                self.tr("Islands (holes)"),
-                [self.tr("Pass through the main channel"), self.tr("Ignore islands")],
-                defaultValue=0,
-            ),
-            help_text,
+            QgsProcessingParameterEnum(name, self.tr("Islands (holes)"), [pass_through, ignore], defaultValue=0),
+            help_template.format(pass_through=pass_through, ignore=ignore),
         )
 
     def add_m_parameter(self):
@@ -321,6 +358,10 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             ),
         )
 
+    def centerline_output_help(self):
+        """Return the help of the centerline output: the fields it writes, translated."""
+        raise NotImplementedError
+
     def add_result_parameters(self):
         """Add ``ADD_M``, the four output layers, ``TRANSECT_INTERVAL`` and the two count outputs."""
         self.add_m_parameter()
@@ -330,10 +371,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 self.centerline_output_name(),
                 ProcessingSourceType.VectorLine,
             ),
-            self.tr(
-                "Line layer: input attributes plus length, width_min, width_mean, width_max (incircle "
-                "diameters over the vertices with a positive width), n_vertices and ends_found.",
-            ),
+            self.centerline_output_help(),
         )
         optional_layers = (
             (

@@ -38,10 +38,19 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     def centerline_output_name(self):
         return self.tr("Centerline between lines")
 
+    def centerline_output_help(self):
+        return self.tr(
+            "Line layer, one line per pair of lines: the attributes of the first lines plus source_fid (the "
+            "id of the pair's first feature in the first lines), length, width_min, width_mean, width_max "
+            "(incircle diameters over the vertices with a positive width; layer units, metres for a layer in "
+            "degrees) and n_vertices. Its ends_found (always false) and ends_from (always empty) are there only "
+            "so that it has the fields of 'Centerline of polygons'."
+        )
+
     def tags(self):
         return self.tr("centerline,centreline,medial axis,banks,river,road,width,incircle").split(",")
 
-    def shortHelpString(self):
+    def summary(self):
         return self.tr(
             "Computes one unbranched centerline between two lines (for example the two banks of a river) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "

@@ -44,10 +44,18 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     def centerline_output_name(self):
         return self.tr("Centerlines of polygons")
 
+    def centerline_output_help(self):
+        return self.tr(
+            "Line layer: input attributes plus source_fid (the polygon's feature id, to join the line back to "
+            "it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive "
+            "width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split "
+            "points were used) and ends_from (split_points, guide or automatic)."
+        )
+
     def tags(self):
         return self.tr("centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle").split(",")
 
-    def shortHelpString(self):
+    def summary(self):
         return self.tr(
             "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
@@ -86,23 +94,21 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_sampling_parameters()
         self.add_islands_parameter(
             self.tr(
-                "Pass through the main channel: the line never crosses an island and goes round it on the "
-                "side of the wider channel. Ignore islands: holes are filled before computing."
+                "{pass_through}: the line never crosses an island and goes round it on the side of the wider "
+                "channel. {ignore}: holes are filled before computing."
             ),
             self.ISLANDS,
         )
+        main_stem, longest_path = self.tr("Main stem (widest path)"), self.tr("Longest path")
         self.add_optional_parameter(
             QgsProcessingParameterEnum(
-                self.END_RULE,
-                self.tr("Automatic ends"),
-                [self.tr("Main stem (widest path)"), self.tr("Longest path")],
-                defaultValue=0,
+                self.END_RULE, self.tr("Automatic ends"), [main_stem, longest_path], defaultValue=0
             ),
             self.tr(
-                "For polygons without split points. Main stem: the internal path that sweeps the largest "
+                "For polygons without split points. {main_stem}: the internal path that sweeps the largest "
                 "channel area (length times width), so a wide main river wins over a longer but narrow side "
-                "arm. Longest path: the tips of the two longest arms."
-            ),
+                "arm. {longest_path}: the tips of the two longest arms."
+            ).format(main_stem=main_stem, longest_path=longest_path),
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(

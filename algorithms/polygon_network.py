@@ -1,4 +1,4 @@
-"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between three or more split points."""
+"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between two or more split points."""
 
 from qgis.core import (
     QgsProcessingParameterFeatureSink,
@@ -20,9 +20,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
 
-    ICON = "polygoncenterline.svg"
+    ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
-    HELP_ANCHOR = "network-between-three-or-more-ends--incircupolygonnetwork"
+    HELP_ANCHOR = "centerline-network-of-polygons--incircupolygonnetwork"
     LENGTH_PARENT = INPUT
 
     def name(self):
@@ -41,7 +41,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def tags(self):
         return self.tr("network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width").split(",")
 
-    def shortHelpString(self):
+    def summary(self):
         return self.tr(
             "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
             "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
@@ -89,9 +89,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         self.add_sampling_parameters()
         self.add_islands_parameter(
             self.tr(
-                "Pass through the main channel: no branch crosses an island; each island belongs to the chain it "
-                "is nearer to, so the branches go round it on the side of the wider channel. Ignore islands: "
-                "holes are filled before computing."
+                "{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, "
+                "so the branches go round it on the side of the wider channel. {ignore}: holes are filled before "
+                "computing."
             ),
             self.ISLANDS,
         )
@@ -101,10 +101,11 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 self.OUTPUT, self.centerline_output_name(), ProcessingSourceType.VectorLine
             ),
             self.tr(
-                "Line layer, one feature per branch: input attributes plus from_point, to_point (split point ids "
-                "or 'junction'), right_chain, left_chain (each chain named 'a-b' after the split points at its "
-                "ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the "
-                "vertices with a positive width) and n_vertices."
+                "Line layer, one feature per branch: input attributes plus source_fid (the polygon's feature id, "
+                "to join the branch back to it), from_point, to_point (split point ids or 'junction'), "
+                "right_chain, left_chain (each chain named 'a-b' after the split points at its ends, "
+                "counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the "
+                "vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices."
             ),
         )
         self.add_count_outputs(self.tr("Number of branches"), self.tr("Number of branch features written."))

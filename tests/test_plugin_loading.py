@@ -4,6 +4,7 @@ import re
 from pathlib import Path
 
 from qgis.core import Qgis, QgsApplication
+from qgis.PyQt.QtCore import QCoreApplication, QTranslator
 
 from tests.support.project import metadata, version_number
 
@@ -135,15 +136,96 @@ def test_help_button_url_names_the_algorithms_readme_section(provider):
 
     readme = (REPOSITORY / "README.md").read_text(encoding="utf-8")
     anchors = {github_slug(line.lstrip("#")) for line in readme.splitlines() if line.startswith("#")}
-    registry = QgsApplication.processingRegistry()
-    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline"):
-        algorithm = registry.algorithmById(algorithm_id)
+    for algorithm in provider.algorithms():
         address, _, anchor = algorithm.helpUrl().partition("#")
         assert address == metadata()["homepage"]
         assert anchor in anchors, anchor
-        assert algorithm.id() in readme
+        # the README's section carries the name the toolbox shows
+        assert f"### {algorithm.displayName()} — `{algorithm.id()}`" in readme.splitlines()
         assert algorithm.shortDescription().endswith(".")
         assert "IncirCu" not in algorithm.displayName()
+
+
+def test_metadata_names_every_algorithm_the_provider_registers(provider):
+    about = metadata()["about"]
+    names = [algorithm.displayName() for algorithm in provider.algorithms()]
+    count = {2: "two", 3: "three", 4: "four", 5: "five"}[len(names)]
+    assert f"adds {count} Processing algorithms" in about
+    for name in names:
+        assert f'"{name}"' in about, name
+
+
+def test_every_algorithm_has_its_own_icon(provider):
+    from conftest import REPOSITORY
+
+    icons = [Path(algorithm.svgIconPath()) for algorithm in provider.algorithms()]
+    assert all(icon.is_file() and icon.parent == REPOSITORY / "icons" for icon in icons)
+    assert len(set(icons)) == len(icons) and Path(provider.svgIconPath()) not in icons
+
+
+def test_dialog_help_panel_lists_every_parameter_and_output_with_its_help(provider):
+    for algorithm in provider.algorithms():
+        panel = algorithm.shortHelpString()
+        assert panel.startswith(algorithm.summary())
+        definitions = list(algorithm.parameterDefinitions()) + list(algorithm.outputDefinitions())
+        for definition in definitions:
+            help_text = algorithm.parameter_help[definition.name()]
+            assert f"<b>{definition.description()}</b>: {help_text}" in panel, definition.name()
+        assert algorithm.summary() in algorithm.helpString()
+
+
+def test_enum_help_names_the_choices_as_the_drop_down_does(provider):
+    for algorithm in provider.algorithms():
+        for definition in algorithm.parameterDefinitions():
+            if definition.type() == "enum":
+                for option in definition.options():
+                    assert f"{option}:" in definition.help(), (algorithm.id(), option)
+
+
+#: The island choices translated, as by a translation whose help strings lag behind.
+ISLAND_CHOICES = {"Pass through the main channel": "Main-channel route", "Ignore islands": "Islands dropped"}
+
+
+class ChoiceTranslator(QTranslator):
+    """Translates only the island choices (:data:`ISLAND_CHOICES`)."""
+
+    def translate(self, context, source, disambiguation=None, n=-1):
+        return ISLAND_CHOICES.get(source)  # None: untranslated (an empty string would be a translation)
+
+    def isEmpty(self):
+        return False
+
+
+def test_island_help_follows_the_translated_choices(provider):
+    registry = QgsApplication.processingRegistry()
+    translator = ChoiceTranslator()
+    QCoreApplication.installTranslator(translator)
+    try:
+        for algorithm_id in ("incircu:polygoncenterline", "incircu:polygonnetwork"):
+            algorithm = registry.createAlgorithmById(algorithm_id)
+            islands = algorithm.parameterDefinition("ISLANDS")
+            assert islands.options() == list(ISLAND_CHOICES.values())
+            for option in islands.options():
+                assert f"{option}:" in islands.help(), (algorithm_id, option)
+    finally:
+        QCoreApplication.removeTranslator(translator)
+
+
+def test_output_help_lists_the_fields_written(provider):
+    from incircu.algorithms.network_outputs import BRANCH_FIELDS
+    from incircu.algorithms.outputs import CENTERLINE_FIELDS
+
+    registry = QgsApplication.processingRegistry()
+    for algorithm_id, fields in (
+        ("incircu:polygoncenterline", CENTERLINE_FIELDS),
+        ("incircu:linescenterline", CENTERLINE_FIELDS),
+        ("incircu:polygonnetwork", BRANCH_FIELDS),
+    ):
+        help_text = registry.algorithmById(algorithm_id).parameterDefinition("OUTPUT").help()
+        for name in ["source_fid"] + [name for name, _ in fields]:
+            assert re.search(rf"\b{name}\b", help_text), (algorithm_id, name)
+    lines_help = registry.algorithmById("incircu:linescenterline").parameterDefinition("OUTPUT").help()
+    assert "polygon's" not in lines_help
 
 
 def test_help_names_parameters_by_their_dialog_labels(provider):
