@@ -834,7 +834,9 @@ class _Tracer:
         corners = self._corner_samples(intervals.span[after])
         samples = Samples.concatenate([spans.samples(span, u, b), corners])
         t, status, site = self._solve_initial(samples, given_site, status, report)
-        centre = samples.point + t[:, None] * samples.direction
+        # A disk that touches nothing (t infinite, two bank lines far apart in length) has no centre: NaN.
+        with np.errstate(invalid="ignore"):
+            centre = samples.point + t[:, None] * samples.direction
         del samples
         # The edges' samples (the corners' follow them).
         count = len(span)
