@@ -66,9 +66,8 @@ def length_unit(crs):
     projection, see :class:`.convert.WorkingFrame`); "layer units" (translated) when QGIS has no name for it.
     """
     unit = DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits()
-    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(unit)) or QCoreApplication.translate(
-        "IncirCuAlgorithm", "layer units"
-    )
+    fallback = QCoreApplication.translate("IncirCuAlgorithm", "layer units")
+    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(unit)) or fallback
 
 
 class IncirCuAlgorithm(QgsProcessingAlgorithm):

@@ -4,52 +4,52 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="116"/>
+        <location filename="../algorithms/base.py" line="170"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="264"/>
+        <location filename="../algorithms/base.py" line="353"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="313"/>
+        <location filename="../algorithms/base.py" line="403"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="323"/>
+        <location filename="../algorithms/base.py" line="413"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="323"/>
+        <location filename="../algorithms/base.py" line="413"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="328"/>
+        <location filename="../algorithms/base.py" line="418"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="328"/>
+        <location filename="../algorithms/base.py" line="418"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -64,7 +64,7 @@
         <translation>IncirCu wymaga Shapely 2.0 lub nowszego, a zainstalowany jest Shapely {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="98"/>
+        <location filename="../algorithms/running.py" line="99"/>
         <source>{} must be a {} layer, but &apos;{}&apos; holds {} geometries.</source>
         <translation>{} musi być warstwą typu {}, a '{}' zawiera geometrie typu {}.</translation>
     </message>
@@ -74,270 +74,280 @@
         <translation>obiekt nie ma geometrii</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="175"/>
+        <location filename="../algorithms/running.py" line="189"/>
         <source>Feature {} skipped: {}</source>
         <translation>Obiekt {} pominięty: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="183"/>
+        <location filename="../algorithms/running.py" line="197"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="198"/>
+        <location filename="../algorithms/running.py" line="212"/>
         <source>{} (part {})</source>
         <translation>{} (część {})</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="222"/>
+        <location filename="../algorithms/running.py" line="236"/>
         <source>unexpected {}: {} (please report this with the feature)</source>
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="327"/>
-        <source>{} centerlines written, {} features or parts skipped.</source>
-        <translation>Zapisano linii środkowych: {}, pominięto obiektów lub części: {}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="264"/>
+        <location filename="../algorithms/base.py" line="353"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="274"/>
-        <source>Line layer: input attributes plus length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width), n_vertices and ends_found.</source>
-        <translation>Warstwa liniowa: atrybuty wejściowe oraz length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości), n_vertices i ends_found.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="313"/>
+        <location filename="../algorithms/base.py" line="403"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/outputs.py" line="185"/>
+        <location filename="../algorithms/outputs.py" line="200"/>
         <source>Could not write a centerline: {}</source>
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="285"/>
+        <location filename="../algorithms/base.py" line="375"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="186"/>
+        <location filename="../algorithms/base.py" line="279"/>
         <source>Largest deviation from the exact medial axis (0 = automatic)</source>
         <translation>Największe odchylenie od dokładnej osi środkowej (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="186"/>
-        <source>Largest distance between the centerline and the exact medial axis, in layer units (metres for a layer in degrees). The line keeps only the vertices it needs to stay that close, and every vertex lies exactly on the axis; whatever the tolerance, the line stays inside the polygon (where it would cut across a bend or a spike, it keeps the vertices it needs). 0 uses 1/200 of the shape&apos;s typical width: the right choice for maps.</source>
-        <translation>Największa odległość między linią środkową a dokładną osią środkową, w jednostkach warstwy (metry dla warstwy w stopniach). Linia zachowuje tylko wierzchołki potrzebne, by pozostać tak blisko, a każdy wierzchołek leży dokładnie na osi; przy każdej tolerancji linia pozostaje wewnątrz poligonu (tam, gdzie przecięłaby zakole lub wypustkę, zachowuje potrzebne wierzchołki). 0 oznacza 1/200 typowej szerokości kształtu: właściwy wybór dla map.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="198"/>
+        <location filename="../algorithms/base.py" line="290"/>
         <source>Fixed boundary sampling distance (0 = adaptive)</source>
         <translation>Stały odstęp próbkowania brzegu (0 = adaptacyjnie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="198"/>
+        <location filename="../algorithms/base.py" line="290"/>
         <source>The paper&apos;s fixed sampling: a sample every this distance along both sides, in layer units (metres for a layer in degrees), giving many evenly spaced vertices. Use it to reproduce the paper or for a dense line; 0 uses the adaptive sampling bounded by the largest deviation. Give either this or the largest deviation, not both.</source>
         <translation>Stałe próbkowanie z artykułu: próbka co tę odległość wzdłuż obu stron, w jednostkach warstwy (metry dla warstwy w stopniach), dające wiele równomiernie rozmieszczonych wierzchołków. Do odtworzenia artykułu lub gęstej linii; 0 oznacza próbkowanie adaptacyjne ograniczone największym odchyleniem. Podaj to albo największe odchylenie, nie oba.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="222"/>
+        <location filename="../algorithms/base.py" line="314"/>
         <source>Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary sampling distance, not both; set the other one to 0.</source>
         <translation>Podaj największe odchylenie od osi (próbkowanie adaptacyjne) albo stały odstęp próbkowania brzegu, nie oba; ustaw drugie na 0.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="232"/>
+        <location filename="../algorithms/base.py" line="324"/>
         <source>Split point snapping tolerance</source>
         <translation>Tolerancja przyciągania punktów podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="232"/>
+        <location filename="../algorithms/base.py" line="324"/>
         <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees); 0 = a millionth of the polygon&apos;s size.</source>
         <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="252"/>
+        <location filename="../algorithms/base.py" line="346"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="252"/>
+        <location filename="../algorithms/base.py" line="345"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="252"/>
+        <location filename="../algorithms/base.py" line="345"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
     <message>
-        <location filename="../algorithms/network_outputs.py" line="97"/>
+        <location filename="../algorithms/network_outputs.py" line="91"/>
         <source>Could not write a branch: {}</source>
         <translation>Nie można zapisać gałęzi: {}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="69"/>
+        <source>layer units</source>
+        <translation>jednostki warstwy</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="146"/>
+        <source>{}: {} has no field &apos;{}&apos;; its fields are: {}.</source>
+        <translation>{}: {} nie ma pola &apos;{}&apos;; jego pola to: {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="146"/>
+        <source>none</source>
+        <translation>brak</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="208"/>
+        <source>Parameters</source>
+        <translation>Parametry</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="208"/>
+        <source>Advanced parameters</source>
+        <translation>Parametry zaawansowane</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="208"/>
+        <source>Outputs</source>
+        <translation>Wyniki</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="279"/>
+        <source>Largest distance between the centerline and the exact medial axis, in layer units (metres for a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the shape&apos;s typical width: the right choice for maps.</source>
+        <translation>Największa odległość linii środkowej od dokładnej osi środkowej, w jednostkach warstwy (metry dla warstwy w stopniach): linia zachowuje tylko wierzchołki potrzebne, by pozostać tak blisko, każdy leżący dokładnie na osi, i nigdy nie wychodzi poza kształt, niezależnie od wartości. 0 oznacza 1/200 typowej szerokości kształtu: właściwy wybór dla map.</translation>
     </message>
 </context>
 <context>
     <name>LinesCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="40"/>
+        <location filename="../algorithms/lines_centerline.py" line="51"/>
         <source>centerline,centreline,medial axis,banks,river,road,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,brzegi,rzeka,droga,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="54"/>
+        <location filename="../algorithms/lines_centerline.py" line="65"/>
         <source>First lines (bank A)</source>
         <translation>Pierwsze linie (brzeg A)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="54"/>
-        <source>Line layer of one side; the output has its CRS and its attributes.</source>
-        <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="58"/>
+        <location filename="../algorithms/lines_centerline.py" line="72"/>
         <source>Second lines (bank B)</source>
         <translation>Drugie linie (brzeg B)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="62"/>
+        <location filename="../algorithms/lines_centerline.py" line="76"/>
         <source>Pairing field of the first lines</source>
         <translation>Pole parujące pierwszych linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="74"/>
+        <location filename="../algorithms/lines_centerline.py" line="88"/>
         <source>Pairing field of the second lines</source>
         <translation>Pole parujące drugich linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="93"/>
-        <source>Give both PAIR_FIELD_A and PAIR_FIELD_B, or neither (then each layer holds one line).</source>
-        <translation>Podaj oba pola PAIR_FIELD_A i PAIR_FIELD_B albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="106"/>
+        <location filename="../algorithms/lines_centerline.py" line="124"/>
         <source>{} holds no line.</source>
         <translation>{} nie zawiera żadnej linii.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="109"/>
-        <source>{} holds {} separate lines that do not join into one; give PAIR_FIELD_A and PAIR_FIELD_B to pair them, or merge them into one line.</source>
-        <translation>{} zawiera {} osobne linie, które nie łączą się w jedną; podaj PAIR_FIELD_A i PAIR_FIELD_B, aby je sparować, albo scal je w jedną linię.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="133"/>
-        <source>no line in LINES_B has {} = {!r}</source>
-        <translation>żadna linia w LINES_B nie ma {} = {!r}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="137"/>
-        <source>the lines of LINES_A with this pairing value do not join into one</source>
-        <translation>linie LINES_A o tej wartości parującej nie łączą się w jedną</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="139"/>
-        <source>the lines of LINES_B with this pairing value do not join into one</source>
-        <translation>linie LINES_B o tej wartości parującej nie łączą się w jedną</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="123"/>
-        <source>No line in LINES_A has {} = {!r}; line {} of LINES_B unused.</source>
-        <translation>Żadna linia w LINES_A nie ma {} = {!r}; linia {} z LINES_B nie została użyta.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="31"/>
+        <location filename="../algorithms/lines_centerline.py" line="33"/>
         <source>Centerline between two lines</source>
         <translation>Linia środkowa między dwiema liniami</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="34"/>
+        <location filename="../algorithms/lines_centerline.py" line="36"/>
         <source>One unbranched centerline between two lines, such as the two banks of a river.</source>
         <translation>Jedna nierozgałęziona linia środkowa między dwiema liniami, na przykład brzegami rzeki.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="37"/>
+        <location filename="../algorithms/lines_centerline.py" line="39"/>
         <source>Centerline between lines</source>
         <translation>Linia środkowa między liniami</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="43"/>
+        <location filename="../algorithms/lines_centerline.py" line="54"/>
         <source>Computes one unbranched centerline between two lines (for example the two banks of a river) with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines are paired by equal values of the two pairing fields; without them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is the local width. The second lines are reprojected to the CRS of the first; geographic layers are computed in a local metric projection and distances are then in metres.</source>
         <translation>Wyznacza jedną nierozgałęzioną linię środkową między dwiema liniami (na przykład brzegami rzeki) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu linii. Linie łączone są w pary według równych wartości obu pól parujących; bez nich każda warstwa zawiera jedną linię (jej obiekty i części są scalane). Linie nie mogą się przecinać. Wartość M każdego wierzchołka to lokalna szerokość. Drugie linie są przeliczane do układu pierwszych; warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym, a odległości są wtedy w metrach.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="58"/>
+        <location filename="../algorithms/lines_centerline.py" line="72"/>
         <source>Line layer of the other side; reprojected to the CRS of the first lines when needed.</source>
         <translation>Warstwa liniowa drugiej strony; w razie potrzeby przeliczana do układu pierwszych linii.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="62"/>
+        <location filename="../algorithms/lines_centerline.py" line="76"/>
         <source>Optional; a line of the first lines is paired with the line of the second lines that has the same value in &apos;Pairing field of the second lines&apos;.</source>
         <translation>Opcjonalne; linia z pierwszych linii łączona jest w parę z linią z drugich linii o tej samej wartości w 'Pole parujące drugich linii'.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="74"/>
+        <location filename="../algorithms/lines_centerline.py" line="88"/>
         <source>Optional; required together with &apos;Pairing field of the first lines&apos;.</source>
         <translation>Opcjonalne; wymagane razem z 'Pole parujące pierwszych linii'.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="42"/>
+        <source>Line layer, one line per pair of lines: the attributes of the first lines plus source_fid (the id of the pair&apos;s first feature in the first lines), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices. Its ends_found (always false) and ends_from (always empty) are there only so that it has the fields of &apos;Centerline of polygons&apos;.</source>
+        <translation>Warstwa liniowa, jedna linia na parę linii: atrybuty pierwszych linii oraz source_fid (identyfikator pierwszego obiektu pary w pierwszych liniach), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices. Pola ends_found (zawsze fałsz) i ends_from (zawsze puste) istnieją tylko po to, by warstwa miała pola algorytmu &apos;Linia środkowa poligonów&apos;.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="65"/>
+        <source>Line layer of one side; the output has its CRS and its attributes. Z values (of both layers) are ignored: the centerline is computed in the plane.</source>
+        <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty. Wartości Z (obu warstw) są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="109"/>
+        <source>Give both {} and {}, or neither (then each layer holds one line).</source>
+        <translation>Podaj oba pola, {} i {}, albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="127"/>
+        <source>{} holds {} separate lines that do not join into one; give {} and {} to pair them, or merge them into one line.</source>
+        <translation>{} zawiera linie, które nie łączą się w jedną (jest ich {}); podaj {} i {}, aby je sparować, albo scal je w jedną linię.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="146"/>
+        <source>No line in {} has {} = {!r}; line {} of {} unused.</source>
+        <translation>Żadna linia w {} nie ma {} = {!r}; linia {} z {} nie została użyta.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="156"/>
+        <source>no line in {} has {} = {!r}</source>
+        <translation>żadna linia w {} nie ma {} = {!r}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="174"/>
+        <source>the lines of {} with this pairing value do not join into one</source>
+        <translation>linie z {} o tej wartości parowania nie łączą się w jedną</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="181"/>
+        <source>Feature {}: {}</source>
+        <translation>Obiekt {}: {}</translation>
     </message>
 </context>
 <context>
     <name>PolygonCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="48"/>
+        <location filename="../algorithms/polygon_centerline.py" line="56"/>
         <source>centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="63"/>
+        <location filename="../algorithms/polygon_centerline.py" line="71"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="63"/>
-        <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part.</source>
-        <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="69"/>
+        <location filename="../algorithms/polygon_centerline.py" line="80"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="84"/>
-        <source>Pass through the main channel: the line never crosses an island and goes round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
-        <translation>Prowadź głównym korytem: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. Pomijaj wyspy: otwory są wypełniane przed obliczeniem.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="117"/>
+        <location filename="../algorithms/polygon_centerline.py" line="126"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="117"/>
+        <location filename="../algorithms/polygon_centerline.py" line="126"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="182"/>
+        <location filename="../algorithms/polygon_centerline.py" line="211"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="184"/>
-        <source>no split points given, ends found automatically</source>
-        <translation>nie podano punktów podziału, końce wyznaczono automatycznie</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="39"/>
@@ -355,44 +365,79 @@
         <translation>Linie środkowe poligonów</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="51"/>
+        <location filename="../algorithms/polygon_centerline.py" line="59"/>
         <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between automatic ends: those of the internal path along the &apos;Guide lines&apos;, else of the main stem (or the longest internal path, see &apos;Automatic ends&apos;). Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
         <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między końcami automatycznymi: końcami drogi wewnątrz kształtu wzdłuż 'Linii prowadzących', a bez nich głównego nurtu (lub najdłuższej drogi wewnątrz kształtu, zob. 'Końce automatyczne'). Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="69"/>
+        <location filename="../algorithms/polygon_centerline.py" line="80"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="91"/>
+        <location filename="../algorithms/polygon_centerline.py" line="103"/>
         <source>Automatic ends</source>
         <translation>Końce automatyczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="91"/>
+        <location filename="../algorithms/polygon_centerline.py" line="102"/>
         <source>Main stem (widest path)</source>
         <translation>Główny nurt (najszersza droga)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="91"/>
+        <location filename="../algorithms/polygon_centerline.py" line="102"/>
         <source>Longest path</source>
         <translation>Najdłuższa droga</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="91"/>
-        <source>For polygons without split points. Main stem: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. Longest path: the tips of the two longest arms.</source>
-        <translation>Dla poligonów bez punktów podziału. Główny nurt: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. Najdłuższa droga: końce dwóch najdłuższych ramion.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="104"/>
+        <location filename="../algorithms/polygon_centerline.py" line="113"/>
         <source>Guide lines</source>
         <translation>Linie prowadzące</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="104"/>
+        <location filename="../algorithms/polygon_centerline.py" line="113"/>
         <source>Rough river lines (a national network, OpenStreetMap waterways) for polygons without split points: the ends are those of the internal path that best covers the guide lines near the polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected.</source>
         <translation>Przybliżone linie rzek (sieć krajowa, cieki OpenStreetMap) dla poligonów bez punktów podziału: końcami są końce drogi wewnątrz kształtu, która najlepiej pokrywa linie prowadzące w pobliżu poligonu. Przerwy, przesunięcia, uogólnione fragmenty i dopływy nie przeszkadzają. Inny układ współrzędnych jest przeliczany.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="48"/>
+        <source>Line layer: input attributes plus source_fid (the polygon&apos;s feature id, to join the line back to it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split points were used) and ends_from (split_points, guide or automatic).</source>
+        <translation>Warstwa liniowa: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim linii), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach), n_vertices, ends_found (prawda, gdy nie użyto punktów podziału) i ends_from (split_points, guide lub automatic).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="71"/>
+        <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part. Z values are ignored: the centerline is computed in the plane.</source>
+        <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część. Wartości Z są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="95"/>
+        <source>{pass_through}: the line never crosses an island and goes round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
+        <translation>{pass_through}: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="103"/>
+        <source>For polygons without split points. {main_stem}: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. {longest_path}: the tips of the two longest arms.</source>
+        <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="215"/>
+        <source>Feature {}: {} Its ends were found automatically.</source>
+        <translation>Obiekt {}: {} Jego końce wyznaczono automatycznie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <source>0: a millionth of the polygon&apos;s size</source>
+        <translation>0: jedna milionowa rozmiaru poligonu</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="240"/>
+        <source>no split point lies within the split point snapping tolerance ({}): {} holds none.</source>
+        <translation>żaden punkt podziału nie leży w granicach tolerancji przyciągania punktów podziału ({}): {} nie zawiera żadnego.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="243"/>
+        <source>no split point lies within the split point snapping tolerance ({}) of its outline; the nearest is {:.6g} {} away.</source>
+        <translation>żaden punkt podziału nie leży w granicach tolerancji przyciągania punktów podziału ({}) od jego obrysu; najbliższy jest w odległości {:.6g} {}.</translation>
     </message>
 </context>
 <context>
@@ -428,49 +473,49 @@
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="58"/>
-        <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network.</source>
-        <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="64"/>
+        <location filename="../algorithms/polygon_network.py" line="67"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="64"/>
+        <location filename="../algorithms/polygon_network.py" line="67"/>
         <source>The ends of the network: at least two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring, typically one across each arm&apos;s end. A part with fewer is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Końce sieci: co najmniej dwa na część poligonu, w granicach 'Tolerancji przyciągania punktów podziału' od jego pierścienia zewnętrznego, zwykle jeden w poprzek końca każdego ramienia. Część z mniejszą liczbą jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="74"/>
+        <location filename="../algorithms/polygon_network.py" line="77"/>
         <source>Split point id field</source>
         <translation>Pole identyfikatora punktu podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="74"/>
+        <location filename="../algorithms/polygon_network.py" line="77"/>
         <source>Attribute naming each split point in from_point, to_point and the chains; default: its feature id.</source>
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="87"/>
-        <source>Pass through the main channel: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. Ignore islands: holes are filled before computing.</source>
-        <translation>Przez główne koryto: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. Pomiń wyspy: otwory są wypełniane przed obliczeniem.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="96"/>
-        <source>Line layer, one feature per branch: input attributes plus from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width) and n_vertices.</source>
-        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz from_point, to_point (identyfikatory punktów podziału lub 'junction'), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości) i n_vertices.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="107"/>
+        <location filename="../algorithms/polygon_network.py" line="111"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="107"/>
+        <location filename="../algorithms/polygon_network.py" line="111"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="58"/>
+        <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
+        <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="90"/>
+        <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
+        <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="99"/>
+        <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
+        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub &apos;junction&apos;), right_chain, left_chain (każdy łańcuch nazwany &apos;a-b&apos; od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
     </message>
 </context>
 </TS>

@@ -83,6 +83,29 @@ def test_compiled_translations_match_their_sources(tmp_path):
         assert compiled.read_bytes() == source.with_suffix(".qm").read_bytes(), "run `make transcompile`"
 
 
+def test_every_translatable_string_has_its_polish_translation(tmp_path):
+    """``pylupdate5`` over the files ``make transup`` reads finds exactly the messages of ``i18n/incircu_pl.ts``
+    (no string added, changed or mis-read since the last ``make transup``), and each one is translated."""
+    committed = REPOSITORY / "i18n" / "incircu_pl.ts"
+    fresh = tmp_path / committed.name
+    fresh.write_bytes(committed.read_bytes())
+    sources = [
+        REPOSITORY / "incircu_plugin" / "plugin.py",
+        REPOSITORY / "incircu_plugin" / "provider.py",
+        *sorted((REPOSITORY / "algorithms").glob("*.py")),
+    ]
+    subprocess.run(["pylupdate5", "-noobsolete", *map(str, sources), "-ts", str(fresh)], check=True)
+
+    def messages(path):
+        text = path.read_text(encoding="utf-8")
+        return re.findall(r"<source>(.*?)</source>\s*<translation( type=\"unfinished\")?>", text, re.DOTALL)
+
+    assert sorted(source for source, _ in messages(fresh)) == sorted(source for source, _ in messages(committed)), (
+        "run `make transup`"
+    )
+    assert [source for source, unfinished in messages(committed) if unfinished] == []
+
+
 def test_polish_locale_translates_the_toolbox(provider, qgis_iface):
     import qgis.utils
 
