@@ -59,15 +59,17 @@ def length_parameter(name, description, default, parent_layer):
     return parameter
 
 
-def length_unit(crs):
-    """Return the unit IncirCu reads a length in for a layer of ``crs``, for messages: "m", "ft"...
+def reading_unit(crs):
+    """Return the distance unit IncirCu reads a length in for a layer of ``crs``: its map unit, metres for a
+    layer in degrees (computed in a local metric projection, see :class:`.convert.WorkingFrame`)."""
+    return DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits()
 
-    QGIS's abbreviation of the layer's map unit, "m" for a layer in degrees (computed in a local metric
-    projection, see :class:`.convert.WorkingFrame`); "layer units" (translated) when QGIS has no name for it.
-    """
-    unit = DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits()
+
+def length_unit(crs):
+    """Return :func:`reading_unit` abbreviated for messages ("m", "ft"...); "layer units" (translated) when QGIS
+    has no name for it."""
     fallback = QCoreApplication.translate("IncirCuAlgorithm", "layer units")
-    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(unit)) or fallback
+    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(reading_unit(crs))) or fallback
 
 
 class IncirCuAlgorithm(QgsProcessingAlgorithm):

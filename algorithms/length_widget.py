@@ -12,7 +12,7 @@ from qgis.core import QgsProcessingParameters, QgsUnitTypes
 from qgis.gui import QgsAbstractProcessingParameterWidgetWrapper, QgsDoubleSpinBox
 from qgis.PyQt.QtWidgets import QHBoxLayout, QLabel, QWidget
 
-from .compat import DistanceUnit
+from .base import reading_unit
 
 #: Parameter copies without the wrapper metadata, kept alive for the QGIS widgets built on them.
 PLAIN_PARAMETERS = []
@@ -27,10 +27,9 @@ def default_wrapper(parameter, dialog, row, col):
 
 
 def unit_text(crs):
-    """Return the unit IncirCu reads a length in for a layer of ``crs``: its map unit, metres when in degrees."""
-    if not crs.isValid():
-        return ""
-    return QgsUnitTypes.toString(DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits())
+    """Return the name of the unit IncirCu reads a length in for a layer of ``crs`` (:func:`.base.reading_unit`),
+    empty for an invalid CRS."""
+    return QgsUnitTypes.toString(reading_unit(crs)) if crs.isValid() else ""
 
 
 class LengthSpinBox(QgsDoubleSpinBox):
