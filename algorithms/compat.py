@@ -55,9 +55,15 @@ else:
 if QGIS_VERSION >= 33800:
     from qgis.PyQt.QtCore import QMetaType
 
-    #: Field types of ``QgsField`` (``Double``, ``Int``, ``Bool``, ``QString``).
+    #: Field types of ``QgsField`` (``Double``, ``Int``, ``LongLong``, ``Bool``, ``QString``).
     FieldType = QMetaType.Type
 else:
     from qgis.PyQt.QtCore import QVariant
 
-    FieldType = SimpleNamespace(Double=QVariant.Double, Int=QVariant.Int, Bool=QVariant.Bool, QString=QVariant.String)
+    FieldType = SimpleNamespace(
+        Double=QVariant.Double,
+        Int=QVariant.Int,
+        LongLong=QVariant.LongLong,
+        Bool=QVariant.Bool,
+        QString=QVariant.String,
+    )

@@ -6,7 +6,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import WkbType
 from .convert import line_with_m
-from .outputs import DOUBLE, INTEGER, STRING, make_fields, primary_key_sink, release_sinks, width_statistics
+from .outputs import DOUBLE, FEATURE_ID, INTEGER, STRING, make_fields, primary_key_sink, release_sinks, width_statistics
 from .styles import CENTERLINE, style_outputs_on_load
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
@@ -14,7 +14,7 @@ from .styles import CENTERLINE, style_outputs_on_load
 #: ``right_chain``/``left_chain``: the boundary chain on either side, named "a-b" after the ids of the split
 #: points at its ends (counter-clockwise); ``source_fid``: the id of the input feature.
 BRANCH_FIELDS = (
-    ("source_fid", INTEGER),
+    ("source_fid", FEATURE_ID),
     ("from_point", STRING),
     ("to_point", STRING),
     ("right_chain", STRING),

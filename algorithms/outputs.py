@@ -20,6 +20,8 @@ from .convert import collect_lines, from_shapely, line_with_m
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
 
 DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
+#: A feature id: 64 bits, as QGIS's (a GeoPackage's fid may pass 2**31).
+FEATURE_ID = FieldType.LongLong
 
 
 def make_fields(definitions):
@@ -33,7 +35,7 @@ def make_fields(definitions):
 #: Fields added to the input attributes on every centerline (lengths and widths in layer units, metres when geographic).
 #: ``source_fid`` is the id of the input feature, as on the optional outputs.
 CENTERLINE_FIELDS = (
-    ("source_fid", INTEGER),
+    ("source_fid", FEATURE_ID),
     ("length", DOUBLE),
     ("width_min", DOUBLE),
     ("width_mean", DOUBLE),
@@ -43,7 +45,7 @@ CENTERLINE_FIELDS = (
     ("ends_from", STRING),
 )
 VERTEX_FIELDS = (
-    ("source_fid", INTEGER),
+    ("source_fid", FEATURE_ID),
     ("part", INTEGER),
     ("vertex", INTEGER),
     ("chainage", DOUBLE),
@@ -51,13 +53,13 @@ VERTEX_FIELDS = (
     ("width", DOUBLE),
 )
 CIRCLE_FIELDS = (
-    ("source_fid", INTEGER),
+    ("source_fid", FEATURE_ID),
     ("part", INTEGER),
     ("chainage", DOUBLE),
     ("radius", DOUBLE),
 )
 TRANSECT_FIELDS = (
-    ("source_fid", INTEGER),
+    ("source_fid", FEATURE_ID),
     ("part", INTEGER),
     ("chainage", DOUBLE),
     ("width", DOUBLE),

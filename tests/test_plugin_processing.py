@@ -518,6 +518,26 @@ def test_an_attribute_named_fid_with_repeated_values_loses_no_feature(provider, 
     assert_each_centerline_has_its_source(source, target, {"a": 1, "b": 1})
 
 
+def test_feature_ids_beyond_32_bits_reach_source_fid(provider, tmp_path):
+    """A GeoPackage feature whose fid needs more than 32 bits: the centerline and its vertices carry it whole."""
+    from osgeo import ogr, osr
+
+    path = tmp_path / "big_ids.gpkg"
+    dataset = ogr.GetDriverByName("GPKG").CreateDataSource(str(path))
+    crs = osr.SpatialReference()
+    crs.ImportFromEPSG(2180)
+    ogr_layer = dataset.CreateLayer("rivers", crs, ogr.wkbPolygon)
+    feature = ogr.Feature(ogr_layer.GetLayerDefn())
+    feature.SetFID(5_000_000_000)
+    feature.SetGeometry(ogr.CreateGeometryFromWkt("POLYGON((0 0, 400 0, 400 40, 0 40, 0 0))"))
+    assert ogr_layer.CreateFeature(feature) == 0
+    dataset = None
+    results, feedback = run("polygoncenterline", {"INPUT": str(path), "OUTPUT_VERTICES": "memory:"})
+    assert results["CENTERLINE_COUNT"] == 1, feedback.warnings
+    assert [line["source_fid"] for line in results["OUTPUT"].getFeatures()] == [5_000_000_000]
+    assert {vertex["source_fid"] for vertex in results["OUTPUT_VERTICES"].getFeatures()} == {5_000_000_000}
+
+
 def test_curved_polygons_are_linearised(provider):
     straight = QgsGeometry.fromWkt("Polygon ((0 0, 100 0, 100 10, 0 10, 0 0))")
     curved = QgsGeometry.fromWkt(
