@@ -321,3 +321,23 @@ def test_split_points_off_the_middle_leave_the_end_caps_out(offset):
         assert cut.width == pytest.approx(width, abs=2.0 * tolerance)
         assert sorted([y_a, y_b]) == pytest.approx([0.0, width], abs=2.0 * tolerance)
         assert width / 2.0 - 2.0 * tolerance <= min(x_a, x_b) <= max(x_a, x_b) <= length - width / 2.0 + 2.0 * tolerance
+
+
+def test_transects_beside_an_island_run_straight_across_the_channel():
+    """A channel 800 x 120 with an island near one bank: the adaptive line keeps few vertices on the straight
+    reaches, and their incircles touch the island where the line bends; the transects measure across to the
+    chains themselves (the result keeps them), so on the reaches a width away from the island each runs square
+    from bank to bank, 120 wide (interpolating the feet between those vertices slanted them to the island)."""
+    island = shapely.affinity.scale(Point(400.0, 80.0).buffer(1.0, 32), 120.0, 15.0)
+    channel = shapely.Polygon(shapely.box(0.0, 0.0, 800.0, 120.0).exterior.coords, [island.exterior.coords])
+    result = polygon_centerline(channel, [(0.0, 60.0), (800.0, 60.0)])
+    tolerance = 120.0 / 200.0
+    reaches = []
+    for cut in transects(result, 40.0):
+        (x_a, y_a), (x, _), (x_b, y_b) = cut.line.coords
+        if x < 280.0 - 120.0 or x > 520.0 + 120.0:
+            reaches.append(cut)
+            assert x_a == pytest.approx(x, abs=2.0 * tolerance) and x_b == pytest.approx(x, abs=2.0 * tolerance)
+            assert sorted([y_a, y_b]) == pytest.approx([0.0, 120.0], abs=2.0 * tolerance)
+            assert cut.width == pytest.approx(120.0, abs=2.0 * tolerance)
+    assert len(reaches) >= 4

@@ -18,7 +18,7 @@ Both put every vertex exactly on the medial axis (to floating-point precision); 
 disk family is computed in closed form by :mod:`.contacts`.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from numbers import Real
 from typing import Callable, Optional
@@ -63,6 +63,9 @@ class CenterlineResult:
         True when the ends were found automatically rather than given.
     notes : tuple of str
         Things the user should know about this result (e.g. the shape is not elongated).
+    chains : tuple of two ndarray of shape (k, 2), or None
+        The two chains the line lies between (islands joined to them), CRS units: the sides
+        :func:`.widths.transects` measures across. None where not kept.
     """
 
     line: LineString
@@ -71,6 +74,7 @@ class CenterlineResult:
     foot_b: np.ndarray
     ends_found: bool = False
     notes: tuple = ()
+    chains: Optional[tuple] = field(default=None, repr=False)
 
     @property
     def widths(self):
@@ -306,6 +310,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         radii=radius,
         foot_a=foot_a + frame.origin,
         foot_b=foot_b + frame.origin,
+        chains=(c1, c2),
     )
 
 

@@ -190,6 +190,36 @@ def points_at(xy, cumulative, s):
     return points[0] if scalar else points
 
 
+def piece_between(xy, cumulative, start, end):
+    """Return the piece of a polyline between arc lengths ``start`` and ``end``: its vertices in between, and
+    the points at both arc lengths.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2)
+        Vertices, CRS units.
+    cumulative : ndarray of shape (n,)
+        Arc length of each vertex, CRS units (:func:`cumulative_lengths`).
+    start, end : float
+        Arc lengths, CRS units, ``start <= end``; clipped to the polyline.
+
+    Returns
+    -------
+    ndarray of shape (k, 2)
+        CRS units; two equal points when ``start == end``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> path = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 5.0]])
+    >>> piece_between(path, cumulative_lengths(path), 2.5, 12.0).tolist()
+    [[2.5, 0.0], [10.0, 0.0], [10.0, 2.0]]
+    """
+    inside = xy[(cumulative > start) & (cumulative < end)]
+    first, last = points_at(xy, cumulative, [start, end])
+    return np.concatenate([first[None], inside, last[None]])
+
+
 #: Fewest points that :meth:`IndexedPolyline.nearest` answers as a cluster (one index query for all), and the
 #: most (point, segment) pairs it then tests at once.
 CLUSTER_POINTS = 32

@@ -12,7 +12,7 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .errors import IncirCuError
-from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, points_at
+from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, piece_between, points_at
 
 #: Share of the radius within which the mirror image of a stretch end's bank foot, across the line, counts as
 #: the end's foot: the incircle touches the bank and the end, not the other bank (see :func:`_measured_stretch`).
@@ -175,7 +175,8 @@ def transects(result, interval, chains=None):
     is (see :func:`_measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
     linearly; each foot is the point at distance ``r`` from ``C`` towards the linearly interpolated foot of
     that side (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case). When
-    ``chains`` are given, the feet are instead the nearest points of each chain to ``C``.
+    ``chains`` are given, or the result keeps its own (``result.chains``), the feet are instead the nearest
+    points of each chain to ``C``: exact wherever the line is on the axis.
 
     Parameters
     ----------
@@ -184,7 +185,8 @@ def transects(result, interval, chains=None):
     interval : float
         Distance between stations, CRS units; positive.
     chains : (LineString or ndarray, LineString or ndarray), optional
-        The two sides (``c1`` touched by ``foot_a``, ``c2`` by ``foot_b``), CRS units.
+        The two sides (``c1`` touched by ``foot_a``, ``c2`` by ``foot_b``), CRS units; default
+        ``result.chains``.
 
     Returns
     -------
@@ -227,9 +229,13 @@ def transects(result, interval, chains=None):
         return []
     along = points_at(np.column_stack([vertices, radii, foot_a, foot_b]), chainages, stations)
     centres, radius = along[:, :2], along[:, 2]
+    chains = result.chains if chains is None else chains
     if chains is not None:
-        names = ("first chain", "second chain")
-        feet = [nearest_on_polyline(as_coordinates(chain, name), centres)[2] for chain, name in zip(chains, names)]
+        first_and_last = np.searchsorted(chainages, [low, high])
+        sides = zip(chains, ("first chain", "second chain"), (foot_a, foot_b))
+        feet = [
+            _feet_on_banks(as_coordinates(chain, name), foot[first_and_last], centres) for chain, name, foot in sides
+        ]
     else:
         feet = [_foot_towards(centres, radius, along[:, 3:5]), _foot_towards(centres, radius, along[:, 5:7])]
     lines = np.stack([feet[0], centres, feet[1]], axis=1)
@@ -240,6 +246,15 @@ def transects(result, interval, chains=None):
         Transect(line=LineString(line), width=float(width), chainage=float(station))
         for line, width, station in zip(lines[valid], widths[valid], stations[valid])
     ]
+
+
+def _feet_on_banks(chain, ends, centres):
+    """Return the point of a chain nearest to each centre, on its bank between the feet ``ends`` of the
+    measured stretch's first and last incircles (CRS units): the end caps, where the bank meets the split
+    points, carry no foot (a centre a rounding off the axis beside a cap is otherwise nearer to the cap)."""
+    cumulative = cumulative_lengths(chain)
+    along = np.sort(nearest_on_polyline(chain, ends)[1])
+    return nearest_on_polyline(piece_between(chain, cumulative, *along), centres)[2]
 
 
 def _measured_stretch(vertices, radii, chainages, foot_a, foot_b):
