@@ -13,7 +13,6 @@ from qgis.core import (
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingUtils,
-    QgsUnitTypes,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
@@ -57,19 +56,6 @@ def length_parameter(name, description, default, parent_layer):
     parameter.setDefaultUnit(DistanceUnit.Meters)
     parameter.setMetadata({"widget_wrapper": {"class": f"{__package__}.length_widget.LengthWidgetWrapper"}})
     return parameter
-
-
-def reading_unit(crs):
-    """Return the distance unit IncirCu reads a length in for a layer of ``crs``: its map unit, metres for a
-    layer in degrees (computed in a local metric projection, see :class:`.convert.WorkingFrame`)."""
-    return DistanceUnit.Meters if crs.isGeographic() else crs.mapUnits()
-
-
-def length_unit(crs):
-    """Return :func:`reading_unit` abbreviated for messages ("m", "ft"...); "layer units" (translated) when QGIS
-    has no name for it."""
-    fallback = QCoreApplication.translate("IncirCuAlgorithm", "layer units")
-    return (crs.isValid() and QgsUnitTypes.toAbbreviatedString(reading_unit(crs))) or fallback
 
 
 class IncirCuAlgorithm(QgsProcessingAlgorithm):

@@ -11,6 +11,7 @@ from qgis.core import (
 
 from ..incircu_plugin.core.geodesy import LocalProjection
 from .compat import CrsWktVariant
+from .units import CORE_LENGTH_UNIT, length_unit
 
 
 def to_shapely(geometry):
@@ -102,6 +103,8 @@ class WorkingFrame:
     """
 
     def __init__(self, crs):
+        #: Abbreviation of the unit of the frame's lengths, for messages (:func:`length_unit`).
+        self.unit = length_unit(crs)
         self.geographic_crs = None
         if crs.isGeographic():
             authority = crs.authid()
@@ -109,6 +112,11 @@ class WorkingFrame:
                 authority if authority.upper().startswith("EPSG:") else crs.toWkt(CrsWktVariant.Wkt2_2019)
             )
         self.projection = None
+
+    def named_lengths(self, message):
+        """Return a core message with its lengths' unit named as the frame's (the core says "CRS units": of the
+        coordinates it computed in, metres for a layer in degrees)."""
+        return message.replace(CORE_LENGTH_UNIT, self.unit)
 
     @property
     def is_geographic(self):

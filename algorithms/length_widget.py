@@ -12,7 +12,7 @@ from qgis.core import QgsProcessingParameters, QgsUnitTypes
 from qgis.gui import QgsAbstractProcessingParameterWidgetWrapper, QgsDoubleSpinBox
 from qgis.PyQt.QtWidgets import QHBoxLayout, QLabel, QWidget
 
-from .base import reading_unit
+from .units import reading_unit
 
 #: Parameter copies without the wrapper metadata, kept alive for the QGIS widgets built on them.
 PLAIN_PARAMETERS = []
@@ -27,7 +27,7 @@ def default_wrapper(parameter, dialog, row, col):
 
 
 def unit_text(crs):
-    """Return the name of the unit IncirCu reads a length in for a layer of ``crs`` (:func:`.base.reading_unit`),
+    """Return the name of the unit IncirCu reads a length in for a layer of ``crs`` (:func:`.units.reading_unit`),
     empty for an invalid CRS."""
     return QgsUnitTypes.toString(reading_unit(crs)) if crs.isValid() else ""
 

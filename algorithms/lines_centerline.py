@@ -178,7 +178,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     def _parts(self, run, feature_id, result):
         """The pair's centerline to write; warn about what the core noted (banks of very different lengths)."""
         for note in result.notes:
-            run.warn(self.tr("Feature {}: {}").format(feature_id, note))
+            run.warn_feature(feature_id, note)
         return [(0, result)]
 
     @staticmethod

@@ -11,7 +11,7 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
-from .base import IncirCuAlgorithm, length_unit
+from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
 from .running import no_geometry
 from .split_points import SplitPoints
@@ -148,7 +148,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
         split_points = SplitPoints(split_source, crs, context)
-        unit = length_unit(crs)
 
         guides, guide_index = [], QgsSpatialIndex()
         if parameters.get(self.GUIDE_LINES) not in (None, ""):
@@ -176,7 +175,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 **options,
             )
             given = split_points if split_source is not None else None
-            parts = partial(self._parts, run, feature.id(), given, (snap_tolerance, unit), core_geometry)
+            parts = partial(self._parts, run, feature.id(), given, snap_tolerance, core_geometry)
             return run.task(feature, steps, parts, geometry.constGet().nCoordinates())
 
         run.run_batches(map(task, run.source_features(source)), source.featureCount())
@@ -191,9 +190,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         feature_id : int
         split_points : SplitPoints or None
             The layer's split points; None when no split point layer is given.
-        snap_tolerance : (float, str)
-            The snap tolerance as given, layer units (metres for a layer in degrees; 0: the core's default), and
-            the name of that unit.
+        snap_tolerance : float
+            ``SNAP_TOLERANCE`` as given, layer units (metres for a layer in degrees); 0: the core's default.
         geometry : Polygon or MultiPolygon
             The feature's geometry in the working frame it was computed in.
         outcomes : list of PartOutcome
@@ -208,14 +206,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 run.skip(feature_id, str(outcome.error), part_index)
                 continue
             for note in getattr(outcome.result, "notes", ()):
-                run.warn(self.tr("Feature {}: {}").format(run.where(feature_id, part_index), note))
+                run.warn_feature(feature_id, note, part_index)
             if outcome.result.ends_found and split_points is not None:
                 part = shapely.get_parts(geometry)[outcome.part_index]
                 nearest = split_points.nearest_distance(part.exterior, run.frame)
-                run.warn(
-                    self.tr("Feature {}: {} Its ends were found automatically.").format(
-                        run.where(feature_id, part_index), self._no_split_point(nearest, *snap_tolerance)
-                    )
+                message = self._no_split_point(nearest, snap_tolerance, run.frame.unit)
+                run.warn_feature(
+                    feature_id, self.tr("{} Its ends were found automatically.").format(message), part_index
                 )
             parts.append((outcome.part_index, outcome.result))
         return parts
@@ -237,13 +234,10 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         else:
             tolerance = self.tr("0: a millionth of the polygon's size")
         if nearest is None:
-            return self.tr("no split point lies within the split point snapping tolerance ({}): {} holds none.").format(
-                tolerance, self.parameter_label(self.SPLIT_POINTS)
-            )
-        return self.tr(
-            "no split point lies within the split point snapping tolerance ({}) of its outline; the nearest is "
-            "{:.6g} {} away."
-        ).format(tolerance, nearest, unit)
+            return self.tr("{} holds no point.").format(self.parameter_label(self.SPLIT_POINTS))
+        return self.tr("no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.").format(
+            tolerance, self.parameter_label(self.SNAP_TOLERANCE), nearest, unit
+        )
 
 
 def _guide_near(frame, geometry, guides, index):

@@ -113,13 +113,15 @@ class FeatureRun:
         if self.z_warned or not QgsWkbTypes.hasZ(source.wkbType()):
             return
         self.z_warned = True
-        self.warn(
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
-                "Z values are ignored: '{}' has Z, but the centerline is computed in the plane and written "
-                "without Z (its M values, when stored, are the local width).",
-            ).format(source.sourceName())
+        # fmt: off
+        # (No comma after the text: pylupdate5 would not read the call.)
+        message = QCoreApplication.translate(
+            "IncirCuAlgorithm",
+            "Z values are ignored: '{}' has Z, but the centerline is computed in the plane and written without Z "
+            "(its M values, when stored, are the local width)."
         )
+        # fmt: on
+        self.warn(message.format(source.sourceName()))
 
     def open_outputs(self, fields, crs, multi):
         """Create the output sinks and the working frame of the layer's CRS."""
@@ -184,21 +186,25 @@ class FeatureRun:
         return not self.feedback.isCanceled()
 
     def skip(self, feature_id, reason, part_index=None):
-        """Warn that a feature (or one of its parts) is skipped, and count it."""
+        """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's."""
         self.skipped += 1
         self.warn(
             QCoreApplication.translate("IncirCuAlgorithm", "Feature {} skipped: {}").format(
-                self.where(feature_id, part_index), reason
+                self.where(feature_id, part_index), self.named_lengths(reason)
             )
         )
 
-    def note(self, feature_id, message, part_index=None):
-        """Tell the user something about a feature that is still processed."""
-        self.feedback.pushInfo(
+    def warn_feature(self, feature_id, message, part_index=None):
+        """Warn about a feature (or one of its parts) that is still written; ``message`` may be the core's."""
+        self.warn(
             QCoreApplication.translate("IncirCuAlgorithm", "Feature {}: {}").format(
-                self.where(feature_id, part_index), message
+                self.where(feature_id, part_index), self.named_lengths(message)
             )
         )
+
+    def named_lengths(self, message):
+        """Return ``message`` with the core's lengths named in the working frame's unit (once there is one)."""
+        return message if self.frame is None else self.frame.named_lengths(message)
 
     def warn(self, message):
         """Show a warning in the log."""

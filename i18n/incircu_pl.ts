@@ -4,52 +4,52 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="170"/>
+        <location filename="../algorithms/base.py" line="158"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="353"/>
+        <location filename="../algorithms/base.py" line="341"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="403"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="413"/>
+        <location filename="../algorithms/base.py" line="401"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="413"/>
+        <location filename="../algorithms/base.py" line="401"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="418"/>
+        <location filename="../algorithms/base.py" line="406"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="418"/>
+        <location filename="../algorithms/base.py" line="406"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -74,97 +74,97 @@
         <translation>obiekt nie ma geometrii</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="189"/>
+        <location filename="../algorithms/running.py" line="191"/>
         <source>Feature {} skipped: {}</source>
         <translation>Obiekt {} pominięty: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="197"/>
+        <location filename="../algorithms/running.py" line="199"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="212"/>
+        <location filename="../algorithms/running.py" line="218"/>
         <source>{} (part {})</source>
         <translation>{} (część {})</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="236"/>
+        <location filename="../algorithms/running.py" line="242"/>
         <source>unexpected {}: {} (please report this with the feature)</source>
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="353"/>
+        <location filename="../algorithms/base.py" line="341"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="403"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/outputs.py" line="200"/>
+        <location filename="../algorithms/outputs.py" line="202"/>
         <source>Could not write a centerline: {}</source>
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="375"/>
+        <location filename="../algorithms/base.py" line="363"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="279"/>
+        <location filename="../algorithms/base.py" line="267"/>
         <source>Largest deviation from the exact medial axis (0 = automatic)</source>
         <translation>Największe odchylenie od dokładnej osi środkowej (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="290"/>
+        <location filename="../algorithms/base.py" line="278"/>
         <source>Fixed boundary sampling distance (0 = adaptive)</source>
         <translation>Stały odstęp próbkowania brzegu (0 = adaptacyjnie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="290"/>
+        <location filename="../algorithms/base.py" line="278"/>
         <source>The paper&apos;s fixed sampling: a sample every this distance along both sides, in layer units (metres for a layer in degrees), giving many evenly spaced vertices. Use it to reproduce the paper or for a dense line; 0 uses the adaptive sampling bounded by the largest deviation. Give either this or the largest deviation, not both.</source>
         <translation>Stałe próbkowanie z artykułu: próbka co tę odległość wzdłuż obu stron, w jednostkach warstwy (metry dla warstwy w stopniach), dające wiele równomiernie rozmieszczonych wierzchołków. Do odtworzenia artykułu lub gęstej linii; 0 oznacza próbkowanie adaptacyjne ograniczone największym odchyleniem. Podaj to albo największe odchylenie, nie oba.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="314"/>
+        <location filename="../algorithms/base.py" line="302"/>
         <source>Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary sampling distance, not both; set the other one to 0.</source>
         <translation>Podaj największe odchylenie od osi (próbkowanie adaptacyjne) albo stały odstęp próbkowania brzegu, nie oba; ustaw drugie na 0.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="324"/>
+        <location filename="../algorithms/base.py" line="312"/>
         <source>Split point snapping tolerance</source>
         <translation>Tolerancja przyciągania punktów podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="324"/>
+        <location filename="../algorithms/base.py" line="312"/>
         <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees); 0 = a millionth of the polygon&apos;s size.</source>
         <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="346"/>
+        <location filename="../algorithms/base.py" line="334"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="345"/>
+        <location filename="../algorithms/base.py" line="333"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="345"/>
+        <location filename="../algorithms/base.py" line="333"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
@@ -174,39 +174,44 @@
         <translation>Nie można zapisać gałęzi: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="69"/>
+        <location filename="../algorithms/units.py" line="21"/>
         <source>layer units</source>
         <translation>jednostki warstwy</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="146"/>
+        <location filename="../algorithms/base.py" line="134"/>
         <source>{}: {} has no field &apos;{}&apos;; its fields are: {}.</source>
-        <translation>{}: {} nie ma pola &apos;{}&apos;; jego pola to: {}.</translation>
+        <translation>{}: {} nie ma pola '{}'; jego pola to: {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="146"/>
+        <location filename="../algorithms/base.py" line="134"/>
         <source>none</source>
         <translation>brak</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="208"/>
+        <location filename="../algorithms/base.py" line="196"/>
         <source>Parameters</source>
         <translation>Parametry</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="208"/>
+        <location filename="../algorithms/base.py" line="196"/>
         <source>Advanced parameters</source>
         <translation>Parametry zaawansowane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="208"/>
+        <location filename="../algorithms/base.py" line="196"/>
         <source>Outputs</source>
         <translation>Wyniki</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="279"/>
+        <location filename="../algorithms/base.py" line="267"/>
         <source>Largest distance between the centerline and the exact medial axis, in layer units (metres for a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the shape&apos;s typical width: the right choice for maps.</source>
         <translation>Największa odległość linii środkowej od dokładnej osi środkowej, w jednostkach warstwy (metry dla warstwy w stopniach): linia zachowuje tylko wierzchołki potrzebne, by pozostać tak blisko, każdy leżący dokładnie na osi, i nigdy nie wychodzi poza kształt, niezależnie od wartości. 0 oznacza 1/200 typowej szerokości kształtu: właściwy wybór dla map.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/running.py" line="118"/>
+        <source>Z values are ignored: &apos;{}&apos; has Z, but the centerline is computed in the plane and written without Z (its M values, when stored, are the local width).</source>
+        <translation>Wartości Z są pomijane: '{}' ma współrzędną Z, ale linia środkowa jest obliczana na płaszczyźnie i zapisywana bez Z (jej wartości M, jeśli są zapisywane, to lokalna szerokość).</translation>
     </message>
 </context>
 <context>
@@ -279,7 +284,7 @@
     <message>
         <location filename="../algorithms/lines_centerline.py" line="42"/>
         <source>Line layer, one line per pair of lines: the attributes of the first lines plus source_fid (the id of the pair&apos;s first feature in the first lines), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices. Its ends_found (always false) and ends_from (always empty) are there only so that it has the fields of &apos;Centerline of polygons&apos;.</source>
-        <translation>Warstwa liniowa, jedna linia na parę linii: atrybuty pierwszych linii oraz source_fid (identyfikator pierwszego obiektu pary w pierwszych liniach), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices. Pola ends_found (zawsze fałsz) i ends_from (zawsze puste) istnieją tylko po to, by warstwa miała pola algorytmu &apos;Linia środkowa poligonów&apos;.</translation>
+        <translation>Warstwa liniowa, jedna linia na parę linii: atrybuty pierwszych linii oraz source_fid (identyfikator pierwszego obiektu pary w pierwszych liniach), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices. Pola ends_found (zawsze fałsz) i ends_from (zawsze puste) istnieją tylko po to, by warstwa miała pola algorytmu 'Linia środkowa poligonów'.</translation>
     </message>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="65"/>
@@ -311,11 +316,6 @@
         <source>the lines of {} with this pairing value do not join into one</source>
         <translation>linie z {} o tej wartości parowania nie łączą się w jedną</translation>
     </message>
-    <message>
-        <location filename="../algorithms/lines_centerline.py" line="181"/>
-        <source>Feature {}: {}</source>
-        <translation>Obiekt {}: {}</translation>
-    </message>
 </context>
 <context>
     <name>PolygonCenterlineAlgorithm</name>
@@ -343,11 +343,6 @@
         <location filename="../algorithms/polygon_centerline.py" line="126"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="211"/>
-        <source>Feature {}: {}</source>
-        <translation>Obiekt {}: {}</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_centerline.py" line="39"/>
@@ -420,24 +415,24 @@
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="215"/>
-        <source>Feature {}: {} Its ends were found automatically.</source>
-        <translation>Obiekt {}: {} Jego końce wyznaczono automatycznie.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <location filename="../algorithms/polygon_centerline.py" line="235"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="240"/>
-        <source>no split point lies within the split point snapping tolerance ({}): {} holds none.</source>
-        <translation>żaden punkt podziału nie leży w granicach tolerancji przyciągania punktów podziału ({}): {} nie zawiera żadnego.</translation>
+        <location filename="../algorithms/polygon_centerline.py" line="214"/>
+        <source>{} Its ends were found automatically.</source>
+        <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="243"/>
-        <source>no split point lies within the split point snapping tolerance ({}) of its outline; the nearest is {:.6g} {} away.</source>
-        <translation>żaden punkt podziału nie leży w granicach tolerancji przyciągania punktów podziału ({}) od jego obrysu; najbliższy jest w odległości {:.6g} {}.</translation>
+        <location filename="../algorithms/polygon_centerline.py" line="237"/>
+        <source>{} holds no point.</source>
+        <translation>{} nie zawiera żadnego punktu.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
+        <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
     </message>
 </context>
 <context>
@@ -515,7 +510,7 @@
     <message>
         <location filename="../algorithms/polygon_network.py" line="99"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
-        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub &apos;junction&apos;), right_chain, left_chain (każdy łańcuch nazwany &apos;a-b&apos; od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
+        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub 'junction'), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
     </message>
 </context>
 </TS>

@@ -82,6 +82,9 @@ def test_line_comes_back_in_degrees_between_the_split_points(gambia_lonlat, proj
     assert np.abs(coords[0] - gambia_lonlat.split_points[0]).max() <= 1e-9
     assert np.abs(coords[-1] - gambia_lonlat.split_points[1]).max() <= 1e-9
     assert shapely.distance(gambia_lonlat.polygon, shapely.points(coords)).max() <= 1e-9
+    # The chains it lies between come back too: each is one side of the outline, in degrees.
+    for chain in result.chains:
+        assert shapely.distance(gambia_lonlat.polygon.exterior, shapely.points(chain)).max() <= 1e-9
 
 
 def test_projected_crs_is_refused_as_geographic():

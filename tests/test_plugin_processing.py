@@ -646,8 +646,17 @@ def test_split_points_beyond_the_snap_tolerance_are_warned_about(provider):
     )
     assert results["CENTERLINE_COUNT"] == 1 and results["SKIPPED_COUNT"] == 0
     (warning,) = [message for message in feedback.warnings if message.startswith("Feature 1:")]
-    assert f"snapping tolerance ({SNAP_TOLERANCE:g} m)" in warning, warning
+    assert f"within {SNAP_TOLERANCE:g} m of its outline, the 'Split point snapping tolerance'" in warning, warning
     assert "the nearest is 100 m away" in warning and "found automatically" in warning, warning
+
+
+def test_an_empty_split_point_layer_is_warned_about(provider):
+    polygons = memory_layer("Polygon", [("channel", CHANNEL)])
+    results, feedback = run("polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": memory_layer("Point", [])})
+    assert results["CENTERLINE_COUNT"] == 1 and results["SKIPPED_COUNT"] == 0
+    assert feedback.warnings == [
+        "Feature 1: 'Split points' (SPLIT_POINTS) holds no point. Its ends were found automatically."
+    ], feedback.warnings
 
 
 def test_split_points_within_the_snap_tolerance_bring_no_warning(provider):

@@ -1,6 +1,8 @@
 """Release packaging and translations: the zip users install, and the Polish user interface."""
 
+import ast
 import configparser
+import html
 import re
 import subprocess
 import sys
@@ -83,9 +85,23 @@ def test_compiled_translations_match_their_sources(tmp_path):
         assert compiled.read_bytes() == source.with_suffix(".qm").read_bytes(), "run `make transcompile`"
 
 
+def translatable_literals(path):
+    """The texts given to ``tr(text)`` and ``translate(context, text)`` in a Python file, read with ``ast``."""
+    texts = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+            position = {"tr": 0, "translate": 1}.get(node.func.attr)
+            if position is not None and len(node.args) > position:
+                text = node.args[position]
+                if isinstance(text, ast.Constant) and isinstance(text.value, str):
+                    texts.add(text.value)
+    return texts
+
+
 def test_every_translatable_string_has_its_polish_translation(tmp_path):
     """``pylupdate5`` over the files ``make transup`` reads finds exactly the messages of ``i18n/incircu_pl.ts``
-    (no string added, changed or mis-read since the last ``make transup``), and each one is translated."""
+    (no string added, changed or mis-read since the last ``make transup``), every text the code translates is
+    one of them (a call ``pylupdate5`` cannot read is not skipped silently), and each one is translated."""
     committed = REPOSITORY / "i18n" / "incircu_pl.ts"
     fresh = tmp_path / committed.name
     fresh.write_bytes(committed.read_bytes())
@@ -98,11 +114,14 @@ def test_every_translatable_string_has_its_polish_translation(tmp_path):
 
     def messages(path):
         text = path.read_text(encoding="utf-8")
-        return re.findall(r"<source>(.*?)</source>\s*<translation( type=\"unfinished\")?>", text, re.DOTALL)
+        found = re.findall(r"<source>(.*?)</source>\s*<translation( type=\"unfinished\")?>", text, re.DOTALL)
+        return [(html.unescape(source), unfinished) for source, unfinished in found]
 
     assert sorted(source for source, _ in messages(fresh)) == sorted(source for source, _ in messages(committed)), (
         "run `make transup`"
     )
+    in_code = set().union(*map(translatable_literals, sources))
+    assert in_code - {source for source, _ in messages(committed)} == set()
     assert [source for source, unfinished in messages(committed) if unfinished] == []
 
 

@@ -141,7 +141,8 @@ class EndsResult:
         ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends are then arbitrary
         though deterministic, and the caller should warn.
     trunk : LineString or None
-        The skeleton path the ends were derived from (diagnostics), CRS units.
+        The skeleton path the ends were derived from (diagnostics), CRS units; it may cross islands smaller
+        than the typical width, which the skeleton leaves out.
     guided : bool
         True when a guide line came near the polygon and chose the path.
     """

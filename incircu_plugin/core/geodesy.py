@@ -123,12 +123,15 @@ class LocalProjection:
         return self._apply(INVERSE, geometry)
 
     def result_to_geographic(self, result):
-        """Bring a :class:`CenterlineResult` back to degrees; its radii stay in metres."""
+        """Bring a :class:`CenterlineResult` back to degrees (its line, feet and chains); its radii stay in
+        metres."""
+        chains = None if result.chains is None else tuple(self.to_geographic(chain) for chain in result.chains)
         return replace(
             result,
             line=self.to_geographic(result.line),
             foot_a=self.to_geographic(result.foot_a),
             foot_b=self.to_geographic(result.foot_b),
+            chains=chains,
         )
 
 

@@ -170,13 +170,13 @@ def transects(result, interval, chains=None):
 
     Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*: near a split
     point the line first crosses the end cap (about half a width long), where the channel has no
-    cross-section, so the stretch starts at the innermost vertex whose incircle reaches the split point or
-    touches the boundary nearer to it than its radius (at least one vertex in), however far the next vertex
-    is (see :func:`_measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated
-    linearly; each foot is the point at distance ``r`` from ``C`` towards the linearly interpolated foot of
-    that side (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case). When
-    ``chains`` are given, or the result keeps its own (``result.chains``), the feet are instead the nearest
-    points of each chain to ``C``: exact wherever the line is on the axis.
+    cross-section, so the stretch starts where the cap ends, however far the next vertex is (see
+    :func:`_measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and
+    ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated linearly. The feet are the
+    nearest points to ``C`` of each chain (``chains``, else ``result.chains``) on its bank between the
+    stretch's end incircles: exact wherever the line is on the axis. A result without chains (a network's
+    branch) gets each foot at distance ``r`` from ``C`` towards the linearly interpolated foot of that side
+    (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case).
 
     Parameters
     ----------
