@@ -650,6 +650,23 @@ def test_split_points_beyond_the_snap_tolerance_are_warned_about(provider):
     assert "the nearest is 100 m away" in warning and "found automatically" in warning, warning
 
 
+def test_core_lengths_in_a_skip_are_named_in_the_layers_unit(provider):
+    """A polygon with one split point is skipped with the core's reason, its lengths named in metres for a layer
+    in degrees (the core says "CRS units": those of the frame it computed in)."""
+    polygon = "POLYGON((10 50, 10.01 50, 10.01 50.001, 10 50.001, 10 50))"
+    polygons = QgsVectorLayer("Polygon?crs=EPSG:4326", "degrees", "memory")
+    points = QgsVectorLayer("Point?crs=EPSG:4326", "one end", "memory")
+    for layer_, wkt in ((polygons, polygon), (points, "POINT(10 50.0005)")):
+        feature = QgsFeature()
+        feature.setGeometry(QgsGeometry.fromWkt(wkt))
+        layer_.dataProvider().addFeatures([feature])
+    results, feedback = run("polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": points, "SNAP_TOLERANCE": 1.0})
+    assert results["SKIPPED_COUNT"] == 1
+    (warning,) = feedback.warnings
+    assert "1 split point within the snap tolerance (1 m) of its exterior ring" in warning, warning
+    assert "CRS units" not in warning
+
+
 def test_an_empty_split_point_layer_is_warned_about(provider):
     polygons = memory_layer("Polygon", [("channel", CHANNEL)])
     results, feedback = run("polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": memory_layer("Point", [])})
@@ -754,4 +771,4 @@ def test_banks_of_very_different_lengths_are_warned_about(provider):
     results, feedback = run("linescenterline", {"LINES_A": bank_a, "LINES_B": bank_b})
     assert results["CENTERLINE_COUNT"] == 1
     (warning,) = feedback.warnings
-    assert warning.startswith("Feature 1: The first line is 1000 long, 10 times the second one (100, "), warning
+    assert warning.startswith("Feature 1: The first line is 1000 long, 10 times the second one (100 m): "), warning

@@ -287,8 +287,8 @@ def bank_length_note(line_a, line_b):
 
     Examples
     --------
-    >>> bank_length_note(np.array([(0.0, 0.0), (1000.0, 0.0)]), np.array([(0.0, 40.0), (100.0, 40.0)]))[:59]
-    'The first line is 1000 long, 10 times the second one (100, '
+    >>> bank_length_note(np.array([(0.0, 0.0), (1000.0, 0.0)]), np.array([(0.0, 40.0), (100.0, 40.0)]))[:68]
+    'The first line is 1000 long, 10 times the second one (100 CRS units)'
     >>> bank_length_note(np.array([(0.0, 0.0), (100.0, 0.0)]), np.array([(0.0, 40.0), (150.0, 40.0)])) is None
     True
     """
@@ -299,7 +299,7 @@ def bank_length_note(line_a, line_b):
     names = ("first", "second")
     return (
         f"The {names[longer]} line is {lengths[longer]:.6g} long, {lengths[longer] / lengths[1 - longer]:.3g} "
-        f"times the {names[1 - longer]} one ({lengths[1 - longer]:.6g}, CRS units): it runs on beyond the other, "
+        f"times the {names[1 - longer]} one ({lengths[1 - longer]:.6g} CRS units): it runs on beyond the other, "
         "where the region between them is closed by the straight gap between their ends, and the centerline "
         "follows that gap there. Cut the lines to where they face each other."
     )
@@ -327,12 +327,12 @@ def split_point_count_error(count, snap_tolerance, several, needed):
     Examples
     --------
     >>> str(split_point_count_error(1, 2.5, False, "it needs 2"))
-    'The polygon has 1 split point within the snap tolerance (2.5, CRS units) of its exterior ring; it needs 2.'
+    'The polygon has 1 split point within the snap tolerance (2.5 CRS units) of its exterior ring; it needs 2.'
     """
     subject = "The part" if several else "The polygon"
     points = "split point" if count == 1 else "split points"
     return SplitPointError(
-        f"{subject} has {count} {points} within the snap tolerance ({snap_tolerance:.6g}, CRS units) of its "
+        f"{subject} has {count} {points} within the snap tolerance ({snap_tolerance:.6g} CRS units) of its "
         f"exterior ring; {needed}."
     )
 

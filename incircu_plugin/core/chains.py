@@ -289,8 +289,8 @@ def positions_on_ring(ring, points, tolerance):
     for point, distance in zip(points, shapely.distance(exterior, geometries).tolist()):
         if distance > tolerance:
             raise SplitPointError(
-                f"Split point {format_point(point)} is {distance:.6g} away from the polygon's boundary; "
-                f"the snap tolerance is {tolerance:.6g} (CRS units)."
+                f"Split point {format_point(point)} is {distance:.6g} CRS units away from the polygon's boundary; "
+                f"the snap tolerance is {tolerance:.6g} CRS units."
                 " Move the point onto the boundary or raise the tolerance."
             )
     return shapely.line_locate_point(exterior, geometries).tolist()
