@@ -18,6 +18,7 @@ from shapely.ops import substring
 from incircu_plugin.core import (
     Cancelled,
     IncirCuError,
+    InvalidGeometryError,
     SplitPointError,
     multipolygon_networks,
     polygon_centerline,
@@ -342,6 +343,14 @@ def test_multipart_networks_number_split_points_among_all_candidates():
         for branch in network.branches:
             start = shapely.get_coordinates(branch.result.line)[0]
             assert np.hypot(*(start - np.asarray(candidates[branch.start_point]))) <= 1e-12
+
+
+def test_an_invalid_part_is_named_invalid_before_its_split_points_are_counted():
+    """A bow-tie with one split point: its error is what is wrong with it (it crosses itself), as a centerline
+    says, not that it lacks a split point."""
+    bow_tie = Polygon([(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)])
+    (outcome,) = multipolygon_networks(bow_tie, [(0.0, 5.0)])
+    assert isinstance(outcome.error, InvalidGeometryError) and "Self-intersection" in str(outcome.error), outcome.error
 
 
 def test_a_branch_shorter_than_the_sampling_is_recovered_between_two_junctions():

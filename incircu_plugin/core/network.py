@@ -227,6 +227,8 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
     outcomes = []
     for index, (part, near) in enumerate(parts):
         try:
+            # What is wrong with the polygon itself comes first (as for a centerline), then its split points.
+            validate_polygon(part)
             if len(near) < 2:
                 raise split_point_count_error(len(near), snap_tolerance, len(parts) > 1, "a network needs at least 2")
             network = polygon_network(
