@@ -336,6 +336,33 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             help_template.format(pass_through=pass_through, ignore=ignore),
         )
 
+    END_CAP = "END_CAP"
+
+    def add_end_cap_parameter(self, where):
+        """Add ``END_CAP`` (straight run-out or exact axis at each end), its choices in the order of the core's
+        ``END_CAPS``.
+
+        Parameters
+        ----------
+        where : str
+            Where this algorithm's line ends, already translated (e.g. "a split point, or for automatic ends
+            where that line meets the outline").
+        """
+        runout, axis = self.tr("Straight run-out (for maps)"), self.tr("Exact medial axis")
+        self.add_optional_parameter(
+            QgsProcessingParameterEnum(self.END_CAP, self.tr("Line ends"), [runout, axis], defaultValue=0),
+            self.tr(
+                "How the line reaches its ends where the channel is cut at a slant. {runout}: straight on along "
+                "the channel's axis from where the channel is first full width to {where}; its vertices there "
+                "are not on the medial axis (their widths are interpolated). {axis}: the exact middle of the "
+                "shape, which leaves a slanted end square to it and then bends onto the channel's axis."
+            ).format(runout=runout, axis=axis, where=where),
+        )
+
+    def end_cap_option(self, run, parameters, context):
+        """Return the core's ``end_cap`` keyword chosen with ``END_CAP``."""
+        return run.core.END_CAPS[self.parameterAsEnum(parameters, self.END_CAP, context)]
+
     def add_m_parameter(self):
         """Add ``ADD_M`` (store the local width as M value)."""
         self.add_optional_parameter(

@@ -95,6 +95,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             self.tr("Optional; required together with 'Pairing field of the first lines'."),
         )
         self.add_sampling_parameters()
+        self.add_end_cap_parameter(self.tr("the middle of the gap between the two lines' ends"))
         self.add_result_parameters()
 
     def process_features(self, run, parameters, context, feedback):
@@ -111,7 +112,9 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                     self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B)
                 )
             )
-        sampling = self.sampling_options(parameters, context)
+        sampling = dict(
+            self.sampling_options(parameters, context), end_cap=self.end_cap_option(run, parameters, context)
+        )
         crs = source_a.sourceCrs()
         run.open_outputs(source_a.fields(), crs, multi=False)
 

@@ -110,6 +110,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "arm. {longest_path}: the tips of the two longest arms."
             ).format(main_stem=main_stem, longest_path=longest_path),
         )
+        self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
                 self.GUIDE_LINES,
@@ -158,7 +159,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
                     guides.append(guide_feature.geometry())
 
-        options = dict(sampling, islands=islands, end_rule=end_rule, snap_tolerance=snap_tolerance or None)
+        options = dict(
+            sampling,
+            islands=islands,
+            end_rule=end_rule,
+            end_cap=self.end_cap_option(run, parameters, context),
+            snap_tolerance=snap_tolerance or None,
+        )
 
         def task(feature):
             if not run.has_geometry(feature):

@@ -95,6 +95,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             self.ISLANDS,
         )
+        self.add_end_cap_parameter(self.tr("the split point (junctions are left as they are)"))
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
@@ -139,6 +140,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 snap_tolerance=snap_tolerance or None,
                 **sampling,
                 islands=islands,
+                end_cap=self.end_cap_option(run, parameters, context),
             )
             several = len(outcomes or ()) > 1
             parts = []

@@ -23,6 +23,7 @@ from .api import (
     polygon_centerline,
     polygon_centerline_steps,
 )
+from .caps import END_CAPS
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends, find_ends_together
 from .engine import CenterlineResult, centerline_from_chains, default_spacing, default_tolerance
@@ -42,6 +43,7 @@ from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygo
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
+    "END_CAPS",
     "END_RULES",
     "ISLAND_MODES",
     "Cancelled",

@@ -8,6 +8,7 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
+from .caps import check_end_cap, run_out_ends
 from .chains import (
     COINCIDENCE_TOLERANCE,
     extent_of,
@@ -68,6 +69,7 @@ def polygon_centerline(
     islands="main_channel",
     end_rule="main_stem",
     guide=None,
+    end_cap="axis",
     progress=None,
 ):
     """Centerline of a polygon between two points of its boundary.
@@ -100,6 +102,13 @@ def polygon_centerline(
         A rough line of the river, CRS units (gaps, offsets, pieces outside the polygon and tributaries are
         fine): without split points, the ends are those of the skeleton path that best covers it. Ignored
         when split points are given.
+    end_cap : {"axis", "runout"}
+        How the line crosses each end cap (the stretch of the outline between the banks at a split point):
+        ``"axis"``, the exact medial axis to the end (where the end is cut at a slant, it leaves the end square
+        to the cut and bends onto the channel's axis); ``"runout"``, straight from where the incircle first
+        spans the channel from bank to bank to the end: the split point itself, or, for automatic ends, the
+        point where the axis continued straight meets the outline (see :func:`.caps.run_out_ends`; the
+        run-out is not on the medial axis).
     progress : callable, optional
         See :func:`centerline_from_chains`.
 
@@ -131,6 +140,7 @@ def polygon_centerline(
             islands=islands,
             end_rule=end_rule,
             guide=guide,
+            end_cap=end_cap,
             progress=progress,
         )
     )
@@ -147,6 +157,7 @@ def polygon_centerline_steps(
     islands="main_channel",
     end_rule="main_stem",
     guide=None,
+    end_cap="axis",
     progress=None,
 ):
     """:func:`polygon_centerline` as steps (see :mod:`.steps`): a generator yielding an
@@ -156,6 +167,7 @@ def polygon_centerline_steps(
     """
     validate_polygon(polygon)
     check_island_mode(islands)
+    check_end_cap(end_cap)
     if end_rule not in END_RULES:
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
@@ -179,6 +191,8 @@ def polygon_centerline_steps(
     result = yield from steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress, region=region
     )
+    if end_cap == "runout":
+        result = run_out_ends(result, region, move_ends=ends_found)
     result = _checked(result, region)
     values = {name: getattr(result, name) for name in _RESULT_FIELDS}
     values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
@@ -220,7 +234,9 @@ class PolygonCenterlineResult(CenterlineResult):
     ends_from: str = "split_points"
 
 
-def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
+def lines_centerline(
+    line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, end_cap="axis", progress=None
+):
     """Centerline between two lines, such as the two banks of a river.
 
     The lines are oriented so their starts face each other; the centerline runs from the midpoint of the
@@ -232,6 +248,10 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
         The two lines, CRS units; they must not cross or touch.
     spacing, samples_per_chain, tolerance, progress
         See :func:`polygon_centerline`.
+    end_cap : {"axis", "runout"}
+        ``"runout"``: straight from the first incircle touching neither line's end vertex to the middle of
+        the gap (see :func:`.caps.run_out_ends`); ``"axis"``: the exact axis, which bulges where the gap is
+        slanted.
 
     Returns
     -------
@@ -250,20 +270,31 @@ def lines_centerline(line_a, line_b, *, spacing=None, samples_per_chain=None, to
     """
     return run_alone(
         lines_centerline_steps(
-            line_a, line_b, spacing=spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+            line_a,
+            line_b,
+            spacing=spacing,
+            samples_per_chain=samples_per_chain,
+            tolerance=tolerance,
+            end_cap=end_cap,
+            progress=progress,
         )
     )
 
 
-def lines_centerline_steps(line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, progress=None):
+def lines_centerline_steps(
+    line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, end_cap="axis", progress=None
+):
     """:func:`lines_centerline` as steps (see :func:`polygon_centerline_steps`); returns the
     :class:`CenterlineResult`, whose ``notes`` say when one line is more than :data:`BANK_LENGTH_RATIO` times
     as long as the other (see :func:`bank_length_note`).
     """
+    check_end_cap(end_cap)
     c1, c2 = orient_bank_lines(line_a, line_b)
     result = yield from clean_chains_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
+    if end_cap == "runout":
+        result = run_out_ends(result, Polygon(np.concatenate([c1, c2[::-1]])), open_ends=True)
     note = bank_length_note(c1, c2)
     return replace(_checked(result), notes=(note,) if note else ())
 

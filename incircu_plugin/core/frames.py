@@ -46,6 +46,7 @@ def centerlines(
     guide=None,
     spacing=None,
     snap_tolerance=1.0,
+    end_cap="runout",
 ):
     """Centerline of every (multi)polygon of a GeoSeries or GeoDataFrame, eager or dask-geopandas.
 
@@ -77,6 +78,9 @@ def centerlines(
     snap_tolerance : float
         Largest distance between a split point and a part's exterior ring, CRS units (metres when
         geographic); 0 or None: a millionth of the feature's size. Default 1, as in the plugin.
+    end_cap : {"runout", "axis"}
+        How each line crosses its end caps (see :func:`polygon_centerline`): straight along the channel's axis
+        (the default, as in the plugin: for maps) or the exact medial axis.
 
     Returns
     -------
@@ -92,7 +96,7 @@ def centerlines(
     --------
     See the module docstring.
     """
-    options = {"islands": islands, "spacing": spacing}
+    options = {"islands": islands, "spacing": spacing, "end_cap": end_cap}
     options.update(
         {name: value for name, value in (("tolerance", tolerance), ("end_rule", end_rule)) if value is not None}
     )

@@ -35,9 +35,10 @@ from typing import Optional
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Point
+from shapely.geometry import LineString, Point, Polygon
 
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts, split_point_count_error
+from .caps import check_end_cap, run_out_ends
 from .chains import (
     COINCIDENCE_TOLERANCE,
     counter_clockwise_exterior,
@@ -115,6 +116,7 @@ def polygon_network(
     spacing=None,
     snap_tolerance=None,
     islands="main_channel",
+    end_cap="axis",
     progress=None,
     **engine_options,
 ):
@@ -134,6 +136,9 @@ def polygon_network(
         Largest distance, CRS units, between a split point and the ring; default ``1e-6`` of the extent.
     islands : {"main_channel", "ignore"}
         As in :func:`polygon_centerline`.
+    end_cap : {"axis", "runout"}
+        How a branch crosses the end cap at a split point, as in :func:`polygon_centerline` (the branches'
+        junction ends are left as they are).
     progress : callable, optional
         Called with the fraction done; returning False raises :class:`Cancelled`.
     **engine_options
@@ -157,6 +162,7 @@ def polygon_network(
     """
     validate_polygon(polygon)
     check_island_mode(islands)
+    check_end_cap(end_cap)
     split_points = [] if split_points is None else list(split_points)
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
@@ -174,6 +180,9 @@ def polygon_network(
             raise Cancelled()
         pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
     branches, centres = _assemble(pieces, junctions, order)
+    if end_cap == "runout":
+        region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+        branches = [replace(branch, result=run_out_ends(branch.result, region)) for branch in branches]
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
     return NetworkResult(

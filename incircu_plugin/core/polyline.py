@@ -407,6 +407,37 @@ def _projected(offset_x, offset_y, dx, dy):
     return np.minimum(np.maximum(along, 0.0), 1.0)
 
 
+def chord_directions(xy, cumulative, start, end):
+    """Return the unit vectors from the points of a polyline at arc lengths ``start`` to those at ``end``: its
+    direction at each place, smoothed over the stretch between them.
+
+    Parameters
+    ----------
+    xy : ndarray of shape (n, 2)
+        Vertices, CRS units.
+    cumulative : ndarray of shape (n,)
+        Arc length of each vertex, CRS units (:func:`cumulative_lengths`).
+    start, end : ndarray of shape (m,)
+        Arc lengths, CRS units; clipped to the polyline.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+        NaN where the two points coincide.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> path = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]])
+    >>> chord_directions(path, cumulative_lengths(path), np.array([0.0, 5.0]), np.array([5.0, 15.0])).tolist()
+    [[1.0, 0.0], [0.7071067811865475, 0.7071067811865475]]
+    """
+    chord = points_at(xy, cumulative, np.asarray(end, dtype=float)) - points_at(xy, cumulative, np.asarray(start))
+    norm = np.hypot(chord[:, 0], chord[:, 1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(norm[:, None] > 0.0, chord / norm[:, None], np.nan)
+
+
 def nearest_on_polyline(xy, points):
     """Return, for each point, its distance to a polyline, the arc length of its foot and the foot.
 

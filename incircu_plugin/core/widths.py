@@ -15,7 +15,7 @@ from .errors import IncirCuError
 from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, piece_between, points_at
 
 #: Share of the radius within which the mirror image of a stretch end's bank foot, across the line, counts as
-#: the end's foot: the incircle touches the bank and the end, not the other bank (see :func:`_measured_stretch`).
+#: the end's foot: the incircle touches the bank and the end, not the other bank (see :func:`measured_stretch`).
 GENUINE_END_CONTACT = 0.1
 
 #: Halvings of a segment when finding where an end cap ends on it (2**-60 of its length: float64 precision).
@@ -171,7 +171,7 @@ def transects(result, interval, chains=None):
     Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*: near a split
     point the line first crosses the end cap (about half a width long), where the channel has no
     cross-section, so the stretch starts where the cap ends, however far the next vertex is (see
-    :func:`_measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and
+    :func:`measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and
     ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated linearly. The feet are the
     nearest points to ``C`` of each chain (``chains``, else ``result.chains``) on its bank between the
     stretch's end incircles: exact wherever the line is on the axis. A result without chains (a network's
@@ -220,9 +220,7 @@ def transects(result, interval, chains=None):
     length = float(chainages[-1])
     radii = np.asarray(result.radii, dtype=float)
     foot_a, foot_b = np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float)
-    low, high, vertices, radii, chainages, foot_a, foot_b = _measured_stretch(
-        vertices, radii, chainages, foot_a, foot_b
-    )
+    low, high, vertices, radii, chainages, foot_a, foot_b = measured_stretch(vertices, radii, chainages, foot_a, foot_b)
     stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
     stations = stations[(stations >= low) & (stations <= high)]
     if len(stations) == 0:
@@ -257,7 +255,7 @@ def _feet_on_banks(chain, ends, centres):
     return nearest_on_polyline(piece_between(chain, cumulative, *along), centres)[2]
 
 
-def _measured_stretch(vertices, radii, chainages, foot_a, foot_b):
+def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     """Return the chainages between which a centerline crosses its channel rather than an end cap, with the
     vertices to interpolate there.
 
