@@ -57,7 +57,9 @@ def read_geojson(name, crs):
 
 
 def expected_row(shape, points, crs=None, snap_tolerance=1.0, **options):
-    """The core on one feature, as the plugin calls it: ``(line or None, statistics, error or None)``."""
+    """The core on one feature, as the plugin calls it (with the run-out at the ends, the plugin's default):
+    ``(line or None, statistics, error or None)``."""
+    options.setdefault("end_cap", "runout")
     projection = None
     if crs is not None and crs.is_geographic and shape is not None:
         projection = LocalProjection.around(shape, crs.srs)

@@ -28,6 +28,10 @@ END_CAPS = ("runout", "axis")
 #: (the vertex on the bisector of the obtuse corner of a cut slanted 60 degrees lies 2.1 such radii from it).
 CORNER_REACH = 2.5
 
+#: Largest ratio of such a vertex's radius to the next vertex's: the line still widens markedly there (0.54 on
+#: that bisector), not by the rounding of a vertex on the axis.
+CORNER_WIDENING = 0.9
+
 
 def check_end_cap(end_cap):
     """Raise :class:`IncirCuError` unless ``end_cap`` is one of :data:`END_CAPS`."""
@@ -91,7 +95,7 @@ def run_out_ends(result, region, move_ends=False, open_ends=False):
         for side, step in ((0, 1), (1, -1)):
             end = vertices[0 if side == 0 else -1]
             while (
-                radii[joints[side]] < (1.0 - 1e-9) * radii[joints[side] + step]
+                radii[joints[side]] < CORNER_WIDENING * radii[joints[side] + step]
                 and float(np.hypot(*(vertices[joints[side]] - end))) <= CORNER_REACH * radii[joints[side] + step]
                 and joints[0] < joints[1]
             ):
