@@ -6,6 +6,7 @@ vertices and radii to 1e-9 of the extent (its proven invariant), and between two
 a chord of the true axis, off by at most its sagitta, which ``axis_tolerance`` of each case bounds.
 """
 
+import dataclasses
 import math
 
 import numpy as np
@@ -341,3 +342,99 @@ def test_transects_beside_an_island_run_straight_across_the_channel():
             assert sorted([y_a, y_b]) == pytest.approx([0.0, 120.0], abs=2.0 * tolerance)
             assert cut.width == pytest.approx(120.0, abs=2.0 * tolerance)
     assert len(reaches) >= 4
+
+
+def angle_to(vector, direction):
+    """Angle, degrees, between a vector and a direction, either way (0 to 90)."""
+    cosine = abs(float(np.dot(vector, direction))) / float(np.hypot(*vector) * np.hypot(*direction))
+    return math.degrees(math.acos(min(1.0, cosine)))
+
+
+def assert_straight_and_inside(cut, polygon, tolerance):
+    """A straight transect: its three points on one line, inside the polygon, its width its length."""
+    start, middle, end = np.asarray(cut.line.coords)
+    across = end - start
+    off_line = abs(float(np.cross(across, middle - start))) / float(np.hypot(*across))
+    assert off_line <= tolerance
+    assert cut.width == pytest.approx(float(np.hypot(*across)), abs=tolerance)
+    assert polygon.buffer(tolerance).covers(cut.line)
+
+
+@pytest.mark.parametrize("angle", (0.0, 37.0))
+def test_straight_transects_run_square_to_a_straight_channel(angle):
+    # A channel 300 x 20 turned by ``angle``, its banks wobbling (+-2) so nearest points fan out.
+    x = np.linspace(0.0, 300.0, 151)
+    wobble = 2.0 * np.sin(x / 7.0) * np.sin(x / 23.0)
+    bank_a, bank_b = np.column_stack([x, wobble]), np.column_stack([x, 20.0 + wobble[::-1] * 0.5])
+    polygon = shapely.affinity.rotate(shapely.Polygon(np.concatenate([bank_a, bank_b[::-1]])), angle, origin=(0, 0))
+    points = shapely.affinity.rotate(
+        shapely.MultiPoint([(0.0, 10.0), (300.0, 10.0 + wobble[-1] * 0.75)]), angle, origin=(0, 0)
+    )
+    result = polygon_centerline(polygon, list(points.geoms))
+    axis = np.array([math.cos(math.radians(angle)), math.sin(math.radians(angle))])
+    tolerance = 1e-9 * 300.0
+    straight = transects(result, 10.0, style="straight")
+    nearest = transects(result, 10.0)
+    assert [cut.chainage for cut in straight] == [cut.chainage for cut in nearest]
+    for cut in straight:
+        start, middle, end = np.asarray(cut.line.coords)
+        assert_straight_and_inside(cut, polygon, tolerance)
+        # Square to the axis within the line's own turns (the wobbles move the axis by about 1 in 20).
+        assert angle_to(end - start, axis) >= 90.0 - 8.0
+        # Both ends on the banks, each the first boundary point from the centerline.
+        assert (
+            polygon.exterior.distance(Point(start)) <= tolerance and polygon.exterior.distance(Point(end)) <= tolerance
+        )
+        assert cut.width >= 2.0 * polygon.exterior.distance(Point(middle)) - tolerance
+    # The nearest-bank transects bend at the centerline somewhere; the straight ones never do.
+    bends = [angle_to(np.subtract(*cut.line.coords[:2]), np.subtract(*cut.line.coords[1:])) for cut in nearest]
+    assert max(bends) > 5.0
+
+
+def test_straight_transects_on_a_bend_are_radial():
+    case = geometry_cases.annulus_sector(r_inner=40.0, r_outer=60.0, n=181)
+    result = polygon_centerline(case.polygon, case.split_points)
+    # Square to the axis (the circle of radius 50) means along the radius; the direction is smoothed over a
+    # width, an arc of 20 / 50 rad, whose chord is square to the radius through its middle: exact on a circle.
+    tolerance = 0.5 / 100 * 20.0
+    cuts = transects(result, 5.0, style="straight")
+    assert len(cuts) > 20
+    for cut in cuts:
+        start, middle, end = np.asarray(cut.line.coords)
+        assert_straight_and_inside(cut, case.polygon, 1e-6)
+        # The chord's two ends are each within the adaptive tolerance (width / 200 = 0.1) of the axis: the chord,
+        # 2 r = 20 long, turns by at most 2 * 0.1 / 20 rad, and the station lies a tolerance off its middle.
+        assert angle_to(end - start, middle) <= math.degrees(2.0 * 0.1 / 10.0)
+        assert sorted([float(np.hypot(*start)), float(np.hypot(*end))]) == pytest.approx([40.0, 60.0], abs=tolerance)
+        assert cut.width == pytest.approx(20.0, abs=2 * tolerance)
+
+
+def test_straight_transects_stop_at_an_island():
+    island = shapely.box(380.0, 70.0, 420.0, 90.0)
+    channel = shapely.Polygon(shapely.box(0.0, 0.0, 800.0, 120.0).exterior.coords, [island.exterior.coords[::-1]])
+    result = polygon_centerline(channel, [(0.0, 60.0), (800.0, 60.0)])
+    cuts = transects(result, 10.0, style="straight")
+    tolerance = 1e-9 * 800.0
+    beside = [cut for cut in cuts if 385.0 <= cut.line.coords[1][0] <= 415.0]
+    assert beside
+    for cut in cuts:
+        assert_straight_and_inside(cut, channel, tolerance)
+    for cut in beside:
+        # The line passes the island on the wider side (below it); the transect runs from the bank y = 0 up
+        # to the island's bottom, y = 70, not through it to the far bank.
+        ys = sorted(y for _, y in cut.line.coords[::2])
+        assert ys == pytest.approx([0.0, 70.0], abs=0.5)
+        assert cut.width == pytest.approx(70.0, abs=0.5)
+        assert not cut.line.crosses(island.exterior)
+
+
+def test_straight_transects_without_chains_reach_the_incircle():
+    result = polygon_centerline(shapely.box(0.0, 0.0, 100.0, 10.0), [(0.0, 5.0), (100.0, 5.0)])
+    bare = transects(dataclasses.replace(result, chains=None), 25.0, style="straight")
+    assert [list(cut.line.coords) for cut in bare] == [[(x, 0.0), (x, 5.0), (x, 10.0)] for x in (25.0, 50.0, 75.0)]
+
+
+def test_unknown_transect_style_is_a_typed_error():
+    result = polygon_centerline(shapely.box(0.0, 0.0, 100.0, 10.0), [(0.0, 5.0), (100.0, 5.0)])
+    with pytest.raises(IncirCuError, match="Unknown transect style 'square'; use one of straight, nearest"):
+        transects(result, 10.0, style="square")

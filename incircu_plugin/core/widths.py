@@ -12,7 +12,14 @@ import shapely
 from shapely.geometry import LineString, Polygon
 
 from .errors import IncirCuError
-from .polyline import as_coordinates, cumulative_lengths, nearest_on_polyline, piece_between, points_at
+from .polyline import (
+    as_coordinates,
+    chord_directions,
+    cumulative_lengths,
+    nearest_on_polyline,
+    piece_between,
+    points_at,
+)
 
 #: Share of the radius within which the mirror image of a stretch end's bank foot, across the line, counts as
 #: the end's foot: the incircle touches the bank and the end, not the other bank (see :func:`measured_stretch`).
@@ -20,6 +27,14 @@ GENUINE_END_CONTACT = 0.1
 
 #: Halvings of a segment when finding where an end cap ends on it (2**-60 of its length: float64 precision).
 BISECTION_STEPS = 60
+
+#: How :func:`transects` draws a cross-section: ``"straight"``, one straight line square to the centerline's
+#: direction (smoothed over the local width), from bank to bank; ``"nearest"``, from the centerline point to the
+#: nearest point of each bank (two pieces, which meet at an angle where the banks are not parallel).
+TRANSECT_STYLES = ("straight", "nearest")
+
+#: A straight transect's ray first looks this many local radii far for a bank, then across the whole channel.
+FIRST_REACH = 4.0
 
 
 @dataclass(frozen=True)
@@ -50,7 +65,8 @@ class Transect:
     line : LineString
         From the foot on side a, through the centerline point, to the foot on side b, CRS units.
     width : float
-        Length of ``line`` (the diameter of the incircle there), CRS units.
+        Length of ``line``, CRS units: the diameter of the incircle there for a ``"nearest"`` transect, the
+        straight cross-section's length from bank to bank for a ``"straight"`` one.
     chainage : float
         Distance of the station along the centerline from the start, CRS units.
     """
@@ -165,7 +181,7 @@ def incircle_polygons(result, quad_segs=16):
     ]
 
 
-def transects(result, interval, chains=None):
+def transects(result, interval, chains=None, style="nearest"):
     """Return cross-sections at every multiple of ``interval`` along the centerline.
 
     Stations are at chainages ``0, interval, 2 * interval, ...`` on the *measured stretch*: near a split
@@ -178,6 +194,13 @@ def transects(result, interval, chains=None):
     branch) gets each foot at distance ``r`` from ``C`` towards the linearly interpolated foot of that side
     (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case).
 
+    That is the ``"nearest"`` style: the incircle's diameter, in two pieces meeting at ``C``, which bend there
+    and fan out where the banks are irregular. The ``"straight"`` style draws one straight line through ``C``,
+    square to the centerline's direction there smoothed over the local width (the chord between the line's
+    points at ``r`` before and after ``C``), each half up to where it first meets the chains (a bank, an
+    island or, near an end, the cut): what a hydrologist surveys. Its width is that line's length, at least the
+    incircle's diameter. Without chains (a network's branch) each half is ``r`` long.
+
     Parameters
     ----------
     result : CenterlineResult
@@ -187,6 +210,8 @@ def transects(result, interval, chains=None):
     chains : (LineString or ndarray, LineString or ndarray), optional
         The two sides (``c1`` touched by ``foot_a``, ``c2`` by ``foot_b``), CRS units; default
         ``result.chains``.
+    style : {"nearest", "straight"}
+        See above and :data:`TRANSECT_STYLES`.
 
     Returns
     -------
@@ -196,7 +221,7 @@ def transects(result, interval, chains=None):
     Raises
     ------
     IncirCuError
-        If ``interval`` is not a positive finite number.
+        If ``interval`` is not a positive finite number, or ``style`` unknown.
 
     Examples
     --------
@@ -208,7 +233,11 @@ def transects(result, interval, chains=None):
     [(25.0, 10.0), (50.0, 10.0), (75.0, 10.0)]
     >>> list(cuts[0].line.coords)
     [(25.0, 0.0), (25.0, 5.0), (25.0, 10.0)]
+    >>> [list(cut.line.coords) for cut in transects(result, 50.0, style="straight")]
+    [[(50.0, 0.0), (50.0, 5.0), (50.0, 10.0)]]
     """
+    if style not in TRANSECT_STYLES:
+        raise IncirCuError("Unknown transect style {!r}; use one of {}.".format(style, ", ".join(TRANSECT_STYLES)))
     try:
         interval = float(interval)
     except (TypeError, ValueError):
@@ -228,7 +257,9 @@ def transects(result, interval, chains=None):
     along = points_at(np.column_stack([vertices, radii, foot_a, foot_b]), chainages, stations)
     centres, radius = along[:, :2], along[:, 2]
     chains = result.chains if chains is None else chains
-    if chains is not None:
+    if style == "straight":
+        feet = _straight_feet(vertices, chainages, stations, centres, radius, along[:, 3:5], chains)
+    elif chains is not None:
         first_and_last = np.searchsorted(chainages, [low, high])
         sides = zip(chains, ("first chain", "second chain"), (foot_a, foot_b))
         feet = [
@@ -392,6 +423,64 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     if first > last or chainages[first] > chainages[last]:
         return 1.0, 0.0, vertices, radii, chainages, *feet
     return float(chainages[first]), float(chainages[last]), vertices, radii, chainages, *feet
+
+
+def _straight_feet(vertices, chainages, stations, centres, radius, towards_a, chains):
+    """The two ends of straight transects through ``centres``, square to the line smoothed over ``2 radius``:
+    each where its half first meets the chains (without chains, at ``radius``); side a is the side of
+    ``towards_a`` (the interpolated foot on chain a). CRS units; NaN where no bank is met."""
+    directions = chord_directions(vertices, chainages, stations - radius, stations + radius)
+    normals = np.column_stack([-directions[:, 1], directions[:, 0]])
+    side = np.sign(np.einsum("ij,ij->i", towards_a - centres, normals))
+    normals *= np.where(side == 0.0, 1.0, side)[:, None]
+    if chains is None:
+        return [centres + radius[:, None] * normals, centres - radius[:, None] * normals]
+    segments = _boundary_segments(
+        [as_coordinates(chain, name) for chain, name in zip(chains, ("first chain", "second chain"))]
+    )
+    return [
+        centres + _first_hits(centres, sign * normals, radius, segments)[:, None] * sign * normals
+        for sign in (1.0, -1.0)
+    ]
+
+
+def _boundary_segments(chains):
+    """The segments of the chains, ``(k, 2, 2)``, without the slits joining islands to them (segments run once
+    each way) nor zero-length ones; with the segments closing the region between the chains' ends."""
+    first, second = chains
+    ring = np.concatenate([first, second[::-1], first[:1]])
+    segments = np.stack([ring[:-1], ring[1:]], axis=1)
+    segments = segments[np.any(segments[:, 0] != segments[:, 1], axis=1)]
+    forward = {tuple(segment.ravel()) for segment in segments}
+    backward = np.array([tuple(segment[::-1].ravel()) in forward for segment in segments], dtype=bool)
+    return segments[~backward]
+
+
+def _first_hits(origins, directions, radius, segments):
+    """Distance from each origin along its (unit) direction to the first segment it meets, CRS units; NaN
+    when none. The rays first reach :data:`FIRST_REACH` radii, those that meet nothing then the whole extent."""
+    tree = shapely.STRtree(shapely.linestrings(segments))
+    distances = np.full(len(origins), np.nan)
+    extent = float(np.ptp(segments.reshape(-1, 2), axis=0).max()) * 2.0
+    todo = np.arange(len(origins))
+    for reach in (FIRST_REACH * radius, np.full(len(origins), extent)):
+        if len(todo) == 0:
+            break
+        ends = origins[todo] + reach[todo, None] * directions[todo]
+        rays, hits = tree.query(shapely.linestrings(np.stack([origins[todo], ends], axis=1)), predicate="intersects")
+        start, edge = segments[hits, 0], segments[hits, 1] - segments[hits, 0]
+        ray = directions[todo[rays]]
+        offset = start - origins[todo[rays]]
+        denominator = ray[:, 0] * edge[:, 1] - ray[:, 1] * edge[:, 0]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            along = (offset[:, 0] * edge[:, 1] - offset[:, 1] * edge[:, 0]) / denominator
+        along[~np.isfinite(along) | (along < 0.0)] = np.inf
+        nearest = np.full(len(todo), np.inf)
+        np.minimum.at(nearest, rays, along)
+        found = np.isfinite(nearest)
+        distances[todo[found]] = nearest[found]
+        todo = todo[~found]
+    return distances
 
 
 def _foot_towards(centres, radius, towards):
