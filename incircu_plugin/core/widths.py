@@ -197,7 +197,7 @@ def transects(result, interval, chains=None, style="nearest"):
     That is the ``"nearest"`` style: the incircle's diameter, in two pieces meeting at ``C``, which bend there
     and fan out where the banks are irregular. The ``"straight"`` style draws one straight line through ``C``,
     square to the centerline's direction there smoothed over the local width (the chord between the line's
-    points at ``r`` before and after ``C``), each half up to where it first meets the chains (a bank, an
+    points at ``r`` before and after ``C``, closer alike near the measured stretch's ends), each half up to where it first meets the chains (a bank, an
     island or, near an end, the cut): what a hydrologist surveys. Its width is that line's length, at least the
     incircle's diameter. Without chains (a network's branch) each half is ``r`` long.
 
@@ -258,7 +258,8 @@ def transects(result, interval, chains=None, style="nearest"):
     centres, radius = along[:, :2], along[:, 2]
     chains = result.chains if chains is None else chains
     if style == "straight":
-        feet = _straight_feet(vertices, chainages, stations, centres, radius, along[:, 3:5], chains)
+        window = _window(stations, radius, low, high)
+        feet = _straight_feet(vertices, chainages, window, centres, radius, along[:, 3:5], chains)
     elif chains is not None:
         first_and_last = np.searchsorted(chainages, [low, high])
         sides = zip(chains, ("first chain", "second chain"), (foot_a, foot_b))
@@ -425,11 +426,26 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     return float(chainages[first]), float(chainages[last]), vertices, radii, chainages, *feet
 
 
-def _straight_feet(vertices, chainages, stations, centres, radius, towards_a, chains):
-    """The two ends of straight transects through ``centres``, square to the line smoothed over ``2 radius``:
-    each where its half first meets the chains (without chains, at ``radius``); side a is the side of
-    ``towards_a`` (the interpolated foot on chain a). CRS units; NaN where no bank is met."""
-    directions = chord_directions(vertices, chainages, stations - radius, stations + radius)
+def _window(stations, radius, low, high):
+    """The chainages, CRS units, between which the line's direction at each station is taken: ``radius``
+    before and after it, shortened alike to stay on the measured stretch ``[low, high]`` (the caps' lines do
+    not follow the channel); one-sided, ``radius`` long, at the stretch's ends."""
+    half = np.minimum(radius, np.minimum(stations - low, high - stations))
+    start, end = stations - half, stations + half
+    short = half <= 1e-9 * np.maximum(radius, np.finfo(float).tiny)
+    at_low = short & (stations - low <= high - stations)
+    start[short], end[short] = stations[short], stations[short]
+    end[at_low] += radius[at_low]
+    start[short & ~at_low] -= radius[short & ~at_low]
+    return start, end
+
+
+def _straight_feet(vertices, chainages, window, centres, radius, towards_a, chains):
+    """The two ends of straight transects through ``centres``, square to the line's chord over ``window``
+    (its chainages before and after each centre): each where its half first meets the chains (without chains,
+    at ``radius``); side a is the side of ``towards_a`` (the interpolated foot on chain a). CRS units; NaN where
+    no bank is met."""
+    directions = chord_directions(vertices, chainages, *window)
     normals = np.column_stack([-directions[:, 1], directions[:, 0]])
     side = np.sign(np.einsum("ij,ij->i", towards_a - centres, normals))
     normals *= np.where(side == 0.0, 1.0, side)[:, None]
