@@ -71,6 +71,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     SPACING = "SPACING"
     ADD_M = "ADD_M"
     TRANSECT_INTERVAL = "TRANSECT_INTERVAL"
+    TRANSECT_STYLE = "TRANSECT_STYLE"
     OUTPUT = "OUTPUT"
     OUTPUT_VERTICES = "OUTPUT_VERTICES"
     OUTPUT_CIRCLES = "OUTPUT_CIRCLES"
@@ -406,7 +407,8 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 ProcessingSourceType.VectorLine,
                 self.tr(
                     "Optional line layer: cross-sections from bank to bank through the centerline, one every "
-                    "'Distance between transects', with their width and chainage.",
+                    "'Distance between transects', with their width, chainage and method (their 'Transect "
+                    "shape': straight or nearest).",
                 ),
             ),
         )
@@ -423,6 +425,20 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
                 "degrees); 0 uses the mean width of each centerline.",
             ),
+            advanced=True,
+        )
+        straight, nearest = self.tr("Straight, square to the centerline"), self.tr("To the nearest bank points")
+        self.add_optional_parameter(
+            QgsProcessingParameterEnum(
+                self.TRANSECT_STYLE, self.tr("Transect shape"), [straight, nearest], defaultValue=0
+            ),
+            self.tr(
+                "{straight} (method 'straight'): one straight cross-section square to the centerline's "
+                "direction, smoothed over about one width, from where it first meets a bank or island on one side "
+                "to the other: what is surveyed in the field; its width is its length, at least the local width. "
+                "{nearest} (method 'nearest'): from the centerline to the nearest point of each bank, the "
+                "incircle's diameter; it bends at the centerline where the banks are not parallel."
+            ).format(straight=straight, nearest=nearest),
             advanced=True,
         )
         self.add_count_outputs(self.tr("Number of centerlines"), self.tr("Number of centerline features written."))

@@ -14,7 +14,13 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QCoreApplication
 
-from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages, width_statistics
+from ..incircu_plugin.core.widths import (
+    TRANSECT_STYLES,
+    incircle_polygons,
+    transects,
+    vertex_chainages,
+    width_statistics,
+)
 from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
@@ -63,6 +69,7 @@ TRANSECT_FIELDS = (
     ("part", INTEGER),
     ("chainage", DOUBLE),
     ("width", DOUBLE),
+    ("method", STRING),
 )
 
 
@@ -126,6 +133,8 @@ class CenterlineWriter:
         self.add_m = add_m
         self.multi = multi
         self.transect_interval = transect_interval
+        # The enum's choices are in the order of the core's TRANSECT_STYLES.
+        self.transect_style = TRANSECT_STYLES[algorithm.parameterAsEnum(parameters, algorithm.TRANSECT_STYLE, context)]
         line_type = WkbType.MultiLineString if multi else WkbType.LineString
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
@@ -230,8 +239,8 @@ class CenterlineWriter:
             interval = self.transect_interval or width_statistics([result])["width_mean"] or 0.0
             if interval <= 0:
                 return
-            for transect in transects(result, interval):
+            for transect in transects(result, interval, style=self.transect_style):
                 section = QgsFeature()
                 section.setGeometry(from_shapely(frame.to_layer(transect.line)))
-                section.setAttributes([source_fid, part_index, transect.chainage, transect.width])
+                section.setAttributes([source_fid, part_index, transect.chainage, transect.width, self.transect_style])
                 self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)
