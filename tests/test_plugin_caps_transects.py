@@ -1,5 +1,6 @@
 """END_CAP and TRANSECT_STYLE through ``processing.run``: the run-out at a slanted cut (the default), the exact
-axis on request, straight and nearest-bank transects with their ``method``."""
+axis on request, straight and nearest-bank transects with their ``method``; pictures of both, rendered by QGIS
+offscreen, in ``tests/artifacts/`` (end_caps_*.png, transects_*.png)."""
 
 import math
 
@@ -7,7 +8,22 @@ import numpy as np
 import processing
 import pytest
 import shapely
-from qgis.core import QgsFeature, QgsGeometry, QgsProcessingFeedback, QgsVectorLayer
+from qgis.core import (
+    QgsFeature,
+    QgsFillSymbol,
+    QgsGeometry,
+    QgsLineSymbol,
+    QgsMapRendererParallelJob,
+    QgsMapSettings,
+    QgsProcessingFeedback,
+    QgsRectangle,
+    QgsSingleSymbolRenderer,
+    QgsVectorLayer,
+)
+from qgis.PyQt.QtCore import QSize
+from qgis.PyQt.QtGui import QColor
+
+from tests.support.project import DATA
 
 WIDTH, LENGTH, SLANT = 40.0, 1000.0, math.radians(40.0)
 
@@ -77,3 +93,99 @@ def test_transects_say_their_method(provider, style, method):
         assert abs(start[0] - end[0]) <= WIDTH / 100 and sorted([start[1], end[1]]) == pytest.approx(
             [0, WIDTH], abs=1e-6
         )
+
+
+def styled(layer, symbol):
+    layer.setRenderer(QgsSingleSymbolRenderer(symbol))
+    return layer
+
+
+def render_png(layers, extent, path):
+    """Draw ``layers`` (the first on top) over ``extent`` to a 1000 x 700 PNG at ``path``; return the image."""
+    settings = QgsMapSettings()
+    settings.setLayers(layers)
+    settings.setDestinationCrs(layers[-1].crs())
+    settings.setOutputSize(QSize(1000, 700))
+    settings.setOutputDpi(96)
+    settings.setBackgroundColor(QColor("white"))
+    settings.setExtent(extent)
+    job = QgsMapRendererParallelJob(settings)
+    job.start()
+    job.waitForFinished()
+    image = job.renderedImage()
+    assert image.save(str(path))
+    return image
+
+
+def water(layer):
+    return styled(layer, QgsFillSymbol.createSimple({"color": "170,205,235", "outline_color": "60,90,140"}))
+
+
+def red_line(layer):
+    return styled(layer, QgsLineSymbol.createSimple({"line_color": "220,30,30", "line_width": "0.8"}))
+
+
+def red_pixels(image):
+    return sum(
+        1
+        for y in range(0, image.height(), 2)
+        for x in range(0, image.width(), 2)
+        if QColor(image.pixel(x, y)).red() > 170 and QColor(image.pixel(x, y)).green() < 80
+    )
+
+
+def test_screenshots_of_joined_reaches_at_a_slanted_cut(provider, artifacts):
+    """Two reaches of one channel share a cut 40 degrees off square: the exact axis zig-zags at the joint, the
+    run-out meets it in line. Written to tests/artifacts/end_caps_axis.png and end_caps_runout.png."""
+    shift = math.tan(SLANT) * WIDTH / 2
+    reaches = QgsVectorLayer("Polygon?crs=EPSG:2180", "reaches", "memory")
+    features = []
+    for start in (0.0, 300.0):
+        feature = QgsFeature()
+        end = start + 300.0
+        ring = f"{start - shift} 0, {end - shift} 0, {end + shift} {WIDTH}, {start + shift} {WIDTH}, {start - shift} 0"
+        feature.setGeometry(QgsGeometry.fromWkt(f"POLYGON(({ring}))"))
+        features.append(feature)
+    reaches.dataProvider().addFeatures(features)
+    ends = QgsVectorLayer("Point?crs=EPSG:2180", "split points", "memory")
+    points = []
+    for x in (0.0, 300.0, 600.0):
+        point = QgsFeature()
+        point.setGeometry(QgsGeometry.fromWkt(f"POINT({x} {WIDTH / 2})"))
+        points.append(point)
+    ends.dataProvider().addFeatures(points)
+    extent = QgsRectangle(300.0 - 3 * WIDTH, WIDTH / 2 - 2.1 * WIDTH, 300.0 + 3 * WIDTH, WIDTH / 2 + 2.1 * WIDTH)
+    counts = {}
+    for name, end_cap in (("axis", 1), ("runout", 0)):
+        lines = red_line(run({"INPUT": reaches, "SPLIT_POINTS": ends, "END_CAP": end_cap})["OUTPUT"])
+        counts[name] = red_pixels(render_png([lines, water(reaches)], extent, artifacts / f"end_caps_{name}.png"))
+    # The straight run-out draws the shortest red path across the picture; the zig-zag a longer one.
+    assert 0 < counts["runout"] < counts["axis"]
+
+
+def test_screenshots_of_straight_and_nearest_transects_on_the_sample_river(provider, artifacts):
+    """Written to tests/artifacts/transects_nearest.png and transects_straight.png."""
+    river = QgsVectorLayer(str(DATA / "river_2180.geojson"), "river", "ogr")
+    parameters = {
+        "INPUT": river,
+        "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+        "OUTPUT_TRANSECTS": "memory:",
+        "TRANSECT_INTERVAL": 40.0,
+    }
+    # The reach with an island (a polygon with a hole), where the two styles differ most.
+    (island_reach,) = [
+        f
+        for f in river.getFeatures()
+        if f.geometry().constGet().exteriorRing() is not None and f.geometry().constGet().numInteriorRings()
+    ]
+    extent = island_reach.geometry().boundingBox()
+    extent = extent.buffered(0.05 * extent.width())
+    for name, style in (("nearest", 1), ("straight", 0)):
+        results = run({**parameters, "TRANSECT_STYLE": style})
+        transects = styled(
+            results["OUTPUT_TRANSECTS"], QgsLineSymbol.createSimple({"line_color": "230,120,0", "line_width": "0.4"})
+        )
+        image = render_png(
+            [transects, red_line(results["OUTPUT"]), water(river)], extent, artifacts / f"transects_{name}.png"
+        )
+        assert red_pixels(image) > 100
