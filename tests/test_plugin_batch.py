@@ -125,7 +125,7 @@ def test_polygons_over_several_batches_equal_the_core_per_feature(small_batches)
     good = [n for n in range(14) if n not in bad and n != 10]
     assert list(written) == good  # in input order
     for n in good:
-        outcomes = multipolygon_centerlines(shapes[n])
+        outcomes = multipolygon_centerlines(shapes[n], end_cap="runout")  # the plugin's default
         lines = [outcome.result.line for outcome in outcomes if outcome.error is None]
         assert_close(as_shapely(written[n].geometry()), shapely.MultiLineString(lines), axis_tolerance(shapes[n]), n)
     assert feedback.steps == sorted(feedback.steps) and feedback.steps[-1] == 100.0
@@ -141,7 +141,7 @@ def test_geographic_features_in_one_batch_are_written_in_their_own_frame(small_b
     assert list(written) == list(range(len(shapes)))
     for n, shape in enumerate(shapes):
         projection = LocalProjection.around(shape, "EPSG:4326")
-        (outcome,) = multipolygon_centerlines(projection.to_local(shape))
+        (outcome,) = multipolygon_centerlines(projection.to_local(shape), end_cap="runout")
         # Compared in metres, in the feature's own projection: a line written through another feature's
         # projection would land kilometres away.
         line = projection.to_local(as_shapely(written[n].geometry()))
@@ -179,7 +179,7 @@ def test_lines_over_several_batches_equal_the_core_per_pair(small_batches):
     written = output_by_n(results["OUTPUT"])
     assert list(written) == [0, 1, 2, 3, 5, 7]
     for n in written:
-        expected = lines_centerline(banks_a[n], banks_b[n]).line
+        expected = lines_centerline(banks_a[n], banks_b[n], end_cap="runout").line
         # The default tolerance between two lines: the area between them over their mean length, / 200.
         between = Polygon([*banks_a[n].coords, *banks_b[n].coords])  # the banks face each other
         tolerance = between.area / (0.5 * (banks_a[n].length + banks_b[n].length)) / 200.0
