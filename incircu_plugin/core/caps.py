@@ -42,16 +42,20 @@ def check_end_cap(end_cap):
 def run_out_ends(result, region, move_ends=False, open_ends=False):
     """Return ``result`` with its line straight across each end cap (see the module docstring).
 
-    Only ends with a zero radius (split points) have a cap, or, with ``open_ends``, every end. At each such end, the vertices between the end
-    and the first vertex ``P`` of the measured stretch (:func:`.widths.measured_stretch`: where the incircle
-    first spans the channel) are dropped and ``P`` is joined straight to the end. With ``move_ends`` (ends
-    found automatically) the end moves to where the ray from ``P`` backwards along the axis's tangent at ``P``
-    (square to the line joining ``P``'s two feet) first meets the boundary of ``region``, if that point lies
-    within ``|P - end| + r(P)`` of the old end; otherwise the end stays. ``P`` is on the medial axis, the
-    end on the boundary; the run-out between them is not on the axis: the end keeps radius 0 (its feet are
-    the end itself), ``P`` its incircle, and the M values along the segment (the widths of its two vertices)
-    are interpolated between them. An end whose run-out would leave ``region`` or cross the rest of the line
-    keeps the exact axis.
+    Ends with a zero radius (split points) have a cap; with ``open_ends``, every end. At each, the vertices
+    between the end and the first vertex ``P`` of the measured stretch (:func:`.widths.measured_stretch`: where
+    the incircle first spans the channel; the next vertex where that one was moved off the axis onto the
+    cap's end) are dropped and ``P`` is joined straight to the end. With ``move_ends`` (ends found
+    automatically) ``P`` may move further in, past vertices on the bisector of a slanted cut's corner (see
+    :data:`CORNER_REACH`), and the end moves to where the line's direction at ``P``, continued straight back
+    (:func:`_aimed_end`), first meets the boundary of ``region``, when that point lies within
+    ``|P - end| + r(P)`` of the old end.
+
+    ``P`` is on the medial axis and the end on the boundary; the run-out between them is not on the axis:
+    the end keeps its radius (0 at a split point, its feet the end itself; half the gap at an open end), ``P``
+    its incircle, and nothing is computed between them (a width read along the segment, as the M values, is
+    interpolated between the two). An end whose run-out would leave ``region``, meet the rest of the line
+    elsewhere than at ``P`` or make it not simple keeps the exact axis.
 
     Parameters
     ----------
