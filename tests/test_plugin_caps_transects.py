@@ -13,16 +13,14 @@ from qgis.core import (
     QgsFillSymbol,
     QgsGeometry,
     QgsLineSymbol,
-    QgsMapRendererParallelJob,
-    QgsMapSettings,
     QgsProcessingFeedback,
     QgsRectangle,
     QgsSingleSymbolRenderer,
     QgsVectorLayer,
 )
-from qgis.PyQt.QtCore import QSize
 from qgis.PyQt.QtGui import QColor
 
+from tests.support.maps import map_settings, render
 from tests.support.project import DATA
 
 WIDTH, LENGTH, SLANT = 40.0, 1000.0, math.radians(40.0)
@@ -102,19 +100,7 @@ def styled(layer, symbol):
 
 def render_png(layers, extent, path):
     """Draw ``layers`` (the first on top) over ``extent`` to a 1000 x 700 PNG at ``path``; return the image."""
-    settings = QgsMapSettings()
-    settings.setLayers(layers)
-    settings.setDestinationCrs(layers[-1].crs())
-    settings.setOutputSize(QSize(1000, 700))
-    settings.setOutputDpi(96)
-    settings.setBackgroundColor(QColor("white"))
-    settings.setExtent(extent)
-    job = QgsMapRendererParallelJob(settings)
-    job.start()
-    job.waitForFinished()
-    image = job.renderedImage()
-    assert image.save(str(path))
-    return image
+    return render(map_settings(layers, extent, (1000, 700)), path)
 
 
 def water(layer):

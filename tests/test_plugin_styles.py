@@ -14,8 +14,6 @@ from qgis.core import (
     QgsFillSymbol,
     QgsLayerTreeModel,
     QgsLineSymbol,
-    QgsMapRendererParallelJob,
-    QgsMapSettings,
     QgsProcessingFeedback,
     QgsProcessingOutputLayerDefinition,
     QgsProject,
@@ -23,8 +21,11 @@ from qgis.core import (
     QgsSingleSymbolRenderer,
     QgsVectorLayer,
 )
-from qgis.PyQt.QtCore import QSize, Qt
+from qgis.PyQt.QtCore import Qt
 from qgis.PyQt.QtGui import QColor
+
+from tests.support.maps import map_settings as support_map_settings
+from tests.support.maps import render
 
 DATA = REPOSITORY / "tests" / "data"
 
@@ -82,25 +83,7 @@ def map_settings(project, layers):
     extent = QgsRectangle()
     for layer in project.layerTreeRoot().layerOrder():
         extent.combineExtentWith(layer.extent())
-    settings = QgsMapSettings()
-    settings.setLayers(layers)
-    settings.setDestinationCrs(layers[-1].crs())
-    settings.setOutputSize(QSize(1400, 900))
-    settings.setOutputDpi(96)
-    settings.setBackgroundColor(QColor("white"))
-    settings.setExtent(extent.buffered(0.03 * extent.width()))
-    return settings
-
-
-def render(settings, path=None):
-    """Draw the layers of ``settings`` (the first on top) to an image, saved as a PNG at ``path`` if given."""
-    job = QgsMapRendererParallelJob(settings)
-    job.start()
-    job.waitForFinished()
-    image = job.renderedImage()
-    if path is not None:
-        assert image.save(str(path))
-    return image
+    return support_map_settings(layers, extent.buffered(0.03 * extent.width()))
 
 
 def legend_icon(project, layer):
