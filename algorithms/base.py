@@ -433,11 +433,11 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 self.TRANSECT_STYLE, self.tr("Transect shape"), [straight, nearest], defaultValue=0
             ),
             self.tr(
-                "{straight} (method 'straight'): one straight cross-section square to the centerline's "
-                "direction, smoothed over about one width, from where it first meets a bank or island on one side "
-                "to the other: what is surveyed in the field; its width is its length, at least the local width. "
-                "{nearest} (method 'nearest'): from the centerline to the nearest point of each bank, the "
-                "incircle's diameter; it bends at the centerline where the banks are not parallel."
+                "{straight}: one straight cross-section square to the centerline's direction, smoothed over "
+                "about one width, from where it first meets a bank or island on one side to the other: what is "
+                "surveyed in the field; its width is its length, at least the local width (method 'straight'). "
+                "{nearest}: from the centerline to the nearest point of each bank, the incircle's diameter; it "
+                "bends at the centerline where the banks are not parallel (method 'nearest')."
             ).format(straight=straight, nearest=nearest),
             advanced=True,
         )

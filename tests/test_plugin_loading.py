@@ -102,6 +102,8 @@ def test_public_parameter_names(provider):
         "OUTPUT_CIRCLES",
         "OUTPUT_TRANSECTS",
         "TRANSECT_INTERVAL",
+        "TRANSECT_STYLE",
+        "END_CAP",
     }
     assert {p.name() for p in polygon.parameterDefinitions()} == common | {
         "INPUT",
