@@ -86,8 +86,10 @@ def test_the_exact_axis_leaves_a_slanted_end_square_to_the_cut(slant):
     assert polygon_centerline(polygon, points).line.equals_exact(result.line, 0.0)
 
 
-@pytest.mark.parametrize("slant", SLANTS)
+@pytest.mark.parametrize("slant", SLANTS[:-1])
 def test_run_out_at_automatic_ends_meets_the_cut_on_the_axis(slant):
+    # Up to 45 degrees the automatic ends lie in the middle of the cuts (their end caps); at 60 degrees they
+    # lie in the cuts' acute corners, tips the exact axis runs into (see the next test).
     polygon, _ = slanted_channel(slant)
     result = polygon_centerline(polygon, end_cap="runout")
     coordinates = shapely.get_coordinates(result.line)
@@ -113,6 +115,25 @@ def half_plane(point, direction):
             point - 1e3 * direction + 1e3 * normal,
         ]
     )
+
+
+def test_automatic_ends_in_tips_keep_the_exact_axis():
+    # A channel whose ends taper to points, and one cut 60 degrees off square, whose automatic ends lie in the
+    # acute corners: the line runs into each tip along its middle, with or without the run-out.
+    tapered = Polygon(
+        rotate([(-30.0, 0.0), (0.0, -W / 2), (LENGTH, -W / 2), (LENGTH + 30.0, 0.0), (LENGTH, W / 2), (0.0, W / 2)])
+    )
+    for polygon in (tapered, slanted_channel(60.0)[0]):
+        exact = polygon_centerline(polygon, end_cap="axis")
+        runout = polygon_centerline(polygon, end_cap="runout")
+        ends = shapely.get_coordinates(exact.line)[[0, -1]]
+        assert np.array_equal(shapely.get_coordinates(runout.line)[[0, -1]], ends)
+        assert np.all(
+            shapely.distance(
+                shapely.points(ends), shapely.points(shapely.get_coordinates(polygon.exterior))[:, None]
+            ).min(axis=0)
+            <= 1e-9 * LENGTH
+        )
 
 
 def test_curved_channel_runs_out_along_its_tangent():

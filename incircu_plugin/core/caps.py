@@ -18,19 +18,11 @@ from shapely.geometry import LineString
 
 from .errors import IncirCuError
 from .polyline import chord_directions, cumulative_lengths
-from .widths import measured_stretch
+from .widths import end_cap_vertices, measured_stretch
 
 #: The ways a centerline ends: ``"runout"``, straight along the channel's axis from where the end cap ends to
 #: the end; ``"axis"``, the exact medial axis to the end (with its bend across a slanted cap).
 END_CAPS = ("runout", "axis")
-
-#: How far from an automatic end, in radii of the next vertex, a widening vertex still counts as in the end cap
-#: (the vertex on the bisector of the obtuse corner of a cut slanted 60 degrees lies 2.1 such radii from it).
-CORNER_REACH = 2.5
-
-#: Largest ratio of such a vertex's radius to the next vertex's: the line still widens markedly there (0.54 on
-#: that bisector), not by the rounding of a vertex on the axis.
-CORNER_WIDENING = 0.9
 
 
 def check_end_cap(end_cap):
@@ -46,10 +38,11 @@ def run_out_ends(result, region, move_ends=False, open_ends=False):
     between the end and the first vertex ``P`` of the measured stretch (:func:`.widths.measured_stretch`: where
     the incircle first spans the channel; the next vertex where that one was moved off the axis onto the
     cap's end) are dropped and ``P`` is joined straight to the end. With ``move_ends`` (ends found
-    automatically) ``P`` may move further in, past vertices on the bisector of a slanted cut's corner (see
-    :data:`CORNER_REACH`), and the end moves to where the line's direction at ``P``, continued straight back
+    automatically) the end moves to where the line's direction at ``P``, continued straight back
     (:func:`_aimed_end`), first meets the boundary of ``region``, when that point lies within
-    ``|P - end| + r(P)`` of the old end.
+    ``|P - end| + r(P)`` of the old end; an automatic end without end-cap vertices
+    (:func:`.widths.end_cap_vertices`: a tip where the banks meet, or the acute corner of a cut slanted so
+    far that the end was found there) keeps the exact axis.
 
     ``P`` is on the medial axis and the end on the boundary; the run-out between them is not on the axis:
     the end keeps its radius (0 at a split point, its feet the end itself; half the gap at an open end), ``P``
@@ -93,23 +86,20 @@ def run_out_ends(result, region, move_ends=False, open_ends=False):
         first + 1 if not np.array_equal(stretch[first], vertices[first]) else first,
         last - 1 if not np.array_equal(stretch[last], vertices[last]) else last,
     ]
-    if move_ends:
-        # An automatic end may lie in a corner of a slanted cut, whose bisector the line follows, widening,
-        # without touching the end's neighbourhood the way measured_stretch tells an end cap by.
-        for side, step in ((0, 1), (1, -1)):
-            end = vertices[0 if side == 0 else -1]
-            while (
-                radii[joints[side]] < CORNER_WIDENING * radii[joints[side] + step]
-                and float(np.hypot(*(vertices[joints[side]] - end))) <= CORNER_REACH * radii[joints[side] + step]
-                and joints[0] < joints[1]
-            ):
-                joints[side] += step
+    # An automatic end in a tip (where the banks meet; its line has no end-cap vertex) keeps the exact axis:
+    # it runs along the tip's middle into it, and a straight line from farther in would miss the tip.
+    capped = [len(indices) > 0 for indices in end_cap_vertices(vertices, radii, chainages, *original[1:])]
     if open_ends and result.chains is not None:
         joints = _open_joints(vertices, original, result.chains, joints)
     ends = []
     for side, end_index in enumerate((0, len(vertices) - 1)):
         end, joint = vertices[end_index], joints[side]
-        if (radii[end_index] > 0.0 and not open_ends) or joints[0] > joints[1] or joint == end_index:
+        if (
+            (radii[end_index] > 0.0 and not open_ends)
+            or (move_ends and not capped[side])
+            or joints[0] > joints[1]
+            or joint == end_index
+        ):
             ends.append(None)
             continue
         if move_ends:

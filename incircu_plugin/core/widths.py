@@ -287,13 +287,45 @@ def _feet_on_banks(chain, ends, centres):
     return nearest_on_polyline(piece_between(chain, cumulative, *along), centres)[2]
 
 
+def end_cap_vertices(vertices, radii, chainages, foot_a, foot_b):
+    """Return the indices of the end-cap vertices at the start and at the end of a centerline.
+
+    An *end-cap vertex* is an inner vertex, in the half of the line on that side, whose incircle reaches the
+    end point or touches the boundary nearer to it than its radius: the incircle touches the end's cut rather
+    than both banks. A pointed end (a tip, where the banks meet) has none.
+
+    Parameters
+    ----------
+    vertices : ndarray of shape (n, 2)
+        Centerline vertices, CRS units.
+    radii, chainages : ndarray of shape (n,)
+        Incircle radius and chainage of each vertex, CRS units.
+    foot_a, foot_b : ndarray of shape (n, 2)
+        Where each incircle touches the two sides, CRS units.
+
+    Returns
+    -------
+    start, end : ndarray of int
+        Ascending indices.
+    """
+    slack = 1e-9 * max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
+    inner = np.zeros(len(vertices), dtype=bool)
+    inner[1:-1] = True
+    half = chainages[-1] / 2.0
+    found = []
+    for end, side in ((vertices[0], chainages <= half), (vertices[-1], chainages >= half)):
+        nearest_foot = np.minimum(np.hypot(*(foot_a - end).T), np.hypot(*(foot_b - end).T))
+        reaches = np.hypot(*(vertices - end).T) <= radii + slack
+        found.append(np.flatnonzero(inner & side & (reaches | (nearest_foot < radii))))
+    return found[0], found[1]
+
+
 def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     """Return the chainages between which a centerline crosses its channel rather than an end cap, with the
     vertices to interpolate there.
 
     Near a split point (an end with zero radius) the line first crosses the end cap, about half a width long,
-    where the channel has no cross-section. An *end-cap vertex* is an inner vertex, in the half of the line on
-    that side, whose incircle reaches the end point or touches the boundary nearer to it than its radius. The
+    where the channel has no cross-section. Its end-cap vertices are those of :func:`end_cap_vertices`. The
     innermost one is where the line from the split point meets the axis (both samplings keep it: the adaptive
     line keeps the neighbours of its ends), so the stretch is found whatever the distance to the next vertex;
     at an open end (positive radius) it starts at the end.
@@ -336,16 +368,9 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     """
     count = len(vertices)
     slack = 1e-9 * max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
-    half = chainages[-1] / 2.0
-    inner = np.zeros(count, dtype=bool)
-    inner[1:-1] = True
     vertices, radii, chainages = np.array(vertices, dtype=float), np.array(radii, dtype=float), np.array(chainages)
     feet = np.array(foot_a, dtype=float), np.array(foot_b, dtype=float)
-
-    def end_cap(end, side):
-        nearest_foot = np.minimum(np.hypot(*(feet[0] - end).T), np.hypot(*(feet[1] - end).T))
-        reaches = np.hypot(*(vertices - end).T) <= radii + slack
-        return np.flatnonzero(inner & side & (reaches | (nearest_foot < radii)))
+    caps = end_cap_vertices(vertices, radii, chainages, *feet)
 
     def contacts(index, end, towards):
         """What the incircle of end-cap vertex ``index`` touches: ``"banks"`` (its feet then put on them),
@@ -400,9 +425,9 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     ends = [vertices[0].copy(), vertices[-1].copy()]
     first, last = 0, count - 1
     if radii[0] <= slack:
-        first = max(int(np.max(end_cap(ends[0], chainages <= half), initial=0)), 1)
+        first = max(int(np.max(caps[0], initial=0)), 1)
     if radii[-1] <= slack:
-        last = min(int(np.min(end_cap(ends[1], chainages >= half), initial=count - 1)), count - 2)
+        last = min(int(np.min(caps[1], initial=count - 1)), count - 2)
     # The vertices of the stretch, if any, carry the banks' feet; an end-cap vertex whose incircle spans no
     # bank moves to where the cap ends, on the segment to one of them; one that touches a bank and the end
     # leaves the stretch to the next vertex.
