@@ -110,7 +110,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "arm. {longest_path}: the tips of the two longest arms."
             ).format(main_stem=main_stem, longest_path=longest_path),
         )
-        self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
                 self.GUIDE_LINES,
@@ -124,6 +123,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected."
             ),
         )
+        self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
         self.add_optional_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
