@@ -197,9 +197,10 @@ def transects(result, interval, chains=None, style="nearest"):
     That is the ``"nearest"`` style: the incircle's diameter, in two pieces meeting at ``C``, which bend there
     and fan out where the banks are irregular. The ``"straight"`` style draws one straight line through ``C``,
     square to the centerline's direction there smoothed over the local width (the chord between the line's
-    points at ``r`` before and after ``C``, closer alike near the measured stretch's ends), each half up to where it first meets the chains (a bank, an
-    island or, near an end, the cut): what a hydrologist surveys. Its width is that line's length, at least the
-    incircle's diameter. Without chains (a network's branch) each half is ``r`` long.
+    points at ``r`` before and after ``C``, closer alike near the measured stretch's ends), each half up to
+    where it first meets the chains (a bank, an island or, near an end, the cut): what a hydrologist surveys.
+    Its width is that line's length, at least the incircle's diameter. Without chains (a network's branch)
+    each half is ``r`` long.
 
     Parameters
     ----------
@@ -473,7 +474,7 @@ def _straight_feet(vertices, chainages, window, centres, radius, towards_a, chai
     directions = chord_directions(vertices, chainages, *window)
     normals = np.column_stack([-directions[:, 1], directions[:, 0]])
     side = np.sign(np.einsum("ij,ij->i", towards_a - centres, normals))
-    normals *= np.where(side == 0.0, 1.0, side)[:, None]
+    normals *= np.where(np.isfinite(side) & (side != 0.0), side, 1.0)[:, None]
     if chains is None:
         return [centres + radius[:, None] * normals, centres - radius[:, None] * normals]
     segments = _boundary_segments(
@@ -499,11 +500,11 @@ def _boundary_segments(chains):
 
 def _first_hits(origins, directions, radius, segments):
     """Distance from each origin along its (unit) direction to the first segment it meets, CRS units; NaN
-    when none. The rays first reach :data:`FIRST_REACH` radii, those that meet nothing then the whole extent."""
+    when none (or without a direction). The rays first reach :data:`FIRST_REACH` radii, those that meet nothing then the whole extent."""
     tree = shapely.STRtree(shapely.linestrings(segments))
     distances = np.full(len(origins), np.nan)
     extent = float(np.ptp(segments.reshape(-1, 2), axis=0).max()) * 2.0
-    todo = np.arange(len(origins))
+    todo = np.flatnonzero(np.isfinite(origins).all(axis=1) & np.isfinite(directions).all(axis=1))
     for reach in (FIRST_REACH * radius, np.full(len(origins), extent)):
         if len(todo) == 0:
             break
