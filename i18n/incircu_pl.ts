@@ -4,52 +4,52 @@
 <context>
     <name>IncirCuAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="158"/>
+        <location filename="../algorithms/base.py" line="159"/>
         <source>Centerlines</source>
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="369"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="391"/>
+        <location filename="../algorithms/base.py" line="420"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="401"/>
+        <location filename="../algorithms/base.py" line="444"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="401"/>
+        <location filename="../algorithms/base.py" line="444"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="406"/>
+        <location filename="../algorithms/base.py" line="449"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="406"/>
+        <location filename="../algorithms/base.py" line="449"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -94,77 +94,72 @@
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="369"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="391"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="391"/>
+        <location filename="../algorithms/base.py" line="420"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/outputs.py" line="202"/>
+        <location filename="../algorithms/outputs.py" line="211"/>
         <source>Could not write a centerline: {}</source>
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
-        <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
-        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="267"/>
+        <location filename="../algorithms/base.py" line="268"/>
         <source>Largest deviation from the exact medial axis (0 = automatic)</source>
         <translation>Największe odchylenie od dokładnej osi środkowej (0 = automatycznie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="278"/>
+        <location filename="../algorithms/base.py" line="279"/>
         <source>Fixed boundary sampling distance (0 = adaptive)</source>
         <translation>Stały odstęp próbkowania brzegu (0 = adaptacyjnie)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="278"/>
+        <location filename="../algorithms/base.py" line="279"/>
         <source>The paper&apos;s fixed sampling: a sample every this distance along both sides, in layer units (metres for a layer in degrees), giving many evenly spaced vertices. Use it to reproduce the paper or for a dense line; 0 uses the adaptive sampling bounded by the largest deviation. Give either this or the largest deviation, not both.</source>
         <translation>Stałe próbkowanie z artykułu: próbka co tę odległość wzdłuż obu stron, w jednostkach warstwy (metry dla warstwy w stopniach), dające wiele równomiernie rozmieszczonych wierzchołków. Do odtworzenia artykułu lub gęstej linii; 0 oznacza próbkowanie adaptacyjne ograniczone największym odchyleniem. Podaj to albo największe odchylenie, nie oba.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="302"/>
+        <location filename="../algorithms/base.py" line="303"/>
         <source>Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary sampling distance, not both; set the other one to 0.</source>
         <translation>Podaj największe odchylenie od osi (próbkowanie adaptacyjne) albo stały odstęp próbkowania brzegu, nie oba; ustaw drugie na 0.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="312"/>
+        <location filename="../algorithms/base.py" line="313"/>
         <source>Split point snapping tolerance</source>
         <translation>Tolerancja przyciągania punktów podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="312"/>
+        <location filename="../algorithms/base.py" line="313"/>
         <source>Largest distance between a split point and the polygon&apos;s exterior ring, layer units (metres for a layer in degrees); 0 = a millionth of the polygon&apos;s size.</source>
         <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="334"/>
+        <location filename="../algorithms/base.py" line="335"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="333"/>
+        <location filename="../algorithms/base.py" line="334"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="333"/>
+        <location filename="../algorithms/base.py" line="334"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
@@ -179,32 +174,32 @@
         <translation>jednostki warstwy</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="134"/>
+        <location filename="../algorithms/base.py" line="135"/>
         <source>{}: {} has no field &apos;{}&apos;; its fields are: {}.</source>
         <translation>{}: {} nie ma pola '{}'; jego pola to: {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="134"/>
+        <location filename="../algorithms/base.py" line="135"/>
         <source>none</source>
         <translation>brak</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="197"/>
         <source>Parameters</source>
         <translation>Parametry</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="197"/>
         <source>Advanced parameters</source>
         <translation>Parametry zaawansowane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="196"/>
+        <location filename="../algorithms/base.py" line="197"/>
         <source>Outputs</source>
         <translation>Wyniki</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="267"/>
+        <location filename="../algorithms/base.py" line="268"/>
         <source>Largest distance between the centerline and the exact medial axis, in layer units (metres for a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the shape&apos;s typical width: the right choice for maps.</source>
         <translation>Największa odległość linii środkowej od dokładnej osi środkowej, w jednostkach warstwy (metry dla warstwy w stopniach): linia zachowuje tylko wierzchołki potrzebne, by pozostać tak blisko, każdy leżący dokładnie na osi, i nigdy nie wychodzi poza kształt, niezależnie od wartości. 0 oznacza 1/200 typowej szerokości kształtu: właściwy wybór dla map.</translation>
     </message>
@@ -212,6 +207,51 @@
         <location filename="../algorithms/running.py" line="118"/>
         <source>Z values are ignored: &apos;{}&apos; has Z, but the centerline is computed in the plane and written without Z (its M values, when stored, are the local width).</source>
         <translation>Wartości Z są pomijane: '{}' ma współrzędną Z, ale linia środkowa jest obliczana na płaszczyźnie i zapisywana bez Z (jej wartości M, jeśli są zapisywane, to lokalna szerokość).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="352"/>
+        <source>Straight run-out (for maps)</source>
+        <translation>Prosto wzdłuż osi koryta (do map)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="352"/>
+        <source>Exact medial axis</source>
+        <translation>Dokładna oś środkowa</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="353"/>
+        <source>Line ends</source>
+        <translation>Końce linii</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="353"/>
+        <source>How the line reaches its ends where the channel is cut at a slant. {runout}: straight on along the channel&apos;s axis from where the channel is first full width to {where}; its vertices there are not on the medial axis (their widths are interpolated). {axis}: the exact middle of the shape, which leaves a slanted end square to it and then bends onto the channel&apos;s axis.</source>
+        <translation>Jak linia dochodzi do swoich końców tam, gdzie koryto jest ucięte ukośnie. {runout}: prosto dalej wzdłuż osi koryta od miejsca, w którym koryto po raz pierwszy ma pełną szerokość, do {where}; jej wierzchołki na tym odcinku nie leżą na osi środkowej (ich szerokości są interpolowane). {axis}: dokładny środek kształtu, który odchodzi od ukośnego końca prostopadle do niego, a potem skręca na oś koryta.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="391"/>
+        <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width, chainage and method (their &apos;Transect shape&apos;: straight or nearest).</source>
+        <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością, kilometrażem i metodą (ich 'Kształt przekroju': straight lub nearest).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="430"/>
+        <source>Straight, square to the centerline</source>
+        <translation>Prosty, prostopadły do linii środkowej</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="430"/>
+        <source>To the nearest bank points</source>
+        <translation>Do najbliższych punktów brzegów</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="431"/>
+        <source>Transect shape</source>
+        <translation>Kształt przekroju</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="431"/>
+        <source>{straight}: one straight cross-section square to the centerline&apos;s direction, smoothed over about one width, from where it first meets a bank or island on one side to the other: what is surveyed in the field; its width is its length, at least the local width (method &apos;straight&apos;). {nearest}: from the centerline to the nearest point of each bank, the incircle&apos;s diameter; it bends at the centerline where the banks are not parallel (method &apos;nearest&apos;).</source>
+        <translation>{straight}: jeden prosty przekrój prostopadły do kierunku linii środkowej, wygładzonego na długości około jednej szerokości, od miejsca, w którym po jednej stronie pierwszy raz napotyka brzeg lub wyspę, do takiego samego miejsca po drugiej stronie: taki, jaki mierzy się w terenie; jego szerokość to jego długość, nie mniejsza niż lokalna szerokość (metoda 'straight'). {nearest}: od linii środkowej do najbliższego punktu każdego brzegu, czyli średnica okręgu wpisanego; załamuje się na linii środkowej tam, gdzie brzegi nie są równoległe (metoda 'nearest').</translation>
     </message>
 </context>
 <context>
@@ -242,7 +282,7 @@
         <translation>Pole parujące drugich linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="124"/>
+        <location filename="../algorithms/lines_centerline.py" line="127"/>
         <source>{} holds no line.</source>
         <translation>{} nie zawiera żadnej linii.</translation>
     </message>
@@ -292,29 +332,34 @@
         <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty. Wartości Z (obu warstw) są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="109"/>
+        <location filename="../algorithms/lines_centerline.py" line="110"/>
         <source>Give both {} and {}, or neither (then each layer holds one line).</source>
         <translation>Podaj oba pola, {} i {}, albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="127"/>
+        <location filename="../algorithms/lines_centerline.py" line="130"/>
         <source>{} holds {} separate lines that do not join into one; give {} and {} to pair them, or merge them into one line.</source>
         <translation>{} zawiera linie, które nie łączą się w jedną (jest ich {}); podaj {} i {}, aby je sparować, albo scal je w jedną linię.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="146"/>
+        <location filename="../algorithms/lines_centerline.py" line="149"/>
         <source>No line in {} has {} = {!r}; line {} of {} unused.</source>
         <translation>Żadna linia w {} nie ma {} = {!r}; linia {} z {} nie została użyta.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="156"/>
+        <location filename="../algorithms/lines_centerline.py" line="159"/>
         <source>no line in {} has {} = {!r}</source>
         <translation>żadna linia w {} nie ma {} = {!r}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="174"/>
+        <location filename="../algorithms/lines_centerline.py" line="177"/>
         <source>the lines of {} with this pairing value do not join into one</source>
         <translation>linie z {} o tej wartości parowania nie łączą się w jedną</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="98"/>
+        <source>the middle of the gap between the two lines&apos; ends</source>
+        <translation>środka przerwy między końcami obu linii</translation>
     </message>
 </context>
 <context>
@@ -335,12 +380,12 @@
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="127"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="127"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
@@ -415,24 +460,29 @@
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="235"/>
+        <location filename="../algorithms/polygon_centerline.py" line="242"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="214"/>
+        <location filename="../algorithms/polygon_centerline.py" line="221"/>
         <source>{} Its ends were found automatically.</source>
         <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="237"/>
+        <location filename="../algorithms/polygon_centerline.py" line="244"/>
         <source>{} holds no point.</source>
         <translation>{} nie zawiera żadnego punktu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <location filename="../algorithms/polygon_centerline.py" line="245"/>
         <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
         <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <source>the split point, or for automatic ends where that line meets the outline</source>
+        <translation>punktu podziału, a dla końców automatycznych do miejsca, w którym ta prosta przecina obrys</translation>
     </message>
 </context>
 <context>
@@ -488,12 +538,12 @@
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="112"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="112"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
@@ -508,9 +558,14 @@
         <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="99"/>
+        <location filename="../algorithms/polygon_network.py" line="100"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
         <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub 'junction'), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="98"/>
+        <source>the split point (junctions are left as they are)</source>
+        <translation>punktu podziału (węzły pozostają bez zmian)</translation>
     </message>
 </context>
 </TS>
