@@ -256,6 +256,48 @@ def test_lines_without_pair_fields_use_one_line_per_layer(provider):
     assert as_shapely(feature.geometry()).hausdorff_distance(axis) < 0.1 * width
 
 
+@pytest.mark.parametrize("folder", [DATA, REPOSITORY / "scripts" / "data"])
+def test_bank_lines_sharing_a_field_are_paired_by_it_with_the_defaults(provider, folder):
+    suffix = "_2180" if folder == DATA else ""
+    results, feedback = run(
+        "linescenterline",
+        {"LINES_A": str(folder / f"banks_a{suffix}.geojson"), "LINES_B": str(folder / f"banks_b{suffix}.geojson")},
+    )
+    assert results["CENTERLINE_COUNT"] == 2
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert any("'reach'" in info for info in feedback.infos), feedback.infos
+    for reach, feature in features_by(results["OUTPUT"], "reach").items():
+        axis, width = bank_axes()[reach]
+        assert as_shapely(feature.geometry()).hausdorff_distance(axis) < 0.1 * width
+
+
+@pytest.mark.parametrize("folder", [DATA, REPOSITORY / "scripts" / "data"])
+def test_the_polygon_sample_runs_with_the_defaults(provider, folder):
+    path = folder / ("river_2180.geojson" if folder == DATA else "river.geojson")
+    results, feedback = run("polygoncenterline", {"INPUT": str(path)})
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert results["CENTERLINE_COUNT"] == layer_from(path).featureCount()
+    assert not feedback.warnings
+
+
+def layer_from(path):
+    opened = QgsVectorLayer(str(path), path.name, "ogr")
+    assert opened.isValid(), path
+    return opened
+
+
+def test_a_shared_field_without_a_common_value_pairs_nothing(provider):
+    # 'side' is in both layers but 'left' is never 'right': no guess, one line per layer is asked for.
+    line_a, line_b = layer("banks_a_2180.geojson"), layer("banks_b_2180.geojson")
+    for opened in (line_a, line_b):
+        opened.setSubsetString("\"reach\" = 'R2'")
+        opened.startEditing()
+        opened.deleteAttribute(opened.fields().lookupField("reach"))
+    results, feedback = run("linescenterline", {"LINES_A": line_a, "LINES_B": line_b})
+    assert results["CENTERLINE_COUNT"] == 1
+    assert not any("pair" in info for info in feedback.infos), feedback.infos
+
+
 def test_bad_features_are_skipped_with_their_id(provider):
     results, feedback = run(
         "polygoncenterline",
@@ -340,7 +382,7 @@ def test_unpaired_line_is_skipped(provider):
         ),
         (
             "linescenterline",
-            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")},
+            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")},
             "separate lines",
         ),
     ],
