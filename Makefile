@@ -81,7 +81,7 @@ CORE_DOCTESTS := --doctest-modules incircu_plugin/core
 # bad input must get its typed error without GEOS warnings: these tests run again on the Shapely built for QGIS's
 # own Python on the system GEOS where make setup built one (where QGIS uses the distribution's Shapely, nothing is
 # built and this pass is skipped).
-GEOS_TESTS := tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py tests/test_core_errors.py
+GEOS_TESTS := tests/test_core_warnings.py tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py tests/test_core_errors.py
 test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests $(CORE_DOCTESTS)
 	@if [ -d $(QGIS_SITE)/shapely ]; then \

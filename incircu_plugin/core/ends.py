@@ -358,7 +358,9 @@ def _frames(polygons, guides, boxes):
     geometries = np.empty(len(chosen), dtype=object)
     geometries[:] = [_without_small_islands(polygons[index]) for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
-    local = counterclockwise(_moved(geometries, origins[owner], scales[owner, None]))
+    # Without repeated vertices: GEOS 3.11 locates a point on a zero-length segment by dividing 0 by 0, and
+    # numpy then warns "invalid value encountered in line_locate_point" (the answer is right).
+    local = counterclockwise(shapely.remove_repeated_points(_moved(geometries, origins[owner], scales[owner, None])))
     for number, index in enumerate(chosen):
         origin, scale = boxes[index]
         guide = guides[index]
@@ -543,6 +545,7 @@ def _on_ring(exterior, xy, tolerance):
     point = Point(xy)
     if exterior.distance(point) <= tolerance:
         return xy
+    exterior = shapely.remove_repeated_points(exterior)  # see _frames
     point = exterior.interpolate(exterior.project(point))
     if exterior.distance(point) <= tolerance:
         return np.asarray(point.coords[0])
