@@ -17,7 +17,9 @@ from qgis.PyQt.QtCore import QCoreApplication
 from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages, width_statistics
 from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
+from .running import part_number
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
+from .units import length_decimals, rounded
 
 DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
 #: A feature id: 64 bits, as QGIS's (a GeoPackage's fid may pass 2**31).
@@ -33,7 +35,9 @@ def make_fields(definitions):
 
 
 #: Fields added to the input attributes on every centerline (lengths and widths in layer units, metres when geographic).
-#: ``source_fid`` is the id of the input feature, as on the optional outputs.
+#: ``source_fid`` is the id of the input feature, as on the optional outputs; ``part`` (on those) numbers a
+#: feature's parts from 1, as messages do. Lengths, widths, chainages and radii are rounded to the millimetre
+#: (:func:`.units.length_decimals`).
 CENTERLINE_FIELDS = (
     ("source_fid", FEATURE_ID),
     ("length", DOUBLE),
@@ -64,6 +68,18 @@ TRANSECT_FIELDS = (
     ("chainage", DOUBLE),
     ("width", DOUBLE),
 )
+
+
+#: The attributes of :func:`width_statistics` that are lengths (rounded to :func:`.units.length_decimals`).
+LENGTH_STATISTICS = ("length", "width_min", "width_mean", "width_max")
+
+
+def rounded_statistics(results, decimals):
+    """Return the core's ``width_statistics`` of ``results`` with its lengths rounded to ``decimals``."""
+    statistics = width_statistics(results)
+    return {
+        name: rounded(value, decimals) if name in LENGTH_STATISTICS else value for name, value in statistics.items()
+    }
 
 
 def release_sinks(writer, names):
@@ -126,6 +142,7 @@ class CenterlineWriter:
         self.add_m = add_m
         self.multi = multi
         self.transect_interval = transect_interval
+        self.decimals = length_decimals(crs)
         line_type = WkbType.MultiLineString if multi else WkbType.LineString
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
@@ -193,7 +210,7 @@ class CenterlineWriter:
                 coordinates = frame.to_layer(shapely.get_coordinates(result.line))
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
-            statistics = width_statistics([result for _, result in group])
+            statistics = rounded_statistics([result for _, result in group], self.decimals)
             feature = QgsFeature(self.fields)
             feature.setGeometry(geometry)
             added = {"source_fid": source_fid, **statistics}
@@ -209,6 +226,7 @@ class CenterlineWriter:
             self._write_extras(source_fid, part_index, result, frame)
 
     def _write_extras(self, source_fid, part_index, result, frame):
+        part, decimals = part_number(part_index), self.decimals
         if self.vertices is not None:
             coordinates = frame.to_layer(shapely.get_coordinates(result.line))
             for index, ((x, y), chainage, radius) in enumerate(
@@ -217,14 +235,23 @@ class CenterlineWriter:
                 point = QgsFeature()
                 point.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(float(x), float(y))))
                 point.setAttributes(
-                    [source_fid, part_index, index, float(chainage), float(radius), 2.0 * float(radius)]
+                    [
+                        source_fid,
+                        part,
+                        index,
+                        rounded(chainage, decimals),
+                        rounded(radius, decimals),
+                        rounded(2.0 * float(radius), decimals),
+                    ]
                 )
                 self.vertices.addFeature(point, QgsFeatureSink.Flag.FastInsert)
         if self.circles is not None:
             for circle in incircle_polygons(result):
                 disc = QgsFeature()
                 disc.setGeometry(from_shapely(frame.to_layer(circle.polygon)))
-                disc.setAttributes([source_fid, part_index, circle.chainage, circle.radius])
+                disc.setAttributes(
+                    [source_fid, part, rounded(circle.chainage, decimals), rounded(circle.radius, decimals)]
+                )
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
             interval = self.transect_interval or width_statistics([result])["width_mean"] or 0.0
@@ -233,5 +260,7 @@ class CenterlineWriter:
             for transect in transects(result, interval):
                 section = QgsFeature()
                 section.setGeometry(from_shapely(frame.to_layer(transect.line)))
-                section.setAttributes([source_fid, part_index, transect.chainage, transect.width])
+                section.setAttributes(
+                    [source_fid, part, rounded(transect.chainage, decimals), rounded(transect.width, decimals)]
+                )
                 self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)

@@ -50,6 +50,12 @@ class FeatureTask:
     skip_reason: Optional[str] = None
 
 
+def part_number(part_index):
+    """Return how messages and the ``part`` fields number the part the core indexes ``part_index`` (from 0): from
+    1, as QGIS counts parts elsewhere ("part 1" is the first)."""
+    return part_index + 1
+
+
 def no_geometry():
     """Why a feature without geometry is skipped (translated)."""
     return QCoreApplication.translate("IncirCuAlgorithm", "the feature has no geometry")
@@ -212,10 +218,12 @@ class FeatureRun:
 
     @staticmethod
     def where(feature_id, part_index):
-        """Return ``"7"`` or ``"7 (part 1)"`` for messages."""
+        """Return ``"7"``, or ``"7 (part 1)"`` for the first part (``part_index`` 0), for messages."""
         if part_index is None:
             return str(feature_id)
-        return QCoreApplication.translate("IncirCuAlgorithm", "{} (part {})").format(feature_id, part_index)
+        return QCoreApplication.translate("IncirCuAlgorithm", "{} (part {})").format(
+            feature_id, part_number(part_index)
+        )
 
     def compute(self, feature_id, part_index, function, *args, **kwargs):
         """Call a core function for one feature (part); a core error becomes a skip warning.
