@@ -19,6 +19,7 @@ from qgis.PyQt.QtGui import QIcon
 
 from .compat import DistanceUnit, ProcessingParameterFlag, ProcessingSourceType
 from .running import FeatureRun
+from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES
 
 PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
 ICON_PATH = PLUGIN_FOLDER / "icons"
@@ -169,6 +170,43 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     def centerline_output_name(self):
         """Return the label of the centerline output, also the name of the layer it loads as."""
         raise NotImplementedError
+
+    def input_layer_name(self, parameters, context):
+        """Return the name of the input layer (``LENGTH_PARENT``) as the output layers' names start with it."""
+        source = self.parameterAsSource(parameters, self.LENGTH_PARENT, context)
+        return source.sourceName() if source is not None else ""
+
+    def rule_name(self, parameters, context):
+        """Return what decided the lines of this run, for the output layers' names ("main stem"); empty when
+        there is no choice to name."""
+        return ""
+
+    def centerline_layer_word(self):
+        """Return what the centerline output holds, as its loaded layer's name says it ("centerlines")."""
+        return self.tr("centerlines")
+
+    def output_layer_names(self, parameters, context):
+        """Return the names of the loaded output layers and of their run's group: the input layer's name, what
+        the layer holds and the rule used ("reservoirs — centerlines (main stem)").
+
+        Returns
+        -------
+        tuple of (dict, str)
+            Rank of :mod:`.styles` (``CENTERLINE``...) -> layer name, and the group's name (the centerlines').
+        """
+        layer, rule = self.input_layer_name(parameters, context), self.rule_name(parameters, context)
+        words = {
+            CENTERLINE: self.centerline_layer_word(),
+            VERTICES: self.tr("vertices"),
+            TRANSECTS: self.tr("transects"),
+            INCIRCLES: self.tr("incircles"),
+        }
+        if rule:
+            template = self.tr("{layer} — {output} ({rule})")
+        else:
+            template = self.tr("{layer} — {output}")
+        names = {rank: template.format(layer=layer, output=word, rule=rule) for rank, word in words.items()}
+        return names, names[CENTERLINE]
 
     def helpUrl(self):
         return f"{homepage()}#{self.HELP_ANCHOR}"

@@ -99,6 +99,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_sampling_parameters()
         self.add_result_parameters()
 
+    def input_layer_name(self, parameters, context):
+        """Return the names of both line layers, "banks_a / banks_b", as the output layers' names start."""
+        names = [self.parameterAsSource(parameters, name, context) for name in (self.LINES_A, self.LINES_B)]
+        return " / ".join(source.sourceName() for source in names if source is not None)
+
     def process_features(self, run, parameters, context, feedback):
         line_type = GeometryType.Line
         source_a = run.source(self.LINES_A, line_type)

@@ -62,7 +62,7 @@ class NetworkWriter:
         self.decimals = length_decimals(crs)
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
-        style_outputs_on_load(context, {CENTERLINE: self.sink_id})
+        style_outputs_on_load(context, {CENTERLINE: self.sink_id}, *algorithm.output_layer_names(parameters, context))
 
     def close(self):
         """Flush and release the branch layer's sink, which closes (commits) its file; safe to call twice."""

@@ -171,6 +171,7 @@ class CenterlineWriter:
                 TRANSECTS: self.transects_id,
                 INCIRCLES: self.circles_id,
             },
+            *algorithm.output_layer_names(parameters, context),
         )
 
     def close(self):

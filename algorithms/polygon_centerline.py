@@ -132,6 +132,15 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_result_parameters()
 
+    def rule_name(self, parameters, context):
+        """Return where the ends of this run come from: "split points", "guide lines", or the automatic rule."""
+        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
+            return self.tr("split points")
+        if parameters.get(self.GUIDE_LINES) not in (None, ""):
+            return self.tr("guide lines")
+        rules = (self.tr("main stem"), self.tr("longest path"))
+        return rules[self.parameterAsEnum(parameters, self.END_RULE, context)]
+
     def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, GeometryType.Polygon)
         run.warn_dropped_z(source)

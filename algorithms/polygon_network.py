@@ -34,6 +34,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def shortDescription(self):
         return self.tr("The medial-axis tree between the arm ends of a confluence, a delta or a road junction.")
 
+    def centerline_layer_word(self):
+        return self.tr("centerline network")
+
     def centerline_output_name(self):
         """Return the label of the branch output."""
         return self.tr("Network branches")

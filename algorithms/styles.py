@@ -1,8 +1,10 @@
 """How the outputs look when QGIS loads them: one symbol per output, stacked so that each one shows.
 
 The algorithm attaches a layer post-processor to every output QGIS will load on completion (the toolbox
-dialog, the modeler, ``processing.runAndLoadResults``). When the layer is loaded it gets its symbol, and the
-outputs of the run are ordered in the layer tree: vertices on top, then the centerline, transects and incircles.
+dialog, the modeler, ``processing.runAndLoadResults``). When the layer is loaded it gets its symbol and its
+name (the input layer's and the rule used: "reservoirs — centerlines (main stem)"), and the outputs of the run
+are kept together and in order in the layer tree: in a group of their own (named as the centerlines) at the top
+of the tree when the run loads more than one, vertices on top, then the centerline, transects and incircles.
 Outputs written to files and opened later keep QGIS's default style.
 """
 
@@ -10,6 +12,7 @@ import uuid
 
 from qgis.core import (
     QgsFillSymbol,
+    QgsLayerTree,
     QgsLineSymbol,
     QgsMarkerSymbol,
     QgsProcessingLayerPostProcessorInterface,
@@ -133,44 +136,76 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
         :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS` or :data:`INCIRCLES`.
     """
 
-    def __init__(self, run_id, rank):
+    def __init__(self, run_id, rank, name=None, group=None):
         super().__init__()
         self.run_id = run_id
         self.rank = rank
+        self.name = name
+        self.group = group
 
     def postProcessLayer(self, layer, context, feedback):
         layer.setRenderer(output_renderer(self.rank))
+        if self.name:
+            layer.setName(self.name)
         layer.setCustomProperty(RUN_PROPERTY, self.run_id)
         layer.setCustomProperty(RANK_PROPERTY, self.rank)
         layer.triggerRepaint()
-        order_run_layers(context.project() or QgsProject.instance(), self.run_id)
+        order_run_layers(context.project() or QgsProject.instance(), self.run_id, self.group)
 
 
-def order_run_layers(project, run_id):
-    """Order the loaded outputs of one run in the layer tree: lowest rank on top, at the place of the topmost.
+def run_group(root, run_id):
+    """Return the layer tree group holding the outputs of run ``run_id`` anywhere under ``root``, or None."""
+    for child in root.children():
+        if QgsLayerTree.isGroup(child):
+            if child.customProperty(RUN_PROPERTY) == run_id:
+                return child
+            found = run_group(child, run_id)
+            if found is not None:
+                return found
+    return None
 
-    Every post-processor calls this after styling its layer, so the order is right once the last output of
-    the run is loaded, whatever order QGIS loads them in.
+
+def order_run_layers(project, run_id, group_name=None):
+    """Keep the loaded outputs of one run together in the layer tree, lowest rank on top.
+
+    With ``group_name`` they go into a group of that name made for the run at the top of the group QGIS loaded
+    the first of them into (the tree's root, or Processing's results group): a later run's group comes above.
+    Without, they are ordered at the place of the topmost. Every post-processor calls this after styling its
+    layer, so the order is right once the last output of the run is loaded, whatever order QGIS loads them in.
     """
-    by_parent = {}
-    for node in project.layerTreeRoot().findLayers():
-        layer = node.layer()
-        if layer is not None and layer.customProperty(RUN_PROPERTY) == run_id:
+    root = project.layerTreeRoot()
+    nodes = [
+        node
+        for node in root.findLayers()
+        if node.layer() is not None and node.layer().customProperty(RUN_PROPERTY) == run_id
+    ]
+    if not nodes:
+        return
+    if group_name:
+        group = run_group(root, run_id)
+        if group is None:
+            group = nodes[0].parent().insertGroup(0, group_name)
+            group.setCustomProperty(RUN_PROPERTY, run_id)
+        by_parent = {id(group): (group, nodes)}
+    else:
+        by_parent = {}
+        for node in nodes:
             by_parent.setdefault(id(node.parent()), (node.parent(), []))[1].append(node)
-    for parent, nodes in by_parent.values():
+    for parent, members in by_parent.values():
         children = parent.children()
-        top = min(children.index(node) for node in nodes)
-        ordered = sorted(nodes, key=lambda node: int(node.layer().customProperty(RANK_PROPERTY)))
-        if [children[top + offset] for offset in range(len(ordered))] == ordered:
+        inside = [node for node in members if node in children]
+        top = min((children.index(node) for node in inside), default=0)
+        ordered = sorted(members, key=lambda node: int(node.layer().customProperty(RANK_PROPERTY)))
+        if len(inside) == len(members) and [children[top + offset] for offset in range(len(ordered))] == ordered:
             continue
         # A layer leaves the project when its last tree node goes: insert the moved copies before removing.
         for offset, node in enumerate(ordered):
             parent.insertChildNode(top + offset, node.clone())
-        for node in nodes:
-            parent.removeChildNode(node)
+        for node in members:
+            node.parent().removeChildNode(node)
 
 
-def style_outputs_on_load(context, destinations):
+def style_outputs_on_load(context, destinations, names=None, group=None):
     """Attach an :class:`OutputStyler` to every output that QGIS will load when the algorithm finishes.
 
     Parameters
@@ -179,10 +214,19 @@ def style_outputs_on_load(context, destinations):
     destinations : dict
         Rank (:data:`CENTERLINE`...) -> destination id returned by ``parameterAsSink`` (``None`` when the
         output is skipped).
+    names : dict, optional
+        Rank -> the name the loaded layer gets (QGIS's own name for the output where absent).
+    group : str, optional
+        Name of the group the outputs of the run go into when it loads more than one.
     """
     run_id = uuid.uuid4().hex
-    for rank, destination in destinations.items():
-        if destination and context.willLoadLayerOnCompletion(destination):
-            styler = OutputStyler(run_id, rank)
-            LIVE_STYLERS.append(styler)
-            context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)
+    names = names or {}
+    loaded = {
+        rank: destination
+        for rank, destination in destinations.items()
+        if destination and context.willLoadLayerOnCompletion(destination)
+    }
+    for rank, destination in loaded.items():
+        styler = OutputStyler(run_id, rank, names.get(rank), group if len(loaded) > 1 else None)
+        LIVE_STYLERS.append(styler)
+        context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)

@@ -38,7 +38,7 @@ CASES = {
             "TRANSECT_INTERVAL": 150.0,
         },
         ["river_2180.geojson"],
-        "Centerlines of polygons",
+        "river — {} (split points)",
     ),
     "linescenterline": (
         {
@@ -49,7 +49,7 @@ CASES = {
             "TRANSECT_INTERVAL": 150.0,
         },
         ["banks_a_2180.geojson", "banks_b_2180.geojson"],
-        "Centerline between lines",
+        "banks_a / banks_b — {}",
     ),
 }
 
@@ -121,6 +121,27 @@ def sampled_pixels(image, step=2):
     return [QColor(image.pixel(x, y)) for y in range(0, image.height(), step) for x in range(0, image.width(), step)]
 
 
+def test_a_new_run_comes_in_its_own_group_above_the_last(provider):
+    project = QgsProject.instance()
+    project.clear()
+    river = QgsVectorLayer(str(DATA / "river_2180.geojson"), "reservoirs", "ogr")
+    project.addMapLayer(river)
+    run_as_the_dialog_does("incircu:polygoncenterline", {"INPUT": river}, project)
+    run_as_the_dialog_does("incircu:polygoncenterline", {"INPUT": river, "END_RULE": 1}, project)
+    groups = [node for node in project.layerTreeRoot().children() if node.nodeType() == 0]
+    assert [group.name() for group in groups] == [
+        "reservoirs — centerlines (longest path)",
+        "reservoirs — centerlines (main stem)",
+    ]
+    for group, rule in zip(groups, ("longest path", "main stem")):
+        names = [node.name() for node in group.children()]
+        assert names == [
+            f"reservoirs — {word} ({rule})" for word in ("vertices", "centerlines", "transects", "incircles")
+        ]
+    assert project.layerTreeRoot().children()[-1].name() == "reservoirs", "the input stays below the results"
+    project.clear()
+
+
 @pytest.mark.parametrize("algorithm_name", sorted(CASES))
 def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algorithm_name):
     parameters, inputs, centerline_name = CASES[algorithm_name]
@@ -143,8 +164,11 @@ def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algori
 
     layers = project.layerTreeRoot().layerOrder()
     names = [layer.name() for layer in layers]
-    expected = ["Centerline vertices", centerline_name, "Transects", "Incircles"]
+    expected = [centerline_name.format(word) for word in ("vertices", "centerlines", "transects", "incircles")]
     assert names[: len(expected)] == expected, "the vertices lie on the centerline: they must be drawn above it"
+    group = project.layerTreeRoot().children()[0]
+    assert group.name() == centerline_name.format("centerlines")
+    assert [node.name() for node in group.children()] == expected, "the outputs of a run are kept together"
     assert len(set(names)) == len(names)
     vertices, centerline, transects, circles = layers[:4]
     for layer, symbol_type in ((centerline, "line"), (vertices, "marker"), (transects, "line"), (circles, "fill")):
