@@ -1,5 +1,6 @@
 """Output layers of the IncirCu algorithms: fields, statistics and the writing of core results."""
 
+import numpy as np
 import shapely
 from qgis.core import (
     QgsFeature,
@@ -18,8 +19,8 @@ from ..incircu_plugin.core.widths import incircle_polygons, transects, vertex_ch
 from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
 from .running import part_number
-from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
-from .units import length_decimals, rounded
+from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, readable_scale, style_outputs_on_load
+from .units import length_decimals, metres_per_unit, rounded
 
 DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
 #: A feature id: 64 bits, as QGIS's (a GeoPackage's fid may pass 2**31).
@@ -163,7 +164,10 @@ class CenterlineWriter:
             crs,
         )
         self.centerline_count = 0
-        style_outputs_on_load(
+        self.metres_per_unit = metres_per_unit(crs)
+        #: Per part written, the median spacing of its vertices and the median diameter of its incircles.
+        self.vertex_spacings, self.circle_diameters = [], []
+        self.stylers = style_outputs_on_load(
             context,
             {
                 CENTERLINE: self.sink_id,
@@ -175,8 +179,13 @@ class CenterlineWriter:
         )
 
     def close(self):
-        """Flush and release every sink, which closes (commits) its file; safe to call twice."""
+        """Flush and release every sink, which closes (commits) its file; safe to call twice. The vertices and
+        incircles, once loaded, are shown only at the scales where they can be read (:func:`.styles.readable_scale`
+        of the typical vertex spacing and incircle diameter)."""
         release_sinks(self, ("sink", "vertices", "circles", "transects"))
+        for rank, lengths in ((VERTICES, self.vertex_spacings), (INCIRCLES, self.circle_diameters)):
+            if rank in self.stylers and lengths:
+                self.stylers[rank].minimum_scale = readable_scale(float(np.median(lengths)), self.metres_per_unit)
 
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
@@ -228,6 +237,12 @@ class CenterlineWriter:
 
     def _write_extras(self, source_fid, part_index, result, frame):
         part, decimals = part_number(part_index), self.decimals
+        if VERTICES in self.stylers:
+            spacings = np.diff(vertex_chainages(result))
+            if np.any(spacings > 0.0):
+                self.vertex_spacings.append(float(np.median(spacings[spacings > 0.0])))
+        if INCIRCLES in self.stylers and np.any(result.radii > 0.0):
+            self.circle_diameters.append(2.0 * float(np.median(result.radii[result.radii > 0.0])))
         if self.vertices is not None:
             coordinates = frame.to_layer(shapely.get_coordinates(result.line))
             for index, ((x, y), chainage, radius) in enumerate(

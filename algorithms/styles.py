@@ -8,6 +8,7 @@ of the tree when the run loads more than one, vertices on top, then the centerli
 Outputs written to files and opened later keep QGIS's default style.
 """
 
+import math
 import uuid
 
 from qgis.core import (
@@ -17,9 +18,12 @@ from qgis.core import (
     QgsMarkerSymbol,
     QgsProcessingLayerPostProcessorInterface,
     QgsProject,
+    QgsProperty,
     QgsSimpleLineSymbolLayer,
     QgsSingleSymbolRenderer,
 )
+
+from .compat import SymbolLayerProperty
 
 #: Layer custom properties marking the outputs of one run and their place in the layer tree.
 RUN_PROPERTY = "incircu/run"
@@ -32,19 +36,37 @@ LIVE_STYLERS = []
 VERTICES, CENTERLINE, TRANSECTS, INCIRCLES = range(4)
 
 CENTERLINE_COLOUR = "215,25,40,255"
-CASING_COLOUR = "255,255,255,210"
+CASING_COLOUR = "255,255,255,230"
 VERTEX_COLOUR = "80,10,20,255"
-TRANSECT_COLOUR = "30,120,30,230"
+#: Dark orange: far from the blues and greens of water fills and from the centerline's red.
+TRANSECT_COLOUR = "200,95,0,255"
 INCIRCLE_COLOUR = "30,100,200,230"
 
-#: Widths in millimetres on the map: a line narrow enough to leave the polygon's fill readable around it, even
-#: where a river is a few millimetres wide at the scale of a whole-country map.
-CENTERLINE_WIDTH_MM = 0.6
-CASING_WIDTH_MM = 1.0
+#: Widths in millimetres on the map at large scales (1:100,000 and larger), narrowing on a log scale to their
+#: small-scale values at 1:10,000,000, where a river is a few millimetres wide and a wide line would hide it.
+CENTERLINE_WIDTH_MM = 0.55
+SMALL_SCALE_CENTERLINE_WIDTH_MM = 0.25
+#: The white casing shows this far beyond the line on each side: 0.4 mm, one and a half pixels at 96 dpi.
+CASING_MARGIN_MM = 0.4
+SMALL_SCALE_CASING_MARGIN_MM = 0.2
+CASING_WIDTH_MM = CENTERLINE_WIDTH_MM + 2 * CASING_MARGIN_MM
 TRANSECT_WIDTH_MM = 0.26
 INCIRCLE_WIDTH_MM = 0.26
 #: Diameter of the vertex dots, millimetres: wider than the casing, so each dot stands out of the line.
-VERTEX_SIZE_MM = 1.6
+VERTEX_SIZE_MM = 2.0
+#: Scale denominators between which the widths narrow (log-linear).
+LARGE_SCALE, SMALL_SCALE = 1e5, 1e7
+#: Vertices and incircles are shown only at scales where the typical vertex spacing and incircle diameter
+#: are at least this many millimetres on the map: closer dots merge into a bead string, smaller circles into a
+#: smudge.
+READABLE_MM = 3.0
+
+
+def by_scale(large, small):
+    """Return an expression of a width, millimetres: ``large`` at :data:`LARGE_SCALE` and larger scales, ``small``
+    at :data:`SMALL_SCALE` and smaller, log-linear between (the legend, without a map scale, uses ``large``)."""
+    low, high = math.log10(LARGE_SCALE), math.log10(SMALL_SCALE)
+    return f"coalesce(scale_linear(log10(@map_scale), {low:g}, {high:g}, {large:g}, {small:g}), {large:g})"
 
 
 def round_line_properties(colour, width):
@@ -58,12 +80,19 @@ def round_line_properties(colour, width):
     }
 
 
+def scaled_width(symbol_layer, large, small):
+    """Make the stroke width of ``symbol_layer`` follow the map scale (see :func:`by_scale`)."""
+    symbol_layer.setDataDefinedProperty(
+        SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(by_scale(large, small))
+    )
+
+
 def centerline_symbol():
-    """A red line in a thin white casing, readable over any fill and leaving the polygon's fill visible.
+    """A red line in a white casing, readable over any fill and leaving the polygon's fill visible.
 
     The local width (the M values) is not drawn: a band as wide as the channel repaints the polygon itself,
     and its buffer would be recomputed for every feature at every redraw. The width stays in the M values,
-    the vertices' ``width`` field and the incircles.
+    the vertices' ``width`` field and the incircles. Both widths narrow at small scales (:func:`by_scale`).
 
     Returns
     -------
@@ -72,7 +101,13 @@ def centerline_symbol():
         is drawn before any line and centerlines meeting at a junction stay joined.
     """
     symbol = QgsLineSymbol.createSimple(round_line_properties(CASING_COLOUR, CASING_WIDTH_MM))
+    scaled_width(
+        symbol.symbolLayer(0),
+        CASING_WIDTH_MM,
+        SMALL_SCALE_CENTERLINE_WIDTH_MM + 2 * SMALL_SCALE_CASING_MARGIN_MM,
+    )
     line = QgsSimpleLineSymbolLayer.create(round_line_properties(CENTERLINE_COLOUR, CENTERLINE_WIDTH_MM))
+    scaled_width(line, CENTERLINE_WIDTH_MM, SMALL_SCALE_CENTERLINE_WIDTH_MM)
     line.setRenderingPass(1)
     symbol.appendSymbolLayer(line)
     return symbol
@@ -91,10 +126,12 @@ def incircle_symbol():
 
 
 def transect_symbol():
-    """Thin green lines: another hue than the centerline and than the dark outlines of polygons."""
-    return QgsLineSymbol.createSimple(
+    """Thin dark orange lines: they show on a blue or green water fill and are not the centerline's red."""
+    symbol = QgsLineSymbol.createSimple(
         {"line_color": TRANSECT_COLOUR, "line_width": str(TRANSECT_WIDTH_MM), "line_width_unit": "MM"}
     )
+    scaled_width(symbol.symbolLayer(0), TRANSECT_WIDTH_MM, INCIRCLE_WIDTH_MM / 2.0)
+    return symbol
 
 
 def vertex_symbol():
@@ -110,6 +147,14 @@ def vertex_symbol():
             "outline_width_unit": "MM",
         }
     )
+
+
+def readable_scale(typical_length, metres_per_unit):
+    """Return the smallest scale (largest denominator) at which ``typical_length`` (layer units) is
+    :data:`READABLE_MM` on the map; 0 (always shown) when it is unknown."""
+    if not typical_length or not metres_per_unit or typical_length <= 0.0:
+        return 0.0
+    return typical_length * metres_per_unit / (READABLE_MM / 1000.0)
 
 
 def output_renderer(rank):
@@ -142,9 +187,14 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
         self.rank = rank
         self.name = name
         self.group = group
+        #: Scale denominator beyond which the layer is hidden (0: always shown); set by the writer.
+        self.minimum_scale = 0.0
 
     def postProcessLayer(self, layer, context, feedback):
         layer.setRenderer(output_renderer(self.rank))
+        if self.minimum_scale > 0.0:
+            layer.setScaleBasedVisibility(True)
+            layer.setMinimumScale(self.minimum_scale)
         if self.name:
             layer.setName(self.name)
         layer.setCustomProperty(RUN_PROPERTY, self.run_id)
@@ -218,6 +268,11 @@ def style_outputs_on_load(context, destinations, names=None, group=None):
         Rank -> the name the loaded layer gets (QGIS's own name for the output where absent).
     group : str, optional
         Name of the group the outputs of the run go into when it loads more than one.
+
+    Returns
+    -------
+    dict
+        Rank -> the :class:`OutputStyler` of each output that will be loaded (to set its ``minimum_scale``).
     """
     run_id = uuid.uuid4().hex
     names = names or {}
@@ -226,7 +281,9 @@ def style_outputs_on_load(context, destinations, names=None, group=None):
         for rank, destination in destinations.items()
         if destination and context.willLoadLayerOnCompletion(destination)
     }
+    stylers = {}
     for rank, destination in loaded.items():
-        styler = OutputStyler(run_id, rank, names.get(rank), group if len(loaded) > 1 else None)
+        styler = stylers[rank] = OutputStyler(run_id, rank, names.get(rank), group if len(loaded) > 1 else None)
         LIVE_STYLERS.append(styler)
         context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)
+    return stylers

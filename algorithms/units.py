@@ -33,13 +33,22 @@ def length_decimals(crs):
     layer of ``crs``: as many as resolve a millimetre in :func:`reading_unit` (3 for metres, and so for a layer
     in degrees, whose lengths are metres; 3 for feet; 6 for kilometres); None (not rounded) when the unit is
     unknown."""
+    metres = metres_per_unit(crs)
+    if metres is None:
+        return None
+    return max(0, math.ceil(-math.log10(ATTRIBUTE_RESOLUTION / metres) - 1e-9))
+
+
+def metres_per_unit(crs):
+    """Return the metres in one :func:`reading_unit` of a layer of ``crs``; None when the unit is unknown (or
+    not a length)."""
     if not crs.isValid():
         return None
     unit = reading_unit(crs)
     metres = QgsUnitTypes.fromUnitToUnitFactor(unit, DistanceUnit.Meters)
     if QgsUnitTypes.unitType(unit) != QgsUnitTypes.unitType(DistanceUnit.Meters) or not metres > 0.0:
         return None
-    return max(0, math.ceil(-math.log10(ATTRIBUTE_RESOLUTION / metres) - 1e-9))
+    return metres
 
 
 def rounded(value, decimals):
