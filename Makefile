@@ -113,7 +113,7 @@ deploy: package
 	@echo "Deployed to $(QGIS_PROFILE_DIR)/python/plugins/$(PLUGIN); enable IncirCu in the Plugin Manager."
 
 transup:
-	pylupdate5 -noobsolete incircu_plugin/plugin.py incircu_plugin/provider.py algorithms/*.py -ts i18n/incircu_pl.ts
+	pylupdate5 -noobsolete incircu_plugin/plugin.py incircu_plugin/provider.py incircu_plugin/core/errors.py algorithms/*.py -ts i18n/incircu_pl.ts
 
 transcompile:
 	lrelease i18n/*.ts

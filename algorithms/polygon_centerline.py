@@ -212,7 +212,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         for outcome in outcomes:
             part_index = outcome.part_index if several else None
             if outcome.error is not None:
-                run.skip(feature_id, str(outcome.error), part_index)
+                run.skip(feature_id, outcome.error, part_index)
                 continue
             for note in getattr(outcome.result, "notes", ()):
                 run.warn_feature(feature_id, note, part_index)

@@ -147,7 +147,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             parts = []
             for outcome in outcomes or ():
                 if outcome.error is not None:
-                    run.skip(feature.id(), str(outcome.error), outcome.part_index if several else None)
+                    run.skip(feature.id(), outcome.error, outcome.part_index if several else None)
                     continue
                 parts.append((outcome.part_index, outcome.result, ids))
             run.write(feature, parts)

@@ -13,6 +13,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import GeometryType, ProcessingFeatureSourceFlag
 from .dependencies import require_core
+from .messages import core_text
 
 GEOMETRY_TYPE_NAMES = {
     GeometryType.Point: "point",
@@ -192,7 +193,8 @@ class FeatureRun:
         return not self.feedback.isCanceled()
 
     def skip(self, feature_id, reason, part_index=None):
-        """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's."""
+        """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's
+        (its error or message, worded in the user's language)."""
         self.skipped += 1
         self.warn(
             QCoreApplication.translate("IncirCuAlgorithm", "Feature {} skipped: {}").format(
@@ -209,8 +211,10 @@ class FeatureRun:
         )
 
     def named_lengths(self, message):
-        """Return ``message`` with the core's lengths named in the working frame's unit (once there is one)."""
-        return message if self.frame is None else self.frame.named_lengths(message)
+        """Return ``message`` (the core's ``Message`` or error, or text) in the user's language (see
+        :func:`.messages.core_text`), its lengths named in the working frame's unit (once there is one)."""
+        text = core_text(message, None if self.frame is None else self.frame.unit)
+        return text if self.frame is None else self.frame.named_lengths(text)
 
     def warn(self, message):
         """Show a warning in the log."""
@@ -245,7 +249,7 @@ class FeatureRun:
         """Skip a feature (part) whose computation raised ``error``: a core error says why; another exception
         is unexpected and asks for a report."""
         if isinstance(error, self.core.IncirCuError):
-            self.skip(feature_id, str(error), part_index)
+            self.skip(feature_id, error, part_index)
             return
         self.skip(
             feature_id,
