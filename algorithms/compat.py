@@ -23,7 +23,16 @@ else:
         Line=QgsWkbTypes.GeometryType.LineGeometry,
         Polygon=QgsWkbTypes.GeometryType.PolygonGeometry,
     )
-    DistanceUnit = SimpleNamespace(Meters=QgsUnitTypes.DistanceUnit.DistanceMeters)
+    DistanceUnit = SimpleNamespace(
+        Meters=QgsUnitTypes.DistanceUnit.DistanceMeters,
+        Kilometers=QgsUnitTypes.DistanceUnit.DistanceKilometers,
+        Centimeters=QgsUnitTypes.DistanceUnit.DistanceCentimeters,
+        Millimeters=QgsUnitTypes.DistanceUnit.DistanceMillimeters,
+        Feet=QgsUnitTypes.DistanceUnit.DistanceFeet,
+        Yards=QgsUnitTypes.DistanceUnit.DistanceYards,
+        Miles=QgsUnitTypes.DistanceUnit.DistanceMiles,
+        NauticalMiles=QgsUnitTypes.DistanceUnit.DistanceNauticalMiles,
+    )
 
 if QGIS_VERSION >= 33600:
     ProcessingSourceType = Qgis.ProcessingSourceType

@@ -127,7 +127,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                     self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B)
                 )
             )
-        sampling = self.sampling_options(parameters, context)
+        sampling = self.feature_sampling(parameters, context)
         crs = source_a.sourceCrs()
         run.open_outputs(source_a.fields(), crs, multi=False)
 
@@ -167,7 +167,8 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         return run.finish()
 
     def _task(self, run, key, first, geometries, groups_b, field_b, sampling):
-        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines."""
+        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines;
+        ``sampling(feature)`` gives the sampling options of a feature of LINES_A."""
         if key not in groups_b:
             return run.skip_task(
                 first, self.tr("no line in {} has {} = {!r}").format(self.parameter_label(self.LINES_B), field_b, key)
@@ -180,7 +181,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             return run.skip_task(first, self.not_joined(self.LINES_B))
         run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
         steps = run.core.lines_centerline_steps(
-            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, **sampling
+            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, **sampling(first)
         )
         vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
         return run.task(first, steps, partial(self._parts, run, first.id()), vertices)

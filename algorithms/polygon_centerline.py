@@ -100,7 +100,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             self.ISLANDS,
         )
         main_stem, longest_path = self.tr("Main stem (widest path)"), self.tr("Longest path")
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterEnum(
                 self.END_RULE, self.tr("Automatic ends"), [main_stem, longest_path], defaultValue=0
             ),
@@ -123,7 +123,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected."
             ),
         )
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
                 "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
@@ -148,8 +148,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         split_source = None
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
             split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        sampling = self.sampling_options(parameters, context)
+        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
+        sampling_of = self.feature_sampling(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
@@ -167,11 +167,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
                     guides.append(guide_feature.geometry())
 
-        options = dict(sampling, islands=islands, end_rule=end_rule, snap_tolerance=snap_tolerance or None)
-
         def task(feature):
             if not run.has_geometry(feature):
                 return run.skip_task(feature, no_geometry())
+            snap_tolerance = snap_tolerance_of(feature)
+            options = dict(
+                sampling_of(feature), islands=islands, end_rule=end_rule, snap_tolerance=snap_tolerance or None
+            )
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)

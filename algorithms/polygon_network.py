@@ -121,8 +121,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         run.warn_dropped_z(source)
         split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
-        snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        sampling = self.sampling_options(parameters, context)
+        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
+        sampling_of = self.feature_sampling(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
@@ -130,6 +130,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         split_points = SplitPoints(split_source, crs, context, id_field)
 
         for feature in run.features(source):
+            snap_tolerance = snap_tolerance_of(feature)
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, ids = split_points.near(geometry, snap_tolerance, run.frame)
@@ -140,7 +141,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 run.frame.to_core(geometry),
                 candidates,
                 snap_tolerance=snap_tolerance or None,
-                **sampling,
+                **sampling_of(feature),
                 islands=islands,
             )
             several = len(outcomes or ()) > 1

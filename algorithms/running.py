@@ -87,6 +87,8 @@ class FeatureRun:
         self.writer = None
         self.skipped = 0
         self.z_warned = False
+        #: ``value(feature)`` of ``TRANSECT_INTERVAL`` once the centerline outputs are open (None before).
+        self.transect_interval_of = None
         self.progress_base = 0.0
         self.progress_step = 100.0
 
@@ -136,6 +138,7 @@ class FeatureRun:
         from .outputs import CenterlineWriter
 
         algorithm, parameters, context = self.algorithm, self.parameters, self.context
+        self.transect_interval_of = algorithm.length_of_feature(parameters, algorithm.TRANSECT_INTERVAL, context)
         interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
         add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
         self.use_writer(CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval), crs)
@@ -345,7 +348,9 @@ class FeatureRun:
             self.write(task.feature, task.parts(outcome))
 
     def write(self, feature, parts):
-        """Write the results of one input feature."""
+        """Write the results of one input feature (its transects at its own interval where it is data-defined)."""
+        if self.transect_interval_of is not None:
+            self.writer.transect_interval = self.transect_interval_of(feature)
         self.writer.write(feature.attributes(), feature.id(), parts, self.frame)
 
     def close(self):

@@ -217,8 +217,13 @@ def write_model(path):
             "INPUT": QgsProcessingModelChildParameterSource.fromChildOutput("fix", "OUTPUT"),
             "SPLIT_POINTS": QgsProcessingModelChildParameterSource.fromModelParameter("split_points"),
             "SNAP_TOLERANCE": QgsProcessingModelChildParameterSource.fromStaticValue(1.0),
+            "TOLERANCE": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
             "SPACING": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
+            "ISLANDS": QgsProcessingModelChildParameterSource.fromStaticValue(0),
+            "END_RULE": QgsProcessingModelChildParameterSource.fromStaticValue(0),
+            "SEPARATE_PARTS": QgsProcessingModelChildParameterSource.fromStaticValue(False),
             "ADD_M": QgsProcessingModelChildParameterSource.fromStaticValue(False),
+            "TRANSECT_INTERVAL": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
         },
         (260, 260),
     )

@@ -256,4 +256,4 @@ def test_distances_carry_the_unit_of_the_input_layer(provider):
             assert definition.parentParameterName() == layer, name
             assert definition.minimum() == 0.0
             assert definition.defaultValue() is not None
-            assert definition.flags() & ProcessingParameterFlag.Optional, "a default makes it optional in the modeler"
+            assert not definition.flags() & ProcessingParameterFlag.Optional, "a length always has a value"

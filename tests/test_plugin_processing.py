@@ -522,6 +522,43 @@ def test_parts_are_numbered_from_one_in_fields_and_messages(provider):
     )
 
 
+def test_lengths_take_a_value_per_feature_where_data_defined(provider):
+    from qgis.core import QgsProperty
+
+    def per_river(meander, island_channel):
+        return QgsProperty.fromExpression(f"CASE WHEN \"name\" = 'Meander' THEN {meander} ELSE {island_channel} END")
+
+    common = {
+        "INPUT": str(DATA / "river_2180.geojson"),
+        "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+        "OUTPUT_TRANSECTS": "memory:",
+    }
+    fixed, _ = run("polygoncenterline", common)
+    varied, _ = run(
+        "polygoncenterline",
+        {
+            **common,
+            "TRANSECT_INTERVAL": per_river(100.0, 50.0),
+            "TOLERANCE": per_river(0.0, RIVER_WIDTH / 4.0),
+        },
+    )
+    fixed_lines, varied_lines = features_by(fixed["OUTPUT"], "name"), features_by(varied["OUTPUT"], "name")
+    for name, interval in (("Meander", 100.0), ("Island channel", 50.0)):
+        feature = varied_lines[name]
+        count = sum(1 for t in varied["OUTPUT_TRANSECTS"].getFeatures() if t["source_fid"] == feature["source_fid"])
+        # Every interval along the line but the end caps (each at most a width long).
+        span = (feature["length"] - 2.0 * feature["width_max"], feature["length"])
+        assert span[0] / interval - 1.0 <= count <= span[1] / interval + 1.0, name
+    # A coarser tolerance on one river only: fewer vertices there, the same line on the other.
+    assert varied_lines["Island channel"]["n_vertices"] < fixed_lines["Island channel"]["n_vertices"]
+    assert varied_lines["Meander"]["n_vertices"] == fixed_lines["Meander"]["n_vertices"]
+    # The meander's split points lie 0.4 m outside it: beyond a snap tolerance of a millimetre, its ends are
+    # found automatically, and the warning says so.
+    snapped, feedback = run("polygoncenterline", {**common, "SNAP_TOLERANCE": per_river(0.001, SNAP_TOLERANCE)})
+    assert not fixed_lines["Meander"]["ends_found"] and features_by(snapped["OUTPUT"], "name")["Meander"]["ends_found"]
+    assert any("found automatically" in warning for warning in feedback.warnings), feedback.warnings
+
+
 def test_progress_rises_to_100_percent(provider):
     class ProgressRecorder(RecordingFeedback):
         def __init__(self):
