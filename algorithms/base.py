@@ -1,6 +1,5 @@
 """Base class of the IncirCu algorithms: translation, instances, help, icon and shared parameters."""
 
-import configparser
 import html
 import math
 from pathlib import Path
@@ -23,18 +22,12 @@ from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 from .compat import DistanceUnit, ProcessingParameterFlag, ProcessingSourceType
+from .help_page import anchor, help_url
 from .running import FeatureRun
 from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES
 
 PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
 ICON_PATH = PLUGIN_FOLDER / "icons"
-
-
-def homepage():
-    """Return the project's web address (``homepage`` of ``metadata.txt``), where the README is shown."""
-    parser = configparser.ConfigParser(interpolation=None)
-    parser.read(PLUGIN_FOLDER / "metadata.txt", encoding="utf-8")
-    return parser["general"]["homepage"]
 
 
 def length_parameter(name, description, default, parent_layer, dynamic=False):
@@ -76,7 +69,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     """Common behaviour of the IncirCu Processing algorithms.
 
     Subclasses define ``name``, ``displayName``, ``shortDescription``, ``summary``,
-    ``centerline_output_name``, ``initAlgorithm``, ``HELP_ANCHOR`` and ``LENGTH_PARENT``, and add their
+    ``centerline_output_name``, ``initAlgorithm`` and ``LENGTH_PARENT``, and add their
     parameters with :meth:`add_parameter`, which also records the parameter's help text; the dialog's help
     panel (``shortHelpString``) shows the summary and then every parameter and output with that text.
     """
@@ -94,8 +87,6 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
 
     #: File name of the algorithm's icon under ``icons/``.
     ICON = "incircu.svg"
-    #: Anchor of the algorithm's section in the README (GitHub's heading slug).
-    HELP_ANCHOR = ""
     #: Name of the input layer whose units the length parameters are in (metres when it is in degrees).
     LENGTH_PARENT = ""
 
@@ -222,7 +213,8 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         return names, names[CENTERLINE]
 
     def helpUrl(self):
-        return f"{homepage()}#{self.HELP_ANCHOR}"
+        """Return the section of the help page shipped with the plugin (opens offline)."""
+        return help_url(anchor(self))
 
     def summary(self):
         """Return what the algorithm does, translated: the first paragraph of its help."""
@@ -348,9 +340,10 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             0.0,
             dynamic=True,
             help_text=self.tr(
-                "Largest distance between the centerline and the exact medial axis, in layer units (metres for "
-                "a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying "
-                "exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the "
+                "Every vertex is the centre of a circle touching both sides; the line of the centres of all such "
+                "circles is the exact medial axis. This is the largest distance between the centerline and that "
+                "axis, in layer units (metres for a layer in degrees): the line keeps only the vertices it needs to "
+                "stay that close, each lying exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the "
                 "shape's typical width: the right choice for maps. It may differ per feature (data-defined).",
             ),
         )

@@ -24,7 +24,6 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     PAIR_FIELD_B = "PAIR_FIELD_B"
 
     ICON = "linescenterline.svg"
-    HELP_ANCHOR = "centerline-between-two-lines--incirculinescenterline"
     LENGTH_PARENT = LINES_A
 
     def name(self):

@@ -29,7 +29,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     GUIDE_LINES = "GUIDE_LINES"
 
     ICON = "polygoncenterline.svg"
-    HELP_ANCHOR = "centerline-of-polygons--incircupolygoncenterline"
     LENGTH_PARENT = INPUT
 
     def name(self):

@@ -22,7 +22,6 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
     ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
-    HELP_ANCHOR = "centerline-network-of-polygons--incircupolygonnetwork"
     LENGTH_PARENT = INPUT
 
     def name(self):
@@ -47,9 +46,12 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def summary(self):
         return self.tr(
             "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
-            "that separates the outline's chains between consecutive split points: a tree with one end at each split "
-            "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
+            "outline (the ends of the arms of a confluence, a delta or a road junction), lines down the middle of "
+            "its arms, joined where the arms meet. The split points cut the outline into pieces, the chains, one "
+            "between each two neighbouring points; each line runs through the centres of circles touching two "
+            "chains, a path of the shape's medial axis (the line of the centres of all circles touching two sides): "
+            "a tree with one end at each split point and junctions where a circle touches three chains, without side"
+            " branches. Each branch is one line "
             "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
             " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
             "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
