@@ -13,6 +13,7 @@ label is QGIS's own (translated "[optional]", help text as tooltip), so it reads
 from processing.gui.wrappers import DIALOG_STANDARD, WidgetWrapper, WidgetWrapperFactory, dialogTypes
 from qgis.core import QgsProcessingParameters, QgsProperty, QgsUnitTypes
 from qgis.gui import QgsAbstractProcessingParameterWidgetWrapper, QgsDoubleSpinBox, QgsPropertyOverrideButton
+from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtWidgets import QComboBox, QHBoxLayout, QWidget
 
 from .compat import DistanceUnit
@@ -34,18 +35,28 @@ UNITS = (
 )
 
 
+def unit_name(unit):
+    """Return the name of a length unit in the drop-down: British spelling, as the help ("metres"), translated;
+    QGIS's name for a unit not listed in :data:`UNITS`."""
+    names = {
+        DistanceUnit.Meters: QCoreApplication.translate("IncirCuAlgorithm", "metres"),
+        DistanceUnit.Kilometers: QCoreApplication.translate("IncirCuAlgorithm", "kilometres"),
+        DistanceUnit.Feet: QCoreApplication.translate("IncirCuAlgorithm", "feet"),
+        DistanceUnit.Yards: QCoreApplication.translate("IncirCuAlgorithm", "yards"),
+        DistanceUnit.Miles: QCoreApplication.translate("IncirCuAlgorithm", "miles"),
+        DistanceUnit.NauticalMiles: QCoreApplication.translate("IncirCuAlgorithm", "nautical miles"),
+        DistanceUnit.Centimeters: QCoreApplication.translate("IncirCuAlgorithm", "centimetres"),
+        DistanceUnit.Millimeters: QCoreApplication.translate("IncirCuAlgorithm", "millimetres"),
+    }
+    return names.get(unit) or QgsUnitTypes.toString(unit)
+
+
 def default_wrapper(parameter, dialog, row, col):
     """Return the widget wrapper QGIS itself gives ``parameter`` in ``dialog``."""
     plain = parameter.clone()
     plain.setMetadata({})
     PLAIN_PARAMETERS.append(plain)
     return WidgetWrapperFactory.create_wrapper(plain, dialog, row, col)
-
-
-def unit_text(crs):
-    """Return the name of the unit IncirCu reads a length in for a layer of ``crs`` (:func:`.units.reading_unit`),
-    empty for an invalid CRS."""
-    return QgsUnitTypes.toString(reading_unit(crs)) if crs.isValid() else ""
 
 
 class LengthSpinBox(QgsDoubleSpinBox):
@@ -122,7 +133,7 @@ class LengthWidgetWrapper(WidgetWrapper):
         self.base_unit = base_unit
         self.unit_box.clear()
         for unit in (base_unit, *(unit for unit in UNITS if unit != base_unit)):
-            self.unit_box.addItem(QgsUnitTypes.toString(unit), unit)
+            self.unit_box.addItem(unit_name(unit), unit)
         self.unit_box.setCurrentIndex(0)
 
     def show_override(self):

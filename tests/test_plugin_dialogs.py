@@ -61,7 +61,7 @@ def test_toolbox_dialog_renders_with_help_and_units(toolbox_dialog, artifacts, a
         assert parameter.name() in panel.wrappers, parameter.name()
     assert dialog.buttonBox().button(QDialogButtonBox.StandardButton.Help) is not None
     for name in distances:
-        assert unit_shown(dialog, name) == ["meters"], name
+        assert unit_shown(dialog, name) == ["metres"], name
     path = artifacts / f"dialog_{algorithm.name()}.png"
     assert dialog.grab().save(str(path))
     image = QImage(str(path))
@@ -73,7 +73,7 @@ def test_toolbox_dialog_renders_with_help_and_units(toolbox_dialog, artifacts, a
 def test_lengths_of_a_layer_in_degrees_are_metres(toolbox_dialog, artifacts):
     _, dialog = toolbox_dialog("polygoncenterline", "river_4326.geojson")
     for name in DIALOGS["polygoncenterline"][1]:
-        assert unit_shown(dialog, name) == ["meters"], name
+        assert unit_shown(dialog, name) == ["metres"], name
     dialog.mainWidget().wrappers["SNAP_TOLERANCE"].setValue(2.5)
     parameters = dialog.createProcessingParameters()
     assert parameters["SNAP_TOLERANCE"] == 2.5
@@ -176,9 +176,9 @@ def test_a_length_in_another_unit_is_read_in_the_layers(toolbox_dialog):
     _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
     wrapper = dialog.mainWidget().wrappers["TRANSECT_INTERVAL"]
     units = [wrapper.unit_box.itemText(index) for index in range(wrapper.unit_box.count())]
-    assert units[0] == "meters" and {"kilometers", "feet"} <= set(units)
+    assert units[0] == "metres" and {"kilometres", "feet"} <= set(units)
     wrapper.setValue(0.25)
-    wrapper.unit_box.setCurrentIndex(units.index("kilometers"))
+    wrapper.unit_box.setCurrentIndex(units.index("kilometres"))
     assert dialog.createProcessingParameters()["TRANSECT_INTERVAL"] == pytest.approx(250.0)
     wrapper.unit_box.setCurrentIndex(units.index("feet"))
     assert dialog.createProcessingParameters()["TRANSECT_INTERVAL"] == pytest.approx(0.25 * 0.3048)
