@@ -23,6 +23,8 @@ DEFAULT_VALUES = {"units": "CRS units", "fix_geometries": "Fix geometries"}
 
 #: Every message of the core by code: an English template of ``str.format`` fields. Fields holding a
 #: :class:`Message` (a noun such as "the first line") are worded in the caller's language too.
+# fmt: off
+# (No comma after a template: pylupdate5 would not read the call.)
 MESSAGES = {
     # Nouns filled in as {name} or {subject}.
     "noun_polygon": QT_TRANSLATE_NOOP("IncirCuCore", "polygon"),
@@ -60,7 +62,7 @@ MESSAGES = {
     ),
     "spacing_too_small": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "A spacing of {spacing:.6g} would need about {planned:.3g} samples (at most {limit:.3g}); use a larger spacing.",
+        "A spacing of {spacing:.6g} would need about {planned:.3g} samples (at most {limit:.3g}); use a larger spacing."
     ),
     "tolerance_and_spacing": QT_TRANSLATE_NOOP(
         "IncirCuCore", "Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling)."
@@ -68,7 +70,7 @@ MESSAGES = {
     "tolerance_too_fine": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The tolerance {tolerance:.6g} is below {relative:g} of the shape's extent ({extent:.6g}): float64 cannot "
-        "place vertices that finely. Use at least {least:.6g} ({units}), or 0 for the automatic tolerance.",
+        "place vertices that finely. Use at least {least:.6g} ({units}), or 0 for the automatic tolerance."
     ),
     "circle_segments": QT_TRANSLATE_NOOP(
         "IncirCuCore", "A circle needs at least 1 segment per quarter, got {value!r}."
@@ -97,18 +99,18 @@ MESSAGES = {
     "coordinate_too_large": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {limit:.0e}: products of such coordinates "
-        "overflow float64. Use a projected CRS in metres, or scale the data down.",
+        "overflow float64. Use a projected CRS in metres, or scale the data down."
     ),
     "extent_too_small": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The {name} is {extent:.3g} across, under {limit:.0e}: products of its lengths underflow float64. Scale the "
-        "data up (use smaller units).",
+        "data up (use smaller units)."
     ),
     "extent_too_small_here": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The {name} is {extent:.3g} across at coordinates of magnitude {magnitude:.3g}: float64 cannot resolve a "
         "shape smaller than {limit:.0e} of its distance from the origin. Shift the data nearer the origin (subtract "
-        "an offset) or use a local projected CRS.",
+        "an offset) or use a local projected CRS."
     ),
     "polygon_size_absurd": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon's size ({size:.3g}) is absurd for its coordinates' units; reproject or rescale it."
@@ -129,11 +131,11 @@ MESSAGES = {
     ),
     "centre_not_degrees": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "The projection centre ({longitude!r}, {latitude!r}) is not a longitude and a latitude in degrees.",
+        "The projection centre ({longitude!r}, {latitude!r}) is not a longitude and a latitude in degrees."
     ),
     "point_not_projected": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "A point could not be projected (a NaN or infinite coordinate, or a latitude beyond 90 degrees).",
+        "A point could not be projected (a NaN or infinite coordinate, or a latitude beyond 90 degrees)."
     ),
     "unknown_crs": QT_TRANSLATE_NOOP("IncirCuCore", "Unknown CRS {crs!r}: {error}"),
     "not_geographic_crs": QT_TRANSLATE_NOOP("IncirCuCore", "{name} is not a geographic CRS."),
@@ -154,24 +156,24 @@ MESSAGES = {
         "IncirCuCore",
         "The first line is {length:.6g} long, {ratio:.3g} times the second one ({other:.6g} {units}): it runs on "
         "beyond the other, where the region between them is closed by the straight gap between their ends, and the "
-        "centerline follows that gap there. Cut the lines to where they face each other.",
+        "centerline follows that gap there. Cut the lines to where they face each other."
     ),
     "second_line_longer": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The second line is {length:.6g} long, {ratio:.3g} times the first one ({other:.6g} {units}): it runs on "
         "beyond the other, where the region between them is closed by the straight gap between their ends, and the "
-        "centerline follows that gap there. Cut the lines to where they face each other.",
+        "centerline follows that gap there. Cut the lines to where they face each other."
     ),
     # Split points and ends.
     "split_point_far": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "Split point {point} is {distance:.6g} {units} away from the polygon's boundary; the snap tolerance is "
-        "{tolerance:.6g} {units}. Move the point onto the boundary or raise the tolerance.",
+        "{tolerance:.6g} {units}. Move the point onto the boundary or raise the tolerance."
     ),
     "split_point_count": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "{subject} has {count} {points} within the snap tolerance ({tolerance:.6g} {units}) of its exterior ring; "
-        "{needed}.",
+        "{needed}."
     ),
     "split_points_not_two": QT_TRANSLATE_NOOP(
         "IncirCuCore", "A polygon needs exactly 2 split points on its boundary, got {count}."
@@ -186,7 +188,7 @@ MESSAGES = {
     "split_point_kind": QT_TRANSLATE_NOOP("IncirCuCore", "Split point {index} must be a point, not a {kind}."),
     "split_point_number": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "Split point {index} is the number {value!r}: give a sequence of points, such as [(x1, y1), (x2, y2)].",
+        "Split point {index} is the number {value!r}: give a sequence of points, such as [(x1, y1), (x2, y2)]."
     ),
     "split_point_pair": QT_TRANSLATE_NOOP(
         "IncirCuCore", "Split point {index} must be an (x, y) pair of numbers, got {value!r}."
@@ -194,7 +196,7 @@ MESSAGES = {
     "split_point_not_finite": QT_TRANSLATE_NOOP("IncirCuCore", "A split point has a NaN or infinite coordinate."),
     "ends_coincide": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "The ends found automatically coincide at {point}: the shape has no clear ends. Give two split points.",
+        "The ends found automatically coincide at {point}: the shape has no clear ends. Give two split points."
     ),
     "ends_geos": QT_TRANSLATE_NOOP("IncirCuCore", "The ends of the polygon cannot be found: {error}."),
     "ends_too_thin": QT_TRANSLATE_NOOP(
@@ -213,7 +215,7 @@ MESSAGES = {
     "island_blocked": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The island at {point} cannot be joined to a bank without crossing another island; use the option to "
-        "ignore islands.",
+        "ignore islands."
     ),
     # Computed lines.
     "centerline_not_finite": QT_TRANSLATE_NOOP(
@@ -223,18 +225,18 @@ MESSAGES = {
         "IncirCuCore",
         "The computed centerline crosses itself, so none is returned. This happens where the shape has no single "
         "axis near the ends (a compact shape, or a split point in a corner): move the split points to the middle of "
-        "the ends, or change the spacing.",
+        "the ends, or change the spacing."
     ),
     "centerline_crosses_at": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The computed centerline crosses itself at {point}, so none is returned. This happens where the shape has "
         "no single axis near the ends (a compact shape, or a split point in a corner): move the split points to the "
-        "middle of the ends, or change the spacing.",
+        "middle of the ends, or change the spacing."
     ),
     "centerline_leaves": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The computed centerline leaves the polygon at {point} ({outside:.6g} outside), so none is returned. Give "
-        "split points, or change the tolerance.",
+        "split points, or change the tolerance."
     ),
     # Networks.
     "network_too_few_points": QT_TRANSLATE_NOOP(
@@ -249,12 +251,12 @@ MESSAGES = {
     "junction_out_of_order": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The junction near {point} could not be located: its circle holds another chain out of order. Move the "
-        "split points farther out along the arms.",
+        "split points farther out along the arms."
     ),
     "junction_several_contacts": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "The junction near {point} could not be located: its circle touches a chain at several places or a split "
-        "point itself. Move the split points farther out along the arms.",
+        "point itself. Move the split points farther out along the arms."
     ),
     "branch_too_short": QT_TRANSLATE_NOOP(
         "IncirCuCore", "A branch of the network has fewer than 2 vertices; try a smaller spacing."
@@ -263,9 +265,10 @@ MESSAGES = {
         "IncirCuCore",
         "The network found is not a tree with one end at each of the {k} split points ({branches} branches, "
         "{ends} ends, {weak} junctions of degree below 3); a split point may lie on a junction's circle: move the "
-        "split points farther out along the arms.",
+        "split points farther out along the arms."
     ),
 }
+# fmt: on
 
 #: The noun of each ``name`` the core's functions take for what they check ("first line"...).
 NOUNS = {
