@@ -17,7 +17,7 @@ from .outputs import (
     rounded_statistics,
 )
 from .styles import CENTERLINE, style_outputs_on_load
-from .units import length_decimals
+from .units import length_decimals, metres_per_unit
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
 #: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
@@ -62,7 +62,12 @@ class NetworkWriter:
         self.decimals = length_decimals(crs)
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
-        style_outputs_on_load(context, {CENTERLINE: self.sink_id}, *algorithm.output_layer_names(parameters, context))
+        style_outputs_on_load(
+            context,
+            {CENTERLINE: self.sink_id},
+            *algorithm.output_layer_names(parameters, context),
+            metres_per_unit=metres_per_unit(crs),
+        )
 
     def close(self):
         """Flush and release the branch layer's sink, which closes (commits) its file; safe to call twice."""

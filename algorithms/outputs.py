@@ -176,6 +176,7 @@ class CenterlineWriter:
                 INCIRCLES: self.circles_id,
             },
             *algorithm.output_layer_names(parameters, context),
+            metres_per_unit=self.metres_per_unit,
         )
 
     def close(self):
@@ -183,9 +184,16 @@ class CenterlineWriter:
         incircles, once loaded, are shown only at the scales where they can be read (:func:`.styles.readable_scale`
         of the typical vertex spacing and incircle diameter)."""
         release_sinks(self, ("sink", "vertices", "circles", "transects"))
-        for rank, lengths in ((VERTICES, self.vertex_spacings), (INCIRCLES, self.circle_diameters)):
-            if rank in self.stylers and lengths:
-                self.stylers[rank].minimum_scale = readable_scale(float(np.median(lengths)), self.metres_per_unit)
+        scales = {
+            name: readable_scale(float(np.median(lengths)), self.metres_per_unit) if lengths else 0.0
+            for name, lengths in (("spacing", self.vertex_spacings), ("diameter", self.circle_diameters))
+        }
+        if VERTICES in self.stylers:
+            self.stylers[VERTICES].minimum_scale = scales["spacing"]
+        if INCIRCLES in self.stylers:
+            # A circle is read where it is wide enough and apart enough from the next (they overlap).
+            readable = [scale for scale in scales.values() if scale > 0.0]
+            self.stylers[INCIRCLES].minimum_scale = min(readable, default=0.0)
 
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
@@ -237,7 +245,7 @@ class CenterlineWriter:
 
     def _write_extras(self, source_fid, part_index, result, frame):
         part, decimals = part_number(part_index), self.decimals
-        if VERTICES in self.stylers:
+        if VERTICES in self.stylers or INCIRCLES in self.stylers:
             spacings = np.diff(vertex_chainages(result))
             if np.any(spacings > 0.0):
                 self.vertex_spacings.append(float(np.median(spacings[spacings > 0.0])))

@@ -54,6 +54,9 @@ TRANSECT_WIDTH_MM = 0.26
 INCIRCLE_WIDTH_MM = 0.26
 #: Diameter of the vertex dots, millimetres: wider than the casing, so each dot stands out of the line.
 VERTEX_SIZE_MM = 2.0
+#: Share of its channel's drawn mean width a centerline takes at most, and the width it never goes under, mm.
+CHANNEL_SHARE = 0.25
+THINNEST_MM = 0.15
 #: Scale denominators between which the widths narrow (log-linear).
 LARGE_SCALE, SMALL_SCALE = 1e5, 1e7
 #: Vertices and incircles are shown only at scales where the typical vertex spacing and incircle diameter
@@ -87,12 +90,21 @@ def scaled_width(symbol_layer, large, small):
     )
 
 
-def centerline_symbol():
+def channel_width_mm(metres_per_unit):
+    """Return an expression of a centerline feature's mean channel width on the map, millimetres (NULL in the
+    legend, or where the line has no width)."""
+    return f"(attribute('width_mean') * {metres_per_unit!r} * 1000 / @map_scale)"
+
+
+def centerline_symbol(metres_per_unit=None):
     """A red line in a white casing, readable over any fill and leaving the polygon's fill visible.
 
     The local width (the M values) is not drawn: a band as wide as the channel repaints the polygon itself,
     and its buffer would be recomputed for every feature at every redraw. The width stays in the M values,
-    the vertices' ``width`` field and the incircles. Both widths narrow at small scales (:func:`by_scale`).
+    the vertices' ``width`` field and the incircles. Both widths narrow at small scales (:func:`by_scale`), and,
+    where the layer's unit is known (``metres_per_unit``), the line takes at most :data:`CHANNEL_SHARE` of its
+    channel's drawn mean width (``width_mean``) and the casing as much again, never under :data:`THINNEST_MM`:
+    at world scale the line is a hairline inside its reservoir, not a band over it.
 
     Returns
     -------
@@ -100,14 +112,23 @@ def centerline_symbol():
         The casing on rendering pass 0 and the red line on pass 1, so that with symbol levels every casing
         is drawn before any line and centerlines meeting at a junction stay joined.
     """
+    line_by_scale = by_scale(CENTERLINE_WIDTH_MM, SMALL_SCALE_CENTERLINE_WIDTH_MM)
+    margin_by_scale = by_scale(CASING_MARGIN_MM, SMALL_SCALE_CASING_MARGIN_MM)
+    line_width, casing_width = line_by_scale, f"{line_by_scale} + 2 * {margin_by_scale}"
+    if metres_per_unit:
+        channel = channel_width_mm(metres_per_unit)
+        within = f"max({THINNEST_MM:g}, min({line_by_scale}, {CHANNEL_SHARE:g} * {channel}))"
+        line_width = f"CASE WHEN {channel} > 0 THEN {within} ELSE {line_by_scale} END"
+        casing_width = (
+            f"CASE WHEN {channel} > 0 THEN {within} + 2 * min({margin_by_scale}, {CHANNEL_SHARE / 2:g} * {channel})"
+            f" ELSE {casing_width} END"
+        )
     symbol = QgsLineSymbol.createSimple(round_line_properties(CASING_COLOUR, CASING_WIDTH_MM))
-    scaled_width(
-        symbol.symbolLayer(0),
-        CASING_WIDTH_MM,
-        SMALL_SCALE_CENTERLINE_WIDTH_MM + 2 * SMALL_SCALE_CASING_MARGIN_MM,
+    symbol.symbolLayer(0).setDataDefinedProperty(
+        SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(casing_width)
     )
     line = QgsSimpleLineSymbolLayer.create(round_line_properties(CENTERLINE_COLOUR, CENTERLINE_WIDTH_MM))
-    scaled_width(line, CENTERLINE_WIDTH_MM, SMALL_SCALE_CENTERLINE_WIDTH_MM)
+    line.setDataDefinedProperty(SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(line_width))
     line.setRenderingPass(1)
     symbol.appendSymbolLayer(line)
     return symbol
@@ -157,14 +178,13 @@ def readable_scale(typical_length, metres_per_unit):
     return typical_length * metres_per_unit / (READABLE_MM / 1000.0)
 
 
-def output_renderer(rank):
-    """Return the renderer of the output of ``rank`` (:data:`CENTERLINE`...): one symbol, levels for the centerline."""
-    symbol = {
-        CENTERLINE: centerline_symbol,
-        VERTICES: vertex_symbol,
-        TRANSECTS: transect_symbol,
-        INCIRCLES: incircle_symbol,
-    }[rank]()
+def output_renderer(rank, metres_per_unit=None):
+    """Return the renderer of the output of ``rank`` (:data:`CENTERLINE`...): one symbol, levels for the centerline
+    (whose widths follow its channel's where ``metres_per_unit``, the layer unit's length, is known)."""
+    if rank == CENTERLINE:
+        symbol = centerline_symbol(metres_per_unit)
+    else:
+        symbol = {VERTICES: vertex_symbol, TRANSECTS: transect_symbol, INCIRCLES: incircle_symbol}[rank]()
     renderer = QgsSingleSymbolRenderer(symbol)
     renderer.setUsingSymbolLevels(rank == CENTERLINE)
     return renderer
@@ -189,9 +209,11 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
         self.group = group
         #: Scale denominator beyond which the layer is hidden (0: always shown); set by the writer.
         self.minimum_scale = 0.0
+        #: Metres in one unit of the layer's lengths (None: unknown), for widths that follow the channel's.
+        self.metres_per_unit = None
 
     def postProcessLayer(self, layer, context, feedback):
-        layer.setRenderer(output_renderer(self.rank))
+        layer.setRenderer(output_renderer(self.rank, self.metres_per_unit))
         if self.minimum_scale > 0.0:
             layer.setScaleBasedVisibility(True)
             layer.setMinimumScale(self.minimum_scale)
@@ -255,7 +277,7 @@ def order_run_layers(project, run_id, group_name=None):
             node.parent().removeChildNode(node)
 
 
-def style_outputs_on_load(context, destinations, names=None, group=None):
+def style_outputs_on_load(context, destinations, names=None, group=None, metres_per_unit=None):
     """Attach an :class:`OutputStyler` to every output that QGIS will load when the algorithm finishes.
 
     Parameters
@@ -268,6 +290,8 @@ def style_outputs_on_load(context, destinations, names=None, group=None):
         Rank -> the name the loaded layer gets (QGIS's own name for the output where absent).
     group : str, optional
         Name of the group the outputs of the run go into when it loads more than one.
+    metres_per_unit : float, optional
+        Metres in one unit of the outputs' lengths (their ``width_mean``), for :func:`centerline_symbol`.
 
     Returns
     -------
@@ -284,6 +308,7 @@ def style_outputs_on_load(context, destinations, names=None, group=None):
     stylers = {}
     for rank, destination in loaded.items():
         styler = stylers[rank] = OutputStyler(run_id, rank, names.get(rank), group if len(loaded) > 1 else None)
+        styler.metres_per_unit = metres_per_unit
         LIVE_STYLERS.append(styler)
         context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)
     return stylers

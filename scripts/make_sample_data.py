@@ -271,9 +271,12 @@ def example_models():
     modeler shows no missing value.
     """
     common = {
+        "SNAP_TOLERANCE": 1.0,
         "TOLERANCE": 0.0,
         "SPACING": 0.0,
         "ISLANDS": 0,
+        "END_RULE": 0,
+        "SEPARATE_PARTS": False,
         "ADD_M": True,
     }
     widths_help = {
@@ -318,10 +321,7 @@ def example_models():
                     {
                         "INPUT": ("step", "fix", "OUTPUT"),
                         "SPLIT_POINTS": ("input", "split_points"),
-                        "SNAP_TOLERANCE": 1.0,
                         **common,
-                        "END_RULE": 0,
-                        "SEPARATE_PARTS": False,
                         "TRANSECT_INTERVAL": ("input", "transect_interval"),
                     },
                 ),
@@ -345,11 +345,8 @@ def example_models():
                     "incircu:polygoncenterline",
                     {
                         "INPUT": ("step", "fix", "OUTPUT"),
-                        "SNAP_TOLERANCE": 1.0,
                         **common,
-                        "END_RULE": 0,
                         "GUIDE_LINES": ("input", "guide_lines"),
-                        "SEPARATE_PARTS": False,
                         "TRANSECT_INTERVAL": 0.0,
                     },
                 ),

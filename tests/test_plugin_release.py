@@ -175,7 +175,7 @@ def test_a_core_error_reads_in_polish_with_qgis_polish_tool_name(provider, qgis_
         settings.setValue("locale/userLocale", previous)
     invalid = [warning for warning in feedback.warnings if "Napraw geometrie" in warning]
     assert invalid, feedback.warnings
-    assert invalid[0].startswith("Obiekt ") and "Wielokąt jest nieprawidłowy" in invalid[0], invalid[0]
+    assert invalid[0].startswith("Obiekt ") and "Poligon jest nieprawidłowy" in invalid[0], invalid[0]
     assert not any("The polygon" in warning or "split point" in warning for warning in feedback.warnings)
 
 

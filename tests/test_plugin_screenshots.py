@@ -199,6 +199,7 @@ def test_styles_at_world_scale_leave_the_reservoirs_visible(provider, artifacts)
     shown = []
     for extent, name in (
         (QgsRectangle(-180, -60, 180, 80), "world"),
+        (QgsRectangle(30, 45, 60, 61), "volga_and_dnieper"),
         (reservoirs.getFeature(1).geometry().boundingBox().buffered(0.02), "one_reservoir"),
     ):
         settings = QgsMapSettings()
@@ -240,7 +241,7 @@ def test_a_skip_reason_reads_in_polish(dialog_run, artifacts, qgis_iface):
         polish_plugin.unload()
         QCoreApplication.removeTranslator(qgis_polish)
         settings.setValue("locale/userLocale", previous)
-    assert "Napraw geometrie" in text and "Wielokąt jest nieprawidłowy" in text, text
+    assert "Napraw geometrie" in text and "Poligon jest nieprawidłowy" in text, text
 
 
 def test_toolbox_lists_the_example_models_and_the_help_page_opens(provider, artifacts):

@@ -119,8 +119,8 @@ def close(colour, expected, tolerance=40):
     return all(abs(a - b) <= tolerance for a, b in zip(colour.getRgb()[:3], expected.getRgb()[:3]))
 
 
-def width_at_scale(symbol_layer, scale):
-    """The stroke width, millimetres, ``symbol_layer`` draws at the map scale 1:``scale``."""
+def width_at_scale(symbol_layer, scale, feature=None):
+    """The stroke width, millimetres, ``symbol_layer`` draws at the map scale 1:``scale`` (for ``feature``)."""
     from incircu.algorithms.compat import SymbolLayerProperty
 
     prop = symbol_layer.dataDefinedProperties().property(SymbolLayerProperty.StrokeWidth)
@@ -128,6 +128,9 @@ def width_at_scale(symbol_layer, scale):
     scope = QgsExpressionContextScope()
     scope.setVariable("map_scale", scale)
     context.appendScope(scope)
+    if feature is not None:
+        context.setFeature(feature)
+        context.setFields(feature.fields())
     value, ok = prop.valueAsDouble(context, symbol_layer.width())
     assert ok
     return value
@@ -239,6 +242,15 @@ def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algori
         at_world_scale = width_at_scale(symbol_layer, 5e7)
         assert at_world_scale <= 0.5 * symbol_layer.width(), "a line as wide at world scale hides the rivers"
         assert width_at_scale(symbol_layer, 1e4) == pytest.approx(symbol_layer.width())
+    # Within its channel at every scale: the line a quarter of the drawn mean width at most (never under a
+    # hairline), the casing as much again.
+    feature = next(centerline.getFeatures())
+    for scale in (1e3, 1e4, 1e5, 1e6, 1e7):
+        channel = feature["width_mean"] * 1000.0 / scale
+        drawn = width_at_scale(line, scale, feature)
+        assert drawn <= max(0.15, 0.25 * channel) + 1e-9, scale
+        assert width_at_scale(casing, scale, feature) <= drawn + 0.25 * channel + 1e-9, scale
+    assert width_at_scale(line, 1e3, feature) == pytest.approx(line.width()), "full width where the channel is wide"
     transect_colour = transects.renderer().symbol().color()
     for water in (RIVER_FILL, QColor(100, 160, 220), QColor(120, 180, 140), QColor(20, 60, 160)):
         assert colour_distance(transect_colour, water) >= 150, f"transects vanish on {water.name()} water"
