@@ -24,13 +24,13 @@ QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
 # What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip; the
 # packaged README links what it references outside the zip on the repository (scripts/release_links.py).
-RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n
+RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n help models
 export QT_QPA_PLATFORM := offscreen
 # Keep the tests' and the demo's QGIS settings out of the user's profile.
 export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
 export PYTHONDONTWRITEBYTECODE := 1
 
-.PHONY: help setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
+.PHONY: help help-page setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
 
 help:
 	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"
@@ -41,6 +41,7 @@ help:
 	@echo "make package      release zip in $(DIST)/ (git archive of HEAD)"
 	@echo "make deploy       copy the plugin into the QGIS profile $(PROFILE)"
 	@echo "make transup      update i18n/*.ts from the sources; make transcompile builds the .qm files"
+	@echo "make help-page    write the offline help page help/index.html from the algorithms (after a help text changed)"
 	@echo "make bench        benchmarks (bash benchmarks/run.sh)"
 	@echo "make fuzz N=100000  fuzz campaign of the core (fuzz/), alone and in batches, prints the outcome table"
 
@@ -81,7 +82,7 @@ CORE_DOCTESTS := --doctest-modules incircu_plugin/core
 # bad input must get its typed error without GEOS warnings: these tests run again on the Shapely built for QGIS's
 # own Python on the system GEOS where make setup built one (where QGIS uses the distribution's Shapely, nothing is
 # built and this pass is skipped).
-GEOS_TESTS := tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py tests/test_core_errors.py
+GEOS_TESTS := tests/test_core_warnings.py tests/test_core_contacts.py tests/test_core_skeleton.py tests/test_core_polyline.py tests/test_core_errors.py
 test: setup
 	$(PYTHON) -m pytest -p no:cacheprovider -o qgis_gui_enabled=true tests $(CORE_DOCTESTS)
 	@if [ -d $(QGIS_SITE)/shapely ]; then \
@@ -113,10 +114,13 @@ deploy: package
 	@echo "Deployed to $(QGIS_PROFILE_DIR)/python/plugins/$(PLUGIN); enable IncirCu in the Plugin Manager."
 
 transup:
-	pylupdate5 -noobsolete incircu_plugin/plugin.py incircu_plugin/provider.py algorithms/*.py -ts i18n/incircu_pl.ts
+	pylupdate5 -noobsolete incircu_plugin/plugin.py incircu_plugin/provider.py incircu_plugin/core/errors.py algorithms/*.py -ts i18n/incircu_pl.ts
 
 transcompile:
 	lrelease i18n/*.ts
+
+help-page:
+	PYTHONPATH=$(QGIS_SITE) $(SYSTEM_PYTHON) scripts/make_help.py
 
 bench: setup
 	bash benchmarks/run.sh

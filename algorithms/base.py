@@ -1,10 +1,11 @@
 """Base class of the IncirCu algorithms: translation, instances, help, icon and shared parameters."""
 
-import configparser
 import html
+import math
 from pathlib import Path
 
 from qgis.core import (
+    QgsExpressionContext,
     QgsProcessingAlgorithm,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -12,32 +13,30 @@ from qgis.core import (
     QgsProcessingParameterDistance,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
+    QgsProcessingParameters,
     QgsProcessingUtils,
+    QgsProperty,
+    QgsPropertyDefinition,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 from .compat import DistanceUnit, ProcessingParameterFlag, ProcessingSourceType
+from .help_page import anchor, help_url
 from .running import FeatureRun
+from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES
 
 PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
 ICON_PATH = PLUGIN_FOLDER / "icons"
 
 
-def homepage():
-    """Return the project's web address (``homepage`` of ``metadata.txt``), where the README is shown."""
-    parser = configparser.ConfigParser(interpolation=None)
-    parser.read(PLUGIN_FOLDER / "metadata.txt", encoding="utf-8")
-    return parser["general"]["homepage"]
-
-
-def length_parameter(name, description, default, parent_layer):
+def length_parameter(name, description, default, parent_layer, dynamic=False):
     """A non-negative length in the units of ``parent_layer``, or in metres when that layer is in degrees.
 
     A ``QgsProcessingParameterDistance`` tied to the layer (``qgis_process``, batch dialog and modeler show
-    it as QGIS does); the toolbox dialog shows it with :class:`.length_widget.LengthWidgetWrapper`, which
-    names the layer's unit next to the box and "meters" for a layer in degrees, where QGIS would say
-    "degrees".
+    it as QGIS does); the toolbox dialog shows it with :class:`.length_widget.LengthWidgetWrapper`, QGIS's
+    distance box with its unit drop-down, which reads a length in metres for a layer in degrees, where QGIS
+    would read degrees.
 
     Parameters
     ----------
@@ -47,14 +46,22 @@ def length_parameter(name, description, default, parent_layer):
         Default value, layer units (metres for a layer in degrees).
     parent_layer : str
         Name of the layer parameter the length refers to.
+    dynamic : bool
+        Offer a data-defined override: a value per feature of ``parent_layer`` (an expression or a field).
 
     Returns
     -------
     QgsProcessingParameterDistance
     """
-    parameter = QgsProcessingParameterDistance(name, description, default, parent_layer, True, 0.0)
+    parameter = QgsProcessingParameterDistance(name, description, default, parent_layer, False, 0.0)
     parameter.setDefaultUnit(DistanceUnit.Meters)
     parameter.setMetadata({"widget_wrapper": {"class": f"{__package__}.length_widget.LengthWidgetWrapper"}})
+    if dynamic:
+        parameter.setIsDynamic(True)
+        parameter.setDynamicPropertyDefinition(
+            QgsPropertyDefinition(name, description, QgsPropertyDefinition.StandardPropertyTemplate.DoublePositive)
+        )
+        parameter.setDynamicLayerParameterName(parent_layer)
     return parameter
 
 
@@ -62,7 +69,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
     """Common behaviour of the IncirCu Processing algorithms.
 
     Subclasses define ``name``, ``displayName``, ``shortDescription``, ``summary``,
-    ``centerline_output_name``, ``initAlgorithm``, ``HELP_ANCHOR`` and ``LENGTH_PARENT``, and add their
+    ``centerline_output_name``, ``initAlgorithm`` and ``LENGTH_PARENT``, and add their
     parameters with :meth:`add_parameter`, which also records the parameter's help text; the dialog's help
     panel (``shortHelpString``) shows the summary and then every parameter and output with that text.
     """
@@ -81,8 +88,6 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
 
     #: File name of the algorithm's icon under ``icons/``.
     ICON = "incircu.svg"
-    #: Anchor of the algorithm's section in the README (GitHub's heading slug).
-    HELP_ANCHOR = ""
     #: Name of the input layer whose units the length parameters are in (metres when it is in degrees).
     LENGTH_PARENT = ""
 
@@ -171,8 +176,46 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         """Return the label of the centerline output, also the name of the layer it loads as."""
         raise NotImplementedError
 
+    def input_layer_name(self, parameters, context):
+        """Return the name of the input layer (``LENGTH_PARENT``) as the output layers' names start with it."""
+        source = self.parameterAsSource(parameters, self.LENGTH_PARENT, context)
+        return source.sourceName() if source is not None else ""
+
+    def rule_name(self, parameters, context):
+        """Return what decided the lines of this run, for the output layers' names ("main stem"); empty when
+        there is no choice to name."""
+        return ""
+
+    def centerline_layer_word(self):
+        """Return what the centerline output holds, as its loaded layer's name says it ("centerlines")."""
+        return self.tr("centerlines")
+
+    def output_layer_names(self, parameters, context):
+        """Return the names of the loaded output layers and of their run's group: the input layer's name, what
+        the layer holds and the rule used ("reservoirs — centerlines (main stem)").
+
+        Returns
+        -------
+        tuple of (dict, str)
+            Rank of :mod:`.styles` (``CENTERLINE``...) -> layer name, and the group's name (the centerlines').
+        """
+        layer, rule = self.input_layer_name(parameters, context), self.rule_name(parameters, context)
+        words = {
+            CENTERLINE: self.centerline_layer_word(),
+            VERTICES: self.tr("vertices"),
+            TRANSECTS: self.tr("transects"),
+            INCIRCLES: self.tr("incircles"),
+        }
+        if rule:
+            template = self.tr("{layer} — {output} ({rule})")
+        else:
+            template = self.tr("{layer} — {output}")
+        names = {rank: template.format(layer=layer, output=word, rule=rule) for rank, word in words.items()}
+        return names, names[CENTERLINE]
+
     def helpUrl(self):
-        return f"{homepage()}#{self.HELP_ANCHOR}"
+        """Return the section of the help page shipped with the plugin (opens offline)."""
+        return help_url(anchor(self))
 
     def summary(self):
         """Return what the algorithm does, translated: the first paragraph of its help."""
@@ -239,11 +282,12 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         self.parameter_help[output.name()] = help_text
         self.addOutput(output)
 
-    def add_length_parameter(self, name, description, default, help_text, advanced=False):
-        """Add an optional, non-negative length with its default, in the units of ``LENGTH_PARENT``.
+    def add_length_parameter(self, name, description, default, help_text, advanced=False, dynamic=False):
+        """Add a non-negative length with its default, in the units of ``LENGTH_PARENT``.
 
         The dialog shows the unit next to the box (see :func:`length_parameter`); a layer in
-        degrees is computed in metres. Optional because it has a default, so the modeler does not require it.
+        degrees is computed in metres. Not optional: it always has a value (0 is a choice, "automatic"), and
+        a run that leaves it out gets the default.
 
         Parameters
         ----------
@@ -255,13 +299,39 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             As for :meth:`add_parameter`.
         advanced : bool
             Show the parameter under "Advanced parameters".
+        dynamic : bool
+            Offer a data-defined override (a value per feature), read with :meth:`length_of_feature`.
         """
-        self.add_parameter(length_parameter(name, description, default, self.LENGTH_PARENT), help_text, advanced)
+        self.add_parameter(
+            length_parameter(name, description, default, self.LENGTH_PARENT, dynamic), help_text, advanced
+        )
 
-    def add_optional_parameter(self, parameter, help_text, advanced=False):
-        """Add a parameter that has a default as optional, so the modeler does not require a value for it."""
-        parameter.setFlags(parameter.flags() | ProcessingParameterFlag.Optional)
-        self.add_parameter(parameter, help_text, advanced)
+    def length_of_feature(self, parameters, name, context):
+        """Return ``value(feature)``: length parameter ``name`` for one input feature, layer units (metres for
+        a layer in degrees).
+
+        Where the parameter is data-defined (QGIS's override: a field or an expression of the feature), each
+        feature gets its own value; a value that is missing, negative or not a number falls back to the
+        parameter's default. Otherwise every feature gets the parameter's value.
+        """
+        definition = self.parameterDefinition(name)
+        if not QgsProcessingParameters.isDynamic(parameters, name):
+            fixed = self.parameterAsDouble(parameters, name, context)
+            return lambda feature: fixed
+        fallback = float(definition.defaultValue() or 0.0)
+        prop = QgsProperty(parameters[name])
+        expression_context = QgsExpressionContext(context.expressionContext())
+
+        def value(feature):
+            if expression_context.fields() != feature.fields():
+                # Fields by name: prepared once the layer's fields are known (those of its first feature).
+                expression_context.setFields(feature.fields())
+                prop.prepare(expression_context)
+            expression_context.setFeature(feature)
+            number, ok = prop.valueAsDouble(expression_context, fallback)
+            return number if ok and math.isfinite(number) and number >= 0.0 else fallback
+
+        return value
 
     def add_sampling_parameters(self):
         """Add ``TOLERANCE`` (adaptive sampling, the default) and ``SPACING`` (the paper's fixed sampling)."""
@@ -269,11 +339,13 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             self.TOLERANCE,
             self.tr("Largest deviation from the exact medial axis (0 = automatic)"),
             0.0,
-            self.tr(
-                "Largest distance between the centerline and the exact medial axis, in layer units (metres for "
-                "a layer in degrees): the line keeps only the vertices it needs to stay that close, each lying "
-                "exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the "
-                "shape's typical width: the right choice for maps.",
+            dynamic=True,
+            help_text=self.tr(
+                "Every vertex is the centre of a circle touching both sides; the line of the centres of all such "
+                "circles is the exact medial axis. This is the largest distance between the centerline and that "
+                "axis, in layer units (metres for a layer in degrees): the line keeps only the vertices it needs to "
+                "stay that close, each lying exactly on the axis, and never leaves the shape whatever the value. 0 uses 1/200 of the "
+                "shape's typical width: the right choice for maps. It may differ per feature (data-defined).",
             ),
         )
         self.add_length_parameter(
@@ -290,16 +362,18 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
         )
 
     def sampling_options(self, parameters, context):
-        """Return the core's ``tolerance`` and ``spacing`` keywords (``None`` for 0).
+        """Return the core's ``tolerance`` and ``spacing`` keywords (``None`` for 0); a data-defined tolerance
+        is None here, read per feature with :meth:`feature_sampling`.
 
         Raises
         ------
         QgsProcessingException
             When both a largest deviation and a fixed sampling distance are given.
         """
-        tolerance = self.parameterAsDouble(parameters, self.TOLERANCE, context) or None
+        dynamic = QgsProcessingParameters.isDynamic(parameters, self.TOLERANCE)
+        tolerance = None if dynamic else self.parameterAsDouble(parameters, self.TOLERANCE, context) or None
         spacing = self.parameterAsDouble(parameters, self.SPACING, context) or None
-        if tolerance is not None and spacing is not None:
+        if (tolerance is not None or dynamic) and spacing is not None:
             raise QgsProcessingException(
                 self.tr(
                     "Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary "
@@ -307,6 +381,15 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 )
             )
         return {"tolerance": tolerance, "spacing": spacing}
+
+    def feature_sampling(self, parameters, context):
+        """Return ``options(feature)``: :meth:`sampling_options` with the feature's own tolerance where the
+        tolerance is data-defined."""
+        sampling = self.sampling_options(parameters, context)
+        if not QgsProcessingParameters.isDynamic(parameters, self.TOLERANCE):
+            return lambda feature: sampling
+        tolerance_of = self.length_of_feature(parameters, self.TOLERANCE, context)
+        return lambda feature: dict(sampling, tolerance=tolerance_of(feature) or None)
 
     def add_snap_tolerance_parameter(self, name="SNAP_TOLERANCE"):
         """Add the split point snapping tolerance (layer units or metres)."""
@@ -316,8 +399,10 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             1.0,
             self.tr(
                 "Largest distance between a split point and the polygon's exterior ring, layer units "
-                "(metres for a layer in degrees); 0 = a millionth of the polygon's size."
+                "(metres for a layer in degrees); 0 = a millionth of the polygon's size. It may differ per "
+                "feature (data-defined)."
             ),
+            dynamic=True,
         )
 
     def add_islands_parameter(self, help_template, name="ISLANDS"):
@@ -332,7 +417,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             Parameter name.
         """
         pass_through, ignore = self.tr("Pass through the main channel"), self.tr("Ignore islands")
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterEnum(name, self.tr("Islands (holes)"), [pass_through, ignore], defaultValue=0),
             help_template.format(pass_through=pass_through, ignore=ignore),
         )
@@ -350,7 +435,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             where that line meets the outline").
         """
         runout, axis = self.tr("Straight run-out (for maps)"), self.tr("Exact medial axis")
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterEnum(self.END_CAP, self.tr("Line ends"), [runout, axis], defaultValue=0),
             self.tr(
                 "How the line reaches its ends where the channel is cut at a slant. {runout}: straight on along "
@@ -366,7 +451,7 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
 
     def add_m_parameter(self):
         """Add ``ADD_M`` (store the local width as M value)."""
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterBoolean(self.ADD_M, self.tr("Store the local width as M value"), True),
             self.tr(
                 "Write the incircle diameter (local width, layer units or metres) as M value of each vertex.",
@@ -423,12 +508,12 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             0.0,
             self.tr(
                 "Distance along the centerline between two transects, layer units (metres for a layer in "
-                "degrees); 0 uses the mean width of each centerline.",
+                "degrees); 0 uses the mean width of each centerline. It may differ per feature (data-defined).",
             ),
-            advanced=True,
+            dynamic=True,
         )
         straight, nearest = self.tr("Straight, square to the centerline"), self.tr("To the nearest bank points")
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterEnum(
                 self.TRANSECT_STYLE, self.tr("Transect shape"), [straight, nearest], defaultValue=0
             ),
@@ -439,7 +524,6 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
                 "{nearest}: from the centerline to the nearest point of each bank, the incircle's diameter; it "
                 "bends at the centerline where the banks are not parallel (method 'nearest')."
             ).format(straight=straight, nearest=nearest),
-            advanced=True,
         )
         self.add_count_outputs(self.tr("Number of centerlines"), self.tr("Number of centerline features written."))
 

@@ -8,7 +8,7 @@ of every other module, the way QGIS's ``pyqt5_to_pyqt6.py`` migration script wou
 
 from types import SimpleNamespace
 
-from qgis.core import Qgis
+from qgis.core import Qgis, QgsSymbolLayer
 
 QGIS_VERSION = Qgis.QGIS_VERSION_INT
 
@@ -23,7 +23,16 @@ else:
         Line=QgsWkbTypes.GeometryType.LineGeometry,
         Polygon=QgsWkbTypes.GeometryType.PolygonGeometry,
     )
-    DistanceUnit = SimpleNamespace(Meters=QgsUnitTypes.DistanceUnit.DistanceMeters)
+    DistanceUnit = SimpleNamespace(
+        Meters=QgsUnitTypes.DistanceUnit.DistanceMeters,
+        Kilometers=QgsUnitTypes.DistanceUnit.DistanceKilometers,
+        Centimeters=QgsUnitTypes.DistanceUnit.DistanceCentimeters,
+        Millimeters=QgsUnitTypes.DistanceUnit.DistanceMillimeters,
+        Feet=QgsUnitTypes.DistanceUnit.DistanceFeet,
+        Yards=QgsUnitTypes.DistanceUnit.DistanceYards,
+        Miles=QgsUnitTypes.DistanceUnit.DistanceMiles,
+        NauticalMiles=QgsUnitTypes.DistanceUnit.DistanceNauticalMiles,
+    )
 
 if QGIS_VERSION >= 33600:
     ProcessingSourceType = Qgis.ProcessingSourceType
@@ -51,6 +60,15 @@ else:
         SkipGeometryValidityChecks=QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks,
     )
     CrsWktVariant = SimpleNamespace(Wkt2_2019=QgsCoordinateReferenceSystem.WktVariant.WKT2_2019)
+
+# QGIS 3.30 scoped the data-defined properties of symbol layers (QgsSymbolLayer.Property.StrokeWidth).
+if hasattr(QgsSymbolLayer.Property, "StrokeWidth"):
+    SymbolLayerProperty = QgsSymbolLayer.Property
+else:
+    SymbolLayerProperty = SimpleNamespace(
+        StrokeWidth=QgsSymbolLayer.Property.PropertyStrokeWidth,
+        Size=QgsSymbolLayer.Property.PropertySize,
+    )
 
 if QGIS_VERSION >= 33800:
     from qgis.PyQt.QtCore import QMetaType

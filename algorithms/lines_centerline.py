@@ -3,6 +3,7 @@
 from functools import partial
 
 from qgis.core import (
+    NULL,
     QgsFeatureRequest,
     QgsGeometry,
     QgsProcessingException,
@@ -23,7 +24,6 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
     PAIR_FIELD_B = "PAIR_FIELD_B"
 
     ICON = "linescenterline.svg"
-    HELP_ANCHOR = "centerline-between-two-lines--incirculinescenterline"
     LENGTH_PARENT = LINES_A
 
     def name(self):
@@ -54,8 +54,8 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         return self.tr(
             "Computes one unbranched centerline between two lines (for example the two banks of a river) "
             "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
-            "are paired by equal values of the two pairing fields; without them each layer holds one line "
-            "(its features and parts are merged). The lines must not cross. The M value of each vertex is "
+            "are paired by equal values of the two pairing fields (or of a field both layers have); without "
+            "them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is "
             "the local width. The second lines are reprojected to the CRS of the first; geographic layers are "
             "computed in a local metric projection and distances are then in metres."
         )
@@ -82,7 +82,8 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             ),
             self.tr(
                 "Optional; a line of the first lines is paired with the line of the second lines that has the same "
-                "value in 'Pairing field of the second lines'."
+                "value in 'Pairing field of the second lines'. Left empty, a field both layers have with values "
+                "found in both pairs them (the log names it)."
             ),
         )
         self.add_parameter(
@@ -98,6 +99,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_end_cap_parameter(self.tr("the middle of the gap between the two lines' ends"))
         self.add_result_parameters()
 
+    def input_layer_name(self, parameters, context):
+        """Return the names of both line layers, "banks_a / banks_b", as the output layers' names start."""
+        names = [self.parameterAsSource(parameters, name, context) for name in (self.LINES_A, self.LINES_B)]
+        return " / ".join(source.sourceName() for source in names if source is not None)
+
     def process_features(self, run, parameters, context, feedback):
         line_type = GeometryType.Line
         source_a = run.source(self.LINES_A, line_type)
@@ -106,15 +112,23 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         run.warn_dropped_z(source_b)
         field_a = self.field_parameter(parameters, self.PAIR_FIELD_A, source_a, context)
         field_b = self.field_parameter(parameters, self.PAIR_FIELD_B, source_b, context)
+        if not field_a and not field_b:
+            field_a = field_b = self.guessed_pair_field(source_a, source_b)
+            if field_a:
+                feedback.pushInfo(
+                    self.tr(
+                        "No pairing fields given: both layers have the field '{}', so lines are paired by its "
+                        "values (give {} and {} to pair them otherwise)."
+                    ).format(field_a, self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B))
+                )
         if bool(field_a) != bool(field_b):
             raise QgsProcessingException(
                 self.tr("Give both {} and {}, or neither (then each layer holds one line).").format(
                     self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B)
                 )
             )
-        sampling = dict(
-            self.sampling_options(parameters, context), end_cap=self.end_cap_option(run, parameters, context)
-        )
+        sampling = self.feature_sampling(parameters, context)
+        end_cap = self.end_cap_option(run, parameters, context)
         crs = source_a.sourceCrs()
         run.open_outputs(source_a.fields(), crs, multi=False)
 
@@ -140,7 +154,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                     )
 
         tasks = (
-            self._task(run, key, first, geometries, groups_b, field_b, sampling)
+            self._task(run, key, first, geometries, groups_b, field_b, sampling, end_cap)
             for key, (first, geometries) in groups_a.items()
         )
         run.run_batches(tasks, len(groups_a))
@@ -153,8 +167,9 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                 )
         return run.finish()
 
-    def _task(self, run, key, first, geometries, groups_b, field_b, sampling):
-        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines."""
+    def _task(self, run, key, first, geometries, groups_b, field_b, sampling, end_cap):
+        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines;
+        ``sampling(feature)`` gives the sampling options of a feature of LINES_A."""
         if key not in groups_b:
             return run.skip_task(
                 first, self.tr("no line in {} has {} = {!r}").format(self.parameter_label(self.LINES_B), field_b, key)
@@ -167,7 +182,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             return run.skip_task(first, self.not_joined(self.LINES_B))
         run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
         steps = run.core.lines_centerline_steps(
-            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, **sampling
+            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, end_cap=end_cap, **sampling(first)
         )
         vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
         return run.task(first, steps, partial(self._parts, run, first.id()), vertices)
@@ -183,6 +198,46 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         for note in result.notes:
             run.warn_feature(feature_id, note)
         return [(0, result)]
+
+    @classmethod
+    def guessed_pair_field(cls, source_a, source_b):
+        """The field to pair the lines by when no pairing field is given: of the field names both layers have
+        (but ``fid``, a GeoPackage's feature id), the one with the most values found in both; ties go to the
+        first in the first layer's order. Empty when no shared field has a value in both layers.
+
+        Parameters
+        ----------
+        source_a, source_b : QgsProcessingFeatureSource
+            The first and second lines.
+
+        Returns
+        -------
+        str
+        """
+        shared = [
+            name
+            for name in source_a.fields().names()
+            if name.lower() != "fid" and source_b.fields().lookupField(name) >= 0
+        ]
+        if not shared:
+            return ""
+        values_a, values_b = cls.field_values(source_a, shared), cls.field_values(source_b, shared)
+        common = {name: len(values_a[name] & values_b[name]) for name in shared}
+        best = max(shared, key=lambda name: common[name])
+        return best if common[best] else ""
+
+    @staticmethod
+    def field_values(source, names):
+        """The set of non-null values of each field in ``names`` over the features of ``source``."""
+        request = QgsFeatureRequest().setSubsetOfAttributes(names, source.fields())
+        indices = {name: source.fields().lookupField(name) for name in names}
+        values = {name: set() for name in names}
+        for feature in source.getFeatures(request, ProcessingFeatureSourceFlag.SkipGeometryValidityChecks):
+            attributes = feature.attributes()
+            for name, index in indices.items():
+                if attributes[index] != NULL:
+                    values[name].add(attributes[index])
+        return values
 
     @staticmethod
     def group_features(source, field_name, request):

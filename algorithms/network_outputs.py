@@ -6,8 +6,18 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import WkbType
 from .convert import line_with_m
-from .outputs import DOUBLE, FEATURE_ID, INTEGER, STRING, make_fields, primary_key_sink, release_sinks, width_statistics
+from .outputs import (
+    DOUBLE,
+    FEATURE_ID,
+    INTEGER,
+    STRING,
+    make_fields,
+    primary_key_sink,
+    release_sinks,
+    rounded_statistics,
+)
 from .styles import CENTERLINE, style_outputs_on_load
+from .units import length_decimals, metres_per_unit
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
 #: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
@@ -49,9 +59,15 @@ class NetworkWriter:
         line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
         self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, line_type, crs)
+        self.decimals = length_decimals(crs)
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
-        style_outputs_on_load(context, {CENTERLINE: self.sink_id})
+        style_outputs_on_load(
+            context,
+            {CENTERLINE: self.sink_id},
+            *algorithm.output_layer_names(parameters, context),
+            metres_per_unit=metres_per_unit(crs),
+        )
 
     def close(self):
         """Flush and release the branch layer's sink, which closes (commits) its file; safe to call twice."""
@@ -75,7 +91,7 @@ class NetworkWriter:
             for branch in network.branches:
                 result = branch.result
                 coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
-                statistics = width_statistics([result])
+                statistics = rounded_statistics([result], self.decimals)
                 added = {
                     "source_fid": source_fid,
                     "from_point": JUNCTION if branch.start_point is None else names[branch.start_point],

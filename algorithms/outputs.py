@@ -1,5 +1,6 @@
 """Output layers of the IncirCu algorithms: fields, statistics and the writing of core results."""
 
+import numpy as np
 import shapely
 from qgis.core import (
     QgsFeature,
@@ -23,7 +24,9 @@ from ..incircu_plugin.core.widths import (
 )
 from .compat import FieldType, WkbType
 from .convert import collect_lines, from_shapely, line_with_m
-from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, style_outputs_on_load
+from .running import part_number
+from .styles import CENTERLINE, INCIRCLES, TRANSECTS, VERTICES, readable_scale, style_outputs_on_load
+from .units import length_decimals, metres_per_unit, rounded
 
 DOUBLE, INTEGER, BOOLEAN, STRING = FieldType.Double, FieldType.Int, FieldType.Bool, FieldType.QString
 #: A feature id: 64 bits, as QGIS's (a GeoPackage's fid may pass 2**31).
@@ -39,7 +42,9 @@ def make_fields(definitions):
 
 
 #: Fields added to the input attributes on every centerline (lengths and widths in layer units, metres when geographic).
-#: ``source_fid`` is the id of the input feature, as on the optional outputs.
+#: ``source_fid`` is the id of the input feature, as on the optional outputs; ``part`` (on those) numbers a
+#: feature's parts from 1, as messages do. Lengths, widths, chainages and radii are rounded to the millimetre
+#: (:func:`.units.length_decimals`).
 CENTERLINE_FIELDS = (
     ("source_fid", FEATURE_ID),
     ("length", DOUBLE),
@@ -71,6 +76,18 @@ TRANSECT_FIELDS = (
     ("width", DOUBLE),
     ("method", STRING),
 )
+
+
+#: The attributes of :func:`width_statistics` that are lengths (rounded to :func:`.units.length_decimals`).
+LENGTH_STATISTICS = ("length", "width_min", "width_mean", "width_max")
+
+
+def rounded_statistics(results, decimals):
+    """Return the core's ``width_statistics`` of ``results`` with its lengths rounded to ``decimals``."""
+    statistics = width_statistics(results)
+    return {
+        name: rounded(value, decimals) if name in LENGTH_STATISTICS else value for name, value in statistics.items()
+    }
 
 
 def release_sinks(writer, names):
@@ -135,6 +152,7 @@ class CenterlineWriter:
         self.transect_interval = transect_interval
         # The enum's choices are in the order of the core's TRANSECT_STYLES.
         self.transect_style = TRANSECT_STYLES[algorithm.parameterAsEnum(parameters, algorithm.TRANSECT_STYLE, context)]
+        self.decimals = length_decimals(crs)
         line_type = WkbType.MultiLineString if multi else WkbType.LineString
         if add_m:
             line_type = QgsWkbTypes.addM(line_type)
@@ -155,7 +173,10 @@ class CenterlineWriter:
             crs,
         )
         self.centerline_count = 0
-        style_outputs_on_load(
+        self.metres_per_unit = metres_per_unit(crs)
+        #: Per part written, the median spacing of its vertices and the median diameter of its incircles.
+        self.vertex_spacings, self.circle_diameters = [], []
+        self.stylers = style_outputs_on_load(
             context,
             {
                 CENTERLINE: self.sink_id,
@@ -163,11 +184,25 @@ class CenterlineWriter:
                 TRANSECTS: self.transects_id,
                 INCIRCLES: self.circles_id,
             },
+            *algorithm.output_layer_names(parameters, context),
+            metres_per_unit=self.metres_per_unit,
         )
 
     def close(self):
-        """Flush and release every sink, which closes (commits) its file; safe to call twice."""
+        """Flush and release every sink, which closes (commits) its file; safe to call twice. The vertices and
+        incircles, once loaded, are shown only at the scales where they can be read (:func:`.styles.readable_scale`
+        of the typical vertex spacing and incircle diameter)."""
         release_sinks(self, ("sink", "vertices", "circles", "transects"))
+        scales = {
+            name: readable_scale(float(np.median(lengths)), self.metres_per_unit) if lengths else 0.0
+            for name, lengths in (("spacing", self.vertex_spacings), ("diameter", self.circle_diameters))
+        }
+        if VERTICES in self.stylers:
+            self.stylers[VERTICES].minimum_scale = scales["spacing"]
+        if INCIRCLES in self.stylers:
+            # A circle is read where it is wide enough and apart enough from the next (they overlap).
+            readable = [scale for scale in scales.values() if scale > 0.0]
+            self.stylers[INCIRCLES].minimum_scale = min(readable, default=0.0)
 
     def destinations(self):
         """Return the output ids keyed by parameter name, for ``processAlgorithm``'s result."""
@@ -202,7 +237,7 @@ class CenterlineWriter:
                 coordinates = frame.to_layer(shapely.get_coordinates(result.line))
                 lines.append(line_with_m(coordinates, result.widths if self.add_m else None))
             geometry = collect_lines(lines) if self.multi else QgsGeometry(lines[0])
-            statistics = width_statistics([result for _, result in group])
+            statistics = rounded_statistics([result for _, result in group], self.decimals)
             feature = QgsFeature(self.fields)
             feature.setGeometry(geometry)
             added = {"source_fid": source_fid, **statistics}
@@ -218,6 +253,13 @@ class CenterlineWriter:
             self._write_extras(source_fid, part_index, result, frame)
 
     def _write_extras(self, source_fid, part_index, result, frame):
+        part, decimals = part_number(part_index), self.decimals
+        if VERTICES in self.stylers or INCIRCLES in self.stylers:
+            spacings = np.diff(vertex_chainages(result))
+            if np.any(spacings > 0.0):
+                self.vertex_spacings.append(float(np.median(spacings[spacings > 0.0])))
+        if INCIRCLES in self.stylers and np.any(result.radii > 0.0):
+            self.circle_diameters.append(2.0 * float(np.median(result.radii[result.radii > 0.0])))
         if self.vertices is not None:
             coordinates = frame.to_layer(shapely.get_coordinates(result.line))
             for index, ((x, y), chainage, radius) in enumerate(
@@ -226,14 +268,23 @@ class CenterlineWriter:
                 point = QgsFeature()
                 point.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(float(x), float(y))))
                 point.setAttributes(
-                    [source_fid, part_index, index, float(chainage), float(radius), 2.0 * float(radius)]
+                    [
+                        source_fid,
+                        part,
+                        index,
+                        rounded(chainage, decimals),
+                        rounded(radius, decimals),
+                        rounded(2.0 * float(radius), decimals),
+                    ]
                 )
                 self.vertices.addFeature(point, QgsFeatureSink.Flag.FastInsert)
         if self.circles is not None:
             for circle in incircle_polygons(result):
                 disc = QgsFeature()
                 disc.setGeometry(from_shapely(frame.to_layer(circle.polygon)))
-                disc.setAttributes([source_fid, part_index, circle.chainage, circle.radius])
+                disc.setAttributes(
+                    [source_fid, part, rounded(circle.chainage, decimals), rounded(circle.radius, decimals)]
+                )
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
             interval = self.transect_interval or width_statistics([result])["width_mean"] or 0.0
@@ -242,5 +293,13 @@ class CenterlineWriter:
             for transect in transects(result, interval, style=self.transect_style):
                 section = QgsFeature()
                 section.setGeometry(from_shapely(frame.to_layer(transect.line)))
-                section.setAttributes([source_fid, part_index, transect.chainage, transect.width, self.transect_style])
+                section.setAttributes(
+                    [
+                        source_fid,
+                        part,
+                        rounded(transect.chainage, decimals),
+                        rounded(transect.width, decimals),
+                        self.transect_style,
+                    ]
+                )
                 self.transects.addFeature(section, QgsFeatureSink.Flag.FastInsert)

@@ -29,7 +29,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     GUIDE_LINES = "GUIDE_LINES"
 
     ICON = "polygoncenterline.svg"
-    HELP_ANCHOR = "centerline-of-polygons--incircupolygoncenterline"
     LENGTH_PARENT = INPUT
 
     def name(self):
@@ -100,7 +99,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             self.ISLANDS,
         )
         main_stem, longest_path = self.tr("Main stem (widest path)"), self.tr("Longest path")
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterEnum(
                 self.END_RULE, self.tr("Automatic ends"), [main_stem, longest_path], defaultValue=0
             ),
@@ -124,7 +123,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
         self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
-        self.add_optional_parameter(
+        self.add_parameter(
             QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
             self.tr(
                 "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
@@ -133,6 +132,15 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
         self.add_result_parameters()
 
+    def rule_name(self, parameters, context):
+        """Return where the ends of this run come from: "split points", "guide lines", or the automatic rule."""
+        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
+            return self.tr("split points")
+        if parameters.get(self.GUIDE_LINES) not in (None, ""):
+            return self.tr("guide lines")
+        rules = (self.tr("main stem"), self.tr("longest path"))
+        return rules[self.parameterAsEnum(parameters, self.END_RULE, context)]
+
     def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, GeometryType.Polygon)
         run.warn_dropped_z(source)
@@ -140,8 +148,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         split_source = None
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
             split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        sampling = self.sampling_options(parameters, context)
+        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
+        sampling_of = self.feature_sampling(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
@@ -159,17 +167,19 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
                     guides.append(guide_feature.geometry())
 
-        options = dict(
-            sampling,
-            islands=islands,
-            end_rule=end_rule,
-            end_cap=self.end_cap_option(run, parameters, context),
-            snap_tolerance=snap_tolerance or None,
-        )
+        end_cap = self.end_cap_option(run, parameters, context)
 
         def task(feature):
             if not run.has_geometry(feature):
                 return run.skip_task(feature, no_geometry())
+            snap_tolerance = snap_tolerance_of(feature)
+            options = dict(
+                sampling_of(feature),
+                islands=islands,
+                end_rule=end_rule,
+                end_cap=end_cap,
+                snap_tolerance=snap_tolerance or None,
+            )
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
@@ -210,7 +220,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         for outcome in outcomes:
             part_index = outcome.part_index if several else None
             if outcome.error is not None:
-                run.skip(feature_id, str(outcome.error), part_index)
+                run.skip(feature_id, outcome.error, part_index)
                 continue
             for note in getattr(outcome.result, "notes", ()):
                 run.warn_feature(feature_id, note, part_index)

@@ -22,7 +22,6 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
     ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
-    HELP_ANCHOR = "centerline-network-of-polygons--incircupolygonnetwork"
     LENGTH_PARENT = INPUT
 
     def name(self):
@@ -34,6 +33,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def shortDescription(self):
         return self.tr("The medial-axis tree between the arm ends of a confluence, a delta or a road junction.")
 
+    def centerline_layer_word(self):
+        return self.tr("centerline network")
+
     def centerline_output_name(self):
         """Return the label of the branch output."""
         return self.tr("Network branches")
@@ -44,9 +46,12 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def summary(self):
         return self.tr(
             "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
-            "that separates the outline's chains between consecutive split points: a tree with one end at each split "
-            "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
+            "outline (the ends of the arms of a confluence, a delta or a road junction), lines down the middle of "
+            "its arms, joined where the arms meet. The split points cut the outline into pieces, the chains, one "
+            "between each two neighbouring points; each line runs through the centres of circles touching two "
+            "chains, a path of the shape's medial axis (the line of the centres of all circles touching two sides): "
+            "a tree with one end at each split point and junctions where a circle touches three chains, without side"
+            " branches. Each branch is one line "
             "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
             " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
             "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
@@ -119,8 +124,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         run.warn_dropped_z(source)
         split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
         id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
-        snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
-        sampling = self.sampling_options(parameters, context)
+        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
+        sampling_of = self.feature_sampling(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
@@ -128,6 +133,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         split_points = SplitPoints(split_source, crs, context, id_field)
 
         for feature in run.features(source):
+            snap_tolerance = snap_tolerance_of(feature)
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, ids = split_points.near(geometry, snap_tolerance, run.frame)
@@ -138,7 +144,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 run.frame.to_core(geometry),
                 candidates,
                 snap_tolerance=snap_tolerance or None,
-                **sampling,
+                **sampling_of(feature),
                 islands=islands,
                 end_cap=self.end_cap_option(run, parameters, context),
             )
@@ -146,7 +152,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             parts = []
             for outcome in outcomes or ():
                 if outcome.error is not None:
-                    run.skip(feature.id(), str(outcome.error), outcome.part_index if several else None)
+                    run.skip(feature.id(), outcome.error, outcome.part_index if several else None)
                     continue
                 parts.append((outcome.part_index, outcome.result, ids))
             run.write(feature, parts)

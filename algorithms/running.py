@@ -13,6 +13,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import GeometryType, ProcessingFeatureSourceFlag
 from .dependencies import require_core
+from .messages import core_text
 
 GEOMETRY_TYPE_NAMES = {
     GeometryType.Point: "point",
@@ -50,6 +51,12 @@ class FeatureTask:
     skip_reason: Optional[str] = None
 
 
+def part_number(part_index):
+    """Return how messages and the ``part`` fields number the part the core indexes ``part_index`` (from 0): from
+    1, as QGIS counts parts elsewhere ("part 1" is the first)."""
+    return part_index + 1
+
+
 def no_geometry():
     """Why a feature without geometry is skipped (translated)."""
     return QCoreApplication.translate("IncirCuAlgorithm", "the feature has no geometry")
@@ -80,6 +87,8 @@ class FeatureRun:
         self.writer = None
         self.skipped = 0
         self.z_warned = False
+        #: ``value(feature)`` of ``TRANSECT_INTERVAL`` once the centerline outputs are open (None before).
+        self.transect_interval_of = None
         self.progress_base = 0.0
         self.progress_step = 100.0
 
@@ -129,6 +138,7 @@ class FeatureRun:
         from .outputs import CenterlineWriter
 
         algorithm, parameters, context = self.algorithm, self.parameters, self.context
+        self.transect_interval_of = algorithm.length_of_feature(parameters, algorithm.TRANSECT_INTERVAL, context)
         interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
         add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
         self.use_writer(CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval), crs)
@@ -186,7 +196,8 @@ class FeatureRun:
         return not self.feedback.isCanceled()
 
     def skip(self, feature_id, reason, part_index=None):
-        """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's."""
+        """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's
+        (its error or message, worded in the user's language)."""
         self.skipped += 1
         self.warn(
             QCoreApplication.translate("IncirCuAlgorithm", "Feature {} skipped: {}").format(
@@ -203,8 +214,10 @@ class FeatureRun:
         )
 
     def named_lengths(self, message):
-        """Return ``message`` with the core's lengths named in the working frame's unit (once there is one)."""
-        return message if self.frame is None else self.frame.named_lengths(message)
+        """Return ``message`` (the core's ``Message`` or error, or text) in the user's language (see
+        :func:`.messages.core_text`), its lengths named in the working frame's unit (once there is one)."""
+        text = core_text(message, None if self.frame is None else self.frame.unit)
+        return text if self.frame is None else self.frame.named_lengths(text)
 
     def warn(self, message):
         """Show a warning in the log."""
@@ -212,10 +225,12 @@ class FeatureRun:
 
     @staticmethod
     def where(feature_id, part_index):
-        """Return ``"7"`` or ``"7 (part 1)"`` for messages."""
+        """Return ``"7"``, or ``"7 (part 1)"`` for the first part (``part_index`` 0), for messages."""
         if part_index is None:
             return str(feature_id)
-        return QCoreApplication.translate("IncirCuAlgorithm", "{} (part {})").format(feature_id, part_index)
+        return QCoreApplication.translate("IncirCuAlgorithm", "{} (part {})").format(
+            feature_id, part_number(part_index)
+        )
 
     def compute(self, feature_id, part_index, function, *args, **kwargs):
         """Call a core function for one feature (part); a core error becomes a skip warning.
@@ -237,7 +252,7 @@ class FeatureRun:
         """Skip a feature (part) whose computation raised ``error``: a core error says why; another exception
         is unexpected and asks for a report."""
         if isinstance(error, self.core.IncirCuError):
-            self.skip(feature_id, str(error), part_index)
+            self.skip(feature_id, error, part_index)
             return
         self.skip(
             feature_id,
@@ -333,7 +348,9 @@ class FeatureRun:
             self.write(task.feature, task.parts(outcome))
 
     def write(self, feature, parts):
-        """Write the results of one input feature."""
+        """Write the results of one input feature (its transects at its own interval where it is data-defined)."""
+        if self.transect_interval_of is not None:
+            self.writer.transect_interval = self.transect_interval_of(feature)
         self.writer.write(feature.attributes(), feature.id(), parts, self.frame)
 
     def close(self):

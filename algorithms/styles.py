@@ -1,22 +1,29 @@
 """How the outputs look when QGIS loads them: one symbol per output, stacked so that each one shows.
 
 The algorithm attaches a layer post-processor to every output QGIS will load on completion (the toolbox
-dialog, the modeler, ``processing.runAndLoadResults``). When the layer is loaded it gets its symbol, and the
-outputs of the run are ordered in the layer tree: vertices on top, then the centerline, transects and incircles.
+dialog, the modeler, ``processing.runAndLoadResults``). When the layer is loaded it gets its symbol and its
+name (the input layer's and the rule used: "reservoirs — centerlines (main stem)"), and the outputs of the run
+are kept together and in order in the layer tree: in a group of their own (named as the centerlines) at the top
+of the tree when the run loads more than one, vertices on top, then the centerline, transects and incircles.
 Outputs written to files and opened later keep QGIS's default style.
 """
 
+import math
 import uuid
 
 from qgis.core import (
     QgsFillSymbol,
+    QgsLayerTree,
     QgsLineSymbol,
     QgsMarkerSymbol,
     QgsProcessingLayerPostProcessorInterface,
     QgsProject,
+    QgsProperty,
     QgsSimpleLineSymbolLayer,
     QgsSingleSymbolRenderer,
 )
+
+from .compat import SymbolLayerProperty
 
 #: Layer custom properties marking the outputs of one run and their place in the layer tree.
 RUN_PROPERTY = "incircu/run"
@@ -29,19 +36,40 @@ LIVE_STYLERS = []
 VERTICES, CENTERLINE, TRANSECTS, INCIRCLES = range(4)
 
 CENTERLINE_COLOUR = "215,25,40,255"
-CASING_COLOUR = "255,255,255,210"
+CASING_COLOUR = "255,255,255,230"
 VERTEX_COLOUR = "80,10,20,255"
-TRANSECT_COLOUR = "30,120,30,230"
+#: Dark orange: far from the blues and greens of water fills and from the centerline's red.
+TRANSECT_COLOUR = "200,95,0,255"
 INCIRCLE_COLOUR = "30,100,200,230"
 
-#: Widths in millimetres on the map: a line narrow enough to leave the polygon's fill readable around it, even
-#: where a river is a few millimetres wide at the scale of a whole-country map.
-CENTERLINE_WIDTH_MM = 0.6
-CASING_WIDTH_MM = 1.0
+#: Widths in millimetres on the map at large scales (1:100,000 and larger), narrowing on a log scale to their
+#: small-scale values at 1:10,000,000, where a river is a few millimetres wide and a wide line would hide it.
+CENTERLINE_WIDTH_MM = 0.55
+SMALL_SCALE_CENTERLINE_WIDTH_MM = 0.25
+#: The white casing shows this far beyond the line on each side: 0.4 mm, one and a half pixels at 96 dpi.
+CASING_MARGIN_MM = 0.4
+SMALL_SCALE_CASING_MARGIN_MM = 0.2
+CASING_WIDTH_MM = CENTERLINE_WIDTH_MM + 2 * CASING_MARGIN_MM
 TRANSECT_WIDTH_MM = 0.26
 INCIRCLE_WIDTH_MM = 0.26
 #: Diameter of the vertex dots, millimetres: wider than the casing, so each dot stands out of the line.
-VERTEX_SIZE_MM = 1.6
+VERTEX_SIZE_MM = 2.0
+#: Share of its channel's drawn mean width a centerline takes at most, and the width it never goes under, mm.
+CHANNEL_SHARE = 0.25
+THINNEST_MM = 0.15
+#: Scale denominators between which the widths narrow (log-linear).
+LARGE_SCALE, SMALL_SCALE = 1e5, 1e7
+#: Vertices and incircles are shown only at scales where the typical vertex spacing and incircle diameter
+#: are at least this many millimetres on the map: closer dots merge into a bead string, smaller circles into a
+#: smudge.
+READABLE_MM = 3.0
+
+
+def by_scale(large, small):
+    """Return an expression of a width, millimetres: ``large`` at :data:`LARGE_SCALE` and larger scales, ``small``
+    at :data:`SMALL_SCALE` and smaller, log-linear between (the legend, without a map scale, uses ``large``)."""
+    low, high = math.log10(LARGE_SCALE), math.log10(SMALL_SCALE)
+    return f"coalesce(scale_linear(log10(@map_scale), {low:g}, {high:g}, {large:g}, {small:g}), {large:g})"
 
 
 def round_line_properties(colour, width):
@@ -55,12 +83,28 @@ def round_line_properties(colour, width):
     }
 
 
-def centerline_symbol():
-    """A red line in a thin white casing, readable over any fill and leaving the polygon's fill visible.
+def scaled_width(symbol_layer, large, small):
+    """Make the stroke width of ``symbol_layer`` follow the map scale (see :func:`by_scale`)."""
+    symbol_layer.setDataDefinedProperty(
+        SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(by_scale(large, small))
+    )
+
+
+def channel_width_mm(metres_per_unit):
+    """Return an expression of a centerline feature's mean channel width on the map, millimetres (NULL in the
+    legend, or where the line has no width)."""
+    return f"(attribute('width_mean') * {metres_per_unit!r} * 1000 / @map_scale)"
+
+
+def centerline_symbol(metres_per_unit=None):
+    """A red line in a white casing, readable over any fill and leaving the polygon's fill visible.
 
     The local width (the M values) is not drawn: a band as wide as the channel repaints the polygon itself,
     and its buffer would be recomputed for every feature at every redraw. The width stays in the M values,
-    the vertices' ``width`` field and the incircles.
+    the vertices' ``width`` field and the incircles. Both widths narrow at small scales (:func:`by_scale`), and,
+    where the layer's unit is known (``metres_per_unit``), the line takes at most :data:`CHANNEL_SHARE` of its
+    channel's drawn mean width (``width_mean``) and the casing as much again, never under :data:`THINNEST_MM`:
+    at world scale the line is a hairline inside its reservoir, not a band over it.
 
     Returns
     -------
@@ -68,8 +112,23 @@ def centerline_symbol():
         The casing on rendering pass 0 and the red line on pass 1, so that with symbol levels every casing
         is drawn before any line and centerlines meeting at a junction stay joined.
     """
+    line_by_scale = by_scale(CENTERLINE_WIDTH_MM, SMALL_SCALE_CENTERLINE_WIDTH_MM)
+    margin_by_scale = by_scale(CASING_MARGIN_MM, SMALL_SCALE_CASING_MARGIN_MM)
+    line_width, casing_width = line_by_scale, f"{line_by_scale} + 2 * {margin_by_scale}"
+    if metres_per_unit:
+        channel = channel_width_mm(metres_per_unit)
+        within = f"max({THINNEST_MM:g}, min({line_by_scale}, {CHANNEL_SHARE:g} * {channel}))"
+        line_width = f"CASE WHEN {channel} > 0 THEN {within} ELSE {line_by_scale} END"
+        casing_width = (
+            f"CASE WHEN {channel} > 0 THEN {within} + 2 * min({margin_by_scale}, {CHANNEL_SHARE / 2:g} * {channel})"
+            f" ELSE {casing_width} END"
+        )
     symbol = QgsLineSymbol.createSimple(round_line_properties(CASING_COLOUR, CASING_WIDTH_MM))
+    symbol.symbolLayer(0).setDataDefinedProperty(
+        SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(casing_width)
+    )
     line = QgsSimpleLineSymbolLayer.create(round_line_properties(CENTERLINE_COLOUR, CENTERLINE_WIDTH_MM))
+    line.setDataDefinedProperty(SymbolLayerProperty.StrokeWidth, QgsProperty.fromExpression(line_width))
     line.setRenderingPass(1)
     symbol.appendSymbolLayer(line)
     return symbol
@@ -88,10 +147,12 @@ def incircle_symbol():
 
 
 def transect_symbol():
-    """Thin green lines: another hue than the centerline and than the dark outlines of polygons."""
-    return QgsLineSymbol.createSimple(
+    """Thin dark orange lines: they show on a blue or green water fill and are not the centerline's red."""
+    symbol = QgsLineSymbol.createSimple(
         {"line_color": TRANSECT_COLOUR, "line_width": str(TRANSECT_WIDTH_MM), "line_width_unit": "MM"}
     )
+    scaled_width(symbol.symbolLayer(0), TRANSECT_WIDTH_MM, INCIRCLE_WIDTH_MM / 2.0)
+    return symbol
 
 
 def vertex_symbol():
@@ -109,14 +170,21 @@ def vertex_symbol():
     )
 
 
-def output_renderer(rank):
-    """Return the renderer of the output of ``rank`` (:data:`CENTERLINE`...): one symbol, levels for the centerline."""
-    symbol = {
-        CENTERLINE: centerline_symbol,
-        VERTICES: vertex_symbol,
-        TRANSECTS: transect_symbol,
-        INCIRCLES: incircle_symbol,
-    }[rank]()
+def readable_scale(typical_length, metres_per_unit):
+    """Return the smallest scale (largest denominator) at which ``typical_length`` (layer units) is
+    :data:`READABLE_MM` on the map; 0 (always shown) when it is unknown."""
+    if not typical_length or not metres_per_unit or typical_length <= 0.0:
+        return 0.0
+    return typical_length * metres_per_unit / (READABLE_MM / 1000.0)
+
+
+def output_renderer(rank, metres_per_unit=None):
+    """Return the renderer of the output of ``rank`` (:data:`CENTERLINE`...): one symbol, levels for the centerline
+    (whose widths follow its channel's where ``metres_per_unit``, the layer unit's length, is known)."""
+    if rank == CENTERLINE:
+        symbol = centerline_symbol(metres_per_unit)
+    else:
+        symbol = {VERTICES: vertex_symbol, TRANSECTS: transect_symbol, INCIRCLES: incircle_symbol}[rank]()
     renderer = QgsSingleSymbolRenderer(symbol)
     renderer.setUsingSymbolLevels(rank == CENTERLINE)
     return renderer
@@ -133,44 +201,83 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
         :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS` or :data:`INCIRCLES`.
     """
 
-    def __init__(self, run_id, rank):
+    def __init__(self, run_id, rank, name=None, group=None):
         super().__init__()
         self.run_id = run_id
         self.rank = rank
+        self.name = name
+        self.group = group
+        #: Scale denominator beyond which the layer is hidden (0: always shown); set by the writer.
+        self.minimum_scale = 0.0
+        #: Metres in one unit of the layer's lengths (None: unknown), for widths that follow the channel's.
+        self.metres_per_unit = None
 
     def postProcessLayer(self, layer, context, feedback):
-        layer.setRenderer(output_renderer(self.rank))
+        layer.setRenderer(output_renderer(self.rank, self.metres_per_unit))
+        if self.minimum_scale > 0.0:
+            layer.setScaleBasedVisibility(True)
+            layer.setMinimumScale(self.minimum_scale)
+        if self.name:
+            layer.setName(self.name)
         layer.setCustomProperty(RUN_PROPERTY, self.run_id)
         layer.setCustomProperty(RANK_PROPERTY, self.rank)
         layer.triggerRepaint()
-        order_run_layers(context.project() or QgsProject.instance(), self.run_id)
+        order_run_layers(context.project() or QgsProject.instance(), self.run_id, self.group)
 
 
-def order_run_layers(project, run_id):
-    """Order the loaded outputs of one run in the layer tree: lowest rank on top, at the place of the topmost.
+def run_group(root, run_id):
+    """Return the layer tree group holding the outputs of run ``run_id`` anywhere under ``root``, or None."""
+    for child in root.children():
+        if QgsLayerTree.isGroup(child):
+            if child.customProperty(RUN_PROPERTY) == run_id:
+                return child
+            found = run_group(child, run_id)
+            if found is not None:
+                return found
+    return None
 
-    Every post-processor calls this after styling its layer, so the order is right once the last output of
-    the run is loaded, whatever order QGIS loads them in.
+
+def order_run_layers(project, run_id, group_name=None):
+    """Keep the loaded outputs of one run together in the layer tree, lowest rank on top.
+
+    With ``group_name`` they go into a group of that name made for the run at the top of the group QGIS loaded
+    the first of them into (the tree's root, or Processing's results group): a later run's group comes above.
+    Without, they are ordered at the place of the topmost. Every post-processor calls this after styling its
+    layer, so the order is right once the last output of the run is loaded, whatever order QGIS loads them in.
     """
-    by_parent = {}
-    for node in project.layerTreeRoot().findLayers():
-        layer = node.layer()
-        if layer is not None and layer.customProperty(RUN_PROPERTY) == run_id:
+    root = project.layerTreeRoot()
+    nodes = [
+        node
+        for node in root.findLayers()
+        if node.layer() is not None and node.layer().customProperty(RUN_PROPERTY) == run_id
+    ]
+    if not nodes:
+        return
+    if group_name:
+        group = run_group(root, run_id)
+        if group is None:
+            group = nodes[0].parent().insertGroup(0, group_name)
+            group.setCustomProperty(RUN_PROPERTY, run_id)
+        by_parent = {id(group): (group, nodes)}
+    else:
+        by_parent = {}
+        for node in nodes:
             by_parent.setdefault(id(node.parent()), (node.parent(), []))[1].append(node)
-    for parent, nodes in by_parent.values():
+    for parent, members in by_parent.values():
         children = parent.children()
-        top = min(children.index(node) for node in nodes)
-        ordered = sorted(nodes, key=lambda node: int(node.layer().customProperty(RANK_PROPERTY)))
-        if [children[top + offset] for offset in range(len(ordered))] == ordered:
+        inside = [node for node in members if node in children]
+        top = min((children.index(node) for node in inside), default=0)
+        ordered = sorted(members, key=lambda node: int(node.layer().customProperty(RANK_PROPERTY)))
+        if len(inside) == len(members) and [children[top + offset] for offset in range(len(ordered))] == ordered:
             continue
         # A layer leaves the project when its last tree node goes: insert the moved copies before removing.
         for offset, node in enumerate(ordered):
             parent.insertChildNode(top + offset, node.clone())
-        for node in nodes:
-            parent.removeChildNode(node)
+        for node in members:
+            node.parent().removeChildNode(node)
 
 
-def style_outputs_on_load(context, destinations):
+def style_outputs_on_load(context, destinations, names=None, group=None, metres_per_unit=None):
     """Attach an :class:`OutputStyler` to every output that QGIS will load when the algorithm finishes.
 
     Parameters
@@ -179,10 +286,29 @@ def style_outputs_on_load(context, destinations):
     destinations : dict
         Rank (:data:`CENTERLINE`...) -> destination id returned by ``parameterAsSink`` (``None`` when the
         output is skipped).
+    names : dict, optional
+        Rank -> the name the loaded layer gets (QGIS's own name for the output where absent).
+    group : str, optional
+        Name of the group the outputs of the run go into when it loads more than one.
+    metres_per_unit : float, optional
+        Metres in one unit of the outputs' lengths (their ``width_mean``), for :func:`centerline_symbol`.
+
+    Returns
+    -------
+    dict
+        Rank -> the :class:`OutputStyler` of each output that will be loaded (to set its ``minimum_scale``).
     """
     run_id = uuid.uuid4().hex
-    for rank, destination in destinations.items():
-        if destination and context.willLoadLayerOnCompletion(destination):
-            styler = OutputStyler(run_id, rank)
-            LIVE_STYLERS.append(styler)
-            context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)
+    names = names or {}
+    loaded = {
+        rank: destination
+        for rank, destination in destinations.items()
+        if destination and context.willLoadLayerOnCompletion(destination)
+    }
+    stylers = {}
+    for rank, destination in loaded.items():
+        styler = stylers[rank] = OutputStyler(run_id, rank, names.get(rank), group if len(loaded) > 1 else None)
+        styler.metres_per_unit = metres_per_unit
+        LIVE_STYLERS.append(styler)
+        context.layerToLoadOnCompletionDetails(destination).setPostProcessor(styler)
+    return stylers

@@ -30,6 +30,8 @@ class IncirCuPlugin:
         if self.provider is None:
             self.provider = IncirCuProvider()
             QgsApplication.processingRegistry().addProvider(self.provider)
+            # The example models find their IncirCu steps only once the provider is registered.
+            self.provider.refreshAlgorithms()
 
     def initGui(self):
         """Desktop start-up: the toolbox entries are the whole user interface."""

@@ -3,10 +3,12 @@
 import configparser
 from pathlib import Path
 
-from qgis.core import QgsProcessingProvider
+from qgis.core import QgsProcessingModelAlgorithm, QgsProcessingProvider
 from qgis.PyQt.QtGui import QIcon
 
 PLUGIN_FOLDER = Path(__file__).resolve().parent.parent
+#: The example models the toolbox lists under "Example models" (written by ``scripts/make_sample_data.py``).
+MODEL_FOLDER = PLUGIN_FOLDER / "models"
 
 
 def plugin_metadata():
@@ -51,3 +53,8 @@ class IncirCuProvider(QgsProcessingProvider):
         self.addAlgorithm(PolygonCenterlineAlgorithm())
         self.addAlgorithm(LinesCenterlineAlgorithm())
         self.addAlgorithm(PolygonNetworkAlgorithm())
+        for path in sorted(MODEL_FOLDER.glob("*.model3")):
+            model = QgsProcessingModelAlgorithm()
+            if model.fromFile(str(path)):
+                model.setSourceFilePath(str(path))
+                self.addAlgorithm(model)

@@ -166,12 +166,21 @@ def bad_layers():
     }
 
 
+def qgis_application():
+    """Start QGIS (without the plugins) for writing models, once per process; the running one when there is one."""
+    from qgis.core import QgsApplication
+
+    if QgsApplication.instance() is None:
+        qgis_application.started = QgsApplication([], False, tempfile.mkdtemp(prefix="incircu-model-"))
+        qgis_application.started.initQgis()
+    return QgsApplication.instance()
+
+
 def write_model(path):
     """Write the graphical model "Fix geometries -> IncirCu -> Smooth" used by the tests."""
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     os.environ["QT_HASH_SEED"] = "0"  # stable XML attribute order, so the committed model only changes with content
     from qgis.core import (
-        QgsApplication,
         QgsProcessing,
         QgsProcessingModelAlgorithm,
         QgsProcessingModelChildAlgorithm,
@@ -182,8 +191,7 @@ def write_model(path):
     )
     from qgis.PyQt.QtCore import QPointF
 
-    application = QgsApplication([], False, tempfile.mkdtemp(prefix="incircu-model-"))
-    application.initQgis()
+    qgis_application()
     model = QgsProcessingModelAlgorithm("Fix, centerline, smooth", "IncirCu tests", "incircutests")
     # Laid out top to bottom as the modeler draws it: the two inputs side by side, then one step per row.
     for name, label, kind, optional, position in (
@@ -217,8 +225,13 @@ def write_model(path):
             "INPUT": QgsProcessingModelChildParameterSource.fromChildOutput("fix", "OUTPUT"),
             "SPLIT_POINTS": QgsProcessingModelChildParameterSource.fromModelParameter("split_points"),
             "SNAP_TOLERANCE": QgsProcessingModelChildParameterSource.fromStaticValue(1.0),
+            "TOLERANCE": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
             "SPACING": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
+            "ISLANDS": QgsProcessingModelChildParameterSource.fromStaticValue(0),
+            "END_RULE": QgsProcessingModelChildParameterSource.fromStaticValue(0),
+            "SEPARATE_PARTS": QgsProcessingModelChildParameterSource.fromStaticValue(False),
             "ADD_M": QgsProcessingModelChildParameterSource.fromStaticValue(False),
+            "TRANSECT_INTERVAL": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
         },
         (260, 260),
     )
@@ -243,7 +256,167 @@ def write_model(path):
     model.updateDestinationParameters()
     if not model.toFile(str(path)):
         raise RuntimeError(f"could not write {path}")
-    application.exitQgis()
+
+
+#: The example models shipped with the plugin (``models/``), listed in the toolbox under "Example models".
+MODEL_FOLDER = ROOT / "models"
+
+
+def example_models():
+    """Return the example models: file name -> (name, help, inputs, steps, outputs).
+
+    Each input is ``(name, label, source type, optional, guide?)``; each step ``(child id, algorithm id,
+    parameters)`` with a parameter's value a number or bool (static), ``("input", name)`` or ``("step", child id,
+    output)``; each output ``(name, label, child id, child output)``. Every IncirCu parameter is given, so the
+    modeler shows no missing value.
+    """
+    common = {
+        "SNAP_TOLERANCE": 1.0,
+        "TOLERANCE": 0.0,
+        "SPACING": 0.0,
+        "ISLANDS": 0,
+        "END_RULE": 0,
+        "SEPARATE_PARTS": False,
+        "ADD_M": True,
+    }
+    widths_help = {
+        "ALG_DESC": (
+            "River widths: repairs the river polygons (QGIS's Fix geometries), draws one centerline through each "
+            "and cross-sections from bank to bank every 'Distance between transects' along it. The centerline "
+            "carries the width at every vertex (M values) and its length and smallest, mean and largest width "
+            "as attributes; each cross-section carries its width and its distance along the centerline."
+        ),
+        "rivers": "River polygons, one feature per river or reach (any CRS; a layer in degrees is computed in metres).",
+        "split_points": "Optional: two points per polygon where its centerline should start and end.",
+        "transect_interval": "Distance along the centerline between two cross-sections, layer units; 0 = the mean width.",
+        "incircu:centerlines": "The centerlines with their width statistics.",
+        "incircu:transects": "The cross-sections with their width and distance along the centerline.",
+    }
+    guides_help = {
+        "ALG_DESC": (
+            "Reservoir centerlines with guides: repairs the reservoir polygons (QGIS's Fix geometries) and draws "
+            "one centerline through each, from the end where the river enters to the dam. Rough river lines (a "
+            "national river network, OpenStreetMap waterways) tell which arms are the river's: the centerline's "
+            "ends are those of the internal path that best covers them, so it follows the river rather than the "
+            "longest side arm."
+        ),
+        "reservoirs": "Reservoir or lake polygons (any CRS).",
+        "guide_lines": "River lines crossing the reservoirs (any CRS; gaps, offsets and tributaries are fine).",
+        "incircu:centerlines": "The centerlines with their width statistics; ends_from says 'guide' where a guide led.",
+    }
+    return {
+        "river_widths.model3": (
+            "River widths",
+            widths_help,
+            [
+                ("rivers", "River polygons", "polygon", False),
+                ("split_points", "Split points", "point", True),
+                ("transect_interval", "Distance between transects", "distance:rivers", False),
+            ],
+            [
+                ("fix", "native:fixgeometries", {"INPUT": ("input", "rivers")}),
+                (
+                    "incircu",
+                    "incircu:polygoncenterline",
+                    {
+                        "INPUT": ("step", "fix", "OUTPUT"),
+                        "SPLIT_POINTS": ("input", "split_points"),
+                        **common,
+                        "TRANSECT_INTERVAL": ("input", "transect_interval"),
+                    },
+                ),
+            ],
+            [
+                ("centerlines", "Centerlines", "incircu", "OUTPUT"),
+                ("transects", "Transects", "incircu", "OUTPUT_TRANSECTS"),
+            ],
+        ),
+        "reservoir_centerlines_with_guides.model3": (
+            "Reservoir centerlines with guides",
+            guides_help,
+            [
+                ("reservoirs", "Reservoir polygons", "polygon", False),
+                ("guide_lines", "Guide lines", "line", False),
+            ],
+            [
+                ("fix", "native:fixgeometries", {"INPUT": ("input", "reservoirs")}),
+                (
+                    "incircu",
+                    "incircu:polygoncenterline",
+                    {
+                        "INPUT": ("step", "fix", "OUTPUT"),
+                        **common,
+                        "GUIDE_LINES": ("input", "guide_lines"),
+                        "TRANSECT_INTERVAL": 0.0,
+                    },
+                ),
+            ],
+            [("centerlines", "Centerlines", "incircu", "OUTPUT")],
+        ),
+    }
+
+
+def write_example_models(folder):
+    """Write the example models of :func:`example_models` into ``folder`` (QGIS's Python, no plugin needed)."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    os.environ["QT_HASH_SEED"] = "0"
+    from qgis.core import (
+        QgsProcessing,
+        QgsProcessingModelAlgorithm,
+        QgsProcessingModelChildAlgorithm,
+        QgsProcessingModelChildParameterSource,
+        QgsProcessingModelOutput,
+        QgsProcessingModelParameter,
+        QgsProcessingParameterDistance,
+        QgsProcessingParameterFeatureSource,
+    )
+    from qgis.PyQt.QtCore import QPointF
+
+    qgis_application()
+    kinds = {
+        "polygon": QgsProcessing.SourceType.TypeVectorPolygon,
+        "point": QgsProcessing.SourceType.TypeVectorPoint,
+        "line": QgsProcessing.SourceType.TypeVectorLine,
+    }
+    folder.mkdir(parents=True, exist_ok=True)
+    for file_name, (name, help_content, inputs, steps, outputs) in example_models().items():
+        model = QgsProcessingModelAlgorithm(name, "Example models", "examples")
+        model.setHelpContent(help_content)
+        for column, (input_name, label, kind, optional) in enumerate(inputs):
+            if kind.startswith("distance:"):
+                parameter = QgsProcessingParameterDistance(input_name, label, 0.0, kind.split(":")[1], False, 0.0)
+            else:
+                parameter = QgsProcessingParameterFeatureSource(input_name, label, [kinds[kind]], optional=optional)
+            component = QgsProcessingModelParameter(input_name)
+            component.setPosition(QPointF(120 + 260 * column, 60))
+            model.addModelParameter(parameter, component)
+        for row, (child_id, algorithm_id, parameters) in enumerate(steps):
+            step = QgsProcessingModelChildAlgorithm(algorithm_id)
+            step.setChildId(child_id)
+            step.setDescription(child_id)
+            step.setPosition(QPointF(260, 160 + 100 * row))
+            for parameter_name, value in parameters.items():
+                if isinstance(value, tuple) and value[0] == "input":
+                    source = QgsProcessingModelChildParameterSource.fromModelParameter(value[1])
+                elif isinstance(value, tuple):
+                    source = QgsProcessingModelChildParameterSource.fromChildOutput(value[1], value[2])
+                else:
+                    source = QgsProcessingModelChildParameterSource.fromStaticValue(value)
+                step.addParameterSources(parameter_name, [source])
+            step_outputs = {}
+            for column, (output_name, label, child_id_of_output, child_output) in enumerate(outputs):
+                if child_id_of_output != child_id:
+                    continue
+                output = QgsProcessingModelOutput(output_name, label)
+                output.setChildOutputName(child_output)
+                output.setChildId(child_id)
+                output.setPosition(QPointF(260 + 260 * column, 160 + 100 * (len(steps) + 1)))
+                step_outputs[output_name] = output
+            step.setModelOutputs(step_outputs)
+            model.addChildAlgorithm(step)
+        model.updateDestinationParameters()
+        if not model.toFile(str(folder / file_name)):
+            raise RuntimeError(f"could not write {folder / file_name}")
 
 
 def write_layers(sample_folder, fixture_folder):
@@ -263,6 +436,7 @@ def main():
     """Write every file."""
     write_layers(SAMPLE_FOLDER, FIXTURE_FOLDER)
     write_model(FIXTURE_FOLDER / "fix_centerline_smooth.model3")
+    write_example_models(MODEL_FOLDER)
 
 
 if __name__ == "__main__":

@@ -104,7 +104,7 @@ def assert_close(line, expected, tolerance, label):
 
 
 def skipped_ids(feedback):
-    """What the "Feature ... skipped" warnings name (``"7"`` or ``"7 (part 1)"``), in order."""
+    """What the "Feature ... skipped" warnings name (``"7"`` or ``"7 (part 2)"`` for its second part), in order."""
     return [found.group(1) for found in map(re.compile("Feature (.+?) skipped: ").match, feedback.warnings) if found]
 
 
@@ -118,7 +118,7 @@ def test_polygons_over_several_batches_equal_the_core_per_feature(small_batches)
     ids = [feature.id() for feature in source.getFeatures()]
     feedback = RecordingFeedback()
     results = processing.run("incircu:polygoncenterline", {"INPUT": source, "OUTPUT": "memory:"}, feedback=feedback)
-    expected_skips = [str(ids[n]) for n in (0, 4, 8, 10)] + [f"{ids[12]} (part 1)"]
+    expected_skips = [str(ids[n]) for n in (0, 4, 8, 10)] + [f"{ids[12]} (part 2)"]
     assert skipped_ids(feedback) == expected_skips
     assert results["SKIPPED_COUNT"] == len(expected_skips)
     written = output_by_n(results["OUTPUT"])

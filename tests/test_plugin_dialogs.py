@@ -4,7 +4,7 @@ import pytest
 from conftest import REPOSITORY
 from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtGui import QImage
-from qgis.PyQt.QtWidgets import QApplication, QDialogButtonBox, QLabel
+from qgis.PyQt.QtWidgets import QApplication, QDialogButtonBox
 
 DATA = REPOSITORY / "tests" / "data"
 
@@ -47,9 +47,8 @@ def toolbox_dialog(provider, qgis_parent, qgis_iface, monkeypatch):
 
 
 def unit_shown(dialog, name):
-    """Return the visible unit text next to the box of parameter ``name``."""
-    container = dialog.mainWidget().wrappers[name].widget
-    return [label.text() for label in container.findChildren(QLabel) if not label.isHidden() and label.text()]
+    """Return the unit selected in the drop-down next to the box of parameter ``name``, as a list."""
+    return [dialog.mainWidget().wrappers[name].unit_box.currentText()]
 
 
 @pytest.mark.parametrize("algorithm_name", sorted(DIALOGS))
@@ -62,7 +61,7 @@ def test_toolbox_dialog_renders_with_help_and_units(toolbox_dialog, artifacts, a
         assert parameter.name() in panel.wrappers, parameter.name()
     assert dialog.buttonBox().button(QDialogButtonBox.StandardButton.Help) is not None
     for name in distances:
-        assert unit_shown(dialog, name) == ["meters"], name
+        assert unit_shown(dialog, name) == ["metres"], name
     path = artifacts / f"dialog_{algorithm.name()}.png"
     assert dialog.grab().save(str(path))
     image = QImage(str(path))
@@ -74,7 +73,7 @@ def test_toolbox_dialog_renders_with_help_and_units(toolbox_dialog, artifacts, a
 def test_lengths_of_a_layer_in_degrees_are_metres(toolbox_dialog, artifacts):
     _, dialog = toolbox_dialog("polygoncenterline", "river_4326.geojson")
     for name in DIALOGS["polygoncenterline"][1]:
-        assert unit_shown(dialog, name) == ["meters"], name
+        assert unit_shown(dialog, name) == ["metres"], name
     dialog.mainWidget().wrappers["SNAP_TOLERANCE"].setValue(2.5)
     parameters = dialog.createProcessingParameters()
     assert parameters["SNAP_TOLERANCE"] == 2.5
@@ -152,15 +151,63 @@ def qgis_polish():
     QApplication.removeTranslator(translator)
 
 
-def test_polish_length_labels_say_optional_as_qgis_does(toolbox_dialog, qgis_polish):
+def label_suffix(dialog, name):
+    """What the label of parameter ``name`` adds to its description (QGIS's "[optional]")."""
+    description = dialog.mainWidget().wrappers[name].parameterDefinition().description()
+    return parameter_label(dialog, name).text().replace(description, "").strip()
+
+
+def test_optional_only_where_a_value_may_be_absent(toolbox_dialog):
     _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
-    islands = parameter_label(dialog, "ISLANDS").text()
-    description = dialog.mainWidget().wrappers["ISLANDS"].parameterDefinition().description()
-    optional = islands.replace(description, "")
+    for name in ("SPLIT_POINTS", "GUIDE_LINES"):
+        assert label_suffix(dialog, name) == "[optional]", name
+    for name in (*DIALOGS["polygoncenterline"][1], "ISLANDS", "END_RULE"):
+        assert label_suffix(dialog, name) == "", name
+
+
+def test_polish_labels_say_optional_as_qgis_does(toolbox_dialog, qgis_polish):
+    _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
+    optional = label_suffix(dialog, "SPLIT_POINTS")
     assert optional and "[optional]" not in optional, "QGIS's Polish translation gives another suffix"
-    for name in DIALOGS["polygoncenterline"][1]:
-        definition = dialog.mainWidget().wrappers[name].parameterDefinition()
-        assert parameter_label(dialog, name).text() == definition.description() + optional, name
+    assert label_suffix(dialog, "TOLERANCE") == ""
+
+
+def test_a_length_in_another_unit_is_read_in_the_layers(toolbox_dialog):
+    _, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
+    wrapper = dialog.mainWidget().wrappers["TRANSECT_INTERVAL"]
+    units = [wrapper.unit_box.itemText(index) for index in range(wrapper.unit_box.count())]
+    assert units[0] == "metres" and {"kilometres", "feet"} <= set(units)
+    wrapper.setValue(0.25)
+    wrapper.unit_box.setCurrentIndex(units.index("kilometres"))
+    assert dialog.createProcessingParameters()["TRANSECT_INTERVAL"] == pytest.approx(250.0)
+    wrapper.unit_box.setCurrentIndex(units.index("feet"))
+    assert dialog.createProcessingParameters()["TRANSECT_INTERVAL"] == pytest.approx(0.25 * 0.3048)
+
+
+def test_tolerances_and_the_transect_interval_take_a_value_per_feature(toolbox_dialog, artifacts):
+    from qgis.core import QgsProperty
+
+    algorithm, dialog = toolbox_dialog("polygoncenterline", "river_2180.geojson")
+    wrappers = dialog.mainWidget().wrappers
+    for name in ("TOLERANCE", "SNAP_TOLERANCE", "TRANSECT_INTERVAL"):
+        assert algorithm.parameterDefinition(name).isDynamic(), name
+        assert wrappers[name].override is not None, name
+        assert wrappers[name].override.vectorLayer() is not None, "the override lists the input's fields"
+    assert wrappers["SPACING"].override is None
+    wrappers["TRANSECT_INTERVAL"].setValue(QgsProperty.fromField("interval"))
+    assert not wrappers["TRANSECT_INTERVAL"].spin_box.isEnabled()
+    value = dialog.createProcessingParameters()["TRANSECT_INTERVAL"]
+    assert isinstance(value, QgsProperty) and value.field() == "interval"
+    assert dialog.grab().save(str(artifacts / "dialog_polygoncenterline_data_defined.png"))
+
+
+def test_the_transect_interval_is_beside_the_transects_output(provider):
+    from incircu.algorithms.compat import ProcessingParameterFlag
+
+    for name in ("polygoncenterline", "linescenterline"):
+        algorithm = QgsApplication.processingRegistry().algorithmById(f"incircu:{name}")
+        interval = algorithm.parameterDefinition("TRANSECT_INTERVAL")
+        assert not interval.flags() & ProcessingParameterFlag.Advanced, name
 
 
 def test_length_boxes_show_only_the_significant_decimals(toolbox_dialog):

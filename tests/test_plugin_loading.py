@@ -3,10 +3,10 @@
 import re
 from pathlib import Path
 
-from qgis.core import Qgis, QgsApplication
+from qgis.core import Qgis, QgsApplication, QgsProcessingModelAlgorithm
 from qgis.PyQt.QtCore import QCoreApplication, QTranslator
 
-from tests.support.project import metadata, version_number
+from tests.support.project import REPOSITORY, metadata, version_number
 
 #: Fields plugins.qgis.org refuses a plugin without, and the ones this project promises.
 REQUIRED_FIELDS = (
@@ -65,13 +65,26 @@ def test_class_factory_plugin_registers_and_removes_the_provider(loaded_plugin):
     assert registry.providerById("incircu") is not None
 
 
+def own_algorithms(provider):
+    """The provider's algorithms but the example models."""
+    return [algorithm for algorithm in provider.algorithms() if not isinstance(algorithm, QgsProcessingModelAlgorithm)]
+
+
 def test_provider_identity(provider):
     assert provider.id() == "incircu"
     assert provider.name() == "IncirCu"
     assert provider.versionInfo() == metadata()["version"]
     assert not provider.icon().isNull()
-    ids = sorted(algorithm.id() for algorithm in provider.algorithms())
+    ids = sorted(
+        algorithm.id() for algorithm in provider.algorithms() if not isinstance(algorithm, QgsProcessingModelAlgorithm)
+    )
     assert ids == ["incircu:linescenterline", "incircu:polygoncenterline", "incircu:polygonnetwork"]
+    examples = sorted(
+        algorithm.displayName()
+        for algorithm in provider.algorithms()
+        if isinstance(algorithm, QgsProcessingModelAlgorithm)
+    )
+    assert examples == ["Reservoir centerlines with guides", "River widths"]
 
 
 def test_algorithms_document_every_parameter(provider):
@@ -128,29 +141,54 @@ def test_public_parameter_names(provider):
     )
 
 
-def github_slug(heading):
-    """The anchor GitHub gives a Markdown heading: lower case, punctuation dropped, spaces as hyphens."""
-    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+def test_help_button_opens_the_algorithms_section_of_the_shipped_page(provider):
+    from incircu.algorithms.help_page import HELP_FILE
+    from qgis.PyQt.QtCore import QUrl
 
-
-def test_help_button_url_names_the_algorithms_readme_section(provider):
-    from conftest import REPOSITORY
-
+    text = HELP_FILE.read_text(encoding="utf-8")
     readme = (REPOSITORY / "README.md").read_text(encoding="utf-8")
-    anchors = {github_slug(line.lstrip("#")) for line in readme.splitlines() if line.startswith("#")}
     for algorithm in provider.algorithms():
+        if isinstance(algorithm, QgsProcessingModelAlgorithm):
+            continue
         address, _, anchor = algorithm.helpUrl().partition("#")
-        assert address == metadata()["homepage"]
-        assert anchor in anchors, anchor
+        url = QUrl(address)
+        assert url.isLocalFile() and url.toLocalFile() == str(HELP_FILE), "offline: a page shipped in the plugin"
+        assert f'<section id="{anchor}"><h2>{algorithm.displayName()}</h2>' in text
         # the README's section carries the name the toolbox shows
         assert f"### {algorithm.displayName()} — `{algorithm.id()}`" in readme.splitlines()
         assert algorithm.shortDescription().endswith(".")
+
+
+def test_the_shipped_help_page_is_up_to_date(provider):
+    from incircu.algorithms.help_page import HELP_FILE, page
+
+    assert HELP_FILE.read_text(encoding="utf-8") == page(provider.algorithms()), "run `make help-page`"
+
+
+def test_help_says_what_a_term_means_before_using_it(provider):
+    from incircu.algorithms.help_page import HELP_FILE
+
+    text = HELP_FILE.read_text(encoding="utf-8")
+    words = text.index("<h2>Words used here</h2>")
+    for term in ("medial axis", "chain", "incircle", "chainage", "transect"):
+        assert text.lower().index(term) > words, term
+    for algorithm in provider.algorithms():
+        help_text = algorithm.shortHelpString().lower()
+        if "medial axis" in help_text:
+            before = help_text[: help_text.index("medial axis")]
+            assert "centre" in before and "circle" in before, algorithm.id()
+    for spelling in ("meters", "center", "centers"):
+        assert not re.search(rf"\b{spelling}\b", text), spelling
         assert "IncirCu" not in algorithm.displayName()
 
 
 def test_metadata_names_every_algorithm_the_provider_registers(provider):
     about = metadata()["about"]
-    names = [algorithm.displayName() for algorithm in provider.algorithms()]
+    names = [
+        algorithm.displayName()
+        for algorithm in provider.algorithms()
+        if not isinstance(algorithm, QgsProcessingModelAlgorithm)
+    ]
     count = {2: "two", 3: "three", 4: "four", 5: "five"}[len(names)]
     assert f"adds {count} Processing algorithms" in about
     for name in names:
@@ -160,13 +198,13 @@ def test_metadata_names_every_algorithm_the_provider_registers(provider):
 def test_every_algorithm_has_its_own_icon(provider):
     from conftest import REPOSITORY
 
-    icons = [Path(algorithm.svgIconPath()) for algorithm in provider.algorithms()]
+    icons = [Path(algorithm.svgIconPath()) for algorithm in own_algorithms(provider)]
     assert all(icon.is_file() and icon.parent == REPOSITORY / "icons" for icon in icons)
     assert len(set(icons)) == len(icons) and Path(provider.svgIconPath()) not in icons
 
 
 def test_dialog_help_panel_lists_every_parameter_and_output_with_its_help(provider):
-    for algorithm in provider.algorithms():
+    for algorithm in own_algorithms(provider):
         panel = algorithm.shortHelpString()
         assert panel.startswith(algorithm.summary())
         definitions = list(algorithm.parameterDefinitions()) + list(algorithm.outputDefinitions())
@@ -177,7 +215,7 @@ def test_dialog_help_panel_lists_every_parameter_and_output_with_its_help(provid
 
 
 def test_enum_help_names_the_choices_as_the_drop_down_does(provider):
-    for algorithm in provider.algorithms():
+    for algorithm in own_algorithms(provider):
         for definition in algorithm.parameterDefinitions():
             if definition.type() == "enum":
                 for option in definition.options():
@@ -258,4 +296,4 @@ def test_distances_carry_the_unit_of_the_input_layer(provider):
             assert definition.parentParameterName() == layer, name
             assert definition.minimum() == 0.0
             assert definition.defaultValue() is not None
-            assert definition.flags() & ProcessingParameterFlag.Optional, "a default makes it optional in the modeler"
+            assert not definition.flags() & ProcessingParameterFlag.Optional, "a length always has a value"

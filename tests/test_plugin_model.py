@@ -1,7 +1,10 @@
 """The committed graphical model "Fix geometries -> IncirCu -> Smooth", run headless two ways."""
 
+import processing
 from qgis.core import (
     QgsApplication,
+    QgsFeature,
+    QgsGeometry,
     QgsProcessingContext,
     QgsProcessingModelAlgorithm,
     QgsProcessingUtils,
@@ -80,3 +83,124 @@ def test_model_runs_in_qgis_process(qgis_process, tmp_path):
     layer = QgsVectorLayer(str(destination), "smoothed", "ogr")
     assert layer.isValid()
     check_smoothed(layer)
+
+
+#: The example models shipped with the plugin, by their name in the toolbox: inputs and outputs.
+EXAMPLES = {
+    "River widths": ({"rivers", "split_points", "transect_interval"}, {"incircu:centerlines", "incircu:transects"}),
+    "Reservoir centerlines with guides": ({"reservoirs", "guide_lines"}, {"incircu:centerlines"}),
+}
+
+
+def example(provider, name):
+    """The example model ``name`` as the toolbox lists it."""
+    found = [algorithm for algorithm in provider.algorithms() if algorithm.displayName() == name]
+    assert len(found) == 1, [algorithm.displayName() for algorithm in provider.algorithms()]
+    return found[0]
+
+
+def test_example_models_are_listed_valid_and_explained(provider):
+    for name, (inputs, outputs) in EXAMPLES.items():
+        model = example(provider, name)
+        assert model.group() == "Example models"
+        valid, issues = model.validate()
+        assert valid, issues
+        assert {
+            definition.name() for definition in model.parameterDefinitions() if not definition.isDestination()
+        } == inputs
+        assert {definition.name() for definition in model.outputDefinitions()} >= outputs
+        help_text = model.shortHelpString()
+        assert "Fix geometries" in help_text
+        for definition in model.parameterDefinitions():
+            if not definition.isDestination():
+                assert definition.description() in help_text, definition.name()
+
+
+def test_the_river_widths_model_measures_the_sample_river(provider):
+    feedback = RecordingFeedback()
+    results = processing.run(
+        example(provider, "River widths"),
+        {
+            "rivers": str(DATA / "river_2180.geojson"),
+            "split_points": str(DATA / "split_points_2180.geojson"),
+            "transect_interval": 100.0,
+            "incircu:centerlines": "memory:",
+            "incircu:transects": "memory:",
+        },
+        feedback=feedback,
+    )
+    centerlines, transects = results["incircu:centerlines"], results["incircu:transects"]
+    meander = features_by(centerlines, "name")["Meander"]
+    assert abs(meander["width_mean"] - RIVER_WIDTH) < 0.02 * RIVER_WIDTH
+    assert fixture_polygon("Meander").buffer(0.01 * RIVER_WIDTH).contains(as_shapely(meander.geometry()))
+    sections = [t for t in transects.getFeatures() if t["source_fid"] == meander["source_fid"]]
+    assert abs(len(sections) - meander["length"] / 100.0) <= 2
+    assert all(abs(t["width"] - RIVER_WIDTH) < 0.05 * RIVER_WIDTH for t in sections)
+
+
+def test_the_reservoir_model_follows_its_guide(provider):
+    # The island channel's guide runs along it: the ends are where the guide leaves the polygon.
+    polygon = fixture_polygon("Island channel")
+    west, south, east, north = polygon.bounds
+    middle = (south + north) / 2.0
+    guide = QgsVectorLayer("LineString?crs=EPSG:2180", "guide", "memory")
+    line = QgsFeature()
+    line.setGeometry(QgsGeometry.fromWkt(f"LINESTRING ({west - 50} {middle}, {east + 50} {middle})"))
+    guide.dataProvider().addFeatures([line])
+    results = processing.run(
+        example(provider, "Reservoir centerlines with guides"),
+        {"reservoirs": str(DATA / "river_2180.geojson"), "guide_lines": guide, "incircu:centerlines": "memory:"},
+    )
+    feature = features_by(results["incircu:centerlines"], "name")["Island channel"]
+    assert feature["ends_from"] == "guide"
+
+
+def test_example_model_outputs_are_styled_when_loaded(provider):
+    from processing.gui.Postprocessing import handleAlgorithmResults
+    from processing.tools import dataobjects
+    from qgis.core import QgsProcessingFeedback, QgsProcessingOutputLayerDefinition, QgsProject
+
+    project = QgsProject.instance()
+    project.clear()
+    feedback = QgsProcessingFeedback()
+    context = dataobjects.createContext(feedback)
+    context.setProject(project)
+    model = example(provider, "River widths")
+    parameters = {
+        "rivers": str(DATA / "river_2180.geojson"),
+        "split_points": str(DATA / "split_points_2180.geojson"),
+        "transect_interval": 100.0,
+        "incircu:centerlines": QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", project),
+        "incircu:transects": QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", project),
+    }
+    results, ok = model.run(parameters, context, feedback)
+    assert ok, results
+    assert handleAlgorithmResults(model, context, feedback, parameters=results)
+    layers = {layer.name(): layer for layer in project.mapLayers().values()}
+    # Named after the layer IncirCu read: in this model, the output of Fix geometries.
+    (centerlines,) = [layer for name, layer in layers.items() if name.endswith(" — centerlines (split points)")]
+    (transects,) = [layer for name, layer in layers.items() if name.endswith(" — transects (split points)")]
+    assert centerlines.renderer().symbol().symbolLayerCount() == 2, "the cased centerline of IncirCu's style"
+    assert transects.renderer().symbol().color().name() == "#c85f00"
+    project.clear()
+
+
+def test_shipped_example_models_match_their_generator(tmp_path):
+    import importlib.util
+    from xml.etree.ElementTree import canonicalize
+
+    from tests.support.project import REPOSITORY
+
+    spec = importlib.util.spec_from_file_location("sample_data", REPOSITORY / "scripts" / "make_sample_data.py")
+    sample_data = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(sample_data)
+    sample_data.write_example_models(tmp_path)
+    written = sorted(path.name for path in tmp_path.iterdir())
+    assert written == sorted(path.name for path in sample_data.MODEL_FOLDER.glob("*.model3"))
+    for name in written:
+        # Canonical XML: attributes in one order (QGIS writes them in its hash order, fixed only by QT_HASH_SEED
+        # when the writing process starts).
+        fresh, shipped = (
+            (folder / name).read_text().split("\n", 1)[1] for folder in (tmp_path, sample_data.MODEL_FOLDER)
+        )
+        assert canonicalize(fresh) == canonicalize(shipped), name

@@ -31,6 +31,8 @@ sample_data = importlib.util.module_from_spec(SPEC)
 SPEC.loader.exec_module(sample_data)
 
 RIVER_WIDTH = 2.0 * sample_data.RIVER_HALF_WIDTH
+#: What the output attributes resolve, metres (the fixtures are in metres).
+MILLIMETRE = 0.001
 SNAP_TOLERANCE = 1.0
 
 
@@ -127,7 +129,7 @@ def test_polygon_centerline_in_projected_crs(provider):
     assert line.boundary.geoms[1].distance(end) <= SNAP_TOLERANCE
     assert line.hausdorff_distance(axis) < 0.05 * RIVER_WIDTH
     assert meander["length"] == pytest.approx(axis.length, rel=0.01)
-    assert meander["length"] == pytest.approx(line.length, rel=1e-9)
+    assert meander["length"] == pytest.approx(line.length, abs=MILLIMETRE / 2.0 + 1e-9)
     assert meander["width_mean"] == pytest.approx(RIVER_WIDTH, rel=0.02)
     assert meander["width_min"] <= meander["width_mean"] <= meander["width_max"]
     assert meander["width_max"] == pytest.approx(RIVER_WIDTH, rel=0.02)
@@ -256,6 +258,48 @@ def test_lines_without_pair_fields_use_one_line_per_layer(provider):
     assert as_shapely(feature.geometry()).hausdorff_distance(axis) < 0.1 * width
 
 
+@pytest.mark.parametrize("folder", [DATA, REPOSITORY / "scripts" / "data"])
+def test_bank_lines_sharing_a_field_are_paired_by_it_with_the_defaults(provider, folder):
+    suffix = "_2180" if folder == DATA else ""
+    results, feedback = run(
+        "linescenterline",
+        {"LINES_A": str(folder / f"banks_a{suffix}.geojson"), "LINES_B": str(folder / f"banks_b{suffix}.geojson")},
+    )
+    assert results["CENTERLINE_COUNT"] == 2
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert any("'reach'" in info for info in feedback.infos), feedback.infos
+    for reach, feature in features_by(results["OUTPUT"], "reach").items():
+        axis, width = bank_axes()[reach]
+        assert as_shapely(feature.geometry()).hausdorff_distance(axis) < 0.1 * width
+
+
+@pytest.mark.parametrize("folder", [DATA, REPOSITORY / "scripts" / "data"])
+def test_the_polygon_sample_runs_with_the_defaults(provider, folder):
+    path = folder / ("river_2180.geojson" if folder == DATA else "river.geojson")
+    results, feedback = run("polygoncenterline", {"INPUT": str(path)})
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert results["CENTERLINE_COUNT"] == layer_from(path).featureCount()
+    assert not feedback.warnings
+
+
+def layer_from(path):
+    opened = QgsVectorLayer(str(path), path.name, "ogr")
+    assert opened.isValid(), path
+    return opened
+
+
+def test_a_shared_field_without_a_common_value_pairs_nothing(provider):
+    # 'side' is in both layers but 'left' is never 'right': no guess, one line per layer is asked for.
+    line_a, line_b = layer("banks_a_2180.geojson"), layer("banks_b_2180.geojson")
+    for opened in (line_a, line_b):
+        opened.setSubsetString("\"reach\" = 'R2'")
+        opened.startEditing()
+        opened.deleteAttribute(opened.fields().lookupField("reach"))
+    results, feedback = run("linescenterline", {"LINES_A": line_a, "LINES_B": line_b})
+    assert results["CENTERLINE_COUNT"] == 1
+    assert not any("pair" in info for info in feedback.infos), feedback.infos
+
+
 def test_bad_features_are_skipped_with_their_id(provider):
     results, feedback = run(
         "polygoncenterline",
@@ -340,7 +384,7 @@ def test_unpaired_line_is_skipped(provider):
         ),
         (
             "linescenterline",
-            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "banks_b_2180.geojson")},
+            {"LINES_A": str(DATA / "banks_a_2180.geojson"), "LINES_B": str(DATA / "crossing_b_2180.geojson")},
             "separate lines",
         ),
     ],
@@ -389,7 +433,8 @@ def test_optional_outputs_describe_the_centerline(provider):
     assert np.all(np.diff(chainage) >= 0)
     assert chainage[-1] == pytest.approx(meander["length"], rel=1e-9)
     for vertex in vertices:
-        assert vertex["width"] == pytest.approx(2 * vertex["radius"])
+        # Each rounded to the millimetre: 2 radius by up to one, the width by half of one.
+        assert vertex["width"] == pytest.approx(2 * vertex["radius"], abs=1.5 * MILLIMETRE + 1e-9)
         point = as_shapely(vertex.geometry())
         assert point.distance(polygon.exterior) == pytest.approx(vertex["radius"], abs=0.01 * RIVER_WIDTH)
     circles = [f for f in results["OUTPUT_CIRCLES"].getFeatures() if f["source_fid"] == meander.id()]
@@ -404,6 +449,114 @@ def test_optional_outputs_describe_the_centerline(provider):
         assert transect["width"] == pytest.approx(RIVER_WIDTH, rel=0.05)
         for end in section.boundary.geoms:
             assert end.distance(polygon.exterior) < 0.01 * RIVER_WIDTH
+
+
+@pytest.mark.parametrize("suffix", ["2180", "4326"])
+def test_lengths_in_the_attributes_are_rounded_to_the_millimetre(provider, suffix):
+    results, _feedback = run(
+        "polygoncenterline",
+        {
+            "INPUT": str(DATA / f"river_{suffix}.geojson"),
+            "SPLIT_POINTS": str(DATA / f"split_points_{suffix}.geojson"),
+            "OUTPUT_VERTICES": "memory:",
+            "OUTPUT_CIRCLES": "memory:",
+            "OUTPUT_TRANSECTS": "memory:",
+        },
+    )
+    lengths = {
+        "OUTPUT": ("length", "width_min", "width_mean", "width_max"),
+        "OUTPUT_VERTICES": ("chainage", "radius", "width"),
+        "OUTPUT_CIRCLES": ("chainage", "radius"),
+        "OUTPUT_TRANSECTS": ("chainage", "width"),
+    }
+    for output, names in lengths.items():
+        features = list(results[output].getFeatures())
+        assert features, output
+        for feature in features:
+            for name in names:
+                value = feature[name]
+                # A whole number of millimetres, up to the float's own rounding.
+                assert abs(value * 1000.0 - round(value * 1000.0)) < 1e-6, (output, name, value)
+    if suffix == "2180":
+        for feature in results["OUTPUT"].getFeatures():
+            assert feature["length"] == pytest.approx(feature.geometry().length(), abs=MILLIMETRE / 2.0 + 1e-9)
+
+
+@pytest.mark.parametrize(
+    "crs, decimals",
+    [
+        ("EPSG:2180", 3),  # metres
+        ("EPSG:4326", 3),  # degrees: lengths are metres
+        ("EPSG:2263", 3),  # feet: a millimetre is 0.0033 ft
+        ("PROJ:+proj=merc +ellps=WGS84 +units=km +no_defs +type=crs", 6),
+        ("", None),
+    ],
+)
+def test_attribute_decimals_resolve_a_millimetre_in_the_layers_unit(provider, crs, decimals):
+    from incircu.algorithms.units import length_decimals
+
+    if crs.startswith("PROJ:"):
+        reference = QgsCoordinateReferenceSystem.fromProj(crs[len("PROJ:") :])
+    else:
+        reference = QgsCoordinateReferenceSystem(crs)
+    assert length_decimals(reference) == decimals
+
+
+def test_parts_are_numbered_from_one_in_fields_and_messages(provider):
+    results, feedback = run(
+        "polygoncenterline",
+        {"INPUT": str(DATA / "multipart_2180.geojson"), "SEPARATE_PARTS": True, "OUTPUT_VERTICES": "memory:"},
+    )
+    assert {feature["part"] for feature in results["OUTPUT_VERTICES"].getFeatures()} == {1, 2}
+    polygon = next(layer("multipart_2180.geojson").getFeatures())
+    one_point = QgsVectorLayer("Point?crs=EPSG:2180", "one split point", "memory")
+    first_part = polygon.geometry().constGet().geometryN(0).exteriorRing().pointN(0)
+    point = QgsFeature()
+    point.setGeometry(QgsGeometry(first_part.clone()))
+    one_point.dataProvider().addFeatures([point])
+    _results, feedback = run(
+        "polygoncenterline", {"INPUT": str(DATA / "multipart_2180.geojson"), "SPLIT_POINTS": one_point}
+    )
+    assert any(f"Feature {polygon.id()} (part 1) skipped" in warning for warning in feedback.warnings), (
+        feedback.warnings
+    )
+
+
+def test_lengths_take_a_value_per_feature_where_data_defined(provider):
+    from qgis.core import QgsProperty
+
+    def per_river(meander, island_channel):
+        return QgsProperty.fromExpression(f"CASE WHEN \"name\" = 'Meander' THEN {meander} ELSE {island_channel} END")
+
+    common = {
+        "INPUT": str(DATA / "river_2180.geojson"),
+        "SPLIT_POINTS": str(DATA / "split_points_2180.geojson"),
+        "OUTPUT_TRANSECTS": "memory:",
+    }
+    fixed, _ = run("polygoncenterline", common)
+    varied, _ = run(
+        "polygoncenterline",
+        {
+            **common,
+            "TRANSECT_INTERVAL": per_river(100.0, 50.0),
+            "TOLERANCE": per_river(0.0, RIVER_WIDTH / 4.0),
+        },
+    )
+    fixed_lines, varied_lines = features_by(fixed["OUTPUT"], "name"), features_by(varied["OUTPUT"], "name")
+    for name, interval in (("Meander", 100.0), ("Island channel", 50.0)):
+        feature = varied_lines[name]
+        count = sum(1 for t in varied["OUTPUT_TRANSECTS"].getFeatures() if t["source_fid"] == feature["source_fid"])
+        # Every interval along the line but the end caps (each at most a width long).
+        span = (feature["length"] - 2.0 * feature["width_max"], feature["length"])
+        assert span[0] / interval - 1.0 <= count <= span[1] / interval + 1.0, name
+    # A coarser tolerance on one river only: fewer vertices there, the same line on the other.
+    assert varied_lines["Island channel"]["n_vertices"] < fixed_lines["Island channel"]["n_vertices"]
+    assert varied_lines["Meander"]["n_vertices"] == fixed_lines["Meander"]["n_vertices"]
+    # The meander's split points lie 0.4 m outside it: beyond a snap tolerance of a millimetre, its ends are
+    # found automatically, and the warning says so.
+    snapped, feedback = run("polygoncenterline", {**common, "SNAP_TOLERANCE": per_river(0.001, SNAP_TOLERANCE)})
+    assert not fixed_lines["Meander"]["ends_found"] and features_by(snapped["OUTPUT"], "name")["Meander"]["ends_found"]
+    assert any("found automatically" in warning for warning in feedback.warnings), feedback.warnings
 
 
 def test_progress_rises_to_100_percent(provider):

@@ -4,6 +4,7 @@ import ast
 import configparser
 import html
 import re
+import string
 import subprocess
 import sys
 import zipfile
@@ -86,16 +87,96 @@ def test_compiled_translations_match_their_sources(tmp_path):
 
 
 def translatable_literals(path):
-    """The texts given to ``tr(text)`` and ``translate(context, text)`` in a Python file, read with ``ast``."""
+    """The texts given to ``tr(text)``, ``translate(context, text)`` and ``QT_TRANSLATE_NOOP(context, text)`` (the
+    core's messages) in a Python file, read with ``ast``."""
     texts = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
-            position = {"tr": 0, "translate": 1}.get(node.func.attr)
+        if isinstance(node, ast.Call) and isinstance(node.func, (ast.Attribute, ast.Name)):
+            called = node.func.attr if isinstance(node.func, ast.Attribute) else node.func.id
+            position = {"tr": 0, "translate": 1, "QT_TRANSLATE_NOOP": 1}.get(called)
             if position is not None and len(node.args) > position:
                 text = node.args[position]
                 if isinstance(text, ast.Constant) and isinstance(text.value, str):
                     texts.add(text.value)
     return texts
+
+
+#: The files ``make transup`` reads: the plugin, its algorithms and the core's messages.
+TRANSLATED_SOURCES = [
+    REPOSITORY / "incircu_plugin" / "plugin.py",
+    REPOSITORY / "incircu_plugin" / "provider.py",
+    REPOSITORY / "incircu_plugin" / "core" / "errors.py",
+    *sorted((REPOSITORY / "algorithms").glob("*.py")),
+]
+
+
+def polish_messages(context):
+    """The messages of ``context`` in ``i18n/incircu_pl.ts``: source -> (translation, finished)."""
+    text = (REPOSITORY / "i18n" / "incircu_pl.ts").read_text(encoding="utf-8")
+    block = re.search(rf"<context>\s*<name>{context}</name>(.*?)</context>", text, re.DOTALL)
+    assert block, context
+    found = re.findall(
+        r"<source>(.*?)</source>\s*<translation( type=\"unfinished\")?>(.*?)</translation>", block.group(1), re.DOTALL
+    )
+    return {
+        html.unescape(source): (html.unescape(translation), not unfinished) for source, unfinished, translation in found
+    }
+
+
+def fields(template):
+    """The names of the ``str.format`` fields of ``template``."""
+    return {name for _, name, _, _ in string.Formatter().parse(template) if name}
+
+
+def test_every_core_message_code_has_polish_text():
+    from incircu_plugin.core.errors import CONTEXT, MESSAGES
+
+    polish = polish_messages(CONTEXT)
+    for code, template in MESSAGES.items():
+        assert template in polish, f"no Polish for the core message {code!r}: run `make transup`"
+        translation, finished = polish[template]
+        assert finished and translation, code
+        assert fields(translation) <= fields(template), f"{code}: the Polish names a value the message has not"
+
+
+def test_a_core_error_reads_in_polish_with_qgis_polish_tool_name(provider, qgis_iface):
+    import processing
+    import qgis.utils
+    from qgis.core import QgsProcessingFeedback
+    from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+
+    class Warnings(QgsProcessingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.warnings = []
+
+        def pushWarning(self, message):
+            self.warnings.append(message)
+
+    settings = QgsSettings()
+    previous = settings.value("locale/userLocale", "")
+    settings.setValue("locale/userLocale", "pl_PL")
+    qgis_polish = QTranslator()
+    assert qgis_polish.load("qgis_pl", QgsApplication.i18nPath()), "QGIS's Polish translation is installed with QGIS"
+    QCoreApplication.installTranslator(qgis_polish)
+    try:
+        polish_plugin = sys.modules[PLUGIN_NAME].classFactory(qgis.utils.iface)
+        try:
+            feedback = Warnings()
+            processing.run(
+                "incircu:polygoncenterline",
+                {"INPUT": str(REPOSITORY / "tests" / "data" / "bad_polygons_2180.geojson"), "OUTPUT": "memory:"},
+                feedback=feedback,
+            )
+        finally:
+            polish_plugin.unload()
+    finally:
+        QCoreApplication.removeTranslator(qgis_polish)
+        settings.setValue("locale/userLocale", previous)
+    invalid = [warning for warning in feedback.warnings if "Napraw geometrie" in warning]
+    assert invalid, feedback.warnings
+    assert invalid[0].startswith("Obiekt ") and "Poligon jest nieprawidłowy" in invalid[0], invalid[0]
+    assert not any("The polygon" in warning or "split point" in warning for warning in feedback.warnings)
 
 
 def test_every_translatable_string_has_its_polish_translation(tmp_path):
@@ -105,11 +186,7 @@ def test_every_translatable_string_has_its_polish_translation(tmp_path):
     committed = REPOSITORY / "i18n" / "incircu_pl.ts"
     fresh = tmp_path / committed.name
     fresh.write_bytes(committed.read_bytes())
-    sources = [
-        REPOSITORY / "incircu_plugin" / "plugin.py",
-        REPOSITORY / "incircu_plugin" / "provider.py",
-        *sorted((REPOSITORY / "algorithms").glob("*.py")),
-    ]
+    sources = TRANSLATED_SOURCES
     subprocess.run(["pylupdate5", "-noobsolete", *map(str, sources), "-ts", str(fresh)], check=True)
 
     def messages(path):

@@ -7,10 +7,13 @@ then rendered in layer-tree order to ``tests/artifacts/styled_<algorithm>.png`` 
 centerline shows, the vertex dots show above it, the river keeps its colour, the incircles' symbol in the layer panel shows.
 """
 
+import numpy as np
 import pytest
 from conftest import REPOSITORY
 from qgis.core import (
     QgsApplication,
+    QgsExpressionContext,
+    QgsExpressionContextScope,
     QgsFillSymbol,
     QgsLayerTreeModel,
     QgsLineSymbol,
@@ -39,7 +42,7 @@ CASES = {
             "TRANSECT_INTERVAL": 150.0,
         },
         ["river_2180.geojson"],
-        "Centerlines of polygons",
+        "river — {} (split points)",
     ),
     "linescenterline": (
         {
@@ -50,7 +53,7 @@ CASES = {
             "TRANSECT_INTERVAL": 150.0,
         },
         ["banks_a_2180.geojson", "banks_b_2180.geojson"],
-        "Centerline between lines",
+        "banks_a / banks_b — {}",
     ),
 }
 
@@ -99,9 +102,77 @@ def close(colour, expected, tolerance=40):
     return all(abs(a - b) <= tolerance for a, b in zip(colour.getRgb()[:3], expected.getRgb()[:3]))
 
 
+def width_at_scale(symbol_layer, scale, feature=None):
+    """The stroke width, millimetres, ``symbol_layer`` draws at the map scale 1:``scale`` (for ``feature``)."""
+    from incircu.algorithms.compat import SymbolLayerProperty
+
+    prop = symbol_layer.dataDefinedProperties().property(SymbolLayerProperty.StrokeWidth)
+    context = QgsExpressionContext()
+    scope = QgsExpressionContextScope()
+    scope.setVariable("map_scale", scale)
+    context.appendScope(scope)
+    if feature is not None:
+        context.setFeature(feature)
+        context.setFields(feature.fields())
+    value, ok = prop.valueAsDouble(context, symbol_layer.width())
+    assert ok
+    return value
+
+
+def colour_distance(one, other):
+    """Euclidean distance between two colours in red, green, blue (0-255 each)."""
+    return sum((a - b) ** 2 for a, b in zip(one.getRgb()[:3], other.getRgb()[:3])) ** 0.5
+
+
+def typical_vertex_spacing(vertices):
+    """The median, over the parts, of the median distance along the line between a part's vertices."""
+    chainages = {}
+    for feature in vertices.getFeatures():
+        chainages.setdefault((feature["source_fid"], feature["part"]), []).append(feature["chainage"])
+    medians = []
+    for values in chainages.values():
+        steps = np.diff(sorted(values))
+        medians.append(np.median(steps[steps > 0]))
+    return float(np.median(medians))
+
+
+def dots_shown(vertices, settings, image):
+    """The share of the vertices drawn in ``image`` (its pixel at a vertex has the dots' colour) among those
+    within the map; rounded to 0 or 1 when at most a tenth of them are the exception."""
+    dot_colour = vertices.renderer().symbol().color()
+    extent = settings.visibleExtent()
+    points = [feature.geometry().asPoint() for feature in vertices.getFeatures()]
+    centres = [settings.mapToPixel().transform(point) for point in points if extent.contains(point)]
+    assert centres
+    shown = sum(close(QColor(image.pixel(round(centre.x()), round(centre.y()))), dot_colour) for centre in centres)
+    share = shown / len(centres)
+    return 1.0 if share >= 0.9 else 0.0 if share <= 0.1 else share
+
+
 def sampled_pixels(image, step=2):
     """The colours of every ``step``-th pixel of ``image`` in both directions, row by row."""
     return [QColor(image.pixel(x, y)) for y in range(0, image.height(), step) for x in range(0, image.width(), step)]
+
+
+def test_a_new_run_comes_in_its_own_group_above_the_last(provider):
+    project = QgsProject.instance()
+    project.clear()
+    river = QgsVectorLayer(str(DATA / "river_2180.geojson"), "reservoirs", "ogr")
+    project.addMapLayer(river)
+    run_as_the_dialog_does("incircu:polygoncenterline", {"INPUT": river}, project)
+    run_as_the_dialog_does("incircu:polygoncenterline", {"INPUT": river, "END_RULE": 1}, project)
+    groups = [node for node in project.layerTreeRoot().children() if node.nodeType() == 0]
+    assert [group.name() for group in groups] == [
+        "reservoirs — centerlines (longest path)",
+        "reservoirs — centerlines (main stem)",
+    ]
+    for group, rule in zip(groups, ("longest path", "main stem")):
+        names = [node.name() for node in group.children()]
+        assert names == [
+            f"reservoirs — {word} ({rule})" for word in ("vertices", "centerlines", "transects", "incircles")
+        ]
+    assert project.layerTreeRoot().children()[-1].name() == "reservoirs", "the input stays below the results"
+    project.clear()
 
 
 @pytest.mark.parametrize("algorithm_name", sorted(CASES))
@@ -126,8 +197,11 @@ def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algori
 
     layers = project.layerTreeRoot().layerOrder()
     names = [layer.name() for layer in layers]
-    expected = ["Centerline vertices", centerline_name, "Transects", "Incircles"]
+    expected = [centerline_name.format(word) for word in ("vertices", "centerlines", "transects", "incircles")]
     assert names[: len(expected)] == expected, "the vertices lie on the centerline: they must be drawn above it"
+    group = project.layerTreeRoot().children()[0]
+    assert group.name() == centerline_name.format("centerlines")
+    assert [node.name() for node in group.children()] == expected, "the outputs of a run are kept together"
     assert len(set(names)) == len(names)
     vertices, centerline, transects, circles = layers[:4]
     for layer, symbol_type in ((centerline, "line"), (vertices, "marker"), (transects, "line"), (circles, "fill")):
@@ -146,6 +220,28 @@ def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algori
     )
     assert line.width() > 2 * transects.renderer().symbol().width()
     assert line.color().hue() != transects.renderer().symbol().color().hue(), "transects look like the centerline"
+    assert (casing.width() - line.width()) / 2 >= 1.5 * PIXEL_MM, "the casing must show on both sides of the line"
+    for symbol_layer in (casing, line):
+        at_world_scale = width_at_scale(symbol_layer, 5e7)
+        assert at_world_scale <= 0.5 * symbol_layer.width(), "a line as wide at world scale hides the rivers"
+        assert width_at_scale(symbol_layer, 1e4) == pytest.approx(symbol_layer.width())
+    # Within its channel at every scale: the line a quarter of the drawn mean width at most (never under a
+    # hairline), the casing as much again.
+    feature = next(centerline.getFeatures())
+    for scale in (1e3, 1e4, 1e5, 1e6, 1e7):
+        channel = feature["width_mean"] * 1000.0 / scale
+        drawn = width_at_scale(line, scale, feature)
+        assert drawn <= max(0.15, 0.25 * channel) + 1e-9, scale
+        assert width_at_scale(casing, scale, feature) <= drawn + 0.25 * channel + 1e-9, scale
+    assert width_at_scale(line, 1e3, feature) == pytest.approx(line.width()), "full width where the channel is wide"
+    transect_colour = transects.renderer().symbol().color()
+    for water in (RIVER_FILL, QColor(100, 160, 220), QColor(120, 180, 140), QColor(20, 60, 160)):
+        assert colour_distance(transect_colour, water) >= 150, f"transects vanish on {water.name()} water"
+    for layer in (vertices, circles):
+        assert layer.hasScaleBasedVisibility() and layer.minimumScale() > 0, layer.name()
+        assert layer.maximumScale() == 0, "shown at every larger scale"
+    spacing = typical_vertex_spacing(vertices)
+    assert spacing / vertices.minimumScale() * 1000.0 == pytest.approx(3.0, rel=0.01), "dots readable, no further"
     dot_size = vertices.renderer().symbol().size()
     assert (dot_size - casing.width()) / 2 >= PIXEL_MM, "a vertex dot must stand out of the line on both sides"
 
@@ -163,10 +259,15 @@ def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algori
     pixels = sampled_pixels(image)
     red = sum(1 for colour in pixels if colour.red() > 170 and colour.green() < 80)
     assert red > 200, "the centerline is not visible"
-    dot_colour = vertices.renderer().symbol().color()
-    centres = [settings.mapToPixel().transform(feature.geometry().asPoint()) for feature in vertices.getFeatures()]
-    shown = [close(QColor(image.pixel(round(centre.x()), round(centre.y()))), dot_colour) for centre in centres]
-    assert sum(shown) >= 0.9 * len(shown), "the vertex dots are hidden"
+    readable = settings.scale() <= vertices.minimumScale()
+    assert dots_shown(vertices, settings, image) == (1.0 if readable else 0.0), "dots where they can be read"
+    # Zoomed in to where the dots can be read, they show (and the centerline still does).
+    zoomed = map_settings(project, layers)
+    zoom = min(1.0, 0.8 * vertices.minimumScale() / zoomed.scale())
+    zoomed.setExtent(zoomed.extent().scaled(zoom))
+    zoomed_image = render(zoomed, artifacts / f"styled_{algorithm_name}_zoomed.png")
+    assert zoomed.scale() <= vertices.minimumScale()
+    assert dots_shown(vertices, zoomed, zoomed_image) == 1.0, "the vertex dots are hidden"
 
     rivers = [layer for layer in layers if layer.name() == "river"]
     if rivers:

@@ -19,7 +19,7 @@ from .chains import (
 )
 from .ends import END_RULES
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
-from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
+from .errors import CenterlineError, IncirCuError, InvalidGeometryError, Message, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import cumulative_lengths
 from .steps import EndsRequest, run_alone, run_together
@@ -55,7 +55,7 @@ _RESULT_FIELDS = tuple(field.name for field in fields(CenterlineResult) if field
 def check_island_mode(islands):
     """Raise :class:`IncirCuError` unless ``islands`` is one of :data:`ISLAND_MODES`."""
     if islands not in ISLAND_MODES:
-        raise IncirCuError("Unknown island mode {!r}; use one of {}.".format(islands, ", ".join(ISLAND_MODES)))
+        raise IncirCuError(Message("unknown_island_mode", mode=islands, choices=", ".join(ISLAND_MODES)))
 
 
 def polygon_centerline(
@@ -169,7 +169,7 @@ def polygon_centerline_steps(
     check_island_mode(islands)
     check_end_cap(end_cap)
     if end_rule not in END_RULES:
-        raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
+        raise IncirCuError(Message("unknown_end_rule", rule=end_rule, choices=", ".join(END_RULES)))
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     split_points = split_point_coordinates(split_points)
     notes = []
@@ -210,14 +210,11 @@ def _automatic_ends(polygon, end_rule, guide, progress, notes):
     """
     ends = yield EndsRequest(polygon, end_rule, guide, progress)
     if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
-        raise SplitPointError(
-            f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
-            "clear ends. Give two split points."
-        )
+        raise SplitPointError(Message("ends_coincide", point=format_point(ends.start.coords[0])))
     if guide is not None and not ends.guided:
-        notes.append("The guide line does not come near the polygon; its ends were found automatically.")
+        notes.append(Message("note_guide_far"))
     if not ends.elongated:
-        notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
+        notes.append(Message("note_not_elongated"))
     return ends
 
 
@@ -327,12 +324,11 @@ def bank_length_note(line_a, line_b):
     longer = int(lengths[1] > lengths[0])
     if lengths[longer] <= BANK_LENGTH_RATIO * lengths[1 - longer]:
         return None
-    names = ("first", "second")
-    return (
-        f"The {names[longer]} line is {lengths[longer]:.6g} long, {lengths[longer] / lengths[1 - longer]:.3g} "
-        f"times the {names[1 - longer]} one ({lengths[1 - longer]:.6g} CRS units): it runs on beyond the other, "
-        "where the region between them is closed by the straight gap between their ends, and the centerline "
-        "follows that gap there. Cut the lines to where they face each other."
+    return Message(
+        ("first_line_longer", "second_line_longer")[longer],
+        length=lengths[longer],
+        ratio=lengths[longer] / lengths[1 - longer],
+        other=lengths[1 - longer],
     )
 
 
@@ -349,7 +345,8 @@ def split_point_count_error(count, snap_tolerance, several, needed):
         The geometry has several parts: the message speaks of "the part" (its caller knows which, see
         :class:`PartOutcome`), else of "the polygon".
     needed : str
-        What the part needs, e.g. ``"it needs 2 (or none, to find its ends automatically)"``.
+        The code of what the part needs in :data:`.errors.MESSAGES`: ``"needs_two_or_none"`` (a centerline) or
+        ``"network_needs_two"``.
 
     Returns
     -------
@@ -357,14 +354,18 @@ def split_point_count_error(count, snap_tolerance, several, needed):
 
     Examples
     --------
-    >>> str(split_point_count_error(1, 2.5, False, "it needs 2"))
-    'The polygon has 1 split point within the snap tolerance (2.5 CRS units) of its exterior ring; it needs 2.'
+    >>> str(split_point_count_error(1, 2.5, False, "network_needs_two"))
+    'The polygon has 1 split point within the snap tolerance (2.5 CRS units) of its exterior ring; a network needs at least 2.'
     """
-    subject = "The part" if several else "The polygon"
-    points = "split point" if count == 1 else "split points"
     return SplitPointError(
-        f"{subject} has {count} {points} within the snap tolerance ({snap_tolerance:.6g} CRS units) of its "
-        f"exterior ring; {needed}."
+        Message(
+            "split_point_count",
+            subject=Message("subject_part" if several else "subject_polygon"),
+            count=count,
+            points=Message("split_point_one" if count == 1 else "split_point_many"),
+            tolerance=snap_tolerance,
+            needed=Message(needed),
+        )
     )
 
 
@@ -376,15 +377,12 @@ def _checked(result, region=None):
     """
     coordinates = shapely.get_coordinates(result.line)
     if not np.isfinite(coordinates).all():
-        raise CenterlineError("The computed centerline has a NaN or infinite coordinate; none is returned.")
+        raise CenterlineError(Message("centerline_not_finite"))
     if not result.line.is_simple:
         crossing = find_self_crossing(coordinates)
-        where = "" if crossing is None else f" at {format_point(crossing)}"
-        raise CenterlineError(
-            f"The computed centerline crosses itself{where}, so none is returned. This happens where the shape "
-            "has no single axis near the ends (a compact shape, or a split point in a corner): move the split "
-            "points to the middle of the ends, or change the spacing."
-        )
+        if crossing is None:
+            raise CenterlineError(Message("centerline_crosses"))
+        raise CenterlineError(Message("centerline_crosses_at", point=format_point(crossing)))
     if region is not None:
         # A line the region covers (one segment-intersection sweep, the usual case; unprepared, which is
         # cheaper for one test at every size) is done; otherwise only the vertices outside it need a
@@ -402,8 +400,7 @@ def _checked(result, region=None):
         worst = int(np.argmax(outside))
         if outside[worst] > OUTSIDE_TOLERANCE * extent_of(np.reshape(region.bounds, (2, 2))):
             raise CenterlineError(
-                f"The computed centerline leaves the polygon at {format_point(coordinates[worst])} "
-                f"({outside[worst]:.6g} outside), so none is returned. Give split points, or change the tolerance."
+                Message("centerline_leaves", point=format_point(coordinates[worst]), outside=outside[worst])
             )
     return result
 
@@ -466,16 +463,16 @@ def polygon_parts(geometry, split_points=None, snap_tolerance=None):
         If the geometry is null, empty or neither a Polygon nor a MultiPolygon.
     """
     if geometry is None:
-        raise InvalidGeometryError("The polygon is null (no geometry).")
+        raise InvalidGeometryError(Message("polygon_null"))
     if isinstance(geometry, Polygon):
         parts = [geometry]
     elif isinstance(geometry, MultiPolygon):
         parts = list(geometry.geoms)
     else:
         kind = getattr(geometry, "geom_type", type(geometry).__name__)
-        raise InvalidGeometryError(f"Expected a polygon or multipolygon, got a {kind}.")
+        raise InvalidGeometryError(Message("not_polygon_or_multi", kind=kind))
     if geometry.is_empty:
-        raise InvalidGeometryError("The polygon is empty.")
+        raise InvalidGeometryError(Message("polygon_empty"))
     extent = check_coordinates(shapely.get_coordinates(geometry), "polygon")
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     if snap_tolerance is None:
@@ -545,9 +542,7 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
             validate_polygon(part)
             mine = coordinates[near]
             if len(mine) not in (0, 2):
-                raise split_point_count_error(
-                    len(mine), snap_tolerance, len(parts) > 1, "it needs 2 (or none, to find its ends automatically)"
-                )
+                raise split_point_count_error(len(mine), snap_tolerance, len(parts) > 1, "needs_two_or_none")
             result = yield from polygon_centerline_steps(
                 part,
                 mine if len(mine) else None,

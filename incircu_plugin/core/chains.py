@@ -15,8 +15,10 @@ from .errors import (
     ChainError,
     CrossingLinesError,
     InvalidGeometryError,
+    Message,
     SplitPointError,
     format_point,
+    noun,
 )
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, nearest_entries, points_at
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
@@ -109,7 +111,7 @@ def clean_chain(coordinates, name="chain", tolerance=None):
         dx, dy = _steps(chain)
         step = np.hypot(dx, dy)
     if len(chain) < 2:
-        raise ChainError(f"The {name} has fewer than 2 distinct points.")
+        raise ChainError(Message("chain_too_few_points", name=noun(name)))
     # Each turn from the incoming segment (d[:-1]) to the outgoing one (d[1:]).
     # The dot products, summed into the first term's array (at 10^6 vertices each term is 8 MB).
     dot = np.multiply(dx[:-1], dx[1:])
@@ -121,7 +123,7 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     cross = dx[:-1] * dy[1:] - dy[:-1] * dx[1:]
     folds = np.flatnonzero(backward & (np.abs(cross) <= FOLD_SINE_TOLERANCE * (step[:-1] * step[1:])))
     if len(folds):
-        raise ChainError(f"The {name} folds back over itself at {format_point(chain[folds[0] + 1])}.")
+        raise ChainError(Message("chain_folds", name=noun(name), point=format_point(chain[folds[0] + 1])))
     return chain
 
 
@@ -157,7 +159,7 @@ def ensure_simple(chain, name):
     """Raise :class:`ChainError`, calling the chain ``name``, if ``chain`` (vertices, CRS units) touches itself."""
     crossing = find_self_crossing(chain)
     if crossing is not None:
-        raise ChainError(f"The {name} crosses itself at {format_point(crossing)}.")
+        raise ChainError(Message("chain_crosses", name=noun(name), point=format_point(crossing)))
 
 
 class _Validated:
@@ -199,18 +201,15 @@ def validate_polygon(polygon):
     if _Validated.holds(polygon):
         return
     if polygon is None:
-        raise InvalidGeometryError("The polygon is null (no geometry).")
+        raise InvalidGeometryError(Message("polygon_null"))
     if not isinstance(polygon, Polygon):
         kind = getattr(polygon, "geom_type", type(polygon).__name__)
-        raise InvalidGeometryError(f"Expected a single polygon, got a {kind}.")
+        raise InvalidGeometryError(Message("not_polygon", kind=kind))
     if polygon.is_empty:
-        raise InvalidGeometryError("The polygon is empty.")
+        raise InvalidGeometryError(Message("polygon_empty"))
     check_coordinates(shapely.get_coordinates(polygon), "polygon")
     if not polygon.is_valid:
-        raise InvalidGeometryError(
-            f"The polygon is not valid: {shapely.is_valid_reason(polygon)}. "
-            "Repair it first (e.g. QGIS 'Fix geometries')."
-        )
+        raise InvalidGeometryError(Message("polygon_invalid", reason=shapely.is_valid_reason(polygon)))
     _Validated.remember(polygon)
 
 
@@ -289,9 +288,7 @@ def positions_on_ring(ring, points, tolerance):
     for point, distance in zip(points, shapely.distance(exterior, geometries).tolist()):
         if distance > tolerance:
             raise SplitPointError(
-                f"Split point {format_point(point)} is {distance:.6g} CRS units away from the polygon's boundary; "
-                f"the snap tolerance is {tolerance:.6g} CRS units."
-                " Move the point onto the boundary or raise the tolerance."
+                Message("split_point_far", point=format_point(point), distance=distance, tolerance=tolerance)
             )
     return shapely.line_locate_point(exterior, geometries).tolist()
 
@@ -339,7 +336,7 @@ def split_checked_polygon(polygon, points, tolerance=None):
     :func:`.validation.split_point_coordinates` returned (an (n, 2) float array, CRS units), which are not
     checked again; raises as :func:`split_polygon` does."""
     if len(points) != 2:
-        raise SplitPointError(f"A polygon needs exactly 2 split points on its boundary, got {len(points)}.")
+        raise SplitPointError(Message("split_points_not_two", count=len(points)))
     tolerance = tolerance_length(tolerance, "snap_tolerance")
     ring = counter_clockwise_exterior(polygon)
     extent = extent_of(ring)
@@ -353,14 +350,14 @@ def split_checked_polygon(polygon, points, tolerance=None):
     along = [0.0 if position >= perimeter - coincidence else position for position in along]
     gap = abs(along[0] - along[1])
     if min(gap, perimeter - gap) <= max(tolerance, coincidence):
-        raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
+        raise SplitPointError(Message("split_points_same_place", point=format_point(points[0])))
     ring, positions = _insert_at(ring, positions, along, coincidence)
     loop = ring[:-1]
     n = len(loop)
     # The closing vertex is the first one: a split point a rounding short of the perimeter is the ring's start.
     start, end = (nearest_entries(positions, along) % n).tolist()
     if start == end:
-        raise SplitPointError(f"Both split points snap to the same place {format_point(points[0])} of the boundary.")
+        raise SplitPointError(Message("split_points_same_place", point=format_point(points[0])))
     forward = np.arange(start, start + (end - start) % n + 1) % n
     backward = np.arange(start, start - (start - end) % n - 1, -1) % n
     return loop[forward], loop[backward]
@@ -400,14 +397,11 @@ def orient_bank_lines(line_a, line_b):
         if touching.is_empty:
             # Not seen, but the predicate and the overlay are separate computations: where they meet, nearly.
             touching = shapely.shortest_line(*lines)
-        raise CrossingLinesError(
-            f"The two lines cross or touch at {format_point(shapely.get_coordinates(touching)[0])}; "
-            "they must bound a region between them."
-        )
+        raise CrossingLinesError(Message("lines_cross", point=format_point(shapely.get_coordinates(touching)[0])))
     same = np.hypot(*(a[0] - b[0])) + np.hypot(*(a[-1] - b[-1]))
     swapped = np.hypot(*(a[0] - b[-1])) + np.hypot(*(a[-1] - b[0]))
     if swapped < same:
         b = b[::-1].copy()
     if abs(signed_area(np.concatenate([a, b[::-1]]))) <= COINCIDENCE_TOLERANCE * extent_of(a, b) ** 2:
-        raise ChainError("The two lines enclose no area between them (they lie on one line).")
+        raise ChainError(Message("lines_no_area"))
     return a, b

@@ -18,7 +18,7 @@ from functools import cache, partial
 
 import numpy as np
 
-from .errors import InvalidGeometryError
+from .errors import InvalidGeometryError, Message
 from .polyline import coordinate_rounding, cumulative_lengths
 
 #: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
@@ -158,7 +158,7 @@ class Boundary:
         sizes = np.array([len(chain) - 1 for chain in chains])
         count = int(sizes.sum())
         if count + len(chains) > MAX_SEGMENTS:
-            raise InvalidGeometryError(f"The boundary has {count:,} segments, more than this engine can index.")
+            raise InvalidGeometryError(Message("too_many_segments", count=count))
         self.segment_count = count
         #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
         #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.

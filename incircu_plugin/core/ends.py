@@ -74,7 +74,7 @@ from shapely.geometry import LineString, Point
 
 from .chains import extent_of, validate_polygon
 from .contacts import ranges
-from .errors import Cancelled, IncirCuError, InvalidGeometryError
+from .errors import Cancelled, IncirCuError, InvalidGeometryError, Message
 from .paths import heaviest_paths
 from .polyline import counterclockwise, turns_between, typical_width
 from .skeleton import joint_skeletons
@@ -242,14 +242,14 @@ def find_ends_together(polygons, *, rule="main_stem", guides=None, progress=None
     polygons = list(polygons)
     guides = [None] * len(polygons) if guides is None else list(guides)
     if len(guides) != len(polygons):
-        raise IncirCuError(f"{len(guides)} guides were given for {len(polygons)} polygons.")
+        raise IncirCuError(Message("guides_count", guides=len(guides), polygons=len(polygons)))
     return _ends_together(polygons, _checked_rule(rule), guides, _cancel_check(progress))
 
 
 def _checked_rule(rule):
     """Return ``rule``; raise :class:`IncirCuError` if it is not one of ``END_RULES``."""
     if rule not in END_RULES:
-        raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(rule, ", ".join(END_RULES)))
+        raise IncirCuError(Message("unknown_end_rule", rule=rule, choices=", ".join(END_RULES)))
     return rule
 
 
@@ -259,9 +259,9 @@ def _validate_guide(guide):
         return
     if getattr(guide, "geom_type", None) not in ("LineString", "MultiLineString"):
         kind = getattr(guide, "geom_type", type(guide).__name__)
-        raise InvalidGeometryError(f"A guide must be a line or multiline, got a {kind}.")
+        raise InvalidGeometryError(Message("guide_kind", kind=kind))
     if not np.all(np.isfinite(shapely.get_coordinates(guide))):
-        raise InvalidGeometryError("The guide line has a NaN or infinite coordinate.")
+        raise InvalidGeometryError(Message("guide_not_finite"))
 
 
 def _cancel_check(progress):
@@ -308,9 +308,7 @@ def _local_box(polygon, guide):
     origin = (bounds[:2] + bounds[2:]) / 2.0
     scale = extent_of(bounds.reshape(2, 2))
     if not SMALLEST_EXTENT <= scale <= LARGEST_EXTENT:
-        raise InvalidGeometryError(
-            f"The polygon's size ({scale:.3g}) is absurd for its coordinates' units; reproject or rescale it."
-        )
+        raise InvalidGeometryError(Message("polygon_size_absurd", size=scale))
     return origin, scale
 
 
@@ -358,7 +356,9 @@ def _frames(polygons, guides, boxes):
     geometries = np.empty(len(chosen), dtype=object)
     geometries[:] = [_without_small_islands(polygons[index]) for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
-    local = counterclockwise(_moved(geometries, origins[owner], scales[owner, None]))
+    # Without repeated vertices: GEOS 3.11 locates a point on a zero-length segment by dividing 0 by 0, and
+    # numpy then warns "invalid value encountered in line_locate_point" (the answer is right).
+    local = counterclockwise(shapely.remove_repeated_points(_moved(geometries, origins[owner], scales[owner, None])))
     for number, index in enumerate(chosen):
         origin, scale = boxes[index]
         guide = guides[index]
@@ -370,7 +370,7 @@ def _frames(polygons, guides, boxes):
 def _as_outcome(error):
     """Return the exception :func:`find_ends` raises for ``error`` (a GEOS error becomes invalid geometry)."""
     if isinstance(error, shapely.errors.GEOSException):
-        wrapped = InvalidGeometryError(f"The ends of the polygon cannot be found: {error}.")
+        wrapped = InvalidGeometryError(Message("ends_geos", error=str(error)))
         wrapped.__cause__ = error
         error = wrapped
     error.__traceback__ = None
@@ -446,9 +446,7 @@ def _joint_trunks(frames, rule, outcomes, check):
     starts, trees, chosen = [], [], []
     for position, index in enumerate(framed):
         if skeleton.errors[position] is not None or edge_start[position + 1] == edge_start[position]:
-            outcomes[index] = skeleton.errors[position] or InvalidGeometryError(
-                "The polygon is too thin or too small to find its ends automatically."
-            )
+            outcomes[index] = skeleton.errors[position] or InvalidGeometryError(Message("ends_too_thin"))
             continue
         low, high = node_start[position], node_start[position + 1]
         own_edges = edge_order[edge_start[position] : edge_start[position + 1]]
@@ -543,6 +541,7 @@ def _on_ring(exterior, xy, tolerance):
     point = Point(xy)
     if exterior.distance(point) <= tolerance:
         return xy
+    exterior = shapely.remove_repeated_points(exterior)  # see _frames
     point = exterior.interpolate(exterior.project(point))
     if exterior.distance(point) <= tolerance:
         return np.asarray(point.coords[0])

@@ -28,7 +28,7 @@ from shapely.geometry import LineString
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary
-from .errors import OptionError
+from .errors import Message, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .lines import LineRequest
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
@@ -160,9 +160,9 @@ def _length_option(value, name):
     if value is None:
         return None
     if isinstance(value, bool) or not isinstance(value, Real):
-        raise OptionError(f"{name} must be a number (a length in CRS units), got {value!r}.")
+        raise OptionError(Message("option_not_length", name=name, value=value))
     if not np.isfinite(value) or value < 0:
-        raise OptionError(f"{name} must be a positive, finite length in CRS units (or 0 for automatic), got {value!r}.")
+        raise OptionError(Message("option_bad_length", name=name, value=value))
     return float(value) if value > 0 else None
 
 
@@ -170,18 +170,15 @@ def _fixed_spacings(spacing, samples_per_chain, chains, lengths, width):
     """The fixed sampling's spacing on each chain, CRS units (``width``: the defaults' width, see ``_Frame``)."""
     if samples_per_chain is not None:
         if isinstance(samples_per_chain, bool) or not isinstance(samples_per_chain, Real):
-            raise OptionError(f"samples_per_chain must be a whole number, got {samples_per_chain!r}.")
+            raise OptionError(Message("samples_not_whole", value=samples_per_chain))
         if not np.isfinite(samples_per_chain) or int(samples_per_chain) < 1:
-            raise OptionError(f"The number of samples per chain must be at least 1, got {samples_per_chain!r}.")
+            raise OptionError(Message("samples_too_few", value=samples_per_chain))
         spacings = [length / (int(samples_per_chain) + 1) for length in lengths]
     else:
         spacings = [spacing or DEFAULT_SPACING_PER_WIDTH * width] * 2
     planned = sum(length / s for length, s in zip(lengths, spacings)) + sum(len(c) for c in chains)
     if planned > MAX_SAMPLES:
-        raise OptionError(
-            f"A spacing of {min(spacings):.6g} would need about {planned:.3g} samples (at most "
-            f"{MAX_SAMPLES:.3g}); use a larger spacing."
-        )
+        raise OptionError(Message("spacing_too_small", spacing=min(spacings), planned=planned, limit=MAX_SAMPLES))
     return spacings
 
 
@@ -284,7 +281,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
     tolerance = _length_option(tolerance, "tolerance")
     fixed = spacing is not None or samples_per_chain is not None
     if fixed and tolerance is not None:
-        raise OptionError("Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).")
+        raise OptionError(Message("tolerance_and_spacing"))
     frame = _Frame([c1, c2])
     report = reporter(progress)
     if fixed:
@@ -294,9 +291,13 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         tolerance = tolerance or DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
         if tolerance < MIN_TOLERANCE * frame.extent:
             raise OptionError(
-                f"The tolerance {tolerance:.6g} is below {MIN_TOLERANCE:g} of the shape's extent "
-                f"({frame.extent:.6g}): float64 cannot place vertices that finely. Use at least "
-                f"{MIN_TOLERANCE * frame.extent:.6g} (CRS units), or 0 for the automatic tolerance."
+                Message(
+                    "tolerance_too_fine",
+                    tolerance=tolerance,
+                    relative=MIN_TOLERANCE,
+                    extent=frame.extent,
+                    least=MIN_TOLERANCE * frame.extent,
+                )
             )
         sides = (frame.side, -frame.side)
         points = yield TraceRequest(

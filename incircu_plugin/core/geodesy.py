@@ -21,7 +21,7 @@ from dataclasses import replace
 import numpy as np
 import shapely
 
-from .errors import InvalidGeometryError
+from .errors import InvalidGeometryError, Message
 
 #: Directions of a PROJ transformation, as ``pyproj``'s ``Transformer.transform`` takes them.
 FORWARD, INVERSE = "FORWARD", "INVERSE"
@@ -51,9 +51,7 @@ class LocalProjection:
 
     def __init__(self, geographic_crs, longitude, latitude):
         if not (math.isfinite(longitude) and math.isfinite(latitude) and abs(latitude) <= 90.0):
-            raise InvalidGeometryError(
-                f"The projection centre ({longitude!r}, {latitude!r}) is not a longitude and a latitude in degrees."
-            )
+            raise InvalidGeometryError(Message("centre_not_degrees", longitude=longitude, latitude=latitude))
         self.longitude = float(longitude)
         # A bare PROJ pipeline on the CRS's ellipsoid: building CRS objects and transformers between them would
         # cost some 40 ms per feature.
@@ -77,14 +75,14 @@ class LocalProjection:
         LocalProjection
         """
         if geometry is None:
-            raise InvalidGeometryError("Cannot centre a projection on a null geometry.")
+            raise InvalidGeometryError(Message("centre_null"))
         if not isinstance(geometry, shapely.Geometry):
             raise TypeError(f"Expected a shapely geometry in degrees, got {type(geometry).__name__}.")
         if geometry.is_empty:
-            raise InvalidGeometryError("Cannot centre a projection on an empty geometry.")
+            raise InvalidGeometryError(Message("centre_empty"))
         coordinates = shapely.get_coordinates(geometry)
         if not np.all(np.isfinite(coordinates)):
-            raise InvalidGeometryError("Cannot centre a projection on a geometry with a NaN or infinite coordinate.")
+            raise InvalidGeometryError(Message("centre_not_finite"))
         _, south, _, north = geometry.bounds
         return cls(geographic_crs, central_longitude(coordinates[:, 0]), (south + north) / 2.0)
 
@@ -101,9 +99,7 @@ class LocalProjection:
             longitude = transformed[..., 0]
             transformed[..., 0] = self.longitude + (longitude - self.longitude + 180.0) % 360.0 - 180.0
         elif not np.all(np.isfinite(transformed)):
-            raise InvalidGeometryError(
-                "A point could not be projected (a NaN or infinite coordinate, or a latitude beyond 90 degrees)."
-            )
+            raise InvalidGeometryError(Message("point_not_projected"))
         return transformed
 
     def to_local(self, geometry):
@@ -171,9 +167,9 @@ def _ellipsoid(geographic_crs):
     try:
         geographic = pyproj.CRS(geographic_crs)
     except pyproj.exceptions.CRSError as error:
-        raise InvalidGeometryError(f"Unknown CRS {geographic_crs!r}: {error}") from None
+        raise InvalidGeometryError(Message("unknown_crs", crs=geographic_crs, error=str(error))) from None
     if not geographic.is_geographic:
-        raise InvalidGeometryError(f"{geographic.name} is not a geographic CRS.")
+        raise InvalidGeometryError(Message("not_geographic_crs", name=geographic.name))
     ellipsoid = geographic.ellipsoid
     if ellipsoid.inverse_flattening:
         return f"+a={ellipsoid.semi_major_metre!r} +rf={ellipsoid.inverse_flattening!r}"

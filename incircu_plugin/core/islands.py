@@ -42,7 +42,7 @@ import shapely
 from shapely.geometry import LinearRing, LineString, Polygon
 
 from .chains import COINCIDENCE_TOLERANCE, extent_of, signed_area
-from .errors import IncirCuError, InvalidGeometryError, format_point
+from .errors import IncirCuError, InvalidGeometryError, Message, format_point
 from .polyline import IndexedPolyline, as_coordinates, cumulative_lengths, local_origin, points_at
 
 #: Relative tolerance (of the extent) under which an island is as near to ``c1`` as to ``c2``.
@@ -346,10 +346,7 @@ def _next_join(joining, islands):
         if not pairs:
             left = np.flatnonzero(component[2:] < 0)
             where = islands.polygons[left[0]].representative_point().coords[0]
-            raise IncirCuError(
-                f"The island at {format_point(where)} cannot be joined to a bank without crossing another island;"
-                " use the option to ignore islands."
-            )
+            raise IncirCuError(Message("island_blocked", point=format_point(where)))
         gap, _, host, island = _pop_nearest_pair(pairs, component, islands.tie)
         search = _SlitSearch(
             island=island,
@@ -412,13 +409,13 @@ def _island_ring(hole, index):
     else:
         coordinates = np.asarray(hole, dtype=float)[:, :2]
     if len(coordinates) == 0 or not np.all(np.isfinite(coordinates)):
-        raise InvalidGeometryError(f"Island {index} is empty or has a NaN or infinite coordinate.")
+        raise InvalidGeometryError(Message("island_not_finite", index=index))
     if np.array_equal(coordinates[0], coordinates[-1]):
         coordinates = coordinates[:-1]
     step = np.hypot(*np.diff(np.concatenate([coordinates, coordinates[:1]]), axis=0).T)
     coordinates = coordinates[step > 0.0]
     if len(coordinates) < 3:
-        raise InvalidGeometryError(f"Island {index} has fewer than 3 distinct points.")
+        raise InvalidGeometryError(Message("island_too_few_points", index=index))
     return np.concatenate([coordinates, coordinates[:1]])
 
 

@@ -18,7 +18,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from .contacts import AxisPoints, rows
-from .errors import IncirCuError
+from .errors import IncirCuError, Message
 
 #: Relative distance (of the extent) under which two consecutive centres are one point.
 DISTINCT_TOLERANCE = 1e-9
@@ -410,7 +410,7 @@ def _results(points, order, centre, keep, joined, ends):
         for column, values in enumerate((points.radius, points.foot_a, points.foot_b), start=1)
     ]
     return [
-        IncirCuError("The chains are too close together or too short to carry a centerline.") if size < 2 else line
+        IncirCuError(Message("chains_too_close")) if size < 2 else line
         for size, line in zip(kept.sizes, zip(*(kept.split(column) for column in columns)))
     ]
 

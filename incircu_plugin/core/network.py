@@ -48,7 +48,7 @@ from .chains import (
     validate_polygon,
 )
 from .engine import CenterlineResult, centerline_from_chains
-from .errors import Cancelled, IncirCuError, SplitPointError, format_point
+from .errors import Cancelled, IncirCuError, Message, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
 
@@ -239,7 +239,7 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
             # What is wrong with the polygon itself comes first (as for a centerline), then its split points.
             validate_polygon(part)
             if len(near) < 2:
-                raise split_point_count_error(len(near), snap_tolerance, len(parts) > 1, "a network needs at least 2")
+                raise split_point_count_error(len(near), snap_tolerance, len(parts) > 1, "network_needs_two")
             network = polygon_network(
                 part,
                 [points[i] for i in near],
@@ -286,10 +286,10 @@ def _ring_order(polygon, split_points, tolerance):
         Fewer than two points, a point too far from the ring, or two points at the same place.
     """
     if len(split_points) < 2:
-        raise SplitPointError(f"A network needs at least 2 split points on the boundary, got {len(split_points)}.")
+        raise SplitPointError(Message("network_too_few_points", count=len(split_points)))
     xy = [_as_xy(point) for point in split_points]
     if not all(np.all(np.isfinite(p)) for p in xy):
-        raise SplitPointError("A split point has a NaN or infinite coordinate.")
+        raise SplitPointError(Message("split_point_not_finite"))
     ring = counter_clockwise_exterior(polygon)
     extent = extent_of(ring)
     if tolerance is None or tolerance <= 0:
@@ -301,9 +301,7 @@ def _ring_order(polygon, split_points, tolerance):
     gaps = np.diff(np.append(relative[order], perimeter))
     close = int(np.argmin(gaps))
     if gaps[close] <= max(tolerance, COINCIDENCE_TOLERANCE * extent):
-        raise SplitPointError(
-            f"Two split points snap to the same place {format_point(xy[order[close]])} of the boundary."
-        )
+        raise SplitPointError(Message("network_same_place", point=format_point(xy[order[close]])))
     return order
 
 
@@ -341,7 +339,7 @@ def _bridged_chains(polygon, points, tolerance, islands):
         c2, index = _insert_vertex(c2, point, coincidence)
         cuts = [cut + (len(c2) - before if cut >= index else 0) for cut in cuts] + [index]
     if cuts != sorted(cuts) or len(set(cuts)) != len(cuts) or (cuts and (cuts[0] == 0 or cuts[-1] == len(c2) - 1)):
-        raise IncirCuError("The split points could not be placed in order on the boundary with its islands.")
+        raise IncirCuError(Message("network_order"))
     bounds = [0, *cuts, len(c2) - 1]
     backwards = [c2[start : end + 1][::-1].copy() for start, end in zip(bounds[:-1], bounds[1:])]
     return [np.asarray(c1, dtype=float)] + backwards[::-1]
@@ -439,10 +437,7 @@ class _Junctions:
             if inside:
                 between = _between_in_order(i, a, b, int(inside[0]), len(self.boundary.chains))
                 if between is None or depth > len(self.boundary.chains):
-                    raise IncirCuError(
-                        f"The junction near {format_point(centre)} could not be located: its circle holds another "
-                        "chain out of order. Move the split points farther out along the arms."
-                    )
+                    raise IncirCuError(Message("junction_out_of_order", point=format_point(centre)))
                 return self.between(i, a, between, start, centre, depth + 1) + self.between(
                     i, between, b, centre, end, depth + 1
                 )
@@ -485,10 +480,7 @@ def _newton_junction(boundary, key, start, end):
         found = _newton_from(boundary, key, start + fraction * (end - start))
         if found is not None:
             return found
-    raise IncirCuError(
-        f"The junction near {format_point(0.5 * (start + end))} could not be located: its circle touches a chain "
-        "at several places or a split point itself. Move the split points farther out along the arms."
-    )
+    raise IncirCuError(Message("junction_several_contacts", point=format_point(0.5 * (start + end))))
 
 
 def _newton_from(boundary, key, x):
@@ -643,7 +635,7 @@ def _assemble(pieces, junctions, order):
             continue
         arrays = _piece_arrays(piece, ends, junctions)
         if len(arrays["vertices"]) < 2:
-            raise IncirCuError("A branch of the network has fewer than 2 vertices; try a smaller spacing.")
+            raise IncirCuError(Message("branch_too_short"))
         right, left = piece["chains"]
         if ends[0][0][0] == "junction" and ends[1][0][0] == "leaf":
             ends = ends[::-1]
@@ -680,8 +672,4 @@ def _check_tree(edges, k):
         parent[root(a)] = root(b)
     connected = len({root(node) for node in degree}) == 1
     if leaves != list(range(k)) or weak or not connected or len(edges) != len(degree) - 1:
-        raise IncirCuError(
-            f"The network found is not a tree with one end at each of the {k} split points "
-            f"({len(edges)} branches, {len(leaves)} ends, {len(weak)} junctions of degree below 3); "
-            "a split point may lie on a junction's circle: move the split points farther out along the arms."
-        )
+        raise IncirCuError(Message("network_not_tree", k=k, branches=len(edges), ends=len(leaves), weak=len(weak)))

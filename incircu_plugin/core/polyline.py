@@ -8,7 +8,7 @@ ring). Its *arc length* at a point is the distance from its first vertex along i
 import numpy as np
 import shapely
 
-from .errors import InvalidGeometryError
+from .errors import InvalidGeometryError, Message, noun
 from .validation import check_coordinates
 
 #: Whether Shapely has ``orient_polygons`` (2.1 and later); else :func:`counterclockwise` orients one by one.
@@ -77,12 +77,12 @@ def as_coordinates(geometry, name="line"):
     The first line has a NaN or infinite coordinate: (nan, 1.0).
     """
     if geometry is None:
-        raise InvalidGeometryError(f"The {name} is null (no geometry).")
+        raise InvalidGeometryError(Message("named_null", name=noun(name)))
     if isinstance(geometry, shapely.Geometry):
         if geometry.is_empty:
-            raise InvalidGeometryError(f"The {name} is empty.")
+            raise InvalidGeometryError(Message("named_empty", name=noun(name)))
         if geometry.geom_type not in ("LineString", "LinearRing"):
-            raise InvalidGeometryError(f"The {name} must be a single line, not a {geometry.geom_type}.")
+            raise InvalidGeometryError(Message("not_single_line", name=noun(name), kind=geometry.geom_type))
         coordinates = shapely.get_coordinates(geometry)
     else:
         if isinstance(geometry, (str, bytes)):
@@ -90,9 +90,9 @@ def as_coordinates(geometry, name="line"):
         try:
             coordinates = np.asarray(geometry, dtype=float)
         except (TypeError, ValueError):
-            raise InvalidGeometryError(f"The {name} must be an (n, 2) array of numbers.") from None
+            raise InvalidGeometryError(Message("not_number_array", name=noun(name))) from None
         if coordinates.ndim != 2 or coordinates.shape[1] < 2 or len(coordinates) == 0:
-            raise InvalidGeometryError(f"The {name} must be an (n, 2) coordinate array.")
+            raise InvalidGeometryError(Message("not_coordinate_array", name=noun(name)))
         coordinates = coordinates[:, :2]
     check_coordinates(coordinates, name, whole=False)
     return np.array(coordinates, dtype=float)

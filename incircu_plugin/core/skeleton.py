@@ -29,7 +29,7 @@ import numpy as np
 import shapely
 
 from .contacts import put_rows, ranges, rows, stable_order
-from .errors import InvalidGeometryError
+from .errors import InvalidGeometryError, Message
 from .polyline import counterclockwise, typical_width
 
 #: Densification step of the boundary, as a fraction of the typical width ``2 * area / perimeter``.
@@ -128,9 +128,7 @@ def joint_skeletons(polygons):
     corners = np.take(points, corner_ids, axis=0)
     nodes, radii, spans, edges, inside = _dual_graph(corners, corner_ids, following, _triangle_shapes(corners))
     errors = [
-        None
-        if triangulated
-        else InvalidGeometryError("The polygon's outline could not be triangulated to find its ends automatically.")
+        None if triangulated else InvalidGeometryError(Message("outline_not_triangulated"))
         for triangulated in made.tolist()
     ]
     return Skeletons(nodes, radii, spans, edges, triangle_owner[inside], steps, errors)

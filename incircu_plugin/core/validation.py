@@ -13,7 +13,7 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPoint, Point
 
-from .errors import InvalidGeometryError, OptionError, SplitPointError
+from .errors import InvalidGeometryError, Message, OptionError, SplitPointError, noun
 
 #: Largest coordinate magnitude, CRS units. The core multiplies up to three coordinates together (areas,
 #: circumcentres); below this their products stay far inside float64's range (about 1e308).
@@ -56,15 +56,14 @@ def check_coordinates(coordinates, name, whole=True):
     coordinates = np.asarray(coordinates, dtype=float).reshape(-1, 2)
     if not np.isfinite(coordinates).all():
         bad = coordinates[~np.all(np.isfinite(coordinates), axis=1)][0]
-        raise InvalidGeometryError(f"The {name} has a NaN or infinite coordinate: {tuple(bad.tolist())}.")
+        raise InvalidGeometryError(Message("not_finite", name=noun(name), value=tuple(bad.tolist())))
     if len(coordinates) == 0:
         return 0.0 if whole else None
     # The largest |coordinate| from the extremes: no array of absolute values.
     magnitude = max(float(coordinates.max()), -float(coordinates.min()))
     if magnitude > MAX_COORDINATE:
         raise InvalidGeometryError(
-            f"The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {MAX_COORDINATE:.0e}: products of "
-            "such coordinates overflow float64. Use a projected CRS in metres, or scale the data down."
+            Message("coordinate_too_large", name=noun(name), magnitude=magnitude, limit=MAX_COORDINATE)
         )
     if not whole:
         return None
@@ -73,15 +72,16 @@ def check_coordinates(coordinates, name, whole=True):
     if extent == 0:
         return extent
     if extent < MIN_EXTENT:
-        raise InvalidGeometryError(
-            f"The {name} is {extent:.3g} across, under {MIN_EXTENT:.0e}: products of its lengths underflow "
-            "float64. Scale the data up (use smaller units)."
-        )
+        raise InvalidGeometryError(Message("extent_too_small", name=noun(name), extent=extent, limit=MIN_EXTENT))
     if extent < MIN_RELATIVE_EXTENT * magnitude:
         raise InvalidGeometryError(
-            f"The {name} is {extent:.3g} across at coordinates of magnitude {magnitude:.3g}: float64 cannot "
-            f"resolve a shape smaller than {MIN_RELATIVE_EXTENT:.0e} of its distance from the origin. "
-            "Shift the data nearer the origin (subtract an offset) or use a local projected CRS."
+            Message(
+                "extent_too_small_here",
+                name=noun(name),
+                extent=extent,
+                magnitude=magnitude,
+                limit=MIN_RELATIVE_EXTENT,
+            )
         )
     return extent
 
@@ -98,13 +98,13 @@ def tolerance_length(value, name):
         return None
     number = _number(value, name)
     if not math.isfinite(number) or number < 0:
-        raise OptionError(f"{name} must be a non-negative, finite distance in CRS units (or None), got {value!r}.")
+        raise OptionError(Message("option_bad_distance", name=name, value=value))
     return number
 
 
 def _number(value, name):
     if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.number)):
-        raise OptionError(f"{name} must be a number, got {type(value).__name__} {value!r}.")
+        raise OptionError(Message("option_not_number", name=name, kind=type(value).__name__, value=value))
     return float(value)
 
 
@@ -127,14 +127,12 @@ def split_point_coordinates(split_points):
         # Already coordinates (what this function returns, passed on by the public functions): the same
         # checks as point by point below.
         if split_points.shape[1] not in (2, 3) and len(split_points):
-            raise SplitPointError(f"Split point 0 must be an (x, y) pair of numbers, got {split_points[0]!r}.")
+            raise SplitPointError(Message("split_point_pair", index=0, value=split_points[0]))
         return _checked_split_points(np.array(split_points[:, :2], dtype=float).reshape(-1, 2))
     if isinstance(split_points, MultiPoint):
         split_points = list(split_points.geoms)
     elif isinstance(split_points, shapely.Geometry):
-        raise SplitPointError(
-            f"Split points must be a sequence of two points (or a MultiPoint), got a {split_points.geom_type}."
-        )
+        raise SplitPointError(Message("split_points_kind", kind=split_points.geom_type))
     if isinstance(split_points, (str, bytes)):
         raise TypeError(f"Split points must be a sequence of points, got {type(split_points).__name__}.")
     split_points = list(split_points)
@@ -150,7 +148,7 @@ def split_point_coordinates(split_points):
         # Points only (the usual case): their coordinates in one call, the same checks as point by point.
         empty = shapely.is_empty(split_points)
         if empty.any():
-            raise SplitPointError(f"Split point {int(np.argmax(empty))} is an empty point.")
+            raise SplitPointError(Message("split_point_empty", index=int(np.argmax(empty))))
         return _checked_split_points(shapely.get_coordinates(split_points))
     coordinates = [_split_point(index, point) for index, point in enumerate(split_points)]
     return _checked_split_points(np.array(coordinates, dtype=float).reshape(-1, 2))
@@ -161,24 +159,22 @@ def _checked_split_points(coordinates):
     try:
         check_coordinates(coordinates, "split points", whole=False)
     except InvalidGeometryError as error:
-        raise SplitPointError(str(error)) from None
+        raise SplitPointError(error.message) from None
     return coordinates
 
 
 def _split_point(index, point):
     if isinstance(point, Point):
         if point.is_empty:
-            raise SplitPointError(f"Split point {index} is an empty point.")
+            raise SplitPointError(Message("split_point_empty", index=index))
         return point.coords[0][:2]
     if isinstance(point, shapely.Geometry):
-        raise SplitPointError(f"Split point {index} must be a point, not a {point.geom_type}.")
+        raise SplitPointError(Message("split_point_kind", index=index, kind=point.geom_type))
     if isinstance(point, (numbers.Real, np.number)):
-        raise SplitPointError(
-            f"Split point {index} is the number {point!r}: give a sequence of points, such as [(x1, y1), (x2, y2)]."
-        )
+        raise SplitPointError(Message("split_point_number", index=index, value=point))
     if isinstance(point, (str, bytes)) or not np.iterable(point):
         raise TypeError(f"Split point {index} must be a Point or an (x, y) pair, got {type(point).__name__}.")
     values = list(point)
     if len(values) not in (2, 3) or not all(isinstance(v, (numbers.Real, np.number)) for v in values):
-        raise SplitPointError(f"Split point {index} must be an (x, y) pair of numbers, got {point!r}.")
+        raise SplitPointError(Message("split_point_pair", index=index, value=point))
     return values[:2]

@@ -11,7 +11,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Polygon
 
-from .errors import IncirCuError
+from .errors import IncirCuError, Message
 from .polyline import (
     as_coordinates,
     chord_directions,
@@ -169,7 +169,7 @@ def incircle_polygons(result, quad_segs=16):
     True
     """
     if int(quad_segs) < 1:
-        raise IncirCuError(f"A circle needs at least 1 segment per quarter, got {quad_segs!r}.")
+        raise IncirCuError(Message("circle_segments", value=quad_segs))
     vertices = shapely.get_coordinates(result.line)
     radii = np.asarray(result.radii, dtype=float)
     chainages = vertex_chainages(result)
@@ -242,9 +242,9 @@ def transects(result, interval, chains=None, style="nearest"):
     try:
         interval = float(interval)
     except (TypeError, ValueError):
-        raise IncirCuError(f"The transect interval must be a distance, got {interval!r}.") from None
+        raise IncirCuError(Message("transect_interval_kind", value=interval)) from None
     if not (interval > 0.0 and np.isfinite(interval)):
-        raise IncirCuError(f"The transect interval must be a positive distance, got {interval!r}.")
+        raise IncirCuError(Message("transect_interval_positive", value=interval))
     vertices = shapely.get_coordinates(result.line)
     chainages = vertex_chainages(result)
     length = float(chainages[-1])
