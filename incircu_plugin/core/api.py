@@ -16,7 +16,7 @@ from .chains import (
     split_checked_polygon,
     validate_polygon,
 )
-from .ends import END_RULES
+from .ends import COMPACT, END_RULES, STAR
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
@@ -202,7 +202,17 @@ def _automatic_ends(polygon, end_rule, guide, progress, notes):
         )
     if guide is not None and not ends.guided:
         notes.append("The guide line does not come near the polygon; its ends were found automatically.")
-    if not ends.elongated:
+    if ends.kind == STAR:
+        notes.append(
+            "The shape is star-like, with no dominant trunk; its automatic ends are the tips of its two "
+            "farthest-apart arms."
+        )
+    elif ends.kind == COMPACT:
+        notes.append(
+            "The shape is not elongated, with no dominant trunk; its automatic ends lie across its centre, "
+            "along its longest axis."
+        )
+    elif not ends.elongated:
         notes.append("The shape is not elongated; its automatically found ends are arbitrary.")
     return ends
 
