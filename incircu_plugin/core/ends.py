@@ -43,6 +43,23 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    arc-length midpoint of the whole cap when there is none (a rounded cap: its apex).
 4. **Distinct ends.** Should both ends fall within ``MIN_SEPARATION`` of the extent of each other (a compact
    shape), the second end becomes the point of the exterior ring half its perimeter away from the first.
+5. **Shapes without a dominant trunk** (not with a guide; :attr:`EndsResult.kind`, and the caller's note).
+   The *centre* is the centroid of the exterior ring's polygon; its *clearance* its distance from the ring.
+
+   - *Star-like*: the parts of the outline beyond ``STAR_DISK`` clearances of the centre that reach
+     ``STAR_ARM`` clearances are its arms; with three or more, none reaching beyond ``STAR_REACH``
+     clearances, and the third-longest reaching ``STAR_EVEN`` of the second-longest, the ends are the tips
+     (farthest vertices) of the two arms whose tips lie farthest apart: a path through the centre (two
+     opposite arms of an even star, two arms 144 degrees apart of a five-armed one), whatever holes it has.
+   - *Compact* (not elongated, see :attr:`EndsResult.elongated`, and not star-like): the ends are where the
+     longest axis through the centre (the centre of the largest inscribed disk when the centroid lies outside
+     or within half that disk's radius of the ring) leaves the exterior ring: the principal axis of the larger
+     second moment of area, or, on a shape with none (moments equal up to ``ISOTROPY``: a square, a regular
+     polygon), the line from the centre to the nearest point of the ring. A rectangle's short sides'
+     middles, an ellipse's tips at any vertex count, a square's opposite sides' middles, a regular polygon's
+     side middle and the vertex or side middle opposite.
+
+   An elongated shape with a dominant trunk keeps the ends of steps 1 to 4.
 
 Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at its acute corner; the
 skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
