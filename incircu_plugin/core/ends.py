@@ -179,8 +179,9 @@ class EndsResult:
         Second end, on the exterior ring, CRS units.
     elongated : bool
         False when the shape is not elongated (its longest skeleton path is shorter than
-        ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends are then arbitrary
-        though deterministic, and the caller should warn.
+        ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends then lie across its centre
+        (``kind`` ``"compact"``, or ``"star"``; only a guide leaves them where its path ends), and the caller
+        should warn.
     trunk : LineString or None
         The skeleton path the ends were derived from (diagnostics), CRS units; it may cross islands smaller
         than the typical width, which the skeleton leaves out. For a compact or star-like shape, the two
