@@ -26,6 +26,7 @@ label_centerlines ``get_centerline`` and centerline's ``Centerline`` as in ``ben
 import argparse
 import math
 import multiprocessing
+import os
 import string
 import sys
 import time
@@ -240,6 +241,7 @@ def main():
         "reservoirs": reservoir_polygons()[: 4 if quick else None],
     }
     results = []
+    load_before = os.getloadavg()[0]
     for source, polygons in sources.items():
         for name, polygon in polygons:
             row = {"source": source, "name": name, "vertices": len(polygon.exterior.coords) - 1}
@@ -260,7 +262,9 @@ defaults; the peers as in the comparison above.
 
 {table(results, list(sources))}
 
-IncirCu gives no line on {len(failures)} of {len(results)}: {", ".join(failures) or "none"}.
+IncirCu gives no line on {len(failures)} of {len(results)}: {", ".join(failures) or "none"}. Load average
+{load_before:.1f} at the start and {os.getloadavg()[0]:.1f} at the end on {os.cpu_count()} cores (other work on
+the machine slows every tool alike; compare the columns, not the times with other sections).
 """
     print(markdown)
     write_section("outside", markdown)
