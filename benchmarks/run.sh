@@ -12,7 +12,8 @@
 # polygons and the real outlines, issue 9), bench_core.py (10^6 vertices end to end, peak memory),
 # bench_paper.py (Fig. 4 and Table 1 of the paper), profile_incircu.py, and writes docs/benchmark.md,
 # docs/benchmark-summary.json and the README's generated numbers, with the PNG plots in benchmarks/results/;
-# then bench_mainstem.py (main stem on real reservoirs, tests/data) adds its section to that page,
+# then bench_mainstem.py (main stem on real reservoirs, tests/data) and bench_outside.py (outside polygons: glyphs,
+# countries, reservoirs) add their sections to that page,
 # bench_plugin.py prints the plugin's cost per feature against the core's, and bench_scale.py (50,000 rivers
 # through qgis_process: features written and skipped, time, peak memory) adds its section.
 #
@@ -91,6 +92,9 @@ fi
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
 "$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
+# Outside polygons (glyphs, Natural Earth countries and reservoirs): share with a line and time against the
+# peers; adds its marked section.
+"$PYTHON" "$BENCH_DIR/bench_outside.py" $QUICK
 # The plugin's feature loop against the core per feature (issue 9's small features); prints its table.
 if [ -n "$QUICK" ]; then
   "$PYTHON" "$BENCH_DIR/bench_plugin.py" --count 500 --repeats 1

@@ -22,12 +22,42 @@ RELATIVE_TOLERANCE = 1e-7
 def problems(case, result):
     """Return a list of what is wrong with ``result`` for ``case`` (empty when it is correct)."""
     if case.function == "find_ends":
-        return _ends_problems(case, result)
+        return _ends_problems(case, result) + _across_problems(case, [result.start.coords[0], result.end.coords[0]])
     if case.function == "multipolygon_centerlines":
         return _parts_problems(case, result)
     if case.function in ("polygon_centerline", "lines_centerline"):
-        return _line_problems(result.line, case.polygon, case.split_points, case.snap)
+        found = _line_problems(result.line, case.polygon, case.split_points, case.snap)
+        if not found and case.function == "polygon_centerline":
+            found = _across_problems(case, [result.line.coords[0], result.line.coords[-1]])
+        return found
     return []
+
+
+#: Share of a compact shape's width (twice its centre's clearance) within which the segment between its
+#: automatic ends must pass its centre: the ends are computed in closed form, but a long ellipse keeps the
+#: skeleton path's ends, the apex of each rounded cap (within 2 % of the width, see ``tests/test_core_ends.py``).
+ACROSS_SHARE = 0.02
+
+
+def _across_problems(case, ends):
+    """What is wrong with the automatic ends of a compact or star-like shape (``case.centre`` or ``case.tips``)."""
+    ends = np.asarray(ends, dtype=float)
+    tolerance = 10.0 * _tolerance(case.polygon)
+    found = []
+    if case.centre is not None:
+        centre = shapely.Point(case.centre)
+        width = 2.0 * case.polygon.exterior.distance(centre)
+        off = shapely.LineString(ends).distance(centre)
+        if off > ACROSS_SHARE * width + tolerance:
+            found.append(f"the ends pass {off:.3g} from the centre ({off / width:.2g} of the width)")
+    if case.tips is not None:
+        gaps = np.hypot(*(case.tips[None, :, :] - ends[:, None, :]).transpose(2, 0, 1))
+        nearest = gaps.argmin(axis=1)
+        if gaps.min(axis=1).max() > tolerance:
+            found.append(f"an end is {gaps.min(axis=1).max():.3g} from the nearest tip")
+        elif nearest[0] == nearest[1]:
+            found.append("both ends are at the same tip")
+    return found
 
 
 #: Float64 steps (of the coordinates' magnitude) always allowed: a tiny shape far from the origin cannot place

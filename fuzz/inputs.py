@@ -15,6 +15,7 @@ from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygo
 
 from incircu_plugin import core
 from incircu_plugin.core.polyline import typical_width
+from tests.support import compact_shapes
 
 
 @dataclass
@@ -35,6 +36,10 @@ class Case:
         The given ends, to check the line's ends (None: automatic ends, checked to lie on the boundary).
     snap : float
         Largest distance, CRS units, between a given split point and the line's end.
+    centre : tuple or None
+        A centre of symmetry the automatic ends must lie across (the segment between them passes it).
+    tips : ndarray of shape (k, 2) or None
+        The points (a star's tips) the two automatic ends must be two of.
     """
 
     category: str
@@ -44,6 +49,8 @@ class Case:
     polygon: Optional[object] = None
     split_points: Optional[np.ndarray] = None
     snap: float = 0.0
+    centre: Optional[tuple] = None
+    tips: Optional[np.ndarray] = None
 
     def describe(self, limit=600):
         """The call as Python-like text (geometries as WKT, cut to ``limit`` characters each)."""
@@ -118,24 +125,16 @@ def random_channel(rng, small, islands=0):
     return None
 
 
-def compact_shape(rng):
-    """A star, a regular polygon or a square, rotated, scaled and shifted at random."""
-    kind = rng.choice(["star", "regular", "square"])
-    if kind == "star":
-        tips = int(rng.integers(4, 13))
-        angles = np.arange(2 * tips) * math.pi / tips
-        radii = np.where(np.arange(2 * tips) % 2 == 0, 1.0, rng.uniform(0.3, 0.8))
-    elif kind == "regular":
-        corners = int(rng.integers(3, 21))
-        angles, radii = np.arange(corners) * 2 * math.pi / corners, np.ones(corners)
-    else:
-        angles, radii = np.arange(4) * math.pi / 2 + math.pi / 4, np.ones(4)
-    angles = angles + rng.uniform(0, 2 * math.pi)
-    scale = 10 ** rng.uniform(-3, 5)
-    shift = rng.uniform(-1, 1, 2) * 10 ** rng.uniform(0, 6)
-    polygon = Polygon(shift + scale * radii[:, None] * np.stack([np.cos(angles), np.sin(angles)], 1))
+def _placement(rng):
+    """A random centre, turn and size (1e-3 to 1e5) for a compact shape of unit size."""
+    size = 10 ** rng.uniform(-3, 5)
+    return rng.uniform(-1, 1, 2) * 10 ** rng.uniform(0, 6), rng.uniform(0, 2 * math.pi), size
+
+
+def _sometimes_segmentized(rng, polygon, size):
+    """The polygon, or (half the time) with extra vertices on its edges (the ends must not move)."""
     if rng.random() < 0.5:
-        polygon = shapely.segmentize(polygon, scale / int(rng.integers(2, 30)))
+        return shapely.segmentize(polygon, size / int(rng.integers(2, 30)))
     return polygon
 
 
@@ -213,11 +212,50 @@ def valid_random_shape(rng, small):
     return Case("valid random shape, split points", "polygon_centerline", (polygon, points), {}, polygon, points)
 
 
-def compact_auto(rng, small):
-    """Stars, regular polygons and squares with automatic ends (no clear ends: arbitrary but valid)."""
-    polygon = compact_shape(rng)
+def _compact_case(rng, category, polygon, **checks):
+    """Automatic ends of a compact or star-like shape: ``find_ends`` or ``polygon_centerline``."""
     function = "find_ends" if rng.random() < 0.3 else "polygon_centerline"
-    return Case("compact shape, automatic ends", function, (polygon,), {}, polygon)
+    return Case(category, function, (polygon,), {}, polygon, **checks)
+
+
+def compact_polygon(rng, small):
+    """A square, a compact rectangle (aspect to 1.6) or a regular polygon: ends symmetric across its centre."""
+    centre, turn, size = _placement(rng)
+    kind = rng.choice(["square", "rectangle", "regular"])
+    if kind == "regular":
+        polygon = compact_shapes.regular_polygon(int(rng.integers(3, 21)), size, centre, turn)
+    else:
+        aspect = 1.0 if kind == "square" else rng.uniform(1.0, 1.6)
+        polygon = compact_shapes.rectangle(size * aspect, size, centre, turn)
+    polygon = _sometimes_segmentized(rng, polygon, size)
+    return _compact_case(rng, "compact polygon, automatic ends", polygon, centre=tuple(centre))
+
+
+def compact_star(rng, small):
+    """A star (3 to 12 arms), a hole in the middle of some: ends at the tips of two arms farthest apart; or a
+    fat star (not star-like, compact, without a hole): ends symmetric across its centre."""
+    centre, turn, size = _placement(rng)
+    arms = int(rng.integers(3, 13))
+    fat = rng.random() < 0.25
+    inner = rng.uniform(0.5, 0.8) if fat else rng.uniform(0.2, 0.4)
+    # A fat star with a hole is a ring (its skeleton a loop around the hole), not a compact shape.
+    hole = inner * size * rng.uniform(0.2, 0.8) if not fat and rng.random() < 0.3 else 0.0
+    polygon = compact_shapes.star(arms, size, inner * size, centre, turn, hole)
+    polygon = Polygon(_sometimes_segmentized(rng, Polygon(polygon.exterior), size).exterior, polygon.interiors)
+    if fat:
+        return _compact_case(rng, "star, automatic ends", polygon, centre=tuple(centre))
+    tips = compact_shapes.star_tips(arms, size, centre, turn)
+    return _compact_case(rng, "star, automatic ends", polygon, tips=tips)
+
+
+def compact_ellipse(rng, small):
+    """An ellipse (aspect 1.05 to 4) of 8 to 64 vertices, corners on its tips or half a step beside them: ends
+    across its centre at its tips."""
+    centre, turn, size = _placement(rng)
+    vertices = int(rng.choice([8, 10, 12, 16, 24, 32, 64]))
+    phase = math.pi / vertices if rng.random() < 0.5 else 0.0
+    polygon = compact_shapes.ellipse(vertices, size, size / rng.uniform(1.05, 4.0), centre, turn, phase)
+    return _compact_case(rng, "ellipse, automatic ends", polygon, centre=tuple(centre))
 
 
 def thin_box(rng, small):
@@ -342,7 +380,9 @@ CATEGORIES = (
     (valid_banks, 10),
     (valid_wide_tolerance, 6),
     (valid_random_shape, 5),
-    (compact_auto, 20),
+    (compact_polygon, 8),
+    (compact_star, 7),
+    (compact_ellipse, 5),
     (thin_box, 4),
     (scaled_channel, 4),
     (non_finite, 4),

@@ -17,7 +17,7 @@ from .chains import (
     split_checked_polygon,
     validate_polygon,
 )
-from .ends import END_RULES
+from .ends import COMPACT, END_RULES, STAR
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, Message, SplitPointError, format_point
 from .islands import bridge_islands
@@ -213,7 +213,11 @@ def _automatic_ends(polygon, end_rule, guide, progress, notes):
         raise SplitPointError(Message("ends_coincide", point=format_point(ends.start.coords[0])))
     if guide is not None and not ends.guided:
         notes.append(Message("note_guide_far"))
-    if not ends.elongated:
+    if ends.kind == STAR:
+        notes.append(Message("note_star"))
+    elif ends.kind == COMPACT:
+        notes.append(Message("note_compact"))
+    elif not ends.elongated:
         notes.append(Message("note_not_elongated"))
     return ends
 

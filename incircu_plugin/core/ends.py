@@ -43,6 +43,23 @@ Rule, step by step (deterministic, about O(n log n) in the number ``n`` of bound
    arc-length midpoint of the whole cap when there is none (a rounded cap: its apex).
 4. **Distinct ends.** Should both ends fall within ``MIN_SEPARATION`` of the extent of each other (a compact
    shape), the second end becomes the point of the exterior ring half its perimeter away from the first.
+5. **Shapes without a dominant trunk** (not with a guide; :attr:`EndsResult.kind`, and the caller's note).
+   The *centre* is the centroid of the exterior ring's polygon; its *clearance* its distance from the ring.
+
+   - *Star-like*: the parts of the outline beyond ``STAR_DISK`` clearances of the centre that reach
+     ``STAR_ARM`` clearances are its arms; with three or more, none reaching beyond ``STAR_REACH``
+     clearances, and the third-longest reaching ``STAR_EVEN`` of the second-longest, the ends are the tips
+     (farthest vertices) of the two arms whose tips lie farthest apart: a path through the centre (two
+     opposite arms of an even star, two arms 144 degrees apart of a five-armed one), whatever holes it has.
+   - *Compact* (not elongated, see :attr:`EndsResult.elongated`, and not star-like): the ends are where the
+     longest axis through the centre (the centre of the largest inscribed disk when the centroid lies outside
+     or within half that disk's radius of the ring) leaves the exterior ring: the principal axis of the larger
+     second moment of area, or, on a shape with none (moments equal up to ``ISOTROPY``: a square, a regular
+     polygon), the line from the centre to the nearest point of the ring. A rectangle's short sides'
+     middles, an ellipse's tips at any vertex count, a square's opposite sides' middles, a regular polygon's
+     side middle and the vertex or side middle opposite.
+
+   An elongated shape with a dominant trunk keeps the ends of steps 1 to 4.
 
 Limits: an oblique cut sharper than ``CORNER_TURN`` at its obtuse corner ends at its acute corner; the
 skeleton is only as fine as the sampling, so features narrower than a quarter of the typical width may be
@@ -115,6 +132,30 @@ ON_RING = 1e-7
 #: start rule (the rounding of the cap centring is about 1e-15 of it).
 SAME_X = 1e-9
 
+#: Star-like shapes (see the module docstring, step 5): the disk around the centre that cuts the arms apart,
+#: in clearances of the centre (the notches between a regular star's arms lie at one clearance).
+STAR_DISK = 1.5
+
+#: Smallest reach of an arm from the centre, in clearances of the centre, for it to count as an arm of a
+#: star (a triangle's corners reach 2, a regular star's tips 2.5 when its notches lie at 0.4 of its tips).
+STAR_ARM = 2.25
+
+#: Smallest reach of a star's third-longest arm, as a fraction of its second-longest's: with a shorter third
+#: arm the two longest are a dominant trunk (a reservoir's main valley beside a short side arm), whose tips
+#: the skeleton path finds.
+STAR_EVEN = 0.5
+
+#: Largest reach of any part of the outline from the centre, in clearances of the centre, of a star-like
+#: shape (a river's arms reach further: its centre has no dominant place, its trunk decides).
+STAR_REACH = 12.0
+
+#: Relative difference of the outline's two principal second moments below which a compact shape has no
+#: longest axis (a square, a regular polygon: only rounding separates them).
+ISOTROPY = 1e-9
+
+#: Kinds of shape (:attr:`EndsResult.kind`).
+ELONGATED, COMPACT, STAR = "elongated", "compact", "star"
+
 #: Largest and smallest bounding-box diagonal, CRS units, that the computation handles.
 LARGEST_EXTENT = 1e300
 SMALLEST_EXTENT = 1e-300
@@ -138,13 +179,21 @@ class EndsResult:
         Second end, on the exterior ring, CRS units.
     elongated : bool
         False when the shape is not elongated (its longest skeleton path is shorter than
-        ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends are then arbitrary
-        though deterministic, and the caller should warn.
+        ``ELONGATION_THRESHOLD`` times its largest inscribed diameter); the ends then lie across its centre
+        (``kind`` ``"compact"``, or ``"star"``; only a guide leaves them where its path ends), and the caller
+        should warn.
     trunk : LineString or None
         The skeleton path the ends were derived from (diagnostics), CRS units; it may cross islands smaller
-        than the typical width, which the skeleton leaves out.
+        than the typical width, which the skeleton leaves out. For a compact or star-like shape, the two
+        ends joined through the centre.
     guided : bool
         True when a guide line came near the polygon and chose the path.
+    kind : {"elongated", "compact", "star"}
+        How the ends were chosen (see the module docstring, step 5): ``"elongated"``, the tips of the
+        skeleton path; ``"compact"`` (a shape that is not elongated), the two points where its longest axis
+        through its centre leaves it; ``"star"`` (three or more arms around a centre, no dominant trunk), the
+        tips of its two farthest-apart arms. The last two have no dominant trunk: the caller should say so.
+        Always ``"elongated"`` with a guide.
     """
 
     start: Point
@@ -152,6 +201,7 @@ class EndsResult:
     elongated: bool
     trunk: Optional[LineString] = None
     guided: bool = False
+    kind: str = ELONGATED
 
 
 def find_ends(polygon, *, rule="main_stem", guide=None, progress=None):
@@ -576,6 +626,8 @@ def _ends_of_trunks(frames, trunks):
     last = tips.starts[::2] + tips.lengths[::2] - 1
     path_lengths = tips.along[last] + tips.radii[tips.starts[::2]] + tips.radii[last]
     elongated = (diameters > 0.0) & (path_lengths >= ELONGATION_THRESHOLD * diameters)
+    unguided = np.array([not trunks[index][4] for index in chosen])
+    kinds, centres = _across_centre(rings, diameters / 2.0, elongated, unguided, ends)
     backward = tips.group % 2 == 1
     # The start rule is decided in the local frame (unit diagonal), before the origin's rounding.
     east = ends[:, 1, 0] - ends[:, 0, 0]
@@ -592,15 +644,161 @@ def _ends_of_trunks(frames, trunks):
         tips.points[~backward] * scales[tips.group[~backward] // 2, None] + origins[tips.group[~backward] // 2],
         indices=tips.group[~backward] // 2,
     )
+    centres = centres * scales[:, None] + origins
     for number, index in enumerate(chosen):
+        trunk = lines[number] if tips.lengths[2 * number] > 1 else None
+        if kinds[number] != ELONGATED:
+            trunk = LineString([ends[number, 0], centres[number], ends[number, 1]])
         results[index] = EndsResult(
             start=points[number, 0],
             end=points[number, 1],
             elongated=bool(elongated[number]),
-            trunk=lines[number] if tips.lengths[2 * number] > 1 else None,
+            trunk=trunk,
             guided=trunks[index][4],
+            kind=kinds[number],
         )
     return results
+
+
+def _across_centre(rings, radii, elongated, unguided, ends):
+    """Put the ends of compact and star-like shapes across their centre (see the module docstring, step 5).
+
+    Parameters
+    ----------
+    rings : _Rings
+        The exterior rings of the batch, local units.
+    radii : ndarray of shape (p,)
+        Largest clearance along each trunk, local units.
+    elongated, unguided : ndarray of shape (p,) of bool
+        Whether each shape is elongated, and whether no guide chose its path.
+    ends : ndarray of shape (p, 2, 2)
+        The ends centred in the trunks' caps, local units; those of compact and star-like shapes are replaced
+        in place.
+
+    Returns
+    -------
+    kinds : list of str
+        :attr:`EndsResult.kind` of each shape.
+    centres : ndarray of shape (p, 2)
+        The centre the ends of a compact or star-like shape lie across (zero for the others), local units.
+    """
+    count = len(rings.exteriors)
+    kinds = [ELONGATED] * count
+    centres = np.zeros((count, 2))
+    outlines = shapely.polygons(rings.exteriors)
+    centroids = shapely.centroid(outlines)
+    xy = shapely.get_coordinates(centroids)
+    clearance = np.where(shapely.contains(outlines, centroids), shapely.distance(rings.exteriors, centroids), 0.0)
+    owner = np.repeat(np.arange(count), rings.lengths)
+    distance = np.hypot(*(rings.vertices - xy[owner]).T)
+    reach = np.maximum.reduceat(distance, rings.starts)
+    candidate = unguided & (clearance > 0.0) & (reach >= STAR_ARM * clearance) & (reach <= STAR_REACH * clearance)
+    for number in np.flatnonzero(candidate):
+        own = slice(rings.starts[number], rings.starts[number] + rings.lengths[number])
+        tips = _star_tips(outlines[number], centroids[number], clearance[number], rings.vertices[own], distance[own])
+        if tips is not None:
+            kinds[number], ends[number], centres[number] = STAR, tips, xy[number]
+    compact = np.flatnonzero(unguided & ~elongated & (np.array(kinds) == ELONGATED))
+    if len(compact) == 0:
+        return kinds, centres
+    centre = xy[compact].copy()
+    for position in np.flatnonzero(clearance[compact] < 0.5 * radii[compact]):
+        # The centroid lies outside the outline or near its edge: the centre of the largest inscribed disk.
+        number = compact[position]
+        circle = shapely.maximum_inscribed_circle(outlines[number], 1e-3 * radii[number])
+        centre[position] = shapely.get_coordinates(circle)[0]
+    direction = _longest_axes(rings, xy, compact, centre)
+    points, _, found = rings.first_crossings(
+        np.concatenate([compact, compact]),
+        np.concatenate([centre, centre]),
+        2.0 * np.concatenate([direction, -direction]),
+    )
+    points = points.reshape(2, -1, 2)
+    found = found.reshape(2, -1).all(axis=0)
+    for position in np.flatnonzero(found):
+        number = compact[position]
+        kinds[number], centres[number] = COMPACT, centre[position]
+        ends[number] = points[:, position]
+    return kinds, centres
+
+
+def _star_tips(outline, centre, clearance, vertices, distance):
+    """Return the tips of a star-like outline's two farthest-apart arms, shape (2, 2), or None if it is not one.
+
+    The arms are the parts of the outline beyond the disk of ``STAR_DISK`` clearances around the centre that
+    reach ``STAR_ARM`` clearances from it; the outline is star-like with three or more, the third-longest
+    reaching at least ``STAR_EVEN`` of the second-longest (no dominant trunk). Each arm's tip is its vertex
+    farthest from the centre.
+
+    Parameters
+    ----------
+    outline : Polygon
+        The exterior ring's polygon, local units.
+    centre : Point
+        Its centroid, inside it.
+    clearance : float
+        The centre's distance from the ring, local units.
+    vertices : ndarray of shape (m, 2)
+        The ring's vertices, local units.
+    distance : ndarray of shape (m,)
+        Their distances from the centre, local units.
+    """
+    pieces = shapely.get_parts(shapely.difference(outline, shapely.buffer(centre, STAR_DISK * clearance, quad_segs=16)))
+    if len(pieces) < 3:
+        return None
+    beyond = np.flatnonzero(distance >= STAR_ARM * clearance)
+    points = shapely.points(vertices[beyond])
+    tips, reaches = [], []
+    for piece in pieces:
+        mine = beyond[shapely.dwithin(piece, points, 1e-9)]
+        if len(mine):
+            tips.append(vertices[mine[np.argmax(distance[mine])]])
+            reaches.append(np.max(distance[mine]))
+    if len(tips) < 3 or np.sort(reaches)[-3] < STAR_EVEN * np.sort(reaches)[-2]:
+        return None
+    tips = np.array(tips)
+    apart = np.hypot(*(tips[:, None, :] - tips[None, :, :]).transpose(2, 0, 1))
+    first, second = np.unravel_index(np.argmax(apart), apart.shape)
+    return tips[[first, second]]
+
+
+def _longest_axes(rings, centroids, chosen, centres):
+    """Return the unit direction of the longest axis of each chosen outline, shape (k, 2).
+
+    The longest axis is the principal axis of the outline's larger second moment of area (about its
+    centroid); an outline whose two moments differ by at most ``ISOTROPY`` (a square, a regular polygon) has
+    none, and the direction from its centre to the nearest point of its ring (the middle of a side) is taken.
+
+    Parameters
+    ----------
+    rings : _Rings
+        Local units.
+    centroids : ndarray of shape (p, 2)
+        Centroid of each outline, local units.
+    chosen : ndarray of shape (k,) of int
+        The outlines wanted.
+    centres : ndarray of shape (k, 2)
+        The centre each axis goes through, local units.
+    """
+    count = len(rings.exteriors)
+    owner = np.repeat(np.arange(count), rings.lengths)
+    rank = np.arange(len(owner)) - rings.starts[owner]
+    following = rings.starts[owner] + (rank + 1) % rings.lengths[owner]
+    x, y = (rings.vertices - centroids[owner]).T
+    x_next, y_next = x[following], y[following]
+    cross = x * y_next - x_next * y
+    xx = np.bincount(owner, cross * (x * x + x * x_next + x_next * x_next), count)[chosen]
+    yy = np.bincount(owner, cross * (y * y + y * y_next + y_next * y_next), count)[chosen]
+    xy = np.bincount(owner, cross * (x * y_next + 2.0 * x * y + 2.0 * x_next * y_next + x_next * y), count)[chosen]
+    xy = xy / 2.0
+    angle = 0.5 * np.arctan2(2.0 * xy, xx - yy)
+    direction = np.stack([np.cos(angle), np.sin(angle)], axis=1)
+    isotropic = np.hypot(xx - yy, 2.0 * xy) <= ISOTROPY * np.abs(xx + yy)
+    if np.any(isotropic):
+        nearest = _nearest_boundary_points(rings.exteriors[chosen[isotropic]], centres[isotropic])
+        towards = nearest - centres[isotropic]
+        direction[isotropic] = towards / np.hypot(*towards.T)[:, None]
+    return direction
 
 
 def _segment_sums(values, starts, lengths):

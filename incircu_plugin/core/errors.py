@@ -211,6 +211,16 @@ MESSAGES = {
     "note_not_elongated": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The shape is not elongated; its automatically found ends are arbitrary."
     ),
+    "note_star": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The shape is star-like, with no dominant trunk; its automatic ends are the tips of its two "
+        "farthest-apart arms."
+    ),
+    "note_compact": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The shape is not elongated, with no dominant trunk; its automatic ends lie across its centre, "
+        "along its longest axis."
+    ),
     # Islands.
     "island_blocked": QT_TRANSLATE_NOOP(
         "IncirCuCore",
