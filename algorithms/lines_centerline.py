@@ -182,7 +182,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             return run.skip_task(first, self.not_joined(self.LINES_B))
         run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
         steps = run.core.lines_centerline_steps(
-            run.frame.to_core(line_a), run.frame.to_core(line_b), progress=run.keep_going, end_cap=end_cap, **sampling(first)
+            run.frame.to_core(line_a),
+            run.frame.to_core(line_b),
+            progress=run.keep_going,
+            end_cap=end_cap,
+            **sampling(first),
         )
         vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
         return run.task(first, steps, partial(self._parts, run, first.id()), vertices)
