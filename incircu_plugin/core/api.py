@@ -13,6 +13,7 @@ from .chains import (
     extent_of,
     find_self_crossing,
     orient_bank_lines,
+    polygon_without_folds,
     split_checked_polygon,
     validate_polygon,
 )
@@ -21,6 +22,7 @@ from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import cumulative_lengths
+from .rings import RING_NOTE, loop_is_main_feature, ring_centerline_steps
 from .steps import EndsRequest, run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
@@ -160,7 +162,8 @@ def polygon_centerline_steps(
         raise IncirCuError("Unknown end rule {!r}; use one of {}.".format(end_rule, ", ".join(END_RULES)))
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     split_points = split_point_coordinates(split_points)
-    notes = []
+    polygon, spikes = polygon_without_folds(polygon)
+    notes = [spikes] if spikes else []
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
@@ -169,6 +172,13 @@ def polygon_centerline_steps(
             region, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
+        if ends is None:
+            result = yield from ring_centerline_steps(
+                region, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+            )
+            values = {name: getattr(_checked(result, region), name) for name in _RESULT_FIELDS}
+            values.update(ends_found=True, notes=(*notes, RING_NOTE), ends_from="automatic")
+            return PolygonCenterlineResult(**values)
         split_points = split_point_coordinates((ends.start, ends.end))
         ends_from = "guide" if ends.guided else "automatic"
     c1, c2 = split_checked_polygon(polygon, split_points, snap_tolerance)
@@ -189,12 +199,16 @@ def _automatic_ends(polygon, end_rule, guide, progress, notes):
     """Find a polygon's ends (a step yielding an :class:`.steps.EndsRequest`, answered by :func:`.ends.find_ends`
     or, in a batch, by :func:`.ends.find_ends_together`); append what the user should know to ``notes``.
 
+    Returns None when the polygon is a ring whose centerline is the loop around its hole (see :mod:`.rings`).
+
     Raises
     ------
     SplitPointError
         When the two ends coincide (the shape has no clear ends).
     """
     ends = yield EndsRequest(polygon, end_rule, guide, progress)
+    if loop_is_main_feature(polygon, ends):
+        return None
     if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
         raise SplitPointError(
             f"The ends found automatically coincide at {format_point(ends.start.coords[0])}: the shape has no "
@@ -260,12 +274,13 @@ def lines_centerline_steps(line_a, line_b, *, spacing=None, samples_per_chain=No
     :class:`CenterlineResult`, whose ``notes`` say when one line is more than :data:`BANK_LENGTH_RATIO` times
     as long as the other (see :func:`bank_length_note`).
     """
-    c1, c2 = orient_bank_lines(line_a, line_b)
+    notes = []
+    c1, c2 = orient_bank_lines(line_a, line_b, notes)
     result = yield from clean_chains_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
     note = bank_length_note(c1, c2)
-    return replace(_checked(result), notes=(note,) if note else ())
+    return replace(_checked(result), notes=(*notes, note) if note else tuple(notes))
 
 
 def bank_length_note(line_a, line_b):

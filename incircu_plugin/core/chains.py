@@ -125,6 +125,136 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     return chain
 
 
+def _fold_tips(points, closed, tolerance):
+    """Indices of the vertices where ``points`` (no repeated closing vertex when ``closed``) folds back: the
+    segments before and after point in opposite directions within ``FOLD_SINE_TOLERANCE`` (a spike of zero
+    width), or one of them is shorter than ``tolerance`` (CRS units) and the vertex repeats its neighbour."""
+    before = points - np.roll(points, 1, axis=0)
+    after = np.roll(points, -1, axis=0) - points
+    length_before, length_after = np.hypot(*before.T), np.hypot(*after.T)
+    dot = np.einsum("ij,ij->i", before, after)
+    cross = before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]
+    tip = (dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * length_before * length_after)
+    tip |= length_before <= tolerance
+    if not closed:
+        tip[[0, -1]] = False
+    return np.flatnonzero(tip)
+
+
+def without_folds(coordinates, closed, tolerance):
+    """Remove the zero-width parts of a ring or a line: spikes that go out and come back along themselves,
+    repeated stretches, repeated vertices.
+
+    A spike's tip (a vertex whose two segments point in opposite directions, within
+    ``FOLD_SINE_TOLERANCE``) is removed, then the tips this uncovers (the spike's earlier vertices, when it
+    came back through other vertices), until none is left. No other vertex moves: the boundary loses only the
+    sliver of the spike, which has no width to hold a centerline. Valid GEOS polygons have such spikes
+    (digitising, snapping); ``make_valid``, ``buffer(0)`` and ``simplify`` keep them.
+
+    Parameters
+    ----------
+    coordinates : ndarray of shape (n, 2)
+        A ring (closed: the last vertex repeats the first) or a line, CRS units.
+    closed : bool
+        Whether ``coordinates`` is a ring.
+    tolerance : float
+        Segments this short or shorter (CRS units) count as a repeated vertex (one of their vertices goes; it
+        is not reported).
+
+    Returns
+    -------
+    coordinates : ndarray of shape (m, 2)
+        The same array when nothing was removed.
+    removed : list of (ndarray of shape (2,), float)
+        Each removed spike tip and the longer of its two segments, CRS units, in the order found. A line whose
+        end segment doubles back loses its end vertex instead (the tip is as far as the line reaches): that
+        vertex and the segment's length.
+
+    Examples
+    --------
+    >>> ring = np.array([(0, 0), (9, 0), (9, 5), (12, 5 + 1e-12), (9, 5 + 2e-12), (9, 9), (0, 9), (0, 0)], float)
+    >>> clean, removed = without_folds(ring, True, 1e-9)
+    >>> len(clean), removed[0][0].tolist(), round(removed[0][1], 9)
+    (7, [12.0, 5.000000000001], 3.0)
+    """
+    points = coordinates[:-1] if closed else coordinates
+    tips = _fold_tips(points, closed, tolerance)
+    if not len(tips):
+        return coordinates, []
+    removed = []
+    while len(tips) and len(points) > (3 if closed else 2):
+        # The first tip of each run of neighbours (a ring's last vertex neighbours its first): removing two
+        # neighbours at once would skip a fold between them.
+        chosen = tips[np.concatenate([[True], np.diff(tips) > 1])]
+        if closed and len(chosen) > 1 and chosen[0] == 0 and chosen[-1] == len(points) - 1:
+            chosen = chosen[:-1]
+        gone = []
+        for tip in chosen.tolist():
+            before = np.hypot(*(points[tip] - points[tip - 1]))
+            after = np.hypot(*(points[(tip + 1) % len(points)] - points[tip]))
+            if not closed and tip in (1, len(points) - 2) and min(before, after) > tolerance:
+                # A line's end folding back: the end segment doubles back over the one before it, whose far
+                # vertex is the line's reach; the end goes.
+                end = 0 if tip == 1 else len(points) - 1
+                removed.append((points[end].copy(), float(before if end == 0 else after)))
+                gone.append(end)
+                continue
+            if min(before, after) > tolerance:
+                removed.append((points[tip].copy(), float(max(before, after))))
+            gone.append(tip)
+        points = np.delete(points, np.unique(gone), axis=0)
+        tips = _fold_tips(points, closed, tolerance)
+    return (np.concatenate([points, points[:1]]) if closed else points), removed
+
+
+def polygon_without_folds(polygon):
+    """A valid polygon without the zero-width parts of its rings (:func:`without_folds`), and a note naming
+    where they were.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units.
+
+    Returns
+    -------
+    polygon : Polygon
+        ``polygon`` itself when it has none (or when removing them would leave an invalid polygon, which the
+        later checks then report).
+    note : str or None
+        Where the spikes were and how long, for the result's ``notes``.
+
+    Examples
+    --------
+    >>> parcel = Polygon([(0, 0), (90, 0), (90, 5), (90.027, 5 + 1e-12), (90, 5 + 2e-12), (90, 10), (0, 10)])
+    >>> clean, note = polygon_without_folds(parcel)
+    >>> len(clean.exterior.coords), note
+    (6, 'A zero-width spike was removed from the exterior ring at (90.027, 5) (0.027 CRS units long) before the centerline was computed.')
+    """
+    rings = [shapely.get_coordinates(polygon.exterior)] + [shapely.get_coordinates(r) for r in polygon.interiors]
+    tolerance = FOLD_SINE_TOLERANCE * extent_of(rings[0])
+    cleaned, places = [], []
+    for number, ring in enumerate(rings):
+        ring, removed = without_folds(ring, True, tolerance)
+        cleaned.append(ring)
+        name = "the exterior ring" if number == 0 else f"island {number}"
+        places += [f"{name} at {format_point(tip)} ({length:.6g} CRS units long)" for tip, length in removed]
+    if not places:
+        return polygon, None
+    result = Polygon(cleaned[0], cleaned[1:])
+    if not result.is_valid:
+        return polygon, None
+    _Validated.remember(result)
+    return result, _spikes_note(places)
+
+
+def _spikes_note(places):
+    """The note naming the zero-width spikes removed at ``places`` (descriptions, see :func:`without_folds`)."""
+    spikes = "A zero-width spike was" if len(places) == 1 else f"{len(places)} zero-width spikes were"
+    shown = "; ".join(places[:3]) + (f"; and {len(places) - 3} more" if len(places) > 3 else "")
+    return f"{spikes} removed from {shown} before the centerline was computed."
+
+
 def _steps(coordinates):
     """The x and y components of each segment of a polyline (an (n, 2) array, CRS units): two (n - 1,) arrays."""
     x, y = coordinates[:, 0], coordinates[:, 1]
@@ -366,13 +496,18 @@ def split_checked_polygon(polygon, points, tolerance=None):
     return loop[forward], loop[backward]
 
 
-def orient_bank_lines(line_a, line_b):
+def orient_bank_lines(line_a, line_b, notes=None):
     """Validate two bank lines and orient them so their starts face each other.
+
+    A line that doubles back on itself (a spike, a repeated stretch: :func:`without_folds`) loses that
+    zero-width part first; no other vertex moves.
 
     Parameters
     ----------
     line_a, line_b : LineString or array_like of shape (n, 2)
         The two lines bounding the region, CRS units.
+    notes : list of str, optional
+        Where a note naming the removed spikes is appended.
 
     Returns
     -------
@@ -387,6 +522,15 @@ def orient_bank_lines(line_a, line_b):
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
     check_coordinates(np.concatenate([a, b]), "pair of lines")
+    fold = FOLD_SINE_TOLERANCE * extent_of(a, b)
+    (a, removed_a), (b, removed_b) = without_folds(a, False, fold), without_folds(b, False, fold)
+    places = [
+        f"the {name} line at {format_point(tip)} ({length:.6g} CRS units long)"
+        for name, removed in (("first", removed_a), ("second", removed_b))
+        for tip, length in removed
+    ]
+    if places and notes is not None:
+        notes.append(_spikes_note(places))
     coincidence = COINCIDENCE_TOLERANCE * extent_of(a, b)
     a = clean_chain(a, "first line", coincidence)
     b = clean_chain(b, "second line", coincidence)
