@@ -16,6 +16,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
 from incircu_plugin.core import lines_centerline, multipolygon_centerlines, polygon_centerline
+from incircu_plugin.core.errors import ChainError, InvalidGeometryError, OptionError
 from incircu_plugin.core.rings import RING_NOTE
 from incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
 from tests.support.oracle import check_centerline, segment_distances
@@ -235,3 +236,46 @@ def test_a_bank_line_doubling_back_loses_its_fold(where):
     assert len(result.notes) == 1 and "zero-width spike was removed from the first line" in result.notes[0]
     expected = lines_centerline(clean, other)
     assert np.array_equal(np.asarray(result.line.coords), np.asarray(expected.line.coords))
+
+
+def test_a_thin_box_gets_the_finest_tolerance_float64_allows_with_a_note():
+    """A box 3.2e-8 wide and 2 long: its automatic tolerance (width / 200) is finer than float64 can place
+    vertices (1e-9 of the extent); the finest possible is used, a note says so, and the line is on the axis."""
+    height = 3.2e-8
+    result = polygon_centerline(box(0, 0, 2, height))
+    assert len(result.notes) == 1 and "finer than float64 can place vertices" in result.notes[0]
+    coords = np.asarray(result.line.coords)
+    assert np.allclose(coords[:, 1], height / 2, rtol=0, atol=1e-9 * 2)
+    assert {round(coords[0, 0], 6), round(coords[-1, 0], 6)} == {0.0, 2.0}
+
+
+@pytest.mark.parametrize("length", [2.0, 1e6])
+@pytest.mark.parametrize("relative", np.geomspace(1e-6, 1e-16, 21).tolist())
+@pytest.mark.parametrize(
+    "options", [{}, {"tolerance": 1e-8}, {"spacing": 0.05}], ids=["automatic", "tolerance", "fixed"]
+)
+@pytest.mark.parametrize("given", [True, False], ids=["split_points", "automatic_ends"])
+def test_thin_boxes_down_to_float64_give_their_line_or_name_their_width(length, relative, options, given):
+    """Boxes ``relative`` of their length wide, down to float64's resolution: either the line along the middle
+    from end to end, or a typed error naming the shape's width (never another error, never a wrong line)."""
+    height = relative * length
+    options = {name: value * length for name, value in options.items()}
+    ends = [(0.0, height / 2), (length, height / 2)] if given else None
+    try:
+        result = polygon_centerline(box(0, 0, length, height), ends, **options)
+    except (InvalidGeometryError, ChainError) as error:
+        assert " wide " in str(error) and "float64" in str(error)
+        return
+    coords = np.asarray(result.line.coords)
+    assert result.line.is_simple
+    assert np.allclose(coords[:, 1], height / 2, rtol=0, atol=height / 2 + 1e-15 * length)
+    assert sorted([coords[0, 0], coords[-1, 0]]) == pytest.approx([0.0, length], abs=1e-9 * length)
+
+
+def test_a_tolerance_the_user_set_too_fine_is_named_and_its_advice_works():
+    """A tolerance below float64's limit names the option the user set; the value it advises works."""
+    polygon = box(0, 0, 2.0000000001, 1e-3)
+    with pytest.raises(OptionError, match=r"The tolerance 1e-12 \(CRS units\) you set") as caught:
+        polygon_centerline(polygon, tolerance=1e-12)
+    advised = float(str(caught.value).split("Use at least ")[1].split(",")[0])
+    assert polygon_centerline(polygon, tolerance=advised).line.is_simple

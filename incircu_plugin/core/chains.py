@@ -192,11 +192,16 @@ def without_folds(coordinates, closed, tolerance):
         for tip in chosen.tolist():
             before = np.hypot(*(points[tip] - points[tip - 1]))
             after = np.hypot(*(points[(tip + 1) % len(points)] - points[tip]))
-            if not closed and tip in (1, len(points) - 2) and min(before, after) > tolerance:
-                # A line's end folding back: the end segment doubles back over the one before it, whose far
-                # vertex is the line's reach; the end goes.
-                end = 0 if tip == 1 else len(points) - 1
-                removed.append((points[end].copy(), float(before if end == 0 else after)))
+            # A line's end segment doubling back within the one before it: the end goes, the line keeps its
+            # reach (the tip).
+            end = None
+            if not closed and min(before, after) > tolerance:
+                if tip == len(points) - 2 and after <= before:
+                    end, length = len(points) - 1, after
+                elif tip == 1 and before <= after:
+                    end, length = 0, before
+            if end is not None:
+                removed.append((points[end].copy(), float(length)))
                 gone.append(end)
                 continue
             if min(before, after) > tolerance:

@@ -447,7 +447,7 @@ def _joint_trunks(frames, rule, outcomes, check):
     for position, index in enumerate(framed):
         if skeleton.errors[position] is not None or edge_start[position + 1] == edge_start[position]:
             outcomes[index] = skeleton.errors[position] or InvalidGeometryError(
-                "The polygon is too thin or too small to find its ends automatically."
+                "The polygon is too thin or too small to find its ends automatically; give two split points."
             )
             continue
         low, high = node_start[position], node_start[position + 1]

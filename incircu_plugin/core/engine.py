@@ -28,7 +28,7 @@ from shapely.geometry import LineString
 
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
 from .contacts import Boundary
-from .errors import OptionError
+from .errors import ChainError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .lines import LineRequest
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
@@ -40,6 +40,10 @@ DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
 #: Smallest tolerance, relative to the chains' extent: below it the parabola stations would outnumber what
 #: float64 can place distinctly (and what memory holds).
 MIN_TOLERANCE = 1e-9
+
+#: Smallest typical width between the chains, relative to their extent: narrower, float64 cannot tell the two
+#: sides apart (a disk's contacts are found to about 1e-12 of the extent) and no centerline is traced.
+MIN_WIDTH = 1e-11
 
 #: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
 PARABOLA_SHARE = 0.5
@@ -147,7 +151,49 @@ def default_tolerance(c1, c2):
     >>> default_tolerance(np.array([[0.0, 0], [100, 0]]), np.array([[0.0, 10], [100, 10]]))
     0.05
     """
-    return DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent_of(c1, c2))
+    extent = extent_of(c1, c2)
+    return max(DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent), MIN_TOLERANCE * extent)
+
+
+def _rounded_up(value):
+    """``value`` (positive) rounded up to three significant digits, for advice a user can type.
+
+    >>> _rounded_up(2.0000000001e-09), _rounded_up(2e-09)
+    (2.01e-09, 2e-09)
+    """
+    shown = float(f"{value:.3g}")
+    if shown >= value:
+        return shown
+    step = 10.0 ** (np.floor(np.log10(value)) - 2)
+    return float(f"{(np.floor(value / step) + 1) * step:.3g}")
+
+
+def _automatic_tolerance(frame):
+    """The adaptive sampling's tolerance when none is given, CRS units, and a note when it is not the usual one.
+
+    The typical width / 200; when that is finer than float64 can place vertices (``MIN_TOLERANCE`` of the
+    extent: a region 1e-7 of its extent wide), ``MIN_TOLERANCE`` of the extent, which the note says.
+    """
+    usual = DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
+    finest = MIN_TOLERANCE * frame.extent
+    if usual >= finest:
+        return usual, None
+    return finest, (
+        f"The shape is {frame.default_width:.3g} wide, {frame.default_width / frame.extent:.3g} of its extent "
+        f"({frame.extent:.6g} CRS units): its automatic tolerance (the width / 200) is finer than float64 can "
+        f"place vertices, so the finest possible, {finest:.3g} CRS units ({MIN_TOLERANCE:g} of the extent), is used."
+    )
+
+
+def _check_width(frame):
+    """Raise :class:`ChainError` when the region between the chains is too narrow for float64 (``MIN_WIDTH``)."""
+    if frame.default_width < MIN_WIDTH * frame.extent:
+        raise ChainError(
+            f"The shape is {frame.default_width:.3g} wide (its area over its length), {frame.default_width / frame.extent:.3g} "
+            f"of its extent ({frame.extent:.6g} CRS units), under the {MIN_WIDTH:g} at which float64 can still tell "
+            "its two sides apart: no centerline can be traced. At this width its sides are the centerline: use one "
+            "of them."
+        )
 
 
 def _width_or_fallback(width, extent):
@@ -286,17 +332,20 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
     if fixed and tolerance is not None:
         raise OptionError("Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).")
     frame = _Frame([c1, c2])
+    _check_width(frame)
     report = reporter(progress)
+    note = None
     if fixed:
         spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths, frame.default_width)
         points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
     else:
-        tolerance = tolerance or DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
-        if tolerance < MIN_TOLERANCE * frame.extent:
+        if tolerance is None:
+            tolerance, note = _automatic_tolerance(frame)
+        elif tolerance < MIN_TOLERANCE * frame.extent:
             raise OptionError(
-                f"The tolerance {tolerance:.6g} is below {MIN_TOLERANCE:g} of the shape's extent "
-                f"({frame.extent:.6g}): float64 cannot place vertices that finely. Use at least "
-                f"{MIN_TOLERANCE * frame.extent:.6g} (CRS units), or 0 for the automatic tolerance."
+                f"The tolerance {tolerance:.6g} (CRS units) you set is below {MIN_TOLERANCE:g} of the shape's "
+                f"extent ({frame.extent:.6g}): float64 cannot place vertices that finely. Use at least "
+                f"{_rounded_up(MIN_TOLERANCE * frame.extent):.3g}, or 0 for the automatic tolerance."
             )
         sides = (frame.side, -frame.side)
         points = yield TraceRequest(
@@ -310,6 +359,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         radii=radius,
         foot_a=foot_a + frame.origin,
         foot_b=foot_b + frame.origin,
+        notes=(note,) if note else (),
         chains=(c1, c2),
     )
 

@@ -265,8 +265,13 @@ def _ordered(points, side, lengths, coincidence, blocks):
     # to one chain passes within rounding of the other's end well before its foot reaches it: at a distance d
     # along the stretch, a disk of radius r misses the split point by about d**2 / (2 r). Such feet (d of 1e-7
     # on a 0.75 wide stub, 70 units long chains) are one point as well: the disk is on the stub.
+    # Both feet lie at a split point only where both chains start or end: a channel narrower than the
+    # resolution (a thin box 1e-9 of its length wide) has its feet that close all along.
     resolution = DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
     one_foot = (spare <= resolution) | (spare * spare <= 2.0 * resolution * points.radius)
+    from_start = points.position_a + points.position_b
+    from_end = (lengths[0] - points.position_a) + (lengths[1] - points.position_b)
+    one_foot &= np.minimum(from_start, from_end) <= 2.0 * spare + resolution
     # The centre's component along the direction of travel, side * (across_y, -across_x).
     crossing = np.multiply(points.centre[:, 0], across_y)
     crossing -= np.multiply(points.centre[:, 1], across_x, out=spare)
