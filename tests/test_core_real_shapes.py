@@ -15,8 +15,14 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
-from incircu_plugin.core import lines_centerline, multipolygon_centerlines, polygon_centerline
-from incircu_plugin.core.errors import ChainError, InvalidGeometryError, OptionError
+from incircu_plugin.core import centerline_from_chains, lines_centerline, multipolygon_centerlines, polygon_centerline
+from incircu_plugin.core.errors import (
+    CenterlineError,
+    ChainError,
+    CrossingLinesError,
+    InvalidGeometryError,
+    OptionError,
+)
 from incircu_plugin.core.rings import RING_NOTE
 from incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
 from tests.support.oracle import check_centerline, segment_distances
@@ -279,3 +285,36 @@ def test_a_tolerance_the_user_set_too_fine_is_named_and_its_advice_works():
         polygon_centerline(polygon, tolerance=1e-12)
     advised = float(str(caught.value).split("Use at least ")[1].split(",")[0])
     assert polygon_centerline(polygon, tolerance=advised).line.is_simple
+
+
+def test_identical_chains_are_refused_as_crossing():
+    chain = np.array([(0.0, 0.0), (5.0, 1.0), (10.0, 0.0)])
+    for spacing in (None, 0.2):
+        with pytest.raises(CrossingLinesError, match=r"cross or touch at \(0, 0\)|cross or touch at \(5, 1\)"):
+            centerline_from_chains(chain, chain.copy(), spacing)
+
+
+def test_chains_sharing_one_end_give_a_simple_line():
+    result = centerline_from_chains(np.array([(0.0, 0.0), (10.0, 0.0)]), np.array([(0.0, 0.0), (10.0, 3.0)]))
+    assert result.line.is_simple
+    assert result.line.coords[0] == (0.0, 0.0) and result.line.coords[-1] == (10.0, 1.5)
+
+
+def test_a_chain_crossing_itself_is_named():
+    walk = np.array([(0.0, 0.0), (4.0, 0.0), (4.0, 2.0), (2.0, -1.0)])
+    with pytest.raises(ChainError, match=r"The first chain crosses itself at \(2\.6666666(67)?, 0\)"):
+        centerline_from_chains(walk, np.array([(0.0, 5.0), (4.0, 5.0)]))
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_random_walk_chains_give_a_simple_line_or_a_typed_error(seed):
+    """Random walks (an outside campaign's 17 self-crossing lines came from such inputs): a simple line, or
+    the typed error of what is wrong (a walk crossing itself or the other, or the last guard)."""
+    rng = np.random.default_rng(seed)
+    chains = [np.cumsum(rng.normal(size=(8, 2)), axis=0) + [offset, 0.0] for offset in (0.0, 1.0)]
+    for spacing in (None, 0.2):
+        try:
+            result = centerline_from_chains(*chains, spacing)
+        except (ChainError, CrossingLinesError, CenterlineError):
+            continue
+        assert result.line.is_simple

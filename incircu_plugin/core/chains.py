@@ -260,6 +260,41 @@ def _spikes_note(places):
     return f"{spikes} removed from {shown} before the centerline was computed."
 
 
+def ensure_bounding_chains(chain_a, chain_b):
+    """Raise unless two chains bound a region: each is simple, and they meet only at shared end points.
+
+    Parameters
+    ----------
+    chain_a, chain_b : ndarray of shape (n, 2)
+        Clean chains (:func:`clean_chain`), CRS units.
+
+    Raises
+    ------
+    ChainError
+        If a chain crosses or touches itself.
+    CrossingLinesError
+        If the chains cross, touch or overlap anywhere but at an end point both share (identical chains, a
+        random walk crossing the other).
+    """
+    ensure_simple(chain_a, "first chain")
+    ensure_simple(chain_b, "second chain")
+    lines = LineString(chain_a), LineString(chain_b)
+    if not shapely.intersects(*lines):
+        return
+    coincidence = COINCIDENCE_TOLERANCE * extent_of(chain_a, chain_b)
+    shared = [end for end in (chain_a[0], chain_a[-1]) if min(np.hypot(*(chain_b[[0, -1]] - end).T)) <= coincidence]
+    contact = shapely.get_coordinates(shapely.intersection(*lines))
+    if not len(contact):
+        # Not seen, but the predicate and the overlay are separate computations: where they meet, nearly.
+        contact = shapely.get_coordinates(shapely.shortest_line(*lines))[:1]
+    elsewhere = [point for point in contact if all(np.hypot(*(point - end)) > coincidence for end in shared)]
+    if elsewhere:
+        raise CrossingLinesError(
+            f"The two chains cross or touch at {format_point(elsewhere[0])}; they must bound a region between "
+            "them, meeting at most at shared end points."
+        )
+
+
 def _steps(coordinates):
     """The x and y components of each segment of a polyline (an (n, 2) array, CRS units): two (n - 1,) arrays."""
     x, y = coordinates[:, 0], coordinates[:, 1]

@@ -26,7 +26,7 @@ from typing import Callable, Optional
 import numpy as np
 from shapely.geometry import LineString
 
-from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, clean_chain, ensure_bounding_chains, extent_of, signed_area
 from .contacts import Boundary
 from .errors import ChainError, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
@@ -282,8 +282,13 @@ def centerline_from_chains(
     OptionError
         If ``spacing``, ``samples_per_chain`` or ``tolerance`` is not a positive finite number, both a
         spacing and a tolerance are given, or the spacing would need more than ``MAX_SAMPLES`` samples.
+    ChainError, CrossingLinesError
+        If the chains are unusable (see :func:`.chains.clean_chain`), cross themselves or each other, or meet
+        anywhere but at shared end points (:func:`.chains.ensure_bounding_chains`).
+    CenterlineError
+        If the line would cross itself (the last guard, as for :func:`.api.polygon_centerline`).
     IncirCuError
-        If the chains are unusable (see :func:`.chains.clean_chain`) or too close to carry a line.
+        If the chains are too close to carry a line.
     Cancelled
         If ``progress`` returned False.
 
@@ -296,9 +301,17 @@ def centerline_from_chains(
     >>> result.line.coords[:]
     [(0.0, 1.0), (10.0, 1.0)]
     """
-    return run_alone(
-        centerline_steps(c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress)
+    chains = _clean_chains(c1, c2)
+    ensure_bounding_chains(*chains)
+    result = run_alone(
+        clean_chains_steps(
+            *chains, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+        )
     )
+    # The public functions' last guard; imported here, as api imports this module.
+    from .api import _checked
+
+    return _checked(result)
 
 
 def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None, region=None):
