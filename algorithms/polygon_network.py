@@ -146,6 +146,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 if outcome.error is not None:
                     run.skip(feature.id(), str(outcome.error), outcome.part_index if several else None)
                     continue
+                for note in outcome.result.notes:
+                    run.warn_feature(feature.id(), note, outcome.part_index if several else None)
                 parts.append((outcome.part_index, outcome.result, ids))
             run.write(feature, parts)
         return run.finish()
