@@ -26,7 +26,10 @@ def problems(case, result):
     if case.function == "multipolygon_centerlines":
         return _parts_problems(case, result)
     if case.function in ("polygon_centerline", "lines_centerline"):
-        return _line_problems(result.line, case.polygon, case.split_points, case.snap)
+        found = _line_problems(result.line, case.polygon, case.split_points, case.snap)
+        if case.closed and not result.line.is_closed:
+            found.append("a ring's line is not its closed loop")
+        return found
     return []
 
 

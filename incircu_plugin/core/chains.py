@@ -127,14 +127,19 @@ def clean_chain(coordinates, name="chain", tolerance=None):
 
 def _fold_tips(points, closed, tolerance):
     """Indices of the vertices where ``points`` (no repeated closing vertex when ``closed``) folds back: the
-    segments before and after point in opposite directions within ``FOLD_SINE_TOLERANCE`` (a spike of zero
-    width), or one of them is shorter than ``tolerance`` (CRS units) and the vertex repeats its neighbour."""
+    segments before and after point in opposite directions within ``FOLD_SINE_TOLERANCE``, or the shorter one
+    ends within ``tolerance`` (CRS units) of the longer one's line (a spike of zero width: no wider at its base
+    than float64 places vertices); or one of them is shorter than ``tolerance`` and the vertex repeats its
+    neighbour."""
     before = points - np.roll(points, 1, axis=0)
     after = np.roll(points, -1, axis=0) - points
     length_before, length_after = np.hypot(*before.T), np.hypot(*after.T)
     dot = np.einsum("ij,ij->i", before, after)
     cross = before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]
-    tip = (dot < 0) & (np.abs(cross) <= FOLD_SINE_TOLERANCE * length_before * length_after)
+    longer = np.maximum(length_before, length_after)
+    tip = (dot < 0) & (
+        (np.abs(cross) <= FOLD_SINE_TOLERANCE * length_before * length_after) | (np.abs(cross) <= tolerance * longer)
+    )
     tip |= length_before <= tolerance
     if not closed:
         tip[[0, -1]] = False
@@ -145,8 +150,8 @@ def without_folds(coordinates, closed, tolerance):
     """Remove the zero-width parts of a ring or a line: spikes that go out and come back along themselves,
     repeated stretches, repeated vertices.
 
-    A spike's tip (a vertex whose two segments point in opposite directions, within
-    ``FOLD_SINE_TOLERANCE``) is removed, then the tips this uncovers (the spike's earlier vertices, when it
+    A spike's tip (a vertex whose two segments point in opposite directions, within ``FOLD_SINE_TOLERANCE``
+    or within ``tolerance`` at the spike's base) is removed, then the tips this uncovers (the spike's earlier vertices, when it
     came back through other vertices), until none is left. No other vertex moves: the boundary loses only the
     sliver of the spike, which has no width to hold a centerline. Valid GEOS polygons have such spikes
     (digitising, snapping); ``make_valid``, ``buffer(0)`` and ``simplify`` keep them.
@@ -158,8 +163,8 @@ def without_folds(coordinates, closed, tolerance):
     closed : bool
         Whether ``coordinates`` is a ring.
     tolerance : float
-        Segments this short or shorter (CRS units) count as a repeated vertex (one of their vertices goes; it
-        is not reported).
+        A spike no wider than this at its base is of zero width; segments this short or shorter count as a
+        repeated vertex (one of their vertices goes; it is not reported). CRS units.
 
     Returns
     -------
