@@ -42,16 +42,23 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         return self.tr("network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width").split(",")
 
     def summary(self):
-        return self.tr(
-            "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
-            "that separates the outline's chains between consecutive split points: a tree with one end at each split "
-            "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
-            "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
-            " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
-            "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
-            " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
-            "that cannot be processed is skipped with a warning naming its id and the reason."
+        return (
+            self.tr(
+                "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
+                "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
+                "that separates the outline's chains between consecutive split points: a tree with one end at each split "
+                "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
+                "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
+                " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
+                "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
+                " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
+                "that cannot be processed is skipped with a warning naming its id and the reason."
+            )
+            + " "
+            + self.tr(
+                "Zero-width spikes of the outline (going out and back along themselves) are removed first, with a "
+                "warning naming where."
+            )
         )
 
     def initAlgorithm(self, configuration=None):
