@@ -15,7 +15,14 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
-from incircu_plugin.core import centerline_from_chains, lines_centerline, multipolygon_centerlines, polygon_centerline
+from incircu_plugin.core import (
+    centerline_from_chains,
+    centerlines_together,
+    lines_centerline,
+    multipolygon_centerlines,
+    polygon_centerline,
+    polygon_centerline_steps,
+)
 from incircu_plugin.core.errors import (
     CenterlineError,
     ChainError,
@@ -23,6 +30,7 @@ from incircu_plugin.core.errors import (
     InvalidGeometryError,
     OptionError,
 )
+from incircu_plugin.core.polyline import typical_width
 from incircu_plugin.core.rings import RING_NOTE
 from incircu_plugin.core.widths import incircle_polygons, transects, vertex_chainages
 from tests.support.oracle import check_centerline, segment_distances
@@ -108,6 +116,21 @@ RINGS = {
     ),
     "square_frame": box(0, 0, 10, 10).difference(box(2, 2, 8, 8)),
     "atoll": atoll(),
+    # Rotated frames from the fuzz campaign (seed 1, inputs 2585 and 2963): the seam at an inner corner.
+    "rotated_frame": shapely.from_wkt(
+        "POLYGON ((16952.44815050537 42857.643219670186, 45304.12405747688 6693.516445026472, "
+        "-16535.769214839544 -41787.2507833341, -44887.445121811055 -5623.124008690388, "
+        "16952.44815050537 42857.643219670186), (-14743.155588914336 -26983.713592062686, "
+        "30500.586866205478 8486.130070951684, 15159.83452458016 28054.10602839877, "
+        "-30083.90793053965 -7415.737634615601, -14743.155588914336 -26983.713592062686))"
+    ),
+    "rotated_square_frame": shapely.from_wkt(
+        "POLYGON ((-5446.610937172375 584.4126894269826, -139.2064887494219 5477.547583216903, "
+        "5448.133525893997 -582.835768610477, 140.72907747104375 -5475.9706624003975, "
+        "-5446.610937172375 584.4126894269826), (4172.313127812134 -531.0214938575845, "
+        "-191.02076350231548 4201.727185135038, -4170.790539090512 532.5984146740901, "
+        "192.54335222393732 -4200.150264318532, 4172.313127812134 -531.0214938575845))"
+    ),
     "far_from_origin": affinity.translate(Point(0, 0).buffer(10).difference(Point(2, 1).buffer(6)), 5e5, 5e6),
 }
 
@@ -131,6 +154,19 @@ def test_a_ring_gets_its_closed_loop(name, spacing):
     assert result.radii[0] == pytest.approx(segment_distances([start], outer)[0], abs=1e-9 * extent + 16 * ulp)
     # The loop goes once around the hole: it contains the hole and not the exterior ring's area outside it.
     assert Polygon(line.coords).contains(polygon.interiors[0])
+
+
+def test_rings_traced_together_are_their_loops_alone():
+    """A batch of rings (as a layer is traced) gives each its loop alone, to the default tolerance: the seam's
+    feet, a rounding off the rings' ends in the batch's frame, are not across the seam."""
+    names = sorted(RINGS)
+    together = centerlines_together([polygon_centerline_steps(RINGS[name]) for name in names * 2])
+    for name, result in zip(names * 2, together):
+        alone = polygon_centerline(RINGS[name])
+        polygon = RINGS[name]
+        tolerance = typical_width(polygon.area, 0.5 * polygon.length) / 200.0
+        assert result.line.is_closed, name
+        assert result.line.hausdorff_distance(alone.line) <= tolerance, name
 
 
 def test_the_loop_measures_its_widths_and_transects():
