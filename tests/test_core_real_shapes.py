@@ -23,6 +23,7 @@ from incircu_plugin.core import (
     polygon_centerline,
     polygon_centerline_steps,
 )
+from incircu_plugin.core.ends import find_ends, find_ends_together
 from incircu_plugin.core.errors import (
     CenterlineError,
     ChainError,
@@ -354,3 +355,15 @@ def test_random_walk_chains_give_a_simple_line_or_a_typed_error(seed):
         except (ChainError, CrossingLinesError, CenterlineError):
             continue
         assert result.line.is_simple
+
+
+def test_find_ends_of_a_ring_without_a_trunk_line_does_not_crash():
+    """A smooth ring's skeleton is a cycle without leaves: a one-point trunk, which once crashed GEOS (a line of
+    one point) for the whole batch. Its ends are arbitrary (not elongated) and it has no trunk line; the other
+    polygons of the batch get theirs."""
+    moat = RINGS["moat"]
+    alone = find_ends(moat)
+    assert alone.trunk is None and not alone.elongated
+    river, ring, other = find_ends_together([box(0, 0, 100, 10), moat, box(0, 20, 50, 25)])
+    assert ring.trunk is None
+    assert river.trunk.length == pytest.approx(100.0, rel=0.05) and other.trunk.length == pytest.approx(50.0, rel=0.05)
