@@ -180,7 +180,7 @@ def without_folds(coordinates, closed, tolerance):
     >>> ring = np.array([(0, 0), (9, 0), (9, 5), (12, 5 + 1e-12), (9, 5 + 2e-12), (9, 9), (0, 9), (0, 0)], float)
     >>> clean, removed = without_folds(ring, True, 1e-9)
     >>> len(clean), removed[0][0].tolist(), round(removed[0][1], 9)
-    (7, [12.0, 5.000000000001], 3.0)
+    (6, [12.0, 5.000000000001], 3.0)
     """
     points = coordinates[:-1] if closed else coordinates
     tips = _fold_tips(points, closed, tolerance)
