@@ -222,27 +222,27 @@
         <translation>linia środkowa,oś,oś medialna,brzegi,rzeka,droga,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="65"/>
+        <location filename="../algorithms/lines_centerline.py" line="72"/>
         <source>First lines (bank A)</source>
         <translation>Pierwsze linie (brzeg A)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="72"/>
+        <location filename="../algorithms/lines_centerline.py" line="79"/>
         <source>Second lines (bank B)</source>
         <translation>Drugie linie (brzeg B)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="76"/>
+        <location filename="../algorithms/lines_centerline.py" line="83"/>
         <source>Pairing field of the first lines</source>
         <translation>Pole parujące pierwszych linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="88"/>
+        <location filename="../algorithms/lines_centerline.py" line="95"/>
         <source>Pairing field of the second lines</source>
         <translation>Pole parujące drugich linii</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="124"/>
+        <location filename="../algorithms/lines_centerline.py" line="131"/>
         <source>{} holds no line.</source>
         <translation>{} nie zawiera żadnej linii.</translation>
     </message>
@@ -267,17 +267,17 @@
         <translation>Wyznacza jedną nierozgałęzioną linię środkową między dwiema liniami (na przykład brzegami rzeki) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu linii. Linie łączone są w pary według równych wartości obu pól parujących; bez nich każda warstwa zawiera jedną linię (jej obiekty i części są scalane). Linie nie mogą się przecinać. Wartość M każdego wierzchołka to lokalna szerokość. Drugie linie są przeliczane do układu pierwszych; warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym, a odległości są wtedy w metrach.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="72"/>
+        <location filename="../algorithms/lines_centerline.py" line="79"/>
         <source>Line layer of the other side; reprojected to the CRS of the first lines when needed.</source>
         <translation>Warstwa liniowa drugiej strony; w razie potrzeby przeliczana do układu pierwszych linii.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="76"/>
+        <location filename="../algorithms/lines_centerline.py" line="83"/>
         <source>Optional; a line of the first lines is paired with the line of the second lines that has the same value in &apos;Pairing field of the second lines&apos;.</source>
         <translation>Opcjonalne; linia z pierwszych linii łączona jest w parę z linią z drugich linii o tej samej wartości w 'Pole parujące drugich linii'.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="88"/>
+        <location filename="../algorithms/lines_centerline.py" line="95"/>
         <source>Optional; required together with &apos;Pairing field of the first lines&apos;.</source>
         <translation>Opcjonalne; wymagane razem z 'Pole parujące pierwszych linii'.</translation>
     </message>
@@ -287,34 +287,39 @@
         <translation>Warstwa liniowa, jedna linia na parę linii: atrybuty pierwszych linii oraz source_fid (identyfikator pierwszego obiektu pary w pierwszych liniach), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices. Pola ends_found (zawsze fałsz) i ends_from (zawsze puste) istnieją tylko po to, by warstwa miała pola algorytmu 'Linia środkowa poligonów'.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="65"/>
+        <location filename="../algorithms/lines_centerline.py" line="72"/>
         <source>Line layer of one side; the output has its CRS and its attributes. Z values (of both layers) are ignored: the centerline is computed in the plane.</source>
         <translation>Warstwa liniowa jednej strony; wynik ma jej układ współrzędnych i atrybuty. Wartości Z (obu warstw) są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="109"/>
+        <location filename="../algorithms/lines_centerline.py" line="116"/>
         <source>Give both {} and {}, or neither (then each layer holds one line).</source>
         <translation>Podaj oba pola, {} i {}, albo żadnego (wtedy każda warstwa zawiera jedną linię).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="127"/>
+        <location filename="../algorithms/lines_centerline.py" line="134"/>
         <source>{} holds {} separate lines that do not join into one; give {} and {} to pair them, or merge them into one line.</source>
         <translation>{} zawiera linie, które nie łączą się w jedną (jest ich {}); podaj {} i {}, aby je sparować, albo scal je w jedną linię.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="146"/>
+        <location filename="../algorithms/lines_centerline.py" line="153"/>
         <source>No line in {} has {} = {!r}; line {} of {} unused.</source>
         <translation>Żadna linia w {} nie ma {} = {!r}; linia {} z {} nie została użyta.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="156"/>
+        <location filename="../algorithms/lines_centerline.py" line="163"/>
         <source>no line in {} has {} = {!r}</source>
         <translation>żadna linia w {} nie ma {} = {!r}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lines_centerline.py" line="174"/>
+        <location filename="../algorithms/lines_centerline.py" line="181"/>
         <source>the lines of {} with this pairing value do not join into one</source>
         <translation>linie z {} o tej wartości parowania nie łączą się w jedną</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lines_centerline.py" line="54"/>
+        <source>A line doubling back over itself (a zero-width spike, or an end coming back) loses that part first, with a warning naming where.</source>
+        <translation>Linia zawracająca po sobie (kolec o zerowej szerokości albo cofający się koniec) najpierw traci tę część, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
 </context>
 <context>
@@ -325,22 +330,22 @@
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="71"/>
+        <location filename="../algorithms/polygon_centerline.py" line="79"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="80"/>
+        <location filename="../algorithms/polygon_centerline.py" line="88"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="134"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="134"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
@@ -365,32 +370,32 @@
         <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między końcami automatycznymi: końcami drogi wewnątrz kształtu wzdłuż 'Linii prowadzących', a bez nich głównego nurtu (lub najdłuższej drogi wewnątrz kształtu, zob. 'Końce automatyczne'). Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="80"/>
+        <location filename="../algorithms/polygon_centerline.py" line="88"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="103"/>
+        <location filename="../algorithms/polygon_centerline.py" line="111"/>
         <source>Automatic ends</source>
         <translation>Końce automatyczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="102"/>
+        <location filename="../algorithms/polygon_centerline.py" line="110"/>
         <source>Main stem (widest path)</source>
         <translation>Główny nurt (najszersza droga)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="102"/>
+        <location filename="../algorithms/polygon_centerline.py" line="110"/>
         <source>Longest path</source>
         <translation>Najdłuższa droga</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="113"/>
+        <location filename="../algorithms/polygon_centerline.py" line="121"/>
         <source>Guide lines</source>
         <translation>Linie prowadzące</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="113"/>
+        <location filename="../algorithms/polygon_centerline.py" line="121"/>
         <source>Rough river lines (a national network, OpenStreetMap waterways) for polygons without split points: the ends are those of the internal path that best covers the guide lines near the polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected.</source>
         <translation>Przybliżone linie rzek (sieć krajowa, cieki OpenStreetMap) dla poligonów bez punktów podziału: końcami są końce drogi wewnątrz kształtu, która najlepiej pokrywa linie prowadzące w pobliżu poligonu. Przerwy, przesunięcia, uogólnione fragmenty i dopływy nie przeszkadzają. Inny układ współrzędnych jest przeliczany.</translation>
     </message>
@@ -400,39 +405,44 @@
         <translation>Warstwa liniowa: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim linii), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach), n_vertices, ends_found (prawda, gdy nie użyto punktów podziału) i ends_from (split_points, guide lub automatic).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="71"/>
+        <location filename="../algorithms/polygon_centerline.py" line="79"/>
         <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part. Z values are ignored: the centerline is computed in the plane.</source>
         <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część. Wartości Z są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="95"/>
+        <location filename="../algorithms/polygon_centerline.py" line="103"/>
         <source>{pass_through}: the line never crosses an island and goes round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
         <translation>{pass_through}: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="103"/>
+        <location filename="../algorithms/polygon_centerline.py" line="111"/>
         <source>For polygons without split points. {main_stem}: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. {longest_path}: the tips of the two longest arms.</source>
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="235"/>
+        <location filename="../algorithms/polygon_centerline.py" line="243"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="214"/>
+        <location filename="../algorithms/polygon_centerline.py" line="222"/>
         <source>{} Its ends were found automatically.</source>
         <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="237"/>
+        <location filename="../algorithms/polygon_centerline.py" line="245"/>
         <source>{} holds no point.</source>
         <translation>{} nie zawiera żadnego punktu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <location filename="../algorithms/polygon_centerline.py" line="246"/>
         <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
         <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="59"/>
+        <source>A ring around one island (a roundabout, a moat, an atoll) gets, without split points, the closed loop around the island, from and back to its narrowest place. Zero-width spikes of the outline (going out and back along themselves) are removed first, with a warning naming where.</source>
+        <translation>Pierścień wokół jednej wyspy (rondo, fosa, atol) otrzymuje bez punktów podziału zamkniętą pętlę wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego. Kolce obrysu o zerowej szerokości (wychodzące i wracające po sobie) są najpierw usuwane, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
 </context>
 <context>
@@ -463,54 +473,59 @@
         <translation>Oblicza, dla każdego poligonu (każdej części poligonu wieloczęściowego) z dwoma lub więcej 'Punktami podziału' na obrysie (końcami ramion zlewiska, delty lub skrzyżowania dróg), część osi środkowej oddzielającą łańcuchy obrysu między kolejnymi punktami podziału: drzewo z jednym końcem w każdym punkcie podziału i węzłami tam, gdzie okrąg dotyka trzech łańcuchów, bez gałęzi bocznych. Każda gałąź to jeden obiekt liniowy z identyfikatorami punktów podziału na końcach ('junction' w węźle), łańcuchami po prawej i lewej stronie, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane od strony szerszego koryta lub pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie można przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="58"/>
+        <location filename="../algorithms/polygon_network.py" line="65"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="67"/>
+        <location filename="../algorithms/polygon_network.py" line="74"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="67"/>
+        <location filename="../algorithms/polygon_network.py" line="74"/>
         <source>The ends of the network: at least two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring, typically one across each arm&apos;s end. A part with fewer is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Końce sieci: co najmniej dwa na część poligonu, w granicach 'Tolerancji przyciągania punktów podziału' od jego pierścienia zewnętrznego, zwykle jeden w poprzek końca każdego ramienia. Część z mniejszą liczbą jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="77"/>
+        <location filename="../algorithms/polygon_network.py" line="84"/>
         <source>Split point id field</source>
         <translation>Pole identyfikatora punktu podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="77"/>
+        <location filename="../algorithms/polygon_network.py" line="84"/>
         <source>Attribute naming each split point in from_point, to_point and the chains; default: its feature id.</source>
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="118"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="118"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="58"/>
+        <location filename="../algorithms/polygon_network.py" line="65"/>
         <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
         <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="90"/>
+        <location filename="../algorithms/polygon_network.py" line="97"/>
         <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
         <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="99"/>
+        <location filename="../algorithms/polygon_network.py" line="106"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
         <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub 'junction'), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="45"/>
+        <source>Zero-width spikes of the outline (going out and back along themselves) are removed first, with a warning naming where.</source>
+        <translation>Kolce obrysu o zerowej szerokości (wychodzące i wracające po sobie) są najpierw usuwane, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
 </context>
 </TS>
