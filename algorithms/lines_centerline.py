@@ -51,13 +51,20 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         return self.tr("centerline,centreline,medial axis,banks,river,road,width,incircle").split(",")
 
     def summary(self):
-        return self.tr(
-            "Computes one unbranched centerline between two lines (for example the two banks of a river) "
-            "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
-            "are paired by equal values of the two pairing fields (or of a field both layers have); without "
-            "them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is "
-            "the local width. The second lines are reprojected to the CRS of the first; geographic layers are "
-            "computed in a local metric projection and distances are then in metres."
+        return (
+            self.tr(
+                "Computes one unbranched centerline between two lines (for example the two banks of a river) "
+                "with the Curve of Incircles: every vertex is the centre of a circle touching both lines. Lines "
+                "are paired by equal values of the two pairing fields (or of a field both layers have); without "
+                "them each layer holds one line (its features and parts are merged). The lines must not cross. The M value of each vertex is "
+                "the local width. The second lines are reprojected to the CRS of the first; geographic layers are "
+                "computed in a local metric projection and distances are then in metres."
+            )
+            + " "
+            + self.tr(
+                "A line doubling back over itself (a zero-width spike, or an end coming back) loses that part first, "
+                "with a warning naming where."
+            )
         )
 
     def initAlgorithm(self, configuration=None):

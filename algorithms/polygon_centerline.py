@@ -55,15 +55,23 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         return self.tr("centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle").split(",")
 
     def summary(self):
-        return self.tr(
-            "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
-            "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
-            "outline. The line runs between the two 'Split points' lying on the polygon's outline, or, "
-            "without them, between automatic ends: those of the internal path along the 'Guide lines', else of "
-            "the main stem (or the longest internal path, see 'Automatic ends'). Islands (holes) are passed on "
-            "the side of the wider channel, or ignored. The M value of each vertex is the local width. "
-            "Geographic layers are computed in a local metric projection; distances are then in metres. "
-            "A polygon that cannot be processed is skipped with a warning naming its id and the reason."
+        return (
+            self.tr(
+                "Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) "
+                "with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the "
+                "outline. The line runs between the two 'Split points' lying on the polygon's outline, or, "
+                "without them, between automatic ends: those of the internal path along the 'Guide lines', else of "
+                "the main stem (or the longest internal path, see 'Automatic ends'). Islands (holes) are passed on "
+                "the side of the wider channel, or ignored. The M value of each vertex is the local width. "
+                "Geographic layers are computed in a local metric projection; distances are then in metres. "
+                "A polygon that cannot be processed is skipped with a warning naming its id and the reason."
+            )
+            + " "
+            + self.tr(
+                "A ring around one island (a roundabout, a moat, an atoll) gets, without split points, the closed loop "
+                "around the island, from and back to its narrowest place. Zero-width spikes of the outline (going out "
+                "and back along themselves) are removed first, with a warning naming where."
+            )
         )
 
     def initAlgorithm(self, configuration=None):

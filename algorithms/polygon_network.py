@@ -44,19 +44,26 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         return self.tr("network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width").split(",")
 
     def summary(self):
-        return self.tr(
-            "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), lines down the middle of "
-            "its arms, joined where the arms meet. The split points cut the outline into pieces, the chains, one "
-            "between each two neighbouring points; each line runs through the centres of circles touching two "
-            "chains, a path of the shape's medial axis (the line of the centres of all circles touching two sides): "
-            "a tree with one end at each split point and junctions where a circle touches three chains, without side"
-            " branches. Each branch is one line "
-            "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
-            " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
-            "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
-            " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
-            "that cannot be processed is skipped with a warning naming its id and the reason."
+        return (
+            self.tr(
+                "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
+                "outline (the ends of the arms of a confluence, a delta or a road junction), lines down the middle of "
+                "its arms, joined where the arms meet. The split points cut the outline into pieces, the chains, one "
+                "between each two neighbouring points; each line runs through the centres of circles touching two "
+                "chains, a path of the shape's medial axis (the line of the centres of all circles touching two sides): "
+                "a tree with one end at each split point and junctions where a circle touches three chains, without side"
+                " branches. Each branch is one line "
+                "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
+                " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
+                "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
+                " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
+                "that cannot be processed is skipped with a warning naming its id and the reason."
+            )
+            + " "
+            + self.tr(
+                "Zero-width spikes of the outline (going out and back along themselves) are removed first, with a "
+                "warning naming where."
+            )
         )
 
     def initAlgorithm(self, configuration=None):
@@ -154,6 +161,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 if outcome.error is not None:
                     run.skip(feature.id(), outcome.error, outcome.part_index if several else None)
                     continue
+                for note in outcome.result.notes:
+                    run.warn_feature(feature.id(), note, outcome.part_index if several else None)
                 parts.append((outcome.part_index, outcome.result, ids))
             run.write(feature, parts)
         return run.finish()

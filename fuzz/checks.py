@@ -29,6 +29,8 @@ def problems(case, result):
         found = _line_problems(result.line, case.polygon, case.split_points, case.snap)
         if not found and case.function == "polygon_centerline":
             found = _across_problems(case, [result.line.coords[0], result.line.coords[-1]])
+        if case.closed and not result.line.is_closed:
+            found.append("a ring's line is not its closed loop")
         return found
     return []
 

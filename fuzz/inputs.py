@@ -11,6 +11,7 @@ from typing import Optional
 
 import numpy as np
 import shapely
+import shapely.affinity
 from shapely.geometry import LineString, MultiPoint, MultiPolygon, Point, Polygon
 
 from incircu_plugin import core
@@ -40,6 +41,8 @@ class Case:
         A centre of symmetry the automatic ends must lie across (the segment between them passes it).
     tips : ndarray of shape (k, 2) or None
         The points (a star's tips) the two automatic ends must be two of.
+    closed : bool
+        The line must be a closed loop (a ring's, with automatic ends).
     """
 
     category: str
@@ -51,6 +54,7 @@ class Case:
     snap: float = 0.0
     centre: Optional[tuple] = None
     tips: Optional[np.ndarray] = None
+    closed: bool = False
 
     def describe(self, limit=600):
         """The call as Python-like text (geometries as WKT, cut to ``limit`` characters each)."""
@@ -269,6 +273,89 @@ def thin_box(rng, small):
     return Case("thin box", "polygon_centerline", (polygon,), {}, polygon)
 
 
+def ring_shape(rng):
+    """A valid ring around one hole: an annulus (off-centre hole), a roundabout (a buffered circle), a
+    rectangular frame, an "o" (ellipses) or an atoll (a wavy outer bank); scaled and shifted at random."""
+    kind = rng.choice(["annulus", "roundabout", "frame", "o", "atoll"])
+    outer = float(rng.uniform(5, 50))
+    wall = outer * float(rng.uniform(0.05, 0.35))
+    if kind == "annulus":
+        offset = rng.uniform(-0.3, 0.3, 2) * wall
+        polygon = Point(0, 0).buffer(outer).difference(Point(*offset).buffer(outer - wall))
+    elif kind == "roundabout":
+        polygon = Point(0, 0).buffer(outer).exterior.buffer(wall / 2)
+    elif kind == "frame":
+        ratio = float(rng.uniform(0.3, 1.0))
+        polygon = shapely.box(-outer, -outer * ratio, outer, outer * ratio).difference(
+            shapely.box(-outer + wall, -outer * ratio + wall, outer - wall, outer * ratio - wall)
+        )
+    elif kind == "o":
+        ratio = float(rng.uniform(0.5, 0.9))
+        ellipse = shapely.affinity.scale(Point(0, 0).buffer(outer), ratio, 1.0)
+        polygon = ellipse.difference(shapely.affinity.scale(Point(0, 0).buffer(outer - wall), ratio, 1.0))
+    else:
+        angles = np.linspace(0, 2 * math.pi, int(rng.integers(40, 300)), endpoint=False)
+        bumps = int(rng.integers(3, 12))
+        radius = outer + 0.3 * wall * np.sin(bumps * angles + rng.uniform(0, 2 * math.pi))
+        polygon = Polygon(np.stack([radius * np.cos(angles), radius * np.sin(angles)], 1)).difference(
+            Point(0, 0).buffer(outer - wall, int(rng.integers(2, 16)))
+        )
+    polygon = shapely.affinity.rotate(polygon, float(rng.uniform(0, 360)), origin=(0, 0))
+    scale, shift = 10 ** rng.uniform(-3, 4), rng.uniform(-1, 1, 2) * 10 ** rng.uniform(0, 6)
+    return shapely.transform(polygon, lambda xy: xy * scale + shift)
+
+
+def ring_auto(rng, small):
+    """Rings around one hole with automatic ends: the closed medial loop (``Case.closed``); with split points on
+    the outer ring, the line between them."""
+    polygon = ring_shape(rng)
+    if rng.random() < 0.8:
+        return Case("ring, automatic ends", "polygon_centerline", (polygon,), {}, polygon, closed=True)
+    ring = polygon.exterior
+    points = np.array([ring.interpolate(f, normalized=True).coords[0] for f in (0.1, 0.6)])
+    return Case("ring, split points", "polygon_centerline", (polygon, points), {}, polygon, points)
+
+
+def spiky_channel(rng, small):
+    """A valid channel, or its banks, with a zero-width spike: out along the normal of an edge's middle, from a
+    millionth to half its width, and back a hair (1e-13 to 1e-10 of the extent) beside where it left."""
+    for _ in range(20):
+        polygon, ends, (left, right) = random_channel(rng, small)
+        width = typical_width(polygon.area, 0.5 * polygon.exterior.length)
+        bank = left if rng.random() < 0.5 else right
+        i = int(rng.integers(1, len(bank) - 2))
+        along = bank[i + 1] - bank[i]
+        along = along / np.hypot(*along)
+        normal = np.array([-along[1], along[0]]) * rng.choice([-1.0, 1.0])
+        base = bank[i] + 0.5 * (bank[i + 1] - bank[i])
+        extent = float(np.hypot(*np.ptp(np.concatenate([left, right]), axis=0)))
+        tip = base + normal * width * 10 ** rng.uniform(-6, math.log10(0.5))
+        back = base + along * extent * 10 ** rng.uniform(-13, -10)
+        spiked = np.concatenate([bank[: i + 1], [base, tip, back], bank[i + 1 :]])
+        left, right = (spiked, right) if bank is left else (left, spiked)
+        if rng.random() < 0.3:
+            banks = (LineString(left), LineString(right))
+            return Case("spiky bank lines", "lines_centerline", banks, {}, Polygon(polygon.exterior))
+        spiky = Polygon(np.concatenate([right, left[::-1]]))
+        if spiky.is_valid:
+            call = (spiky, ends) if rng.random() < 0.6 else (spiky,)
+            return Case("spiky polygon", "polygon_centerline", call, {}, spiky, ends if len(call) == 2 else None)
+    return valid_split(rng, small)
+
+
+def float64_thin_box(rng, small):
+    """A box 1e-6 to 1e-16 of its length wide (float64's limit), split points or automatic ends, automatic or
+    given tolerance: a line along its middle or a typed error naming its width."""
+    length = 10 ** rng.uniform(-2, 6)
+    width = length * 10 ** rng.uniform(-16, -6)
+    polygon = shapely.box(0, 0, length, width)
+    kwargs = {"tolerance": length * 10 ** rng.uniform(-9, -6)} if rng.random() < 0.3 else {}
+    if rng.random() < 0.5:
+        ends = np.array([[0, width / 2], [length, width / 2]])
+        return Case("thin box at float64's limit", "polygon_centerline", (polygon, ends), kwargs, polygon, ends)
+    return Case("thin box at float64's limit", "polygon_centerline", (polygon,), kwargs, polygon)
+
+
 def scaled_channel(rng, small):
     """A valid channel scaled by 10**k, k in [-320, 320] (float64's range and beyond) or in [-45, 45]."""
     polygon, ends, _ = random_channel(rng, small)
@@ -372,7 +459,8 @@ def bad_options(rng, small):
     )
 
 
-#: (generator, weight): about 58 % valid channels and shapes, 19 % compact shapes, 23 % hostile input.
+#: (generator, weight): about 54 % valid channels and shapes, 17 % compact shapes, 20 % hostile input, 9 %
+#: rings, spiky channels and boxes at float64's limit.
 CATEGORIES = (
     (valid_split, 22),
     (valid_parts, 8),
@@ -390,6 +478,9 @@ CATEGORIES = (
     (invalid_polygon, 4),
     (crossing_banks, 2),
     (bad_options, 5),
+    (ring_auto, 4),
+    (spiky_channel, 4),
+    (float64_thin_box, 3),
 )
 
 

@@ -135,6 +135,19 @@ def test_bad_rows_report_the_core_error_and_never_stop_the_frame():
     assert result["error"].iloc[len(bad)] == "The polygon is null (no geometry)."
 
 
+def test_rings_spikes_and_thin_boxes_give_lines_or_their_error_in_a_frame():
+    """Valid shapes that once crashed (issue 40): a ring gets its closed loop, a parcel with a zero-width spike
+    its line, a box too thin for float64 the error naming its width; as the core, row by row."""
+    moat = Point(0, 0).buffer(10).difference(Point(0, 0).buffer(5))
+    spiky = Polygon([(0, 0), (90, 0), (90, 6), (90.027, 6 + 1e-12), (90, 6 + 2e-12), (90, 12), (0, 12)])
+    frame = geopandas.GeoDataFrame(geometry=[moat, spiky, box(0, 0, 2, 3.2e-8), box(0, 0, 2, 1e-13)], crs="EPSG:2180")
+    result = centerlines(frame)
+    assert_rows_equal_core(result, frame, [])
+    assert result.geometry.iloc[0].is_closed and not result.geometry.iloc[1].is_closed
+    assert result["error"].iloc[:3].isna().all()
+    assert " wide " in result["error"].iloc[3]
+
+
 def test_geographic_frames_are_computed_in_metres():
     lonlat = read_geojson("gambia_ne10m_lonlat.geojson", "EPSG:4326")
     utm = read_geojson("gambia_ne10m_utm28n.geojson", "EPSG:32628")

@@ -175,3 +175,37 @@ def test_branches_of_geopackage_features_get_their_own_fid(provider, tmp_path):
     assert len({branch.id() for branch in branches}) == len(branches)
     for branch in branches:
         assert names[branch["source_fid"]] == branch["name"]
+
+
+#: Valid shapes that once crashed or were refused (issue 40): a ring around one island, and a parcel with a
+#: zero-width spike (out 2.7 cm and back along itself, a hair beside where it left).
+MOAT = Point(0, 0).buffer(10).difference(Point(0, 0).buffer(5))
+SPIKY = Polygon([(0, 0), (90, 0), (90, 6), (90.027, 6 + 1e-12), (90, 6 + 2e-12), (90, 12), (0, 12)])
+
+
+def test_rings_and_spikes_give_lines_with_warnings_in_every_algorithm(provider):
+    """The ring gets its closed loop, the spiky parcel its line with a warning naming the spike, in
+    ``polygoncenterline`` (automatic ends), ``polygonnetwork`` (split points) and ``linescenterline`` (bank
+    lines, one doubling back at its end)."""
+    polygons = memory_layer("Polygon", "EPSG:2180", [(MOAT, "moat"), (SPIKY, "spiky")])
+    results, feedback = run({"INPUT": polygons}, "polygoncenterline")
+    assert (results["CENTERLINE_COUNT"], results["SKIPPED_COUNT"]) == (2, 0), feedback.warnings
+    lines = {feature["name"]: as_shapely(feature.geometry()) for feature in results["OUTPUT"].getFeatures()}
+    assert lines["moat"].is_closed and lines["moat"].is_simple
+    assert lines["moat"].length == pytest.approx(2 * np.pi * 7.5, rel=1e-3)
+    assert not lines["spiky"].is_closed
+    assert any("ring around one island" in warning for warning in feedback.warnings), feedback.warnings
+    assert any("zero-width spike" in warning and "(90.027, 6)" in warning for warning in feedback.warnings)
+
+    network, feedback = run({"INPUT": polygons, "SPLIT_POINTS": split_layer([(-10, 0), (0, 10), (0, 6), (90, 3)])})
+    assert network["SKIPPED_COUNT"] == 0, feedback.warnings
+    assert {feature["name"] for feature in network["OUTPUT"].getFeatures()} == {"moat", "spiky"}
+    assert any("zero-width spike" in warning for warning in feedback.warnings), feedback.warnings
+
+    bank_a = memory_layer("LineString", "EPSG:2180", [(shapely.LineString([(0, 0), (100, 0), (90, 1e-9)]), "a")])
+    bank_b = memory_layer("LineString", "EPSG:2180", [(shapely.LineString([(0, 8), (100, 8)]), "b")])
+    banks, feedback = run({"LINES_A": bank_a, "LINES_B": bank_b}, "linescenterline")
+    assert (banks["CENTERLINE_COUNT"], banks["SKIPPED_COUNT"]) == (1, 0)
+    (line,) = banks["OUTPUT"].getFeatures()
+    assert as_shapely(line.geometry()).coords[:] == [(0.0, 4.0), (100.0, 4.0)]
+    assert any("zero-width spike" in warning for warning in feedback.warnings), feedback.warnings

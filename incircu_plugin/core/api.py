@@ -14,6 +14,7 @@ from .chains import (
     extent_of,
     find_self_crossing,
     orient_bank_lines,
+    polygon_without_folds,
     split_checked_polygon,
     validate_polygon,
 )
@@ -21,7 +22,8 @@ from .ends import COMPACT, END_RULES, STAR
 from .engine import CenterlineResult, centerline_steps, clean_chains_steps
 from .errors import CenterlineError, IncirCuError, InvalidGeometryError, Message, SplitPointError, format_point
 from .islands import bridge_islands
-from .polyline import cumulative_lengths
+from .polyline import cumulative_lengths, typical_width
+from .rings import RING_NOTE, loop_is_main_feature, ring_centerline_steps
 from .steps import EndsRequest, run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
@@ -41,6 +43,12 @@ ENDS_PROGRESS_SHARE = 0.2
 #: river bends (R = 1.5 w; R/w is rarely below 2), and a reach of alternating bends brings the ratio back
 #: towards 1. Above it the region is closed by the long straight gaps between the lines' ends.
 BANK_LENGTH_RATIO = 2.0
+
+#: Smallest typical width (area over half the perimeter) of a polygon whose ends are found automatically,
+#: relative to its extent: the skeleton is built in a frame of unit diagonal, where a narrower polygon's two
+#: sides are closer than its triangulation resolves (a box 1e-10 of its length wide got ends 0.2 of its length
+#: apart).
+ENDS_MIN_WIDTH = 1e-9
 
 #: Most features in one batch of :func:`batches` (traced together by :func:`centerlines_together`).
 BATCH_FEATURES = 256
@@ -172,15 +180,24 @@ def polygon_centerline_steps(
         raise IncirCuError(Message("unknown_end_rule", rule=end_rule, choices=", ".join(END_RULES)))
     snap_tolerance = tolerance_length(snap_tolerance, "snap_tolerance")
     split_points = split_point_coordinates(split_points)
-    notes = []
+    polygon, spikes = polygon_without_folds(polygon)
+    notes = [spikes] if spikes else []
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
     if ends_found:
+        _check_ends_width(region)
         ends = yield from _automatic_ends(
             region, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
+        if ends is None:
+            result = yield from ring_centerline_steps(
+                region, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+            )
+            values = {name: getattr(_checked(result, region), name) for name in _RESULT_FIELDS}
+            values.update(ends_found=True, notes=(*notes, RING_NOTE, *result.notes), ends_from="automatic")
+            return PolygonCenterlineResult(**values)
         split_points = split_point_coordinates((ends.start, ends.end))
         ends_from = "guide" if ends.guided else "automatic"
     c1, c2 = split_checked_polygon(polygon, split_points, snap_tolerance)
@@ -195,13 +212,28 @@ def polygon_centerline_steps(
         result = run_out_ends(result, region, move_ends=ends_found)
     result = _checked(result, region)
     values = {name: getattr(result, name) for name in _RESULT_FIELDS}
-    values.update(ends_found=ends_found, notes=tuple(notes), ends_from=ends_from)
+    values.update(ends_found=ends_found, notes=(*notes, *result.notes), ends_from=ends_from)
     return PolygonCenterlineResult(**values)
+
+
+def _check_ends_width(polygon):
+    """Raise :class:`InvalidGeometryError` when a polygon is too thin for its ends to be found
+    (``ENDS_MIN_WIDTH``), naming its width."""
+    extent = extent_of(shapely.get_coordinates(polygon.exterior))
+    width = typical_width(polygon.area, 0.5 * polygon.length)
+    if width < ENDS_MIN_WIDTH * extent:
+        raise InvalidGeometryError(
+            f"The polygon is {width:.3g} wide (its area over half its perimeter), {width / extent:.3g} of its "
+            f"extent ({extent:.6g} CRS units), under the {ENDS_MIN_WIDTH:g} at which its ends can be found "
+            "automatically in float64; give two split points."
+        )
 
 
 def _automatic_ends(polygon, end_rule, guide, progress, notes):
     """Find a polygon's ends (a step yielding an :class:`.steps.EndsRequest`, answered by :func:`.ends.find_ends`
     or, in a batch, by :func:`.ends.find_ends_together`); append what the user should know to ``notes``.
+
+    Returns None when the polygon is a ring whose centerline is the loop around its hole (see :mod:`.rings`).
 
     Raises
     ------
@@ -209,6 +241,8 @@ def _automatic_ends(polygon, end_rule, guide, progress, notes):
         When the two ends coincide (the shape has no clear ends).
     """
     ends = yield EndsRequest(polygon, end_rule, guide, progress)
+    if loop_is_main_feature(polygon, ends):
+        return None
     if ends.start.distance(ends.end) <= COINCIDENCE_TOLERANCE * extent_of(shapely.get_coordinates(polygon)):
         raise SplitPointError(Message("ends_coincide", point=format_point(ends.start.coords[0])))
     if guide is not None and not ends.guided:
@@ -290,14 +324,15 @@ def lines_centerline_steps(
     as long as the other (see :func:`bank_length_note`).
     """
     check_end_cap(end_cap)
-    c1, c2 = orient_bank_lines(line_a, line_b)
+    notes = []
+    c1, c2 = orient_bank_lines(line_a, line_b, notes)
     result = yield from clean_chains_steps(
         c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
     )
     if end_cap == "runout":
         result = run_out_ends(result, Polygon(np.concatenate([c1, c2[::-1]])), open_ends=True)
     note = bank_length_note(c1, c2)
-    return replace(_checked(result), notes=(note,) if note else ())
+    return replace(_checked(result), notes=(*notes, *result.notes, *([note] if note else [])))
 
 
 def bank_length_note(line_a, line_b):

@@ -127,6 +127,181 @@ def clean_chain(coordinates, name="chain", tolerance=None):
     return chain
 
 
+def _fold_tips(points, closed, tolerance):
+    """Indices of the vertices where ``points`` (no repeated closing vertex when ``closed``) folds back: the
+    segments before and after point in opposite directions within ``FOLD_SINE_TOLERANCE``, or the shorter one
+    ends within ``tolerance`` (CRS units) of the longer one's line (a spike of zero width: no wider at its base
+    than float64 places vertices); or one of them is shorter than ``tolerance`` and the vertex repeats its
+    neighbour."""
+    before = points - np.roll(points, 1, axis=0)
+    after = np.roll(points, -1, axis=0) - points
+    length_before, length_after = np.hypot(*before.T), np.hypot(*after.T)
+    dot = np.einsum("ij,ij->i", before, after)
+    cross = before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]
+    longer = np.maximum(length_before, length_after)
+    tip = (dot < 0) & (
+        (np.abs(cross) <= FOLD_SINE_TOLERANCE * length_before * length_after) | (np.abs(cross) <= tolerance * longer)
+    )
+    tip |= length_before <= tolerance
+    if not closed:
+        tip[[0, -1]] = False
+    return np.flatnonzero(tip)
+
+
+def without_folds(coordinates, closed, tolerance):
+    """Remove the zero-width parts of a ring or a line: spikes that go out and come back along themselves,
+    repeated stretches, repeated vertices.
+
+    A spike's tip (a vertex whose two segments point in opposite directions, within ``FOLD_SINE_TOLERANCE``
+    or within ``tolerance`` at the spike's base) is removed, then the tips this uncovers (the spike's earlier vertices, when it
+    came back through other vertices), until none is left. No other vertex moves: the boundary loses only the
+    sliver of the spike, which has no width to hold a centerline. Valid GEOS polygons have such spikes
+    (digitising, snapping); ``make_valid``, ``buffer(0)`` and ``simplify`` keep them.
+
+    Parameters
+    ----------
+    coordinates : ndarray of shape (n, 2)
+        A ring (closed: the last vertex repeats the first) or a line, CRS units.
+    closed : bool
+        Whether ``coordinates`` is a ring.
+    tolerance : float
+        A spike no wider than this at its base is of zero width; segments this short or shorter count as a
+        repeated vertex (one of their vertices goes; it is not reported). CRS units.
+
+    Returns
+    -------
+    coordinates : ndarray of shape (m, 2)
+        The same array when nothing was removed.
+    removed : list of (ndarray of shape (2,), float)
+        Each removed spike tip and the longer of its two segments, CRS units, in the order found. A line whose
+        end segment doubles back loses its end vertex instead (the tip is as far as the line reaches): that
+        vertex and the segment's length.
+
+    Examples
+    --------
+    >>> ring = np.array([(0, 0), (9, 0), (9, 5), (12, 5 + 1e-12), (9, 5 + 2e-12), (9, 9), (0, 9), (0, 0)], float)
+    >>> clean, removed = without_folds(ring, True, 1e-9)
+    >>> len(clean), removed[0][0].tolist(), round(removed[0][1], 9)
+    (6, [12.0, 5.000000000001], 3.0)
+    """
+    points = coordinates[:-1] if closed else coordinates
+    tips = _fold_tips(points, closed, tolerance)
+    if not len(tips):
+        return coordinates, []
+    removed = []
+    while len(tips) and len(points) > (3 if closed else 2):
+        # The first tip of each run of neighbours (a ring's last vertex neighbours its first): removing two
+        # neighbours at once would skip a fold between them.
+        chosen = tips[np.concatenate([[True], np.diff(tips) > 1])]
+        if closed and len(chosen) > 1 and chosen[0] == 0 and chosen[-1] == len(points) - 1:
+            chosen = chosen[:-1]
+        gone = []
+        for tip in chosen.tolist():
+            before = np.hypot(*(points[tip] - points[tip - 1]))
+            after = np.hypot(*(points[(tip + 1) % len(points)] - points[tip]))
+            # A line's end segment doubling back within the one before it: the end goes, the line keeps its
+            # reach (the tip).
+            end = None
+            if not closed and min(before, after) > tolerance:
+                if tip == len(points) - 2 and after <= before:
+                    end, length = len(points) - 1, after
+                elif tip == 1 and before <= after:
+                    end, length = 0, before
+            if end is not None:
+                removed.append((points[end].copy(), float(length)))
+                gone.append(end)
+                continue
+            if min(before, after) > tolerance:
+                removed.append((points[tip].copy(), float(max(before, after))))
+            gone.append(tip)
+        points = np.delete(points, np.unique(gone), axis=0)
+        tips = _fold_tips(points, closed, tolerance)
+    return (np.concatenate([points, points[:1]]) if closed else points), removed
+
+
+def polygon_without_folds(polygon):
+    """A valid polygon without the zero-width parts of its rings (:func:`without_folds`), and a note naming
+    where they were.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units.
+
+    Returns
+    -------
+    polygon : Polygon
+        ``polygon`` itself when it has none (or when removing them would leave an invalid polygon, which the
+        later checks then report).
+    note : str or None
+        Where the spikes were and how long, for the result's ``notes``.
+
+    Examples
+    --------
+    >>> parcel = Polygon([(0, 0), (90, 0), (90, 5), (90.027, 5 + 1e-12), (90, 5 + 2e-12), (90, 10), (0, 10)])
+    >>> clean, note = polygon_without_folds(parcel)
+    >>> len(clean.exterior.coords), note
+    (6, 'A zero-width spike was removed from the exterior ring at (90.027, 5) (0.027 CRS units long) before the centerline was computed.')
+    """
+    rings = [shapely.get_coordinates(polygon.exterior)] + [shapely.get_coordinates(r) for r in polygon.interiors]
+    tolerance = FOLD_SINE_TOLERANCE * extent_of(rings[0])
+    cleaned, places = [], []
+    for number, ring in enumerate(rings):
+        ring, removed = without_folds(ring, True, tolerance)
+        cleaned.append(ring)
+        name = "the exterior ring" if number == 0 else f"island {number}"
+        places += [f"{name} at {format_point(tip)} ({length:.6g} CRS units long)" for tip, length in removed]
+    if not places:
+        return polygon, None
+    result = Polygon(cleaned[0], cleaned[1:])
+    if not result.is_valid:
+        return polygon, None
+    _Validated.remember(result)
+    return result, _spikes_note(places)
+
+
+def _spikes_note(places):
+    """The note naming the zero-width spikes removed at ``places`` (descriptions, see :func:`without_folds`)."""
+    spikes = "A zero-width spike was" if len(places) == 1 else f"{len(places)} zero-width spikes were"
+    shown = "; ".join(places[:3]) + (f"; and {len(places) - 3} more" if len(places) > 3 else "")
+    return f"{spikes} removed from {shown} before the centerline was computed."
+
+
+def ensure_bounding_chains(chain_a, chain_b):
+    """Raise unless two chains bound a region: each is simple, and they meet only at shared end points.
+
+    Parameters
+    ----------
+    chain_a, chain_b : ndarray of shape (n, 2)
+        Clean chains (:func:`clean_chain`), CRS units.
+
+    Raises
+    ------
+    ChainError
+        If a chain crosses or touches itself.
+    CrossingLinesError
+        If the chains cross, touch or overlap anywhere but at an end point both share (identical chains, a
+        random walk crossing the other).
+    """
+    ensure_simple(chain_a, "first chain")
+    ensure_simple(chain_b, "second chain")
+    lines = LineString(chain_a), LineString(chain_b)
+    if not shapely.intersects(*lines):
+        return
+    coincidence = COINCIDENCE_TOLERANCE * extent_of(chain_a, chain_b)
+    shared = [end for end in (chain_a[0], chain_a[-1]) if min(np.hypot(*(chain_b[[0, -1]] - end).T)) <= coincidence]
+    contact = shapely.get_coordinates(shapely.intersection(*lines))
+    if not len(contact):
+        # Not seen, but the predicate and the overlay are separate computations: where they meet, nearly.
+        contact = shapely.get_coordinates(shapely.shortest_line(*lines))[:1]
+    elsewhere = [point for point in contact if all(np.hypot(*(point - end)) > coincidence for end in shared)]
+    if elsewhere:
+        raise CrossingLinesError(
+            f"The two chains cross or touch at {format_point(elsewhere[0])}; they must bound a region between "
+            "them, meeting at most at shared end points."
+        )
+
+
 def _steps(coordinates):
     """The x and y components of each segment of a polyline (an (n, 2) array, CRS units): two (n - 1,) arrays."""
     x, y = coordinates[:, 0], coordinates[:, 1]
@@ -363,13 +538,18 @@ def split_checked_polygon(polygon, points, tolerance=None):
     return loop[forward], loop[backward]
 
 
-def orient_bank_lines(line_a, line_b):
+def orient_bank_lines(line_a, line_b, notes=None):
     """Validate two bank lines and orient them so their starts face each other.
+
+    A line that doubles back on itself (a spike, a repeated stretch: :func:`without_folds`) loses that
+    zero-width part first; no other vertex moves.
 
     Parameters
     ----------
     line_a, line_b : LineString or array_like of shape (n, 2)
         The two lines bounding the region, CRS units.
+    notes : list of str, optional
+        Where a note naming the removed spikes is appended.
 
     Returns
     -------
@@ -384,6 +564,15 @@ def orient_bank_lines(line_a, line_b):
     a = as_coordinates(line_a, "first line")
     b = as_coordinates(line_b, "second line")
     check_coordinates(np.concatenate([a, b]), "pair of lines")
+    fold = FOLD_SINE_TOLERANCE * extent_of(a, b)
+    (a, removed_a), (b, removed_b) = without_folds(a, False, fold), without_folds(b, False, fold)
+    places = [
+        f"the {name} line at {format_point(tip)} ({length:.6g} CRS units long)"
+        for name, removed in (("first", removed_a), ("second", removed_b))
+        for tip, length in removed
+    ]
+    if places and notes is not None:
+        notes.append(_spikes_note(places))
     coincidence = COINCIDENCE_TOLERANCE * extent_of(a, b)
     a = clean_chain(a, "first line", coincidence)
     b = clean_chain(b, "second line", coincidence)

@@ -640,13 +640,18 @@ def _ends_of_trunks(frames, trunks):
         ends[number] = [_on_ring(exterior, xy, ON_RING * scales[number]) for xy in ends[number]]
     ends[swap] = ends[swap, ::-1]
     points = shapely.points(ends)
-    lines = shapely.linestrings(
-        tips.points[~backward] * scales[tips.group[~backward] // 2, None] + origins[tips.group[~backward] // 2],
-        indices=tips.group[~backward] // 2,
-    )
+    # A trunk of one skeleton point (a ring's skeleton is a cycle without leaves) has no line.
+    forward = ~backward & (tips.lengths[tips.group] > 1)
+    lines = np.full(len(chosen), None, dtype=object)
+    if forward.any():
+        owners = tips.group[forward] // 2
+        having, compact = np.unique(owners, return_inverse=True)
+        lines[having] = shapely.linestrings(
+            tips.points[forward] * scales[owners, None] + origins[owners], indices=compact
+        )
     centres = centres * scales[:, None] + origins
     for number, index in enumerate(chosen):
-        trunk = lines[number] if tips.lengths[2 * number] > 1 else None
+        trunk = lines[number]
         if kinds[number] != ELONGATED:
             trunk = LineString([ends[number, 0], centres[number], ends[number, 1]])
         results[index] = EndsResult(

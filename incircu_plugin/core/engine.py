@@ -26,9 +26,9 @@ from typing import Callable, Optional
 import numpy as np
 from shapely.geometry import LineString
 
-from .chains import COINCIDENCE_TOLERANCE, clean_chain, extent_of, signed_area
+from .chains import COINCIDENCE_TOLERANCE, clean_chain, ensure_bounding_chains, extent_of, signed_area
 from .contacts import Boundary
-from .errors import Message, OptionError
+from .errors import ChainError, Message, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .lines import LineRequest
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
@@ -40,6 +40,10 @@ DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
 #: Smallest tolerance, relative to the chains' extent: below it the parabola stations would outnumber what
 #: float64 can place distinctly (and what memory holds).
 MIN_TOLERANCE = 1e-9
+
+#: Smallest typical width between the chains, relative to their extent: narrower, float64 cannot tell the two
+#: sides apart (a disk's contacts are found to about 1e-12 of the extent) and no centerline is traced.
+MIN_WIDTH = 1e-11
 
 #: Shares of the tolerance: the chords of the axis's parabolas, and the simplification of the exact polyline.
 PARABOLA_SHARE = 0.5
@@ -147,7 +151,55 @@ def default_tolerance(c1, c2):
     >>> default_tolerance(np.array([[0.0, 0], [100, 0]]), np.array([[0.0, 10], [100, 10]]))
     0.05
     """
-    return DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent_of(c1, c2))
+    extent = extent_of(c1, c2)
+    return max(DEFAULT_TOLERANCE_PER_WIDTH * _width_or_fallback(chains_width(c1, c2), extent), MIN_TOLERANCE * extent)
+
+
+def _rounded_up(value):
+    """``value`` (positive) rounded up to three significant digits, for advice a user can type.
+
+    >>> _rounded_up(2.0000000001e-09), _rounded_up(2e-09)
+    (2.01e-09, 2e-09)
+    """
+    shown = float(f"{value:.3g}")
+    if shown >= value:
+        return shown
+    step = 10.0 ** (np.floor(np.log10(value)) - 2)
+    return float(f"{(np.floor(value / step) + 1) * step:.3g}")
+
+
+def _automatic_tolerance(frame):
+    """The adaptive sampling's tolerance when none is given, CRS units, and a note when it is not the usual one.
+
+    The typical width / 200; when that is finer than float64 can place vertices (``MIN_TOLERANCE`` of the
+    extent: a region 1e-7 of its extent wide), ``MIN_TOLERANCE`` of the extent, which the note says.
+    """
+    usual = DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
+    finest = MIN_TOLERANCE * frame.extent
+    if usual >= finest:
+        return usual, None
+    return finest, Message(
+        "note_tolerance_finest",
+        width=frame.default_width,
+        relative=frame.default_width / frame.extent,
+        extent=frame.extent,
+        finest=finest,
+        minimum=MIN_TOLERANCE,
+    )
+
+
+def _check_width(frame):
+    """Raise :class:`ChainError` when the region between the chains is too narrow for float64 (``MIN_WIDTH``)."""
+    if frame.default_width < MIN_WIDTH * frame.extent:
+        raise ChainError(
+            Message(
+                "region_too_narrow",
+                width=frame.default_width,
+                relative=frame.default_width / frame.extent,
+                extent=frame.extent,
+                minimum=MIN_WIDTH,
+            )
+        )
 
 
 def _width_or_fallback(width, extent):
@@ -233,8 +285,13 @@ def centerline_from_chains(
     OptionError
         If ``spacing``, ``samples_per_chain`` or ``tolerance`` is not a positive finite number, both a
         spacing and a tolerance are given, or the spacing would need more than ``MAX_SAMPLES`` samples.
+    ChainError, CrossingLinesError
+        If the chains are unusable (see :func:`.chains.clean_chain`), cross themselves or each other, or meet
+        anywhere but at shared end points (:func:`.chains.ensure_bounding_chains`).
+    CenterlineError
+        If the line would cross itself (the last guard, as for :func:`.api.polygon_centerline`).
     IncirCuError
-        If the chains are unusable (see :func:`.chains.clean_chain`) or too close to carry a line.
+        If the chains are too close to carry a line.
     Cancelled
         If ``progress`` returned False.
 
@@ -247,9 +304,17 @@ def centerline_from_chains(
     >>> result.line.coords[:]
     [(0.0, 1.0), (10.0, 1.0)]
     """
-    return run_alone(
-        centerline_steps(c1, c2, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress)
+    chains = _clean_chains(c1, c2)
+    ensure_bounding_chains(*chains)
+    result = run_alone(
+        clean_chains_steps(
+            *chains, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
+        )
     )
+    # The public functions' last guard; imported here, as api imports this module.
+    from .api import _checked
+
+    return _checked(result)
 
 
 def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None, region=None):
@@ -283,20 +348,23 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
     if fixed and tolerance is not None:
         raise OptionError(Message("tolerance_and_spacing"))
     frame = _Frame([c1, c2])
+    _check_width(frame)
     report = reporter(progress)
+    note = None
     if fixed:
         spacings = _fixed_spacings(spacing, samples_per_chain, frame.chains, frame.lengths, frame.default_width)
         points = fixed_axis_points(frame.chains, frame.boundary, frame.side, spacings, *frame.limits, report)
     else:
-        tolerance = tolerance or DEFAULT_TOLERANCE_PER_WIDTH * frame.default_width
-        if tolerance < MIN_TOLERANCE * frame.extent:
+        if tolerance is None:
+            tolerance, note = _automatic_tolerance(frame)
+        elif tolerance < MIN_TOLERANCE * frame.extent:
             raise OptionError(
                 Message(
                     "tolerance_too_fine",
                     tolerance=tolerance,
                     relative=MIN_TOLERANCE,
                     extent=frame.extent,
-                    least=MIN_TOLERANCE * frame.extent,
+                    least=_rounded_up(MIN_TOLERANCE * frame.extent),
                 )
             )
         sides = (frame.side, -frame.side)
@@ -311,6 +379,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
         radii=radius,
         foot_a=foot_a + frame.origin,
         foot_b=foot_b + frame.origin,
+        notes=(note,) if note else (),
         chains=(c1, c2),
     )
 

@@ -69,8 +69,21 @@ MESSAGES = {
     ),
     "tolerance_too_fine": QT_TRANSLATE_NOOP(
         "IncirCuCore",
-        "The tolerance {tolerance:.6g} is below {relative:g} of the shape's extent ({extent:.6g}): float64 cannot "
-        "place vertices that finely. Use at least {least:.6g} ({units}), or 0 for the automatic tolerance."
+        "The tolerance {tolerance:.6g} ({units}) you set is below {relative:g} of the shape's extent "
+        "({extent:.6g} {units}): float64 cannot place vertices that finely. Use at least {least:.3g} ({units}), or "
+        "0 for the automatic tolerance."
+    ),
+    "note_tolerance_finest": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The shape is {width:.3g} {units} wide, {relative:.3g} of its extent ({extent:.6g} {units}): its automatic "
+        "tolerance (the width / 200) is finer than float64 can place vertices, so the finest possible, "
+        "{finest:.3g} {units} ({minimum:g} of the extent), is used."
+    ),
+    "region_too_narrow": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The shape is {width:.3g} {units} wide (its area over its length), {relative:.3g} of its extent "
+        "({extent:.6g} {units}), under the {minimum:g} at which float64 can still tell its two sides apart: no "
+        "centerline can be traced. At this width its sides are the centerline: use one of them."
     ),
     "circle_segments": QT_TRANSLATE_NOOP(
         "IncirCuCore", "A circle needs at least 1 segment per quarter, got {value!r}."
@@ -200,7 +213,7 @@ MESSAGES = {
     ),
     "ends_geos": QT_TRANSLATE_NOOP("IncirCuCore", "The ends of the polygon cannot be found: {error}."),
     "ends_too_thin": QT_TRANSLATE_NOOP(
-        "IncirCuCore", "The polygon is too thin or too small to find its ends automatically."
+        "IncirCuCore", "The polygon is too thin or too small to find its ends automatically; give two split points."
     ),
     "outline_not_triangulated": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon's outline could not be triangulated to find its ends automatically."

@@ -9,7 +9,7 @@ points only with its own, and the per-feature values (tolerances, lengths, the d
 each point.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Optional
 
@@ -160,7 +160,87 @@ def _in_region(request):
         return points, None
     between = Polygon(frame.ring)
     shapely.prepare(between)
-    return points.subset(shapely.intersects_xy(between, points.centre[:, 0], points.centre[:, 1])), between
+    inside = shapely.intersects_xy(between, points.centre[:, 0], points.centre[:, 1])
+    points = points.subset(inside)
+    points = points.subset(~_foot_behind_gap(points, frame.chains, DISTINCT_TOLERANCE * frame.extent))
+    if all(np.array_equal(chain[0], chain[-1]) for chain in frame.chains):
+        points = _around_the_seam(points, frame.lengths, frame.chains)
+    return points, between
+
+
+def _around_the_seam(points, lengths, chains):
+    """The axis points between two closed rings cut at one seam (see :mod:`.rings`), their feet's arc lengths
+    taken on one lap: the second foot's on the lap nearest the first's, then both shifted by whole laps so that
+    their relative sum lies in [0, 2), where the ordering expects it.
+
+    The seam's vertices are the start and the end of their rings: a disk next to the seam may report a foot
+    there at the start (0) or at the end (the ring's length), or straddle it (one foot just before the seam,
+    the other just past it), and would sort into the middle of the line or to its other end. Near the seam
+    (a centre within the seam disk's radius of its centre, where the loop, whose radius of curvature is at
+    least that, turns by under 60 degrees) the side of the seam the centre lies on decides: ahead of it (along
+    the first ring's direction) the start, behind it the end.
+    """
+    relative_a = points.position_a / lengths[0]
+    relative_b = points.position_b / lengths[1]
+    relative_b -= np.round(relative_b - relative_a)
+    total = relative_a + relative_b
+    lap = np.floor(0.5 * total)
+    seam = chains[1][0] - chains[0][0]
+    ahead = np.array([-seam[1], seam[0]])
+    if np.dot(ahead, chains[0][1] - chains[0][0]) < 0:
+        ahead = -ahead
+    middle = 0.5 * (chains[0][0] + chains[1][0])
+    near = np.hypot(*(points.centre - middle).T) < 0.5 * np.hypot(*seam)
+    if near.any():
+        forward = (points.centre[near] - middle) @ ahead >= 0.0
+        lap[near] = np.round(0.5 * (total[near] - np.where(forward, 0.0, 2.0)))
+    relative_a -= lap
+    relative_b -= lap
+    return replace(points, position_a=relative_a * lengths[0], position_b=relative_b * lengths[1])
+
+
+def _foot_behind_gap(points, chains, resolution):
+    """Mask of the axis points one of whose feet the centre sees only across an end gap (the straight line
+    between the two chains' first or last vertices, which closes the region in open mode).
+
+    Such a disk touches both chains but reaches one of them through the gap, outside the region: its centre
+    is equidistant from the chains but not on the region's medial axis. Two bank lines that wind around (a
+    spiral) bring the end of one near the start of the other, across the start gap; those centres would
+    interleave with the axis in the order (the sum of the feet's arc lengths is the same) and zigzag the line.
+    A foot at a gap's end is not across it: only crossings farther than ``resolution`` (CRS units) from the
+    ends of both segments count (a foot computed at a gap's end, a rounding off it, is at it).
+    """
+    behind = np.zeros(len(points.radius), dtype=bool)
+    for end in (0, -1):
+        gap_start, gap_end = chains[0][end], chains[1][end]
+        for foot in (points.foot_a, points.foot_b):
+            behind |= _cross_properly(points.centre, foot, gap_start, gap_end, resolution)
+    return behind
+
+
+def _cross_properly(starts, ends, p, q, resolution):
+    """Mask of the segments ``starts[i]``-``ends[i]`` (arrays of shape (n, 2)) crossing the segment ``p``-``q``
+    at a point interior to both: each segment's ends lie on opposite sides of the other's line, farther than
+    ``resolution`` from it (CRS units)."""
+    gap = q - p
+    direction = ends - starts
+    gap_length = np.hypot(*gap)
+    lengths = np.hypot(direction[:, 0], direction[:, 1])
+
+    def side_of_gap(points):
+        return _side(gap[0] * (points[:, 1] - p[1]) - gap[1] * (points[:, 0] - p[0]), resolution * gap_length)
+
+    def side_of_segments(point):
+        across = direction[:, 0] * (point[1] - starts[:, 1]) - direction[:, 1] * (point[0] - starts[:, 0])
+        return _side(across, resolution * lengths)
+
+    return (side_of_gap(starts) * side_of_gap(ends) < 0) & (side_of_segments(p) * side_of_segments(q) < 0)
+
+
+def _side(determinant, margin):
+    """-1, 0 or 1: the side of a line a point lies on, from their orientation ``determinant`` (the distance times
+    the line's length), 0 within ``margin`` (the same units)."""
+    return np.where(np.abs(determinant) <= margin, 0.0, np.sign(determinant))
 
 
 def _region(request, between):
@@ -205,8 +285,17 @@ def _ordered(points, side, lengths, coincidence, blocks):
     across_y = np.subtract(points.foot_b[:, 1], points.foot_a[:, 1])
     spare = np.hypot(across_x, across_y)
     # Feet one point up to rounding: a split point, where both chains start (0) or end (2). No direction of
-    # travel there; the radius orders the points.
-    one_foot = spare <= DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    # travel there; the radius orders the points. On a split point in a straight stretch, a disk tangent there
+    # to one chain passes within rounding of the other's end well before its foot reaches it: at a distance d
+    # along the stretch, a disk of radius r misses the split point by about d**2 / (2 r). Such feet (d of 1e-7
+    # on a 0.75 wide stub, 70 units long chains) are one point as well: the disk is on the stub.
+    # Both feet lie at a split point only where both chains start or end: a channel narrower than the
+    # resolution (a thin box 1e-9 of its length wide) has its feet that close all along.
+    resolution = DISTINCT_TOLERANCE * (lengths[0] + lengths[1])
+    one_foot = (spare <= resolution) | (spare * spare <= 2.0 * resolution * points.radius)
+    from_start = points.position_a + points.position_b
+    from_end = (lengths[0] - points.position_a) + (lengths[1] - points.position_b)
+    one_foot &= np.minimum(from_start, from_end) <= 2.0 * spare + resolution
     # The centre's component along the direction of travel, side * (across_y, -across_x).
     crossing = np.multiply(points.centre[:, 0], across_y)
     crossing -= np.multiply(points.centre[:, 1], across_x, out=spare)

@@ -43,6 +43,7 @@ from .chains import (
     COINCIDENCE_TOLERANCE,
     counter_clockwise_exterior,
     extent_of,
+    polygon_without_folds,
     positions_on_ring,
     split_polygon,
     validate_polygon,
@@ -100,6 +101,9 @@ class NetworkResult:
     point_indices : tuple of int or None
         Set by :func:`multipolygon_networks`: the index of each row of ``split_points`` among all the
         candidate split points (the numbers used by ``chains`` and the branches).
+    notes : tuple of str
+        Things the user should know (zero-width spikes removed from the polygon's rings before the chains
+        were built: :func:`.chains.polygon_without_folds`).
     """
 
     branches: tuple
@@ -107,6 +111,7 @@ class NetworkResult:
     chains: tuple
     junctions: np.ndarray
     point_indices: Optional[tuple] = None
+    notes: tuple = ()
 
 
 def polygon_network(
@@ -163,6 +168,7 @@ def polygon_network(
     validate_polygon(polygon)
     check_island_mode(islands)
     check_end_cap(end_cap)
+    polygon, spikes = polygon_without_folds(polygon)
     split_points = [] if split_points is None else list(split_points)
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
@@ -190,6 +196,7 @@ def polygon_network(
         split_points=snapped,
         chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
         junctions=centres,
+        notes=(spikes,) if spikes else (),
     )
 
 

@@ -282,7 +282,10 @@ def transects(result, interval, chains=None, style="nearest"):
 def _feet_on_banks(chain, ends, centres):
     """Return the point of a chain nearest to each centre, on its bank between the feet ``ends`` of the
     measured stretch's first and last incircles (CRS units): the end caps, where the bank meets the split
-    points, carry no foot (a centre a rounding off the axis beside a cap is otherwise nearer to the cap)."""
+    points, carry no foot (a centre a rounding off the axis beside a cap is otherwise nearer to the cap). A
+    closed chain (a ring's, around its hole: see :mod:`.rings`) has no cap: the whole of it is its bank."""
+    if len(chain) > 2 and np.array_equal(chain[0], chain[-1]):
+        return nearest_on_polyline(chain, centres)[2]
     cumulative = cumulative_lengths(chain)
     along = np.sort(nearest_on_polyline(chain, ends)[1])
     return nearest_on_polyline(piece_between(chain, cumulative, *along), centres)[2]
