@@ -24,10 +24,11 @@ mount_all() {
   mounted "$dir/sys" || mount -t sysfs sysfs "$dir/sys"
   mounted "$dir/dev" || mount --bind /dev "$dir/dev"
   mounted "$dir/dev/pts" || mount --bind /dev/pts "$dir/dev/pts"
-  # Name resolution and the host's CA bundle (pip needs it before the chroot's own ca-certificates is installed).
+  # Name resolution, and the host's CA bundle for pip and apt's https (it holds a proxy's CA where the host has one;
+  # the chroot's own ca-certificates package would replace a copy at the usual path).
   cp -L /etc/resolv.conf "$dir/etc/resolv.conf"
   mkdir -p "$dir/etc/ssl/certs"
-  [ -s "$dir/etc/ssl/certs/ca-certificates.crt" ] || cp -L /etc/ssl/certs/ca-certificates.crt "$dir/etc/ssl/certs/"
+  cp -L /etc/ssl/certs/ca-certificates.crt "$dir/etc/ssl/host-ca-certificates.crt"
 }
 
 umount_all() {
@@ -42,7 +43,8 @@ in_chroot() {
   shift
   mount_all "$dir"
   chroot "$dir" /usr/bin/env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
-    PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin DEBIAN_FRONTEND=noninteractive "$@"
+    PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin DEBIAN_FRONTEND=noninteractive \
+    PIP_CERT=/etc/ssl/host-ca-certificates.crt SSL_CERT_FILE=/etc/ssl/host-ca-certificates.crt "$@"
 }
 
 create() {
