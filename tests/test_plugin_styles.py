@@ -121,8 +121,25 @@ def sampled_pixels(image, step=2):
     return [QColor(image.pixel(x, y)) for y in range(0, image.height(), step) for x in range(0, image.width(), step)]
 
 
+@pytest.fixture
+def layer_panel(qgis_iface, monkeypatch):
+    """A real layer panel for ``iface.layerTreeView()``: from QGIS 3.44 the post-processing hands it to C++.
+
+    The view shows the project's layer tree, as the desktop's *Layers* panel does; it owns its model and both are
+    deleted when the test ends, while QGIS still runs.
+    """
+    from qgis.gui import QgsLayerTreeView
+    from qgis.PyQt import sip
+
+    view = QgsLayerTreeView()
+    view.setModel(QgsLayerTreeModel(QgsProject.instance().layerTreeRoot(), view))
+    monkeypatch.setattr(qgis_iface, "layerTreeView", lambda: view, raising=False)
+    yield view
+    sip.delete(view)
+
+
 @pytest.mark.parametrize("algorithm_name", sorted(CASES))
-def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algorithm_name):
+def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, layer_panel, algorithm_name):
     parameters, inputs, centerline_name = CASES[algorithm_name]
     project = QgsProject.instance()
     project.clear()
