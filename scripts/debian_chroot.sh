@@ -59,7 +59,7 @@ create() {
   if [ "$suite" = trixie-backports ]; then
     echo "deb $MIRROR trixie-backports main" >"$dir/etc/apt/sources.list.d/backports.list"
     # Backports win for every package they have, so `make setup` installs QGIS 3.44 and what it needs with it.
-    printf 'Package: *\nPin: release a=trixie-backports\nPin-Priority: 500\n' >"$dir/etc/apt/preferences.d/backports"
+    printf 'Package: *\nPin: release n=trixie-backports\nPin-Priority: 500\n' >"$dir/etc/apt/preferences.d/backports"
   fi
   in_chroot "$dir" apt-get update -q
   in_chroot "$dir" apt-get install -y -q --no-install-recommends make git ca-certificates
