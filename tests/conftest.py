@@ -7,6 +7,7 @@ plugin path and ``sys.path``. The core tests use none of these fixtures and run 
 test-core`` turns pytest-qgis off); shared helpers live in :mod:`tests.support`.
 """
 
+import gc
 import os
 import shutil
 import subprocess
@@ -21,6 +22,23 @@ def pytest_configure(config):
     """A deprecated QGIS API called from the plugin's own modules fails the test that runs it: QGIS 4 removed the
     API QGIS 3.x deprecated, and QGIS's bindings warn at each call of it ("X.y() is deprecated")."""
     config.addinivalue_line("filterwarnings", r"error:.* is deprecated:DeprecationWarning:incircu\.")
+
+
+@pytest.fixture(scope="session", autouse=True)
+def qgis_objects_of_failed_tests_go_before_qgis(qgis_app):
+    """Release what the last failed test's traceback holds while QGIS still runs.
+
+    pytest keeps the last failure in ``sys.last_traceback`` (``sys.last_exc`` from Python 3.12) for post-mortem
+    debugging, and with it the test's frame and its locals: a ``QgsVectorLayer`` on OGR there outlives
+    ``exitQgis()`` (pytest-qgis's ``qgis_app`` teardown) and is freed at interpreter exit, after GDAL's drivers,
+    which crashed the process ("Segmentation fault", exit 139, once "GDALGetDriverShortName: Pointer 'hDriver' is
+    NULL") instead of reporting the failure. This fixture depends on ``qgis_app``, so it is torn down first.
+    """
+    yield
+    for name in ("last_type", "last_value", "last_traceback", "last_exc"):
+        if hasattr(sys, name):
+            setattr(sys, name, None)
+    gc.collect()
 
 
 @pytest.fixture(scope="session")
