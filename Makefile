@@ -75,8 +75,9 @@ $(VENV)/.installed: requirements.txt requirements-dev.txt
 	@touch $@
 
 # Where Shapely is built (no distribution Shapely 2: Debian 12, Ubuntu 22.04), it is built without build isolation,
-# with the pinned tools of requirements-build.txt and the venv's numpy (the pin of requirements.txt, or the
-# distribution's from numpy 2 on): an isolated build takes the newest Cython and numpy, a pair that has broken it.
+# with the pinned tools of requirements-build.txt against the venv's numpy (requirements.txt's 1.26 pin before Python
+# 3.13, the distribution's from 3.13): an isolated build takes the newest Cython and numpy, a pair that has broken
+# it. Built on numpy 1.26's headers, Shapely runs on Debian 12's numpy 1.24 too (numpy builds for 1.19 and later).
 $(QGIS_SITE)/.installed: requirements.txt requirements-build.txt $(VENV)/.installed
 	@mkdir -p $(QGIS_SITE)
 	@if $(SYSTEM_PYTHON) -c '$(SYSTEM_HAS_SHAPELY2)' 2>/dev/null; then \
