@@ -60,18 +60,9 @@ system-packages:
 	    $(SHAPELY_PACKAGE); \
 	fi
 
-# From Python 3.13 the venv uses the distribution's Shapely 2 (requirements.txt), on the GEOS that QGIS links. pip
-# reads Debian's "0+unknown" as older than geopandas' shapely>=2 and puts a wheel, with a GEOS of its own, over
-# it: that wheel is removed again, so the tests in the QGIS process import the distribution's.
 $(VENV)/.installed: requirements.txt requirements-dev.txt
 	@[ -x $(PYTHON) ] || $(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
-	@if $(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 13))' \
-	    && $(SYSTEM_PYTHON) -c '$(SYSTEM_HAS_SHAPELY2)' 2>/dev/null \
-	    && [ -n "$$(ls -d $(VENV)/lib/python3*/site-packages/shapely 2>/dev/null)" ]; then \
-	  echo "The venv uses the distribution's Shapely 2: removing the wheel pip installed over it"; \
-	  $(PYTHON) -m pip uninstall --quiet --disable-pip-version-check --yes shapely; \
-	fi
 	@touch $@
 
 # Where Shapely is built (no distribution Shapely 2: Debian 12, Ubuntu 22.04), it is built without build isolation,
