@@ -13,7 +13,7 @@ import zipfile
 import pytest
 from qgis.core import QgsApplication, QgsSettings
 
-from tests.support.project import PLUGIN_NAME, REPOSITORY, metadata, version_number
+from tests.support.project import PLUGIN_NAME, REPOSITORY, metadata
 
 
 def test_release_zip_layout(tmp_path):
@@ -101,15 +101,6 @@ def test_release_zip_passes_the_plugin_repository_upload_rules(release_zip):
     for field in ("tracker", "repository", "homepage"):
         address = urllib.parse.urlparse(general[field])
         assert address.scheme == "https" and address.netloc, field
-
-
-def test_metadata_lets_qgis_4_and_the_qt6_builds_of_qgis_3_load_the_plugin():
-    """QGIS 4 loads a plugin whose ``qgisMaximumVersion`` is 4.0 or more; the Qt 6 builds of QGIS 3.x read
-    ``supportsQt6``."""
-    general = metadata()
-    assert version_number(general["qgisMaximumVersion"]) >= version_number("4.0")
-    assert version_number(general["qgisMinimumVersion"]) <= version_number("3.22")
-    assert general["supportsQt6"].strip().lower() == "true"
 
 
 def bandit_findings(folder):
