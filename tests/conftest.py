@@ -25,15 +25,18 @@ def pytest_configure(config):
 
 
 @pytest.fixture(scope="session", autouse=True)
-def qgis_objects_of_failed_tests_go_before_qgis(qgis_app):
+def qgis_objects_of_failed_tests_go_before_qgis(request):
     """Release what the last failed test's traceback holds while QGIS still runs.
 
     pytest keeps the last failure in ``sys.last_traceback`` (``sys.last_exc`` from Python 3.12) for post-mortem
     debugging, and with it the test's frame and its locals: a ``QgsVectorLayer`` on OGR there outlives
     ``exitQgis()`` (pytest-qgis's ``qgis_app`` teardown) and is freed at interpreter exit, after GDAL's drivers,
     which crashed the process ("Segmentation fault", exit 139, once "GDALGetDriverShortName: Pointer 'hDriver' is
-    NULL") instead of reporting the failure. This fixture depends on ``qgis_app``, so it is torn down first.
+    NULL") instead of reporting the failure. This fixture asks for ``qgis_app``, so it is torn down first; without
+    pytest-qgis (``-p no:pytest_qgis``: the core tests) there is no QGIS to outlive.
     """
+    if request.config.pluginmanager.hasplugin("pytest_qgis"):
+        request.getfixturevalue("qgis_app")
     yield
     for name in ("last_type", "last_value", "last_traceback", "last_exc"):
         if hasattr(sys, name):
