@@ -18,7 +18,10 @@ SHAPELY_PACKAGE = $$(apt-cache policy python3-shapely | sed -n 's/^ *Candidate: 
 # from the pin; numpy and pyproj come from the distribution.
 QGIS_SITE := $(VENV)/qgis-site
 SHAPELY_PIN := $(shell sed -n 's/^\(shapely==[^ ;]*\).*/\1/p' requirements.txt)
-SYSTEM_HAS_SHAPELY2 := import shapely, sys; sys.exit(int(shapely.__version__.split(".")[0]) < 2)
+# Whether QGIS's Python has Shapely 2, judged by its API as the plugin judges it (algorithms/dependencies.py), not by
+# its version: Debian's python3-shapely 2.2 reports "0+unknown".
+SYSTEM_HAS_SHAPELY2 := import sys; sys.path.append("algorithms"); import shapely, dependencies; \
+	sys.exit(bool(dependencies.missing_shapely2_api(shapely)))
 PROFILE ?= default
 QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
@@ -63,13 +66,18 @@ $(VENV)/.installed: requirements.txt requirements-dev.txt
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
 	@touch $@
 
-$(QGIS_SITE)/.installed: requirements.txt
+# Where Shapely is built (no distribution Shapely 2: Debian 12, Ubuntu 22.04), it is built without build isolation,
+# with the pinned tools of requirements-build.txt against the venv's numpy (requirements.txt's 1.26 pin before Python
+# 3.13, the distribution's from 3.13): an isolated build takes the newest Cython and numpy, a pair that has broken
+# it. Built on numpy 1.26's headers, Shapely runs on Debian 12's numpy 1.24 too (numpy builds for 1.19 and later).
+$(QGIS_SITE)/.installed: requirements.txt requirements-build.txt $(VENV)/.installed
 	@mkdir -p $(QGIS_SITE)
 	@if $(SYSTEM_PYTHON) -c '$(SYSTEM_HAS_SHAPELY2)' 2>/dev/null; then \
 	  echo "QGIS's Python uses the distribution's Shapely 2: nothing to build"; \
 	else \
-	  $(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps --no-binary shapely --upgrade \
-	    --target $(QGIS_SITE) "$(SHAPELY_PIN)"; \
+	  $(PYTHON) -m pip install --quiet --disable-pip-version-check -r requirements-build.txt && \
+	  PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps \
+	    --no-binary shapely --no-build-isolation --upgrade --target $(QGIS_SITE) "$(SHAPELY_PIN)"; \
 	fi
 	@touch $@
 

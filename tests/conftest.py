@@ -7,6 +7,7 @@ plugin path and ``sys.path``. The core tests use none of these fixtures and run 
 test-core`` turns pytest-qgis off); shared helpers live in :mod:`tests.support`.
 """
 
+import gc
 import os
 import shutil
 import subprocess
@@ -15,6 +16,32 @@ import sys
 import pytest
 
 from tests.support.project import ARTIFACTS, PLUGIN_NAME, QGIS_SITE, REPOSITORY
+
+
+def pytest_configure(config):
+    """A deprecated QGIS API called from the plugin's own modules fails the test that runs it: QGIS 4 removed the
+    API QGIS 3.x deprecated, and QGIS's bindings warn at each call of it ("X.y() is deprecated")."""
+    config.addinivalue_line("filterwarnings", r"error:.* is deprecated:DeprecationWarning:incircu\.")
+
+
+@pytest.fixture(scope="session", autouse=True)
+def qgis_objects_of_failed_tests_go_before_qgis(request):
+    """Release what the last failed test's traceback holds while QGIS still runs.
+
+    pytest keeps the last failure in ``sys.last_traceback`` (``sys.last_exc`` from Python 3.12) for post-mortem
+    debugging, and with it the test's frame and its locals: a ``QgsVectorLayer`` on OGR there outlives
+    ``exitQgis()`` (pytest-qgis's ``qgis_app`` teardown) and is freed at interpreter exit, after GDAL's drivers,
+    which crashed the process ("Segmentation fault", exit 139, once "GDALGetDriverShortName: Pointer 'hDriver' is
+    NULL") instead of reporting the failure. This fixture asks for ``qgis_app``, so it is torn down first; without
+    pytest-qgis (``-p no:pytest_qgis``: the core tests) there is no QGIS to outlive.
+    """
+    if request.config.pluginmanager.hasplugin("pytest_qgis"):
+        request.getfixturevalue("qgis_app")
+    yield
+    for name in ("last_type", "last_value", "last_traceback", "last_exc"):
+        if hasattr(sys, name):
+            setattr(sys, name, None)
+    gc.collect()
 
 
 @pytest.fixture(scope="session")
@@ -107,3 +134,21 @@ def qgis_process(plugin_folder, tmp_path_factory):
     enabled = run("plugins", "enable", PLUGIN_NAME)
     assert enabled.returncode == 0, enabled.stdout + enabled.stderr
     return run
+
+
+@pytest.fixture
+def layer_panel(qgis_iface, monkeypatch):
+    """A real layer panel for ``iface.layerTreeView()``: from QGIS 3.44 the post-processing hands it to C++.
+
+    The view shows the project's layer tree, as the desktop's *Layers* panel does; it owns its model and both are
+    deleted when the test ends, while QGIS still runs.
+    """
+    from qgis.core import QgsLayerTreeModel, QgsProject
+    from qgis.gui import QgsLayerTreeView
+    from qgis.PyQt import sip
+
+    view = QgsLayerTreeView()
+    view.setModel(QgsLayerTreeModel(QgsProject.instance().layerTreeRoot(), view))
+    monkeypatch.setattr(qgis_iface, "layerTreeView", lambda: view, raising=False)
+    yield view
+    sip.delete(view)

@@ -83,32 +83,6 @@ def test_width_statistics_with_one_or_no_positive_width(plugin_module):
     assert none["length"] == 10.0 and none["n_vertices"] == 2
 
 
-# version_tuple (algorithms/dependencies.py) --------------------------------------------------------------
-
-
-@pytest.mark.parametrize(
-    ("text", "expected"),
-    [
-        ("2.0.1", (2, 0, 1)),
-        ("1.8.5", (1, 8, 5)),
-        ("10.2", (10, 2)),
-        ("2.0rc1", (2, 0)),
-        ("2.1b2", (2, 1)),
-        ("2.0.post1", (2, 0)),
-        ("2", (2,)),
-        ("dev", ()),
-    ],
-)
-def test_version_tuple(plugin_module, text, expected):
-    assert plugin_module("algorithms.dependencies").version_tuple(text) == expected
-
-
-def test_a_release_candidate_of_shapely_2_is_not_older_than_2_0(plugin_module):
-    dependencies = plugin_module("algorithms.dependencies")
-    assert dependencies.version_tuple("2.0rc1") >= dependencies.MINIMUM_SHAPELY
-    assert dependencies.version_tuple("1.8.5") < dependencies.MINIMUM_SHAPELY
-
-
 # layer_margin (algorithms/split_points.py) --------------------------------------------------------------
 
 

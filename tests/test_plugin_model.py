@@ -155,7 +155,7 @@ def test_the_reservoir_model_follows_its_guide(provider):
     assert feature["ends_from"] == "guide"
 
 
-def test_example_model_outputs_are_styled_when_loaded(provider):
+def test_example_model_outputs_are_styled_when_loaded(provider, layer_panel):
     from processing.gui.Postprocessing import handleAlgorithmResults
     from processing.tools import dataobjects
     from qgis.core import QgsProcessingFeedback, QgsProcessingOutputLayerDefinition, QgsProject

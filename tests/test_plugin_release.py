@@ -3,12 +3,15 @@
 import ast
 import configparser
 import html
+import json
 import re
 import string
 import subprocess
 import sys
+import urllib.parse
 import zipfile
 
+import pytest
 from qgis.core import QgsApplication, QgsSettings
 
 from tests.support.project import PLUGIN_NAME, REPOSITORY, metadata
@@ -44,6 +47,105 @@ def test_release_zip_layout(tmp_path):
     for excluded in ("/tests/", "__pycache__", ".pyc", "/.ci/", "/benchmarks/", "/scripts/", "/.venv", "Makefile"):
         assert not [name for name in names if excluded in name], excluded
     assert packaged_metadata["general"]["version"] == metadata()["version"]
+
+
+@pytest.fixture(scope="module")
+def release_zip(tmp_path_factory):
+    """The release zip ``make package`` builds, and the folder it is extracted to."""
+    folder = tmp_path_factory.mktemp("release")
+    subprocess.run(["make", "-s", "package", f"DIST={folder}"], cwd=REPOSITORY, check=True, capture_output=True)
+    archive = folder / "{}-{}.zip".format(PLUGIN_NAME, metadata()["version"])
+    extracted = folder / "extracted"
+    with zipfile.ZipFile(archive) as release:
+        release.extractall(extracted)
+    return archive, extracted
+
+
+#: What the QGIS plugin repository requires of ``metadata.txt`` (its upload validator), and its yes/no fields.
+REQUIRED_METADATA = ("name", "description", "version", "qgisMinimumVersion", "author", "email", "about", "tracker")
+REQUIRED_METADATA += ("repository",)
+BOOLEAN_METADATA = ("experimental", "deprecated", "server", "supportsQt6")
+#: File types the repository's scan treats as executables or compiled code.
+SUSPICIOUS_SUFFIXES = (".pyc", ".pyo", ".exe", ".dll", ".so", ".dylib", ".bat", ".sh", ".ps1", ".cmd")
+
+
+def test_release_zip_passes_the_plugin_repository_upload_rules(release_zip):
+    """The rules of the repository's upload validator and its file analysis: size, paths, one PEP 8 top folder
+    with ``__init__.py``, ``metadata.txt`` and ``LICENSE``, the required metadata, yes/no fields, real URLs, the
+    icon; no compiled, executable, hidden or cache files."""
+    archive, _ = release_zip
+    assert archive.stat().st_size <= 25_000_000
+    with zipfile.ZipFile(archive) as release:
+        assert release.testzip() is None
+        infos = release.infolist()
+        names = [info.filename for info in infos]
+        packaged = configparser.ConfigParser(interpolation=None)
+        packaged.optionxform = str
+        packaged.read_string(release.read(f"{PLUGIN_NAME}/metadata.txt").decode("utf-8"))
+        general = packaged["general"]
+        assert f"{PLUGIN_NAME}/{general['icon']}" in names
+    assert PLUGIN_NAME.isidentifier() and re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]+", PLUGIN_NAME)
+    for required in ("__init__.py", "metadata.txt", "LICENSE"):
+        assert f"{PLUGIN_NAME}/{required}" in names, required
+    for info in infos:
+        parts = info.filename.split("/")
+        assert parts[0] == PLUGIN_NAME and ".." not in parts and not info.filename.startswith("/"), info.filename
+        assert not {"__MACOSX", ".git", "__pycache__"} & set(parts), info.filename
+        assert not any(part.startswith(".") for part in parts), f"hidden file {info.filename}"
+        assert not info.filename.lower().endswith(SUSPICIOUS_SUFFIXES), info.filename
+        assert not (info.external_attr >> 16) & 0o111 or info.is_dir(), f"executable {info.filename}"
+    for field in REQUIRED_METADATA:
+        assert general.get(field, "").strip(), field
+    for field in BOOLEAN_METADATA:
+        assert general[field].strip().lower() in ("true", "false", "1", "0"), field
+    assert "/" not in general["author"]
+    for field in ("tracker", "repository", "homepage"):
+        address = urllib.parse.urlparse(general[field])
+        assert address.scheme == "https" and address.netloc, field
+
+
+def bandit_findings(folder):
+    """Bandit's findings over ``folder``, every one of its tests enabled (the repository enables nearly all)."""
+    scan = subprocess.run(
+        [sys.executable, "-m", "bandit", "-r", str(folder), "-f", "json", "-q"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    report = json.loads(scan.stdout)
+    assert not report["errors"], report["errors"]
+    return [
+        f"{item['test_id']} {item['filename']}:{item['line_number']} {item['issue_text']}" for item in report["results"]
+    ]
+
+
+def secrets_found(folder):
+    """detect-secrets' findings over ``folder``, run as the repository runs it (every file, metadata.txt left out)."""
+    scan = subprocess.run(
+        [sys.executable, "-m", "detect_secrets", "scan", "--all-files", "--exclude-files", r"metadata\.txt", "."],
+        cwd=folder,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    results = json.loads(scan.stdout)["results"]
+    return [f"{name}:{item['line_number']} {item['type']}" for name, items in results.items() for item in items]
+
+
+def test_the_security_scans_find_what_they_look_for(tmp_path):
+    """Both scanners run and report: an ``eval`` of input and a hard-coded password, an AWS-style access key."""
+    (tmp_path / "bad.py").write_text(
+        'password = "correct horse battery"\nprint(eval(input()))\nKEY = "AKIA' + "IOSFODNN7" + 'EXAMPLE"\n'
+    )
+    assert {finding.split()[0] for finding in bandit_findings(tmp_path)} >= {"B105", "B307"}
+    assert any("AWS Access Key" in finding for finding in secrets_found(tmp_path))
+
+
+def test_release_zip_passes_the_plugin_repository_security_scan(release_zip):
+    """Bandit and detect-secrets, which block a version on the repository at any finding, find nothing."""
+    _, extracted = release_zip
+    assert bandit_findings(extracted) == []
+    assert secrets_found(extracted) == []
 
 
 def test_packaged_readme_references_only_what_the_zip_holds_or_absolute_addresses(tmp_path):

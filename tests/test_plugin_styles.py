@@ -154,7 +154,7 @@ def sampled_pixels(image, step=2):
     return [QColor(image.pixel(x, y)) for y in range(0, image.height(), step) for x in range(0, image.width(), step)]
 
 
-def test_a_new_run_comes_in_its_own_group_above_the_last(provider):
+def test_a_new_run_comes_in_its_own_group_above_the_last(provider, layer_panel):
     project = QgsProject.instance()
     project.clear()
     river = QgsVectorLayer(str(DATA / "river_2180.geojson"), "reservoirs", "ogr")
@@ -176,7 +176,7 @@ def test_a_new_run_comes_in_its_own_group_above_the_last(provider):
 
 
 @pytest.mark.parametrize("algorithm_name", sorted(CASES))
-def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, algorithm_name):
+def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, layer_panel, algorithm_name):
     parameters, inputs, centerline_name = CASES[algorithm_name]
     project = QgsProject.instance()
     project.clear()
