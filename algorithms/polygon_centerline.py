@@ -49,7 +49,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             "Line layer: input attributes plus source_fid (the polygon's feature id, to join the line back to "
             "it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive "
             "width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split "
-            "points were used) and ends_from (split_points, guide or automatic)."
+            "points were used) and ends_from (split_points, guide, automatic, or split_points_and_automatic for one given split point)."
         )
 
     def tags(self):
@@ -87,7 +87,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             self.tr(
                 "Points marking where each centerline starts and ends: two per polygon part, within "
                 "'Split point snapping tolerance' of its exterior ring. A part with none gets automatic ends; a part with one "
-                "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
+                "starts there and ends at the far end of its main stem; a part with more than two is skipped. Another "
+                "CRS is reprojected to the polygon layer's."
             ),
         )
         self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)

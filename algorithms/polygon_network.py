@@ -1,9 +1,10 @@
-"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between two or more split points."""
+"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between the ends of a polygon's arms."""
 
 from qgis.core import (
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
+    QgsProcessingParameterNumber,
 )
 
 from .base import IncirCuAlgorithm
@@ -19,6 +20,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     SPLIT_ID_FIELD = "SPLIT_ID_FIELD"
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
+    MIN_ARM_RATIO = "MIN_ARM_RATIO"
+    MIN_ARM_LENGTH = "MIN_ARM_LENGTH"
+    OUTPUT_NODES = "OUTPUT_NODES"
 
     ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
@@ -43,13 +47,18 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
     def summary(self):
         return self.tr(
-            "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-            "outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis "
-            "that separates the outline's chains between consecutive split points: a tree with one end at each split "
-            "point and junctions where a circle touches three chains, without side branches. Each branch is one line "
-            "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
-            " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
-            "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
+            "Computes, for each polygon (each part of a multipart polygon), the part of the medial axis that "
+            "separates the outline's chains between its ends (the ends of the arms of a confluence, a lake, a delta"
+            " or a road junction): a tree with one end at each arm and junctions where a circle touches three "
+            "chains, without side branches. The ends are the 'Split points' on the outline when a part has two or "
+            "more; otherwise they are found automatically (one given split point replaces the automatic end nearest"
+            " to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least 'Minimum"
+            " arm length, in junction widths' (bank noise and small bays do not). Each branch is one line feature "
+            "with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the "
+            "split points at its ends ('auto' at an automatic end, 'junction' at a junction), the chains on its "
+            "right and left, its length and widths; the M value of each vertex is the local width. Two split points"
+            " give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or "
+            "ignored."
             " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
             "that cannot be processed is skipped with a warning naming its id and the reason."
         )
@@ -66,12 +75,13 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
-                self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint]
+                self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint], optional=True
             ),
             self.tr(
-                "The ends of the network: at least two per polygon part, within 'Split point snapping "
-                "tolerance' of its exterior ring, typically one across each arm's end. A part with fewer is "
-                "skipped. Another CRS is reprojected to the polygon layer's."
+                "The ends of the network, within 'Split point snapping tolerance' of a part's exterior ring, "
+                "typically one across each arm's end. A part with two or more uses exactly these; a part with none "
+                "or one gets its arm ends automatically (the one given replaces the automatic end nearest to it, "
+                "when within that arm's width). Another CRS is reprojected to the polygon layer's."
             ),
         )
         self.add_parameter(
@@ -95,6 +105,30 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             self.ISLANDS,
         )
+        self.add_optional_parameter(
+            QgsProcessingParameterNumber(
+                self.MIN_ARM_RATIO,
+                self.tr("Minimum arm length, in junction widths"),
+                QgsProcessingParameterNumber.Double,
+                1.0,
+                minValue=0.0,
+            ),
+            self.tr(
+                "Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at "
+                "least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than "
+                "the river is wide make no branch; a tributary does)."
+            ),
+        )
+        self.add_length_parameter(
+            self.MIN_ARM_LENGTH,
+            self.tr("Minimum arm length"),
+            0.0,
+            self.tr(
+                "Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction's "
+                "circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation."
+            ),
+            advanced=True,
+        )
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
@@ -102,10 +136,25 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             self.tr(
                 "Line layer, one feature per branch: input attributes plus source_fid (the polygon's feature id, "
-                "to join the branch back to it), from_point, to_point (split point ids or 'junction'), "
-                "right_chain, left_chain (each chain named 'a-b' after the split points at its ends, "
-                "counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the "
-                "vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices."
+                "to join the branch back to it), from_point, to_point (split point ids, 'auto' or 'junction'), "
+                "from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends "
+                "coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named 'a-b' after the "
+                "ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle "
+                "diameters over the vertices with a positive width; layer units, metres for a layer in degrees) "
+                "and n_vertices."
+            ),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT_NODES,
+                self.tr("Network nodes"),
+                ProcessingSourceType.VectorPoint,
+                optional=True,
+                createByDefault=False,
+            ),
+            self.tr(
+                "Optional point layer: every end and junction with its node id, degree (number of branch ends), "
+                "radius (the junction's circle; 0 at an end) and kind (end or junction)."
             ),
         )
         self.add_count_outputs(self.tr("Number of branches"), self.tr("Number of branch features written."))
@@ -116,8 +165,14 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
         run.warn_dropped_z(source)
-        split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
+        split_source = None
+        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
+            split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
+        id_field = None
+        if split_source is not None:
+            id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
+        min_arm_ratio = self.parameterAsDouble(parameters, self.MIN_ARM_RATIO, context)
+        min_arm_length = self.parameterAsDouble(parameters, self.MIN_ARM_LENGTH, context) or None
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         sampling = self.sampling_options(parameters, context)
         # The enum's choices are in the order of the core's ISLAND_MODES.
@@ -139,6 +194,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 snap_tolerance=snap_tolerance or None,
                 **sampling,
                 islands=islands,
+                min_arm_ratio=min_arm_ratio,
+                min_arm_length=min_arm_length,
             )
             several = len(outcomes or ()) > 1
             parts = []

@@ -317,8 +317,6 @@ def test_split_point_order_only_renames_the_ends():
 
 def test_bad_split_points_are_typed_errors():
     polygon, caps, _, _ = cases.t_junction()
-    with pytest.raises(SplitPointError, match="at least 2"):
-        polygon_network(polygon, caps[:1])
     with pytest.raises(SplitPointError, match="away from"):
         polygon_network(polygon, [*caps[:2], (0.0, 0.0)])
     with pytest.raises(SplitPointError, match="same place"):
@@ -333,9 +331,12 @@ def test_multipart_networks_number_split_points_among_all_candidates():
     t_polygon = shapely.affinity.translate(t_polygon, 200.0, 0.0)
     t_caps = [(x + 200.0, y) for x, y in t_caps]
     candidates = [t_caps[0], *y_caps, *t_caps[1:], (500.0, 500.0)]
-    outcomes = multipolygon_networks(shapely.MultiPolygon([y_polygon, t_polygon, box(400, 0, 410, 10)]), candidates)
-    assert [o.error is None for o in outcomes] == [True, True, False]
-    assert "has 0 split points" in str(outcomes[2].error)
+    outcomes = multipolygon_networks(shapely.MultiPolygon([y_polygon, t_polygon, box(400, 0, 450, 10)]), candidates)
+    assert [o.error is None for o in outcomes] == [True, True, True]
+    # The part without split points gets its two ends automatically, numbered None (no candidate).
+    (lone,) = outcomes[2].result.branches
+    assert outcomes[2].result.point_indices == (None, None) and (lone.start_point, lone.end_point) == (None, None)
+    assert sorted(np.round(shapely.get_coordinates(lone.result.line)[[0, -1], 0], 9)) == [400.0, 450.0]
     for outcome, expected in zip(outcomes, ({1, 2, 3}, {0, 4, 5})):
         network = outcome.result
         assert {b.start_point for b in network.branches} == expected

@@ -111,7 +111,7 @@ def test_two_split_points_give_the_polygon_centerline(provider):
         assert branch[field] == line[field]
 
 
-def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provider):
+def test_a_part_with_one_split_point_gets_its_other_end_and_islands_are_avoided(provider):
     y_polygon, y_caps, _, _ = cases.symmetric_y(half_width=8.0)
     island = box(-2.0, 30.0, 4.0, 45.0)
     with_island = Polygon(y_polygon.exterior.coords, [island.exterior.coords])
@@ -122,13 +122,46 @@ def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provi
             "SPLIT_POINTS": split_layer([*y_caps, (500.0, 5.0)]),
         }
     )
-    assert results["CENTERLINE_COUNT"] == 3
-    assert results["SKIPPED_COUNT"] == 1
-    assert any("has 1 split point within" in warning for warning in feedback.warnings), feedback.warnings
-    ids = {feature["from_point"] for feature in results["OUTPUT"].getFeatures()}
-    assert ids == {"1", "2", "3"}
-    for feature in results["OUTPUT"].getFeatures():
+    assert results["CENTERLINE_COUNT"] == 4 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    features = list(results["OUTPUT"].getFeatures())
+    assert {feature["from_point"] for feature in features} | {feature["to_point"] for feature in features} == {
+        "1",
+        "2",
+        "3",
+        "4",
+        "auto",
+        "junction",
+    }
+    (lonely_line,) = [feature for feature in features if feature["name"] == "one point"]
+    line = as_shapely(lonely_line.geometry())
+    assert line.coords[0] == (500.0, 5.0) and np.allclose(line.coords[-1], (600.0, 5.0), atol=1e-9)
+    assert lonely_line["kind"] == "arm" and lonely_line["right_chain"].startswith("4-auto:")
+    for feature in features:
         assert not as_shapely(feature.geometry()).intersects(island)
+
+
+def test_automatic_network_carries_its_topology_and_nodes(provider):
+    polygon, caps, _, radius = cases.symmetric_y()
+    results, feedback = run(
+        {"INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "Y")]), "OUTPUT_NODES": "memory:"}
+    )
+    assert results["CENTERLINE_COUNT"] == 3 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    branches = list(results["OUTPUT"].getFeatures())
+    nodes = {feature["node"]: feature for feature in results["OUTPUT_NODES"].getFeatures()}
+    assert len(nodes) == 4
+    (junction,) = [node for node in nodes.values() if node["kind"] == "junction"]
+    assert junction["degree"] == 3 and junction["radius"] == pytest.approx(radius, rel=1e-9)
+    assert junction.geometry().asPoint().distance(0.0, 0.0) <= 1e-9 * 120.0
+    for branch in branches:
+        assert branch["kind"] == "arm" and branch["from_point"] == "auto" and branch["to_point"] == "junction"
+        assert branch["to_node"] == junction["node"]
+        line = as_shapely(branch.geometry())
+        start = nodes[branch["from_node"]]
+        assert start["kind"] == "end" and start["degree"] == 1 and start["radius"] == 0.0
+        assert (
+            Point(line.coords[0]).distance(Point(start.geometry().asPoint().x(), start.geometry().asPoint().y())) == 0.0
+        )
+        assert min(Point(line.coords[0]).distance(Point(cap)) for cap in caps) <= 1e-9 * 120.0
 
 
 def test_geographic_layer_is_computed_in_metres(provider):

@@ -78,6 +78,8 @@ def polygon_centerline(
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of two Point or (x, y), optional
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`.ends.find_ends`.
+        One point: it is the start, and the end is whichever of :func:`.ends.find_ends`' two ends lies
+        farther from it (the far end of the main stem).
     spacing : float, optional
         Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
         adaptive sampling (the default; what a user wants unless reproducing the paper).
@@ -164,13 +166,20 @@ def polygon_centerline_steps(
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
-    if ends_found:
+    if len(split_points) < 2:
         ends = yield from _automatic_ends(
             region, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
         )
         progress = _progress_share(progress, ENDS_PROGRESS_SHARE, 1.0)
-        split_points = split_point_coordinates((ends.start, ends.end))
-        ends_from = "guide" if ends.guided else "automatic"
+        found = split_point_coordinates((ends.start, ends.end))
+        if len(split_points) == 1:
+            # The given point is one end; the other is the end of the main stem farther from it.
+            farther = int(np.argmax(np.hypot(*(found - split_points[0]).T)))
+            split_points = np.concatenate([split_points, found[farther : farther + 1]])
+            ends_from = "split_points_and_automatic"
+        else:
+            split_points = found
+            ends_from = "guide" if ends.guided else "automatic"
     c1, c2 = split_checked_polygon(polygon, split_points, snap_tolerance)
     steps = clean_chains_steps
     if islands == "main_channel" and polygon.interiors:
@@ -213,8 +222,9 @@ class PolygonCenterlineResult(CenterlineResult):
 
     Attributes
     ----------
-    ends_from : {"split_points", "guide", "automatic"}
-        The given split points, the skeleton path following a guide line, or the automatic end rule.
+    ends_from : {"split_points", "guide", "automatic", "split_points_and_automatic"}
+        The given split points, the skeleton path following a guide line, the automatic end rule, or one
+        given split point and the far end of the main stem.
     """
 
     ends_from: str = "split_points"
@@ -463,7 +473,8 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     """Centerline of each part of a polygon or multipolygon.
 
     Each part takes the split points lying within ``snap_tolerance`` of its exterior ring: two of them are
-    its ends; none means its ends are found automatically; one or more than two is an error for that part.
+    its ends; none means its ends are found automatically; one is its start, and its end is found
+    automatically (see :func:`polygon_centerline`); more than two is an error for that part.
     A part that fails does not stop the others.
 
     Parameters
@@ -513,9 +524,12 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
         try:
             validate_polygon(part)
             mine = coordinates[near]
-            if len(mine) not in (0, 2):
+            if len(mine) > 2:
                 raise split_point_count_error(
-                    len(mine), snap_tolerance, len(parts) > 1, "it needs 2 (or none, to find its ends automatically)"
+                    len(mine),
+                    snap_tolerance,
+                    len(parts) > 1,
+                    "it needs 2 (or fewer, to find the missing ends automatically)",
                 )
             result = yield from polygon_centerline_steps(
                 part,

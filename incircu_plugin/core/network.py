@@ -35,9 +35,10 @@ from typing import Optional
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Point
+from shapely.geometry import LineString, Point, Polygon
 
-from .api import PartOutcome, check_island_mode, part_progress, polygon_parts, split_point_count_error
+from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
+from .arms import MIN_ARM_RATIO, find_arm_ends
 from .chains import (
     COINCIDENCE_TOLERANCE,
     counter_clockwise_exterior,
@@ -74,6 +75,11 @@ class NetworkBranch:
         Index (in the input order) of the split point at the branch's start and end; None at a junction.
     right_chain, left_chain : int
         Indices into :attr:`NetworkResult.chains` of the chains on either side.
+    start_node, end_node : int or None
+        Rows of :attr:`NetworkResult.nodes` at the branch's start and end (shared by the branches that meet).
+    kind : {"arm", "inner", "loop"} or None
+        ``"arm"``: one end is an end of the network; ``"inner"``: between two junctions; ``"loop"``: from a
+        junction back to itself.
     """
 
     result: CenterlineResult
@@ -81,6 +87,9 @@ class NetworkBranch:
     end_point: Optional[int]
     right_chain: int
     left_chain: int
+    start_node: Optional[int] = None
+    end_node: Optional[int] = None
+    kind: Optional[str] = None
 
 
 @dataclass(frozen=True)
@@ -98,7 +107,17 @@ class NetworkResult:
         The junctions, CRS units.
     point_indices : tuple of int or None
         Set by :func:`multipolygon_networks`: the index of each row of ``split_points`` among all the
-        candidate split points (the numbers used by ``chains`` and the branches).
+        candidate split points (the numbers used by ``chains`` and the branches; None for an end found
+        automatically).
+    junction_radii : ndarray of shape (m,)
+        Radius of each junction's circle, CRS units.
+    automatic : tuple of bool
+        Per row of ``split_points``: whether it was found automatically (see :mod:`.arms`).
+    ends_from : {"split_points", "automatic", "split_points_and_automatic"}
+        Where the ends came from.
+    chain_nodes : tuple of (int, int)
+        For each chain, the rows of ``split_points`` (node ids) at its start and end: ``chains`` before
+        :func:`multipolygon_networks` renumbers it.
     """
 
     branches: tuple
@@ -106,28 +125,60 @@ class NetworkResult:
     chains: tuple
     junctions: np.ndarray
     point_indices: Optional[tuple] = None
+    junction_radii: Optional[np.ndarray] = None
+    automatic: tuple = ()
+    ends_from: str = "split_points"
+    chain_nodes: tuple = ()
+
+    @property
+    def nodes(self):
+        """ndarray of shape (k + m, 2): the ends (the rows of ``split_points``) then the junctions, CRS units;
+        the rows :attr:`NetworkBranch.start_node` and ``end_node`` refer to."""
+        return np.concatenate([self.split_points, self.junctions.reshape(-1, 2)])
+
+    @property
+    def node_radii(self):
+        """ndarray of shape (k + m,): 0 at an end, the circle's radius at a junction, CRS units."""
+        radii = np.zeros(len(self.junctions)) if self.junction_radii is None else self.junction_radii
+        return np.concatenate([np.zeros(len(self.split_points)), radii])
+
+    @property
+    def node_degrees(self):
+        """ndarray of shape (k + m,) of int: the number of branch ends at each node (a loop counts twice)."""
+        ends = [node for branch in self.branches for node in (branch.start_node, branch.end_node)]
+        return np.bincount(np.asarray(ends, dtype=np.int64), minlength=len(self.split_points) + len(self.junctions))
 
 
 def polygon_network(
     polygon,
-    split_points,
+    split_points=None,
     *,
     spacing=None,
     snap_tolerance=None,
     islands="main_channel",
+    min_arm_ratio=MIN_ARM_RATIO,
+    min_arm_length=None,
     progress=None,
     **engine_options,
 ):
-    """Medial-axis network of a polygon between ``k >= 2`` split points on its exterior ring.
+    """Medial-axis network of a polygon between ``k >= 2`` ends on its exterior ring.
 
     Parameters
     ----------
     polygon : Polygon
         A valid polygon, CRS units; holes are islands.
-    split_points : sequence of Point or (x, y)
-        At least two points within ``snap_tolerance`` of the exterior ring. The first one starts chain 0,
-        the others follow counter-clockwise whatever their order; with two points the branch runs from the
-        first to the second, as :func:`polygon_centerline`'s line.
+    split_points : sequence of Point or (x, y), optional
+        Points within ``snap_tolerance`` of the exterior ring. Two or more: the ends of the network. The
+        first one starts chain 0, the others follow counter-clockwise whatever their order; with two points
+        the branch runs from the first to the second, as :func:`polygon_centerline`'s line. None, none or
+        one: the ends of the arms are found automatically (:func:`.arms.find_arm_ends`); one given point
+        replaces the automatic end nearest to it when within that arm's width, and is added otherwise; it
+        comes first.
+    min_arm_ratio : float
+        Automatic ends only: shortest reach of an arm beyond the incircle of the junction it leaves, in
+        widths of that junction (see :mod:`.arms`).
+    min_arm_length : float, optional
+        Automatic ends only: shortest reach of an arm beyond its junction's incircle, CRS units.
     spacing : float, optional
         Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
     snap_tolerance : float, optional
@@ -158,6 +209,10 @@ def polygon_network(
     validate_polygon(polygon)
     check_island_mode(islands)
     split_points = [] if split_points is None else list(split_points)
+    given = len(split_points)
+    if given < 2:
+        region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+        split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length)
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
     chains = _bridged_chains(polygon, points, snap_tolerance, islands)
@@ -173,22 +228,70 @@ def polygon_network(
         if report is not None and report(1.0) is False:
             raise Cancelled()
         pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
-    branches, centres = _assemble(pieces, junctions, order)
+    branches, centres, radii = _assemble(pieces, junctions, order)
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
+    automatic = tuple(index >= given for index in range(k)) if given < 2 else (False,) * k
     return NetworkResult(
         branches=tuple(branches),
         split_points=snapped,
         chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
         junctions=centres,
+        junction_radii=radii,
+        chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
+        automatic=automatic,
+        ends_from="split_points" if given >= 2 else ("automatic" if given == 0 else "split_points_and_automatic"),
     )
+
+
+def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
+    """Return the given split points (none or one) followed by the automatic arm ends they do not replace.
+
+    A given point replaces the automatic end nearest to it when it lies within that arm's width of it (a
+    split point placed anywhere across the arm's end).
+
+    Parameters
+    ----------
+    polygon : Polygon
+        CRS units; its holes as the network sees them.
+    split_points : sequence of Point or (x, y)
+        At most one, CRS units.
+    min_arm_ratio, min_arm_length : float
+        See :func:`.arms.find_arm_ends`.
+
+    Returns
+    -------
+    list of ndarray of shape (2,)
+        CRS units, the given point first.
+
+    Raises
+    ------
+    SplitPointError
+        When fewer than two ends are found (a shape without arms, such as a ring around an island).
+    """
+    given = [_as_xy(point) for point in split_points]
+    arms = find_arm_ends(polygon, min_arm_ratio=min_arm_ratio, min_arm_length=min_arm_length)
+    automatic = list(zip(arms.points, arms.widths))
+    for point in given:
+        if automatic:
+            distances = [float(np.hypot(*(point - end))) for end, _ in automatic]
+            nearest = int(np.argmin(distances))
+            if distances[nearest] <= automatic[nearest][1]:
+                automatic.pop(nearest)
+    points = given + [end for end, _ in automatic]
+    if len(points) < 2:
+        raise SplitPointError(
+            f"Only {len(points)} arm end was found automatically on this polygon; give its ends as split points."
+        )
+    return points
 
 
 def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **options):
     """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
 
-    A part takes the split points within ``snap_tolerance`` of its exterior ring; fewer than two is an
-    error for that part. A part that fails does not stop the others.
+    A part takes the split points within ``snap_tolerance`` of its exterior ring; with fewer than two, the
+    ends of its arms are found automatically (see :func:`polygon_network`). A part that fails does not stop
+    the others.
 
     Parameters
     ----------
@@ -204,7 +307,8 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
     Returns
     -------
     list of PartOutcome
-        One per part, in input order; a result's split point indices refer to ``split_points``.
+        One per part, in input order; a result's split point indices refer to ``split_points`` (None for an
+        end found automatically).
 
     Raises
     ------
@@ -229,8 +333,6 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
         try:
             # What is wrong with the polygon itself comes first (as for a centerline), then its split points.
             validate_polygon(part)
-            if len(near) < 2:
-                raise split_point_count_error(len(near), snap_tolerance, len(parts) > 1, "a network needs at least 2")
             network = polygon_network(
                 part,
                 [points[i] for i in near],
@@ -238,7 +340,8 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
                 progress=part_progress(progress, index, len(parts)),
                 **options,
             )
-            outcomes.append(PartOutcome(index, _renumbered(network, near), None))
+            indices = list(near) + [None] * (len(network.split_points) - len(near))
+            outcomes.append(PartOutcome(index, _renumbered(network, indices), None))
         except IncirCuError as error:
             outcomes.append(PartOutcome(index, None, error))
     return outcomes
@@ -618,8 +721,11 @@ def _assemble(pieces, junctions, order):
     Returns
     -------
     branches : list of NetworkBranch
+        With their nodes (the ends by input index, then the junctions) and kinds.
     centres : ndarray of shape (m, 2)
         The junctions the branches end at, CRS units.
+    radii : ndarray of shape (m,)
+        Their radii, CRS units.
 
     Raises
     ------
@@ -649,7 +755,22 @@ def _assemble(pieces, junctions, order):
         edges.append((ends[0][0], ends[1][0]))
     _check_tree(edges, len(order))
     used = sorted({node[1] for edge in edges for node in edge if node[0] == "junction"})
-    return branches, np.array([junctions.by_chains[key][0] for key in used]).reshape(-1, 2)
+    number = {key: len(order) + index for index, key in enumerate(used)}
+
+    def node_id(node):
+        return order[node[1]] if node[0] == "leaf" else number[node[1]]
+
+    branches = [
+        replace(
+            branch,
+            start_node=node_id(start),
+            end_node=node_id(end),
+            kind="loop" if start == end else ("arm" if "leaf" in (start[0], end[0]) else "inner"),
+        )
+        for branch, (start, end) in zip(branches, edges)
+    ]
+    centres = np.array([junctions.by_chains[key][0] for key in used]).reshape(-1, 2)
+    return branches, centres, np.array([junctions.by_chains[key][1] for key in used], dtype=float)
 
 
 def _check_tree(edges, k):
