@@ -18,7 +18,8 @@ polygon's local frame), pruned so that bank noise never makes an arm:
 4. **Ends.** Each remaining leaf is an arm. Its trunk (the skeleton path from the deepest leaf of what was
    pruned beyond it, through the arm and on to the farthest node of the pruned skeleton) is centred in its end
    cap exactly as :func:`.ends.find_ends` centres its two ends (the middle of a cut-off end, the tip of a bay
-   or a pointed arm, the apex of a rounded cap).
+   or a pointed arm, the apex of a rounded cap). Two ends closer than the narrower arm's width lie on one end
+   cap (the acute corner of a dam's end beside its middle): only the farther-reaching one is kept.
 
 Why ``min_arm_ratio = 1`` (see :data:`MIN_ARM_RATIO`): an arm must reach beyond the junction's incircle by at
 least the junction's width. A bump of the bank or a digitising step reaches a small fraction of the width (a
@@ -33,8 +34,9 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from .ends import ON_RING, _centred_ends, _frames, _local_box, _on_ring, _Rings, _Tips
+from .ends import ON_RING, _centred_ends, _frames, _local_box, _on_ring, _Rings, _Tips, find_ends
 from .errors import InvalidGeometryError, OptionError
+from .polyline import typical_width
 from .skeleton import joint_skeletons
 
 #: Default ``min_arm_ratio``: an arm is kept when it reaches beyond its junction's incircle by at least this
@@ -54,7 +56,7 @@ class ArmEnds:
         Width of each arm near its end (twice the largest clearance along its leaf branch), CRS units.
     reaches : ndarray of shape (k,)
         How far each arm reaches beyond the incircle of the junction it leaves, in widths of that junction
-        (``inf`` for the two ends of a shape without junction).
+        (``inf`` for the two ends of a shape without junction, and for a main-stem end added by rule 5).
     """
 
     points: np.ndarray
@@ -122,7 +124,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     graph.prune(ratio, length / scale)
     arms = graph.arms()
     if not arms:
-        return ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0))
+        return _with_main_stem(polygon, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     exterior = frame.local.exterior
     step = float(skeleton.steps[0])
     # An arm whose tip lies on an island's shore (a large bump of an island) is not an end of the network.
@@ -132,7 +134,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
         if exterior.distance(shapely.Point(graph.nodes[arm.trunk[0]])) <= graph.radii[arm.trunk[0]] + 2.0 * step
     ]
     if not arms:
-        return ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0))
+        return _with_main_stem(polygon, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     degree = np.bincount(skeleton.edges.ravel(), minlength=len(skeleton.nodes))
     trunks = [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step, False) for arm in arms]
     tips = _Tips(trunks)
@@ -141,19 +143,41 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     points = local * scale + origin
     if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
         points = np.array([_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in points])
-    points, keep = _distinct(points, 1e-5 * scale)
     widths = np.array([arm.width for arm in arms]) * scale
     reaches = np.array([arm.reach for arm in arms])
-    return ArmEnds(points, widths[keep], reaches[keep])
+    keep = _separate(points, widths, reaches)
+    return _with_main_stem(polygon, ArmEnds(points[keep], widths[keep], reaches[keep]))
 
 
-def _distinct(points, tolerance):
-    """Return the points without those within ``tolerance`` of an earlier one, and the indices kept."""
+def _with_main_stem(polygon, arms):
+    """Return the arm ends with the two ends :func:`.ends.find_ends` gives (its main stem) added where no arm
+    end lies within that arm's width of them (a main river ending in a basin wider than it is long beyond
+    its last junction), so the network always holds the polygon's centerline; their width is the polygon's
+    typical width and their reach ``inf``."""
+    main = find_ends(polygon)
+    points, widths, reaches = list(arms.points), list(arms.widths), list(arms.reaches)
+    width = typical_width(polygon.area, polygon.length / 2.0)
+    for end in (main.start, main.end):
+        xy = np.asarray(end.coords[0], dtype=float)
+        if all(np.hypot(*(xy - point)) > near for point, near in zip(points, widths)):
+            points.append(xy)
+            widths.append(width)
+            reaches.append(np.inf)
+    return ArmEnds(np.array(points, dtype=float).reshape(-1, 2), np.array(widths), np.array(reaches))
+
+
+def _separate(points, widths, reaches):
+    """Return the indices of the ends kept when two ends closer than the narrower arm's width are one end.
+
+    Two such ends lie on one end cap (a pointed corner of a dam's end beside its middle): the one reaching
+    farther beyond its junction is kept (the first one on a tie), the farthest-reaching ends first.
+    """
+    order = sorted(range(len(points)), key=lambda index: (-reaches[index], index))
     keep = []
-    for index, point in enumerate(points):
-        if all(np.hypot(*(point - points[other])) > tolerance for other in keep):
+    for index in order:
+        if all(np.hypot(*(points[index] - points[other])) > min(widths[index], widths[other]) for other in keep):
             keep.append(index)
-    return points[keep], keep
+    return sorted(keep)
 
 
 @dataclass
