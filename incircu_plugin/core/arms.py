@@ -16,7 +16,8 @@ polygon's local frame), pruned so that bank noise never makes an arm:
    result depends on the geometry only, never on the order in which branches were found. A branch between
    two leaves (the last one of an elongated shape) and a cycle (around an island) are never removed.
 4. **Ends.** Each remaining leaf is an arm. Its trunk (the skeleton path from the deepest leaf of what was
-   pruned beyond it, through the arm and on to the farthest node of the pruned skeleton) is centred in its end
+   pruned beyond it, through the arm and on along the longest branches, four times as long as the arm) is
+   centred in its end
    cap exactly as :func:`.ends.find_ends` centres its two ends (the middle of a cut-off end, the tip of a bay
    or a pointed arm, the apex of a rounded cap). Two ends closer than the narrower arm's width lie on one end
    cap (the acute corner of a dam's end beside its middle): only the farther-reaching one is kept.
@@ -34,7 +35,17 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from .ends import ON_RING, _centred_ends, _frames, _local_box, _on_ring, _Rings, _Tips, find_ends
+from .ends import (
+    ON_RING,
+    _centred_ends,
+    _ends_of_trunks,
+    _frames,
+    _joint_trunks,
+    _local_box,
+    _on_ring,
+    _Rings,
+    _Tips,
+)
 from .errors import InvalidGeometryError, OptionError
 from .polyline import typical_width
 from .skeleton import joint_skeletons
@@ -120,11 +131,12 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
         raise skeleton.errors[0]
     if len(skeleton.edges) == 0:
         raise InvalidGeometryError("The polygon is too thin or too small to find its arms automatically.")
+    main = _main_stem(frame, skeleton)
     graph = _Graph(skeleton.nodes, skeleton.radii, skeleton.edges)
     graph.prune(ratio, length / scale)
     arms = graph.arms()
     if not arms:
-        return _with_main_stem(polygon, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
+        return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     exterior = frame.local.exterior
     step = float(skeleton.steps[0])
     # An arm whose tip lies on an island's shore (a large bump of an island) is not an end of the network.
@@ -134,7 +146,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
         if exterior.distance(shapely.Point(graph.nodes[arm.trunk[0]])) <= graph.radii[arm.trunk[0]] + 2.0 * step
     ]
     if not arms:
-        return _with_main_stem(polygon, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
+        return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     degree = np.bincount(skeleton.edges.ravel(), minlength=len(skeleton.nodes))
     trunks = [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step, False) for arm in arms]
     tips = _Tips(trunks)
@@ -146,15 +158,24 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     widths = np.array([arm.width for arm in arms]) * scale
     reaches = np.array([arm.reach for arm in arms])
     keep = _separate(points, widths, reaches)
-    return _with_main_stem(polygon, ArmEnds(points[keep], widths[keep], reaches[keep]))
+    return _with_main_stem(polygon, main, ArmEnds(points[keep], widths[keep], reaches[keep]))
 
 
-def _with_main_stem(polygon, arms):
-    """Return the arm ends with the two ends :func:`.ends.find_ends` gives (its main stem) added where no arm
-    end lies within that arm's width of them (a main river ending in a basin wider than it is long beyond
-    its last junction), so the network always holds the polygon's centerline; their width is the polygon's
-    typical width and their reach ``inf``."""
-    main = find_ends(polygon)
+def _main_stem(frame, skeleton):
+    """Return the :class:`.ends.EndsResult` :func:`.ends.find_ends` gives for the frame's polygon, from the
+    skeleton already built (its main-stem rule, the same cap centring)."""
+    outcomes = [None]
+    trunks = _joint_trunks([frame], "main_stem", outcomes, lambda fraction: None, skeleton=skeleton)
+    if outcomes[0] is not None:
+        raise outcomes[0]
+    return _ends_of_trunks([frame], trunks)[0]
+
+
+def _with_main_stem(polygon, main, arms):
+    """Return the arm ends with the two ends of the main stem ``main`` (what :func:`.ends.find_ends` gives)
+    added where no arm end lies within that arm's width of them (a main river ending in a basin wider than it
+    is long beyond its last junction), so the network always holds the polygon's centerline; their width is
+    the polygon's typical width and their reach ``inf``."""
     points, widths, reaches = list(arms.points), list(arms.widths), list(arms.reaches)
     width = typical_width(polygon.area, polygon.length / 2.0)
     for end in (main.start, main.end):
@@ -209,6 +230,7 @@ class _Graph:
             neighbours[b].append(a)
         self.neighbours = neighbours
         self.branches = {}
+        self.lengths = {}
         self.incident = {}
         self.tails = {}
         self.next_id = 0
@@ -230,6 +252,7 @@ class _Graph:
         branch = self.next_id
         self.next_id += 1
         self.branches[branch] = np.asarray(path, dtype=np.int64)
+        self.lengths[branch] = self.length(self.branches[branch])
         for end in (path[0], path[-1]):
             self.incident.setdefault(end, set()).add(branch)
         return branch
@@ -237,6 +260,7 @@ class _Graph:
     def _remove(self, branch):
         """Remove a branch; return its node indices."""
         path = self.branches.pop(branch)
+        del self.lengths[branch]
         for end in (int(path[0]), int(path[-1])):
             self.incident[end].discard(branch)
         return path
@@ -268,7 +292,7 @@ class _Graph:
         tail = self.tails.get(leaf)
         beyond = 0.0 if tail is None else self.length(tail)
         tip = self.radii[leaf] if tail is None else self.radii[tail[0]]
-        return self.length(self.branches[branch]) + beyond + tip - self.radii[junction]
+        return self.lengths[branch] + beyond + tip - self.radii[junction]
 
     def _score(self, branch, ratio, length):
         """Return ``(share of its threshold reached, leaf, junction, reach in junction widths)`` or None."""
@@ -350,7 +374,7 @@ class _Graph:
             path = self.branches[branch]
             inward = path if path[0] == leaf else path[::-1]
             tail = self.tails.get(leaf, inward[:1])
-            onward = self._farthest_path(leaf)
+            onward = self._onward_path(leaf, 4.0 * (self._tail_reach(tail) + self.lengths[branch]))
             trunk = np.concatenate([tail, onward[1:]])
             inner = inward[:-1] if self.degree(int(inward[-1])) >= 3 else inward
             width = 2.0 * float(np.max(self.radii[np.concatenate([tail, inner])]))
@@ -359,34 +383,20 @@ class _Graph:
             arms.append(_Arm(trunk, width, reach))
         return arms
 
-    def _farthest_path(self, start):
-        """Return the node path from ``start`` to the farthest key node of the pruned skeleton (Dijkstra)."""
-        distance = {start: 0.0}
-        via = {start: None}
-        heap = [(0.0, start)]
-        done = set()
-        while heap:
-            here_distance, here = heapq.heappop(heap)
-            if here in done:
-                continue
-            done.add(here)
-            for branch in self.incident.get(here, ()):
-                path = self.branches[branch]
-                other = int(path[-1]) if path[0] == here else int(path[0])
-                candidate = here_distance + self.length(path)
-                if candidate < distance.get(other, np.inf):
-                    distance[other] = candidate
-                    via[other] = (here, branch)
-                    heapq.heappush(heap, (candidate, other))
-        farthest = max(distance, key=lambda node: (distance[node], tuple(self.nodes[node])))
-        pieces = []
-        node = farthest
-        while via[node] is not None:
-            previous, branch = via[node]
-            path = self.branches[branch]
-            pieces.append(path if path[-1] == node and path[0] == previous else path[::-1])
-            node = previous
-        if not pieces:
-            return np.array([start], dtype=np.int64)
-        pieces = pieces[::-1]
-        return np.concatenate([pieces[0]] + [piece[1:] for piece in pieces[1:]])
+    def _onward_path(self, start, reach):
+        """Return a node path from ``start`` into the pruned skeleton at least ``reach`` long (local units) or
+        ending at a leaf: at each junction it takes the longest branch not yet walked."""
+        path = [np.array([start], dtype=np.int64)]
+        here, walked, length = start, set(), 0.0
+        while length < reach:
+            choices = [branch for branch in self.incident.get(here, ()) if branch not in walked]
+            if not choices:
+                break
+            branch = max(choices, key=lambda b: (self.lengths[b], -b))
+            walked.add(branch)
+            nodes = self.branches[branch]
+            nodes = nodes if nodes[0] == here else nodes[::-1]
+            path.append(nodes[1:])
+            length += self.lengths[branch]
+            here = int(nodes[-1])
+        return np.concatenate(path)

@@ -30,7 +30,6 @@ three or more; otherwise :class:`IncirCuError` says so.
 """
 
 from dataclasses import dataclass, replace
-from functools import partial
 from typing import Optional
 
 import numpy as np
@@ -47,10 +46,11 @@ from .chains import (
     split_polygon,
     validate_polygon,
 )
-from .engine import CenterlineResult, centerline_from_chains
-from .errors import Cancelled, IncirCuError, SplitPointError, format_point
+from .engine import CenterlineResult, centerline_from_chains, centerline_steps
+from .errors import IncirCuError, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
+from .steps import run_together
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9
@@ -60,6 +60,9 @@ EMPTY_CIRCLE_TOLERANCE = 1e-9
 
 #: Most Newton steps locating one junction.
 NEWTON_STEPS = 60
+
+#: Chains with at most this many segments are measured without a spatial index (see ``_Boundary.nearest``).
+BRUTE_FORCE_SEGMENTS = 4096
 
 
 @dataclass(frozen=True)
@@ -221,12 +224,7 @@ def polygon_network(
     boundary = _Boundary(chains, extent)
     junctions = _Junctions(boundary)
     pieces = []
-    for i in range(k - 1):
-        c2 = _complement(chains, i)
-        report = None if progress is None else partial(_run_progress, progress, i, k - 1)
-        result = centerline_from_chains(chains[i], c2, spacing, progress=report, **engine_options)
-        if report is not None and report(1.0) is False:
-            raise Cancelled()
+    for i, result in enumerate(_runs(chains, spacing, progress, engine_options)):
         pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
     branches, centres, radii = _assemble(pieces, junctions, order)
     snapped = np.empty((k, 2))
@@ -366,9 +364,29 @@ def _as_xy(point):
     return np.asarray(point.coords[0] if isinstance(point, Point) else point, dtype=float)[:2]
 
 
-def _run_progress(progress, run, runs, fraction):
-    """Report the progress of run ``run`` of ``runs`` as a fraction of the whole network."""
-    return progress(float((run + fraction) / runs))
+def _runs(chains, spacing, progress, engine_options):
+    """Return the centerlines between ``C_i`` and ``D_i`` for ``i < k - 1``, traced together.
+
+    One run (two chains) is traced alone, exactly as :func:`polygon_centerline` traces it; more runs are
+    traced side by side in one adaptive tracing (:func:`.steps.run_together`), the same lines up to float64
+    rounding at a fraction of the cost of tracing them one by one.
+
+    Raises
+    ------
+    Cancelled
+        When ``progress`` returned False.
+    IncirCuError
+        The first run's error, if one failed.
+    """
+    k = len(chains)
+    if k == 2:
+        return [centerline_from_chains(chains[0], chains[1][::-1], spacing, progress=progress, **engine_options)]
+    steps = [centerline_steps(chains[i], _complement(chains, i), spacing, **engine_options) for i in range(k - 1)]
+    results = run_together(steps, progress=progress)
+    for result in results:
+        if isinstance(result, Exception):
+            raise result
+    return results
 
 
 def _ring_order(polygon, split_points, tolerance):
@@ -450,30 +468,20 @@ def _complement(chains, i):
 def _vertex_labels(result, i, boundary):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
-    The feet follow ``D_i`` along the line, so the labels only change ``k - 2`` times at most: they are
-    found by bisection (the nearest chain of a foot is computed for O(k log n) vertices, not all of them).
-    Labels that go back against ``D_i``'s order (a foot at the very junction) take the label before them.
+    Each foot lies on the ring (the chains end to end, counter-clockwise): its arc length there names its
+    chain (one index query for all the feet of the run). A foot at ``p_i`` or ``p_{i+1}`` itself, which the
+    ring may place on ``C_i``, takes the neighbouring chain. Labels that go back against ``D_i``'s order (a
+    foot at the very junction) take the label before them.
     """
     k = len(boundary.chains)
     feet = np.asarray(result.foot_b, dtype=float)
-    count = len(feet)
-    labels = np.full(count, -1)
+    labels = boundary.chain_at(feet)
+    own = labels == i
+    if np.any(own):
+        start, end = boundary.starts[i], boundary.starts[i + 1]
+        nearer_start = boundary.ring.nearest(feet[own])[1] - start <= end - boundary.ring.nearest(feet[own])[1]
+        labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
-    others = [j for j in range(k) if j != i]
-
-    def label(index):
-        if labels[index] < 0:
-            labels[index] = others[int(np.argmin([boundary.nearest(feet[index], j)[0] for j in others]))]
-        return labels[index]
-
-    spans = [(0, count - 1)]
-    while spans:
-        low, high = spans.pop()
-        if label(low) == label(high):
-            labels[low:high] = labels[low]
-        elif high - low > 1:
-            middle = (low + high) // 2
-            spans.extend([(low, middle), (middle, high)])
     rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
     return np.mod(i - 1 - rank, k)
 
@@ -485,17 +493,51 @@ class _Boundary:
         self.chains = chains
         self.indexed = [None] * len(chains)
         self.extent = extent
+        self.ring = IndexedPolyline(np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]]))
+        ends = np.cumsum([0] + [len(chain) - 1 for chain in chains])
+        #: Arc length on the ring where each chain starts (and the ring's length last), CRS units.
+        self.starts = self.ring.cumulative[ends]
+
+    def chain_at(self, points):
+        """Return the chain each point of the ring lies on (the first one at a split point)."""
+        along = self.ring.nearest(points)[1]
+        return np.clip(np.searchsorted(self.starts, along, side="right") - 1, 0, len(self.chains) - 1)
 
     def nearest(self, point, chain):
-        """Return the distance from ``point`` to chain ``chain`` and the foot there."""
-        if self.indexed[chain] is None:
-            self.indexed[chain] = IndexedPolyline(self.chains[chain])
-        distance, _, foot = self.indexed[chain].nearest(np.asarray(point, dtype=float)[None])
-        return float(distance[0]), foot[0]
+        """Return the distance from ``point`` to chain ``chain`` and the foot there.
 
-    def distances(self, point):
-        """Return the distance from ``point`` to every chain."""
-        return np.array([self.nearest(point, chain)[0] for chain in range(len(self.chains))])
+        A chain of at most ``BRUTE_FORCE_SEGMENTS`` segments is measured segment by segment in one numpy pass
+        (a few microseconds; the junctions ask one point at a time), a longer one through its spatial index.
+        """
+        point = np.asarray(point, dtype=float)
+        if self.indexed[chain] is None:
+            xy = np.asarray(self.chains[chain], dtype=float)
+            if len(xy) - 1 <= BRUTE_FORCE_SEGMENTS and len(xy) > 1:
+                direction = np.diff(xy, axis=0)
+                self.indexed[chain] = (xy[:-1], direction, np.einsum("ij,ij->i", direction, direction))
+            else:
+                self.indexed[chain] = IndexedPolyline(xy)
+        indexed = self.indexed[chain]
+        if isinstance(indexed, IndexedPolyline):
+            distance, _, foot = indexed.nearest(point[None])
+            return float(distance[0]), foot[0]
+        start, direction, squared = indexed
+        offset = point - start
+        along = np.clip(np.einsum("ij,ij->i", offset, direction) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
+        gap = offset - along[:, None] * direction
+        distances = np.hypot(gap[:, 0], gap[:, 1])
+        nearest = int(np.argmin(distances))
+        return float(distances[nearest]), start[nearest] + along[nearest] * direction[nearest]
+
+    def distances_within(self, point, reach):
+        """Return ``{chain: distance}`` for the chains nearer than ``reach`` to ``point`` (CRS units): one
+        index query on the ring, then the exact distance to each chain found."""
+        segments = self.ring.tree.query(Point(point), predicate="dwithin", distance=reach)
+        near = {int(chain) for chain in np.searchsorted(self.starts, self.ring.cumulative[segments], side="right") - 1}
+        # A segment starting at a chain's end vertex belongs to the next chain; its predecessor may be near too.
+        near |= {(chain - 1) % len(self.chains) for chain in near}
+        found = {chain: self.nearest(point, chain)[0] for chain in sorted(near)}
+        return {chain: distance for chain, distance in found.items() if distance < reach}
 
 
 class _Junctions:
@@ -523,13 +565,9 @@ class _Junctions:
         key = tuple(sorted((i, a, b)))
         if key not in self.by_chains:
             centre = _newton_junction(self.boundary, key, start, end)
-            distances = self.boundary.distances(centre)
-            radius = float(np.mean(distances[list(key)]))
-            inside = [
-                m
-                for m in np.argsort(distances)
-                if m not in key and distances[m] < radius * (1.0 - EMPTY_CIRCLE_TOLERANCE)
-            ]
+            radius = float(np.mean([self.boundary.nearest(centre, chain)[0] for chain in key]))
+            distances = self.boundary.distances_within(centre, radius * (1.0 - EMPTY_CIRCLE_TOLERANCE))
+            inside = [m for m in sorted(distances, key=distances.get) if m not in key]
             if inside:
                 between = _between_in_order(i, a, b, int(inside[0]), len(self.boundary.chains))
                 if between is None or depth > len(self.boundary.chains):
