@@ -479,8 +479,8 @@ def _vertex_labels(result, i, boundary):
     own = labels == i
     if np.any(own):
         start, end = boundary.starts[i], boundary.starts[i + 1]
-        nearer_start = boundary.ring.nearest(feet[own])[1] - start <= end - boundary.ring.nearest(feet[own])[1]
-        labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
+        along = boundary.ring.nearest(feet[own])[1]
+        labels[own] = np.where(along - start <= end - along, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
     rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
     return np.mod(i - 1 - rank, k)
@@ -637,10 +637,12 @@ def _newton_from(boundary, key, x):
         if np.any(distances <= 0.0):
             return None
         gradients = (x - feet) / distances[:, None]
-        try:
-            step = np.linalg.solve(gradients[0] - gradients[1:], -value)
-        except np.linalg.LinAlgError:
+        (a, b), (c, d) = gradients[0] - gradients[1:]
+        determinant = a * d - b * c
+        if determinant == 0.0 or not np.isfinite(determinant):
             return None
+        # The 2 x 2 system by Cramer's rule (numpy's solver costs more than the distances here).
+        step = np.array([d * -value[0] - b * -value[1], a * -value[1] - c * -value[0]]) / determinant
         for _ in range(40):
             trial = residual(x + step)
             if np.max(np.abs(trial[0])) < np.max(np.abs(value)) or np.hypot(*step) <= step_floor:
