@@ -42,7 +42,7 @@ def extent_of(polygon):
 def test_automatic_ends_are_the_middles_of_the_cut_off_ends_and_the_network_is_exact(name, coverage):
     polygon, caps, *_ = getattr(cases, name)()
     network = polygon_network(polygon)
-    assert network.ends_from == "automatic" and all(network.automatic)
+    assert network.ends_from == "automatic" and set(network.end_sources) == {"automatic"}
     assert same_points(network.split_points, caps, RELATIVE * extent_of(polygon))
     check_network(polygon, network, coverage=coverage / 100.0)
 
@@ -195,7 +195,11 @@ def test_one_given_split_point_replaces_the_automatic_end_of_its_arm():
     polygon, caps, _, _ = cases.t_junction()
     given = (-50.0, 3.0)  # across the west end, off its middle
     network = polygon_network(polygon, [given])
-    assert network.ends_from == "split_points_and_automatic" and network.automatic == (False, True, True)
+    assert network.ends_from == "split_points_and_automatic" and network.end_sources == (
+        "split_point",
+        "automatic",
+        "automatic",
+    )
     assert tuple(network.split_points[0]) == given
     assert same_points(network.split_points[1:], caps[1:], RELATIVE * 100.0)
     check_network(polygon, network)

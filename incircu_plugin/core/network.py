@@ -114,10 +114,11 @@ class NetworkResult:
         automatically).
     junction_radii : ndarray of shape (m,)
         Radius of each junction's circle, CRS units.
-    automatic : tuple of bool
-        Per row of ``split_points``: whether it was found automatically (see :mod:`.arms`).
+    end_sources : tuple of str
+        Per row of ``split_points``: ``"split_point"`` (given), ``"gate"`` (see ``gates`` of
+        :func:`polygon_network`) or ``"automatic"`` (see :mod:`.arms`).
     ends_from : {"split_points", "automatic", "split_points_and_automatic"}
-        Where the ends came from.
+        Where the ends came from (gates count as split points).
     chain_nodes : tuple of (int, int)
         For each chain, the rows of ``split_points`` (node ids) at its start and end: ``chains`` before
         :func:`multipolygon_networks` renumbers it.
@@ -129,7 +130,7 @@ class NetworkResult:
     junctions: np.ndarray
     point_indices: Optional[tuple] = None
     junction_radii: Optional[np.ndarray] = None
-    automatic: tuple = ()
+    end_sources: tuple = ()
     ends_from: str = "split_points"
     chain_nodes: tuple = ()
 
@@ -161,6 +162,7 @@ def polygon_network(
     islands="main_channel",
     min_arm_ratio=MIN_ARM_RATIO,
     min_arm_length=None,
+    gates=None,
     progress=None,
     **engine_options,
 ):
@@ -182,6 +184,10 @@ def polygon_network(
         widths of that junction (see :mod:`.arms`).
     min_arm_length : float, optional
         Automatic ends only: shortest reach of an arm beyond its junction's incircle, CRS units.
+    gates : sequence of Point or (x, y), optional
+        Ends shared with a touching polygon (see :func:`.touching.touching_gates`), on the exterior ring: each
+        replaces the automatic end nearest to it when within that arm's width and is an end otherwise;
+        with two or more split points they are ends besides those.
     spacing : float, optional
         Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
     snap_tolerance : float, optional
@@ -213,9 +219,13 @@ def polygon_network(
     check_island_mode(islands)
     split_points = [] if split_points is None else list(split_points)
     given = len(split_points)
+    gates = [] if gates is None else list(gates)
+    sources = ["split_point"] * given + ["gate"] * len(gates)
+    split_points = split_points + gates
     if given < 2:
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
         split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length)
+    sources += ["automatic"] * (len(split_points) - len(sources))
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
     chains = _bridged_chains(polygon, points, snap_tolerance, islands)
@@ -229,7 +239,7 @@ def polygon_network(
     branches, centres, radii = _assemble(pieces, junctions, order)
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
-    automatic = tuple(index >= given for index in range(k)) if given < 2 else (False,) * k
+    automatic = "automatic" in sources
     return NetworkResult(
         branches=tuple(branches),
         split_points=snapped,
@@ -237,13 +247,15 @@ def polygon_network(
         junctions=centres,
         junction_radii=radii,
         chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
-        automatic=automatic,
-        ends_from="split_points" if given >= 2 else ("automatic" if given == 0 else "split_points_and_automatic"),
+        end_sources=tuple(sources),
+        ends_from=("split_points_and_automatic" if len(sources) > sources.count("automatic") else "automatic")
+        if automatic
+        else "split_points",
     )
 
 
 def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
-    """Return the given split points (none or one) followed by the automatic arm ends they do not replace.
+    """Return the given points followed by the automatic arm ends they do not replace.
 
     A given point replaces the automatic end nearest to it when it lies within that arm's width of it (a
     split point placed anywhere across the arm's end).
@@ -253,7 +265,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
     polygon : Polygon
         CRS units; its holes as the network sees them.
     split_points : sequence of Point or (x, y)
-        At most one, CRS units.
+        CRS units (one split point and any gates).
     min_arm_ratio, min_arm_length : float
         See :func:`.arms.find_arm_ends`.
 
@@ -284,7 +296,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
     return points
 
 
-def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **options):
+def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, gates=None, **options):
     """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
 
     A part takes the split points within ``snap_tolerance`` of its exterior ring; with fewer than two, the
@@ -299,14 +311,17 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
         Candidate split points for all parts.
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
+    gates : sequence of Point or (x, y), optional
+        Gates for all parts (see :func:`polygon_network`); a part takes those within ``snap_tolerance`` of
+        its exterior ring.
     **options
         Passed to :func:`polygon_network` (``spacing``, ``islands``, ``progress``, ...).
 
     Returns
     -------
     list of PartOutcome
-        One per part, in input order; a result's split point indices refer to ``split_points`` (None for an
-        end found automatically).
+        One per part, in input order; a result's split point indices refer to ``split_points`` (None for a
+        gate or an end found automatically).
 
     Raises
     ------
@@ -325,16 +340,19 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, **opti
     [[(1, 3)], [(0, 2)]]
     """
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
+    gate_points = list(shapely.points(np.asarray(gates, dtype=float).reshape(-1, 2))) if gates is not None else []
     progress = options.pop("progress", None)
     outcomes = []
     for index, (part, near) in enumerate(parts):
         try:
             # What is wrong with the polygon itself comes first (as for a centerline), then its split points.
             validate_polygon(part)
+            part_gates = [gate for gate in gate_points if part.exterior.distance(gate) <= snap_tolerance]
             network = polygon_network(
                 part,
                 [points[i] for i in near],
                 snap_tolerance=snap_tolerance,
+                gates=part_gates,
                 progress=part_progress(progress, index, len(parts)),
                 **options,
             )
@@ -617,10 +635,61 @@ def _newton_junction(boundary, key, start, end):
         found = _newton_from(boundary, key, start + fraction * (end - start))
         if found is not None:
             return found
+    found = _junction_off_a_split_point(boundary, key)
+    if found is not None:
+        return found
     raise IncirCuError(
         f"The junction near {format_point(0.5 * (start + end))} could not be located: its circle touches a chain "
         "at several places or a split point itself. Move the split points farther out along the arms."
     )
+
+
+def _junction_off_a_split_point(boundary, key):
+    """Return the junction whose circle touches a split point shared by two of the chains ``key`` and the
+    third chain, or None.
+
+    A split point ``p`` on a smooth stretch of bank (a gate in the middle of a side, where a touching
+    polygon's reach joins) makes the two chains meeting there equidistant from every point of the inward
+    normal at ``p`` near it: Newton's system is singular there. The junction is the point ``p + t n`` of that
+    normal at distance ``t`` from the third chain, found by bisection, and kept when ``p`` is indeed nearest
+    to it on both chains (the circle is empty of them).
+    """
+    k = len(boundary.chains)
+    for m in key:
+        before = (m - 1) % k
+        if before not in key:
+            continue
+        (third,) = set(key) - {m, before}
+        point = boundary.chains[m][0]
+        incoming = boundary.chains[before][-1] - boundary.chains[before][-2]
+        outgoing = boundary.chains[m][1] - boundary.chains[m][0]
+        tangent = incoming / np.hypot(*incoming) + outgoing / np.hypot(*outgoing)
+        if not np.any(tangent):
+            continue
+        tangent = tangent / np.hypot(*tangent)
+        normal = np.array([-tangent[1], tangent[0]])  # inward: the ring runs counter-clockwise
+
+        low, high = 0.0, boundary.extent
+        if _excess(boundary, point, normal, third, high) > 0.0:
+            continue
+        for _ in range(200):
+            middle = 0.5 * (low + high)
+            if high - middle <= 4.0 * float(np.spacing(boundary.extent + np.max(np.abs(point)))):
+                break
+            if _excess(boundary, point, normal, third, middle) > 0.0:
+                low = middle
+            else:
+                high = middle
+        centre = point + high * normal
+        distances = [boundary.nearest(centre, chain)[0] for chain in key]
+        if max(distances) - min(distances) <= JUNCTION_TOLERANCE * boundary.extent:
+            return centre
+    return None
+
+
+def _excess(boundary, point, normal, chain, t):
+    """How much farther than ``t`` the point ``point + t normal`` lies from chain ``chain``, CRS units."""
+    return boundary.nearest(point + t * normal, chain)[0] - t
 
 
 def _newton_from(boundary, key, x):
