@@ -336,6 +336,20 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             help_template.format(pass_through=pass_through, ignore=ignore),
         )
 
+    def add_connect_touching_parameter(self):
+        """Add ``CONNECT_TOUCHING`` (gates between touching features)."""
+        self.add_optional_parameter(
+            QgsProcessingParameterBoolean(
+                self.CONNECT_TOUCHING, self.tr("Connect features that share a boundary"), False
+            ),
+            self.tr(
+                "Where two polygons of the layer share a stretch of boundary (a river cut into reaches, water or "
+                "road-area pieces), the middle of that stretch becomes an end of both, so their lines meet there "
+                "exactly (and, in a network, share the node id). A polygon with one such gate gets its other "
+                "end(s) automatically."
+            ),
+        )
+
     def add_m_parameter(self):
         """Add ``ADD_M`` (store the local width as M value)."""
         self.add_optional_parameter(

@@ -51,6 +51,12 @@ JUNCTION = "junction"
 #: Value of ``from_point``/``to_point`` at an end found automatically.
 AUTOMATIC = "auto"
 
+#: Value of ``from_point``/``to_point`` at a gate (``CONNECT_TOUCHING``).
+GATE = "gate"
+
+#: An end this close to a gate, as a fraction of its network's extent, is the gate (see ``core.layers``).
+GATE_SNAP = 1e-9
+
 
 class NetworkWriter:
     """Creates the branch layer of the network algorithm and writes networks into it.
@@ -98,13 +104,20 @@ class NetworkWriter:
         """Return the output ids keyed by parameter name."""
         return {self.output_name: self.sink_id, self.nodes_name: self.nodes_id}
 
-    def _node_ids(self, network, coordinates):
-        """Return the layer-wide id of each node of a network (its ``nodes`` rows in layer coordinates): an end
-        takes the id of an earlier end at exactly the same place, a junction a new id; degrees are added up."""
+    def _node_ids(self, network, coordinates, gates):
+        """Return the layer-wide id of each node of a network (its ``nodes`` rows in layer coordinates, its ends
+        moved onto the gates within ``GATE_SNAP`` of its extent, in place): an end takes the id of an earlier
+        end at exactly the same place, a junction a new id; degrees are added up."""
+        count = len(network.split_points)
+        if len(gates):
+            extent = float(np.hypot(*np.ptp(coordinates, axis=0)))
+            for row in range(count):
+                distance = np.hypot(*(gates - coordinates[row]).T)
+                if distance.min() <= GATE_SNAP * extent:
+                    coordinates[row] = gates[int(np.argmin(distance))]
         ids = []
         degrees = network.node_degrees
         radii = network.node_radii
-        count = len(network.split_points)
         for row, xy in enumerate(map(tuple, coordinates.tolist())):
             if row < count and xy in self.end_ids:
                 node = self.end_ids[xy]
@@ -126,23 +139,24 @@ class NetworkWriter:
         the ids of the split points the network's indices refer to; ``frame`` is the working frame the
         networks are expressed in.
         """
-        for _, network, ids in parts:
-            node_ids = self._node_ids(network, frame.to_layer(network.nodes))
+        for _, network, ids, gates in parts:
+            nodes = np.array(frame.to_layer(network.nodes), dtype=float)
+            node_ids = self._node_ids(network, nodes, np.asarray(gates, dtype=float).reshape(-1, 2))
             names = [
-                str(ids[index]) if index is not None else f"{AUTOMATIC}:{node_ids[row]}"
+                str(ids[index]) if index is not None else f"{network.end_sources[row][:4]}:{node_ids[row]}"
                 for row, index in enumerate(network.point_indices)
             ]
             chains = [f"{names[start]}-{names[end]}" for start, end in network.chain_nodes]
             for branch in network.branches:
                 result = branch.result
-                coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
+                coordinates = np.array(frame.to_layer(np.asarray(result.line.coords, dtype=float)), dtype=float)
+                # The ends exactly at their nodes (a gate's coordinates after a geographic round trip).
+                coordinates[0], coordinates[-1] = nodes[branch.start_node], nodes[branch.end_node]
                 statistics = width_statistics([result])
                 added = {
                     "source_fid": source_fid,
-                    "from_point": self._point_name(
-                        branch.start_point, branch.start_node, len(network.split_points), ids
-                    ),
-                    "to_point": self._point_name(branch.end_point, branch.end_node, len(network.split_points), ids),
+                    "from_point": self._point_name(network, branch.start_point, branch.start_node, ids),
+                    "to_point": self._point_name(network, branch.end_point, branch.end_node, ids),
                     "from_node": node_ids[branch.start_node],
                     "to_node": node_ids[branch.end_node],
                     "kind": branch.kind,
@@ -162,8 +176,10 @@ class NetworkWriter:
                 self.centerline_count += 1
 
     @staticmethod
-    def _point_name(point, node, ends, ids):
-        """Return ``from_point``/``to_point``: the split point's id, "auto" at an automatic end, or "junction"."""
+    def _point_name(network, point, node, ids):
+        """Return ``from_point``/``to_point``: the split point's id, "gate", "auto" or "junction"."""
         if point is not None:
             return str(ids[point])
-        return AUTOMATIC if node < ends else JUNCTION
+        if node >= len(network.split_points):
+            return JUNCTION
+        return GATE if network.end_sources[node] == "gate" else AUTOMATIC

@@ -25,6 +25,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
+    CONNECT_TOUCHING = "CONNECT_TOUCHING"
     END_RULE = "END_RULE"
     GUIDE_LINES = "GUIDE_LINES"
 
@@ -131,6 +132,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "input feature."
             ),
         )
+        self.add_connect_touching_parameter()
         self.add_result_parameters()
 
     def process_features(self, run, parameters, context, feedback):
@@ -160,6 +162,11 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guides.append(guide_feature.geometry())
 
         options = dict(sampling, islands=islands, end_rule=end_rule, snap_tolerance=snap_tolerance or None)
+        gates = None
+        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
+            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
+
+            gates = LayerGates(run, source)
 
         def task(feature):
             if not run.has_geometry(feature):
@@ -167,7 +174,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
-            core_geometry = run.frame.to_core(geometry)
+            core_geometry = None
+            if gates is not None:
+                # The gates are split points; the geometry carries them as vertices, so the line ends there.
+                core_geometry, core_gates, _ = gates.of(feature.id(), run.frame)
+                candidates = [*candidates, *core_gates]
+            if core_geometry is None:
+                core_geometry = run.frame.to_core(geometry)
             steps = run.core.multipolygon_centerline_steps(
                 core_geometry,
                 candidates if len(candidates) else None,

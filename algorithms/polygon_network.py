@@ -23,6 +23,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     MIN_ARM_RATIO = "MIN_ARM_RATIO"
     MIN_ARM_LENGTH = "MIN_ARM_LENGTH"
     OUTPUT_NODES = "OUTPUT_NODES"
+    CONNECT_TOUCHING = "CONNECT_TOUCHING"
 
     ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
@@ -129,6 +130,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             advanced=True,
         )
+        self.add_connect_touching_parameter()
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
@@ -178,6 +180,11 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
+        gates = None
+        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
+            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
+
+            gates = LayerGates(run, source)
         run.use_writer(NetworkWriter(self, parameters, context, source.fields(), crs, add_m), crs)
         split_points = SplitPoints(split_source, crs, context, id_field)
 
@@ -185,12 +192,16 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, ids = split_points.near(geometry, snap_tolerance, run.frame)
+            core_geometry, core_gates, layer_gates = None, [], []
+            if gates is not None:
+                core_geometry, core_gates, layer_gates = gates.of(feature.id(), run.frame)
             outcomes = run.compute(
                 feature.id(),
                 None,
                 run.core.multipolygon_networks,
-                run.frame.to_core(geometry),
+                run.frame.to_core(geometry) if core_geometry is None else core_geometry,
                 candidates,
+                gates=core_gates,
                 snap_tolerance=snap_tolerance or None,
                 **sampling,
                 islands=islands,
@@ -203,6 +214,6 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 if outcome.error is not None:
                     run.skip(feature.id(), str(outcome.error), outcome.part_index if several else None)
                     continue
-                parts.append((outcome.part_index, outcome.result, ids))
+                parts.append((outcome.part_index, outcome.result, ids, layer_gates))
             run.write(feature, parts)
         return run.finish()

@@ -69,7 +69,7 @@ def test_touching_gates_are_the_middles_of_shared_stretches_and_vertices_of_both
 
 
 def test_a_gate_in_the_middle_of_a_bank_is_joined_by_an_exact_junction():
-    polygon, caps, _, _ = cases.t_junction()
+    polygon, _, _, _ = cases.t_junction()
     network = polygon_network(polygon, [(20.0, -5.0)])
     assert len(network.split_points) == 4
     check_network(polygon, network)

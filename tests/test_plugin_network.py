@@ -207,3 +207,34 @@ def test_branches_of_geopackage_features_get_their_own_fid(provider, tmp_path):
     assert len({branch.id() for branch in branches}) == len(branches)
     for branch in branches:
         assert names[branch["source_fid"]] == branch["name"]
+
+
+@pytest.mark.parametrize("crs", ["EPSG:2180", "EPSG:4326"])
+def test_touching_reaches_meet_exactly_and_share_their_node(provider, crs):
+    # A river cut into three reaches (in degrees: about 70 m by 10 m at 52 N); the cuts are slanted.
+    scale = (1.0 / 68_000.0, 1.0 / 111_000.0) if crs == "EPSG:4326" else (1.0, 1.0)
+    offset = (19.0, 52.0) if crs == "EPSG:4326" else (0.0, 0.0)
+    outline = [
+        [(0, 0), (30, 0), (32, 10), (0, 10)],
+        [(30, 0), (60, 0), (57, 10), (32, 10)],
+        [(60, 0), (90, 0), (90, 10), (57, 10)],
+    ]
+    reaches = [Polygon([(offset[0] + x * scale[0], offset[1] + y * scale[1]) for x, y in ring]) for ring in outline]
+    layer = memory_layer("Polygon", crs, [(reach, f"reach {i}") for i, reach in enumerate(reaches)])
+    results, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True, "OUTPUT_NODES": "memory:"})
+    assert results["CENTERLINE_COUNT"] == 3 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    lines = {feature["name"]: feature for feature in results["OUTPUT"].getFeatures()}
+    ends = {name: as_shapely(feature.geometry()).coords for name, feature in lines.items()}
+    for a, b in (("reach 0", "reach 1"), ("reach 1", "reach 2")):
+        shared = {ends[a][0], ends[a][-1]} & {ends[b][0], ends[b][-1]}
+        assert len(shared) == 1, (a, b)  # end-to-end distance exactly 0
+        nodes_a = {lines[a]["from_node"], lines[a]["to_node"]}
+        assert len(nodes_a & {lines[b]["from_node"], lines[b]["to_node"]}) == 1
+    degrees = sorted(feature["degree"] for feature in results["OUTPUT_NODES"].getFeatures())
+    assert degrees == [1, 1, 2, 2]
+    assert {lines["reach 1"]["from_point"], lines["reach 1"]["to_point"]} == {"gate"}
+    centerlines, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True}, algorithm="polygoncenterline")
+    assert centerlines["SKIPPED_COUNT"] == 0, feedback.warnings
+    cl = [as_shapely(feature.geometry()).coords for feature in centerlines["OUTPUT"].getFeatures()]
+    assert len({cl[0][0], cl[0][-1]} & {cl[1][0], cl[1][-1]}) == 1
+    assert len({cl[1][0], cl[1][-1]} & {cl[2][0], cl[2][-1]}) == 1
