@@ -56,7 +56,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             " to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least 'Minimum"
             " arm length, in junction widths' (bank noise and small bays do not). Each branch is one line feature "
             "with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the "
-            "split points at its ends ('auto' at an automatic end, 'junction' at a junction), the chains on its "
+            "split points at its ends ('gate' at a gate, 'auto' at an automatic end, 'junction' at a junction), the "
+            "chains on its "
             "right and left, its length and widths; the M value of each vertex is the local width. Two split points"
             " give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or "
             "ignored."
@@ -138,7 +139,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             self.tr(
                 "Line layer, one feature per branch: input attributes plus source_fid (the polygon's feature id, "
-                "to join the branch back to it), from_point, to_point (split point ids, 'auto' or 'junction'), "
+                "to join the branch back to it), from_point, to_point (split point ids, 'gate', 'auto' or 'junction'), "
                 "from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends "
                 "coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named 'a-b' after the "
                 "ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle "
