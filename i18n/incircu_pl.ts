@@ -9,47 +9,47 @@
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="355"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="391"/>
+        <location filename="../algorithms/base.py" line="405"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="401"/>
+        <location filename="../algorithms/base.py" line="415"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="401"/>
+        <location filename="../algorithms/base.py" line="415"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="406"/>
+        <location filename="../algorithms/base.py" line="420"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="406"/>
+        <location filename="../algorithms/base.py" line="420"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -94,22 +94,22 @@
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="355"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="391"/>
+        <location filename="../algorithms/base.py" line="405"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
@@ -119,7 +119,7 @@
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="363"/>
+        <location filename="../algorithms/base.py" line="377"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
@@ -169,7 +169,7 @@
         <translation>Pomijaj wyspy</translation>
     </message>
     <message>
-        <location filename="../algorithms/network_outputs.py" line="91"/>
+        <location filename="../algorithms/network_outputs.py" line="171"/>
         <source>Could not write a branch: {}</source>
         <translation>Nie można zapisać gałęzi: {}</translation>
     </message>
@@ -212,6 +212,16 @@
         <location filename="../algorithms/running.py" line="118"/>
         <source>Z values are ignored: &apos;{}&apos; has Z, but the centerline is computed in the plane and written without Z (its M values, when stored, are the local width).</source>
         <translation>Wartości Z są pomijane: '{}' ma współrzędną Z, ale linia środkowa jest obliczana na płaszczyźnie i zapisywana bez Z (jej wartości M, jeśli są zapisywane, to lokalna szerokość).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="341"/>
+        <source>Connect features that share a boundary</source>
+        <translation>Połącz obiekty o wspólnej granicy</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="341"/>
+        <source>Where two polygons of the layer share a stretch of boundary (a river cut into reaches, water or road-area pieces), the middle of that stretch becomes an end of both, so their lines meet there exactly (and, in a network, share the node id). A polygon with one such gate gets its other end(s) automatically.</source>
+        <translation>Gdzie dwa poligony warstwy mają wspólny odcinek granicy (rzeka pocięta na odcinki, kawałki wód lub powierzchni dróg), środek tego odcinka staje się końcem obu, więc ich linie spotykają się tam dokładnie (a w sieci mają wspólny identyfikator węzła). Poligon z jedną taką bramą dostaje pozostałe końce automatycznie.</translation>
     </message>
 </context>
 <context>
@@ -320,197 +330,227 @@
 <context>
     <name>PolygonCenterlineAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="56"/>
+        <location filename="../algorithms/polygon_centerline.py" line="57"/>
         <source>centerline,centreline,medial axis,skeleton,river,road,dike,width,incircle</source>
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="71"/>
+        <location filename="../algorithms/polygon_centerline.py" line="72"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="80"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="128"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="126"/>
+        <location filename="../algorithms/polygon_centerline.py" line="128"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="39"/>
+        <location filename="../algorithms/polygon_centerline.py" line="40"/>
         <source>Centerline of polygons</source>
         <translation>Linia środkowa poligonów</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="42"/>
+        <location filename="../algorithms/polygon_centerline.py" line="43"/>
         <source>One unbranched centerline through each elongated polygon (river, road, dike).</source>
         <translation>Jedna nierozgałęziona linia środkowa każdego wydłużonego poligonu (rzeki, drogi, wału).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="45"/>
+        <location filename="../algorithms/polygon_centerline.py" line="46"/>
         <source>Centerlines of polygons</source>
         <translation>Linie środkowe poligonów</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="59"/>
+        <location filename="../algorithms/polygon_centerline.py" line="60"/>
         <source>Computes one unbranched, loop-free centerline for each polygon (each part of a multipart polygon) with the Curve of Incircles: every vertex is the centre of a circle touching both sides of the outline. The line runs between the two &apos;Split points&apos; lying on the polygon&apos;s outline, or, without them, between automatic ends: those of the internal path along the &apos;Guide lines&apos;, else of the main stem (or the longest internal path, see &apos;Automatic ends&apos;). Islands (holes) are passed on the side of the wider channel, or ignored. The M value of each vertex is the local width. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
         <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między końcami automatycznymi: końcami drogi wewnątrz kształtu wzdłuż 'Linii prowadzących', a bez nich głównego nurtu (lub najdłuższej drogi wewnątrz kształtu, zob. 'Końce automatyczne'). Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="80"/>
-        <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one or more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
-        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości do 'Tolerancja przyciągania punktów podziału' od jej zewnętrznego obrysu. Część bez punktów dostaje automatycznie wyznaczone końce; część z jednym lub więcej niż dwoma punktami jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="103"/>
+        <location filename="../algorithms/polygon_centerline.py" line="105"/>
         <source>Automatic ends</source>
         <translation>Końce automatyczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="102"/>
+        <location filename="../algorithms/polygon_centerline.py" line="104"/>
         <source>Main stem (widest path)</source>
         <translation>Główny nurt (najszersza droga)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="102"/>
+        <location filename="../algorithms/polygon_centerline.py" line="104"/>
         <source>Longest path</source>
         <translation>Najdłuższa droga</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="113"/>
+        <location filename="../algorithms/polygon_centerline.py" line="115"/>
         <source>Guide lines</source>
         <translation>Linie prowadzące</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="113"/>
+        <location filename="../algorithms/polygon_centerline.py" line="115"/>
         <source>Rough river lines (a national network, OpenStreetMap waterways) for polygons without split points: the ends are those of the internal path that best covers the guide lines near the polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected.</source>
         <translation>Przybliżone linie rzek (sieć krajowa, cieki OpenStreetMap) dla poligonów bez punktów podziału: końcami są końce drogi wewnątrz kształtu, która najlepiej pokrywa linie prowadzące w pobliżu poligonu. Przerwy, przesunięcia, uogólnione fragmenty i dopływy nie przeszkadzają. Inny układ współrzędnych jest przeliczany.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="48"/>
-        <source>Line layer: input attributes plus source_fid (the polygon&apos;s feature id, to join the line back to it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split points were used) and ends_from (split_points, guide or automatic).</source>
-        <translation>Warstwa liniowa: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim linii), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach), n_vertices, ends_found (prawda, gdy nie użyto punktów podziału) i ends_from (split_points, guide lub automatic).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_centerline.py" line="71"/>
+        <location filename="../algorithms/polygon_centerline.py" line="72"/>
         <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part. Z values are ignored: the centerline is computed in the plane.</source>
         <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część. Wartości Z są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="95"/>
+        <location filename="../algorithms/polygon_centerline.py" line="97"/>
         <source>{pass_through}: the line never crosses an island and goes round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
         <translation>{pass_through}: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="103"/>
+        <location filename="../algorithms/polygon_centerline.py" line="105"/>
         <source>For polygons without split points. {main_stem}: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. {longest_path}: the tips of the two longest arms.</source>
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="235"/>
+        <location filename="../algorithms/polygon_centerline.py" line="249"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="214"/>
+        <location filename="../algorithms/polygon_centerline.py" line="228"/>
         <source>{} Its ends were found automatically.</source>
         <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="237"/>
+        <location filename="../algorithms/polygon_centerline.py" line="251"/>
         <source>{} holds no point.</source>
         <translation>{} nie zawiera żadnego punktu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="238"/>
+        <location filename="../algorithms/polygon_centerline.py" line="252"/>
         <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
         <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="49"/>
+        <source>Line layer: input attributes plus source_fid (the polygon&apos;s feature id, to join the line back to it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split points were used) and ends_from (split_points, guide, automatic, or split_points_and_automatic for one given split point).</source>
+        <translation>Warstwa liniowa: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia linii z nim), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach), n_vertices, ends_found (prawda, gdy nie użyto punktów podziału) i ends_from (split_points, guide, automatic lub split_points_and_automatic dla jednego podanego punktu podziału).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
+        <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one starts there and ends at the far end of its main stem; a part with more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
+        <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od jej pierścienia zewnętrznego. Część bez punktów dostaje końce automatyczne; część z jednym zaczyna się w nim i kończy na dalszym końcu swojego głównego nurtu; część z więcej niż dwoma jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
 </context>
 <context>
     <name>PolygonNetworkAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="32"/>
+        <location filename="../algorithms/polygon_network.py" line="37"/>
         <source>Centerline network of polygons</source>
         <translation>Sieć linii środkowych poligonów</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="35"/>
+        <location filename="../algorithms/polygon_network.py" line="40"/>
         <source>The medial-axis tree between the arm ends of a confluence, a delta or a road junction.</source>
         <translation>Drzewo osi środkowej między końcami ramion zlewiska, delty lub skrzyżowania dróg.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="39"/>
+        <location filename="../algorithms/polygon_network.py" line="44"/>
         <source>Network branches</source>
         <translation>Gałęzie sieci</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="42"/>
+        <location filename="../algorithms/polygon_network.py" line="47"/>
         <source>network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width</source>
         <translation>sieć,zlewisko,delta,węzeł,skrzyżowanie,oś środkowa,szkielet,rzeka,droga,szerokość</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="45"/>
-        <source>Computes, for each polygon (each part of a multipart polygon) with two or more &apos;Split points&apos; on its outline (the ends of the arms of a confluence, a delta or a road junction), the part of the medial axis that separates the outline&apos;s chains between consecutive split points: a tree with one end at each split point and junctions where a circle touches three chains, without side branches. Each branch is one line feature with the ids of the split points at its ends (&apos;junction&apos; at a junction), the chains on its right and left, its length and widths; the M value of each vertex is the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation>Oblicza, dla każdego poligonu (każdej części poligonu wieloczęściowego) z dwoma lub więcej 'Punktami podziału' na obrysie (końcami ramion zlewiska, delty lub skrzyżowania dróg), część osi środkowej oddzielającą łańcuchy obrysu między kolejnymi punktami podziału: drzewo z jednym końcem w każdym punkcie podziału i węzłami tam, gdzie okrąg dotyka trzech łańcuchów, bez gałęzi bocznych. Każda gałąź to jeden obiekt liniowy z identyfikatorami punktów podziału na końcach ('junction' w węźle), łańcuchami po prawej i lewej stronie, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane od strony szerszego koryta lub pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie można przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="58"/>
+        <location filename="../algorithms/polygon_network.py" line="69"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="67"/>
+        <location filename="../algorithms/polygon_network.py" line="78"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="67"/>
-        <source>The ends of the network: at least two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring, typically one across each arm&apos;s end. A part with fewer is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
-        <translation>Końce sieci: co najmniej dwa na część poligonu, w granicach 'Tolerancji przyciągania punktów podziału' od jego pierścienia zewnętrznego, zwykle jeden w poprzek końca każdego ramienia. Część z mniejszą liczbą jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="77"/>
+        <location filename="../algorithms/polygon_network.py" line="89"/>
         <source>Split point id field</source>
         <translation>Pole identyfikatora punktu podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="77"/>
+        <location filename="../algorithms/polygon_network.py" line="89"/>
         <source>Attribute naming each split point in from_point, to_point and the chains; default: its feature id.</source>
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="163"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="163"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="58"/>
+        <location filename="../algorithms/polygon_network.py" line="69"/>
         <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
         <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="90"/>
+        <location filename="../algorithms/polygon_network.py" line="102"/>
         <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
         <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="99"/>
-        <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids or &apos;junction&apos;), right_chain, left_chain (each chain named &apos;a-b&apos; after the split points at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
-        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia z nim gałęzi), from_point, to_point (identyfikatory punktów podziału lub 'junction'), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od punktów podziału na jego końcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
+        <location filename="../algorithms/polygon_network.py" line="50"/>
+        <source>Computes, for each polygon (each part of a multipart polygon), the part of the medial axis that separates the outline&apos;s chains between its ends (the ends of the arms of a confluence, a lake, a delta or a road junction): a tree with one end at each arm and junctions where a circle touches three chains, without side branches. The ends are the &apos;Split points&apos; on the outline when a part has two or more; otherwise they are found automatically (one given split point replaces the automatic end nearest to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least &apos;Minimum arm length, in junction widths&apos; (bank noise and small bays do not). Each branch is one line feature with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the split points at its ends (&apos;gate&apos; at a gate, &apos;auto&apos; at an automatic end, &apos;junction&apos; at a junction), the chains on its right and left, its length and widths; the M value of each vertex is the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
+        <translation>Wyznacza dla każdego poligonu (każdej części poligonu wieloczęściowego) tę część osi środkowej, która rozdziela łańcuchy obrysu między jego końcami (końcami ramion zlewiska, jeziora, delty lub skrzyżowania dróg): drzewo z jednym końcem w każdym ramieniu i węzłami tam, gdzie okrąg styka się z trzema łańcuchami, bez bocznych odgałęzień. Końcami są 'Punkty podziału' na obrysie, gdy część ma ich dwa lub więcej; w przeciwnym razie są wyznaczane automatycznie (jeden podany punkt podziału zastępuje najbliższy mu koniec automatyczny): ramię się liczy, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej 'Minimalna długość ramienia, w szerokościach węzła' (szum brzegu i małe zatoki nie sięgają). Każda gałąź to jeden obiekt liniowy z identyfikatorami węzłów (from_node, to_node, wspólnymi dla gałęzi, które się spotykają), rodzajem, identyfikatorami punktów podziału na końcach ('gate' przy bramie, 'auto' przy końcu automatycznym, 'junction' w węźle), łańcuchami po prawej i lewej, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane po stronie szerszego koryta albo pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="78"/>
+        <source>The ends of the network, within &apos;Split point snapping tolerance&apos; of a part&apos;s exterior ring, typically one across each arm&apos;s end. A part with two or more uses exactly these; a part with none or one gets its arm ends automatically (the one given replaces the automatic end nearest to it, when within that arm&apos;s width). Another CRS is reprojected to the polygon layer&apos;s.</source>
+        <translation>Końce sieci, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od pierścienia zewnętrznego części, zwykle po jednym w poprzek końca każdego ramienia. Część z dwoma lub więcej używa dokładnie ich; część bez punktu lub z jednym dostaje końce ramion automatycznie (podany punkt zastępuje najbliższy mu koniec automatyczny, jeśli leży w obrębie szerokości tego ramienia). Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="110"/>
+        <source>Minimum arm length, in junction widths</source>
+        <translation>Minimalna długość ramienia, w szerokościach węzła</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="110"/>
+        <source>Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than the river is wide make no branch; a tributary does).</source>
+        <translation>Końce automatyczne: ramię zostaje, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej tyle szerokości tego węzła (1: garby brzegu, schodki digitalizacji i zatoki płytsze niż szerokość rzeki nie tworzą gałęzi; dopływ tworzy).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <source>Minimum arm length</source>
+        <translation>Minimalna długość ramienia</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <source>Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction&apos;s circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation.</source>
+        <translation>Końce automatyczne: ramię zostaje tylko wtedy, gdy sięga też co najmniej tak daleko poza okrąg swojego węzła, w jednostkach warstwy (metry dla warstwy w stopniach); 0 = bez takiego ograniczenia. Do generalizacji.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="136"/>
+        <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids, &apos;gate&apos;, &apos;auto&apos; or &apos;junction&apos;), from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named &apos;a-b&apos; after the ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
+        <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia gałęzi z nim), from_point, to_point (identyfikatory punktów podziału, 'gate', 'auto' lub 'junction'), from_node, to_node (identyfikatory węzłów wspólne dla spotykających się gałęzi, także między poligonami o wspólnych końcach), kind (arm, inner lub loop), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od końców na jego krańcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="150"/>
+        <source>Network nodes</source>
+        <translation>Węzły sieci</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="150"/>
+        <source>Optional point layer: every end and junction with its node id, degree (number of branch ends), radius (the junction&apos;s circle; 0 at an end) and kind (end or junction).</source>
+        <translation>Opcjonalna warstwa punktowa: każdy koniec i węzeł z identyfikatorem węzła, stopniem (liczbą końców gałęzi), promieniem (okręgu węzła; 0 na końcu) i rodzajem (end lub junction).</translation>
     </message>
 </context>
 </TS>
