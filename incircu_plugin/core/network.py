@@ -496,9 +496,11 @@ def _vertex_labels(result, i, boundary):
     labels = boundary.chain_at(feet)
     own = labels == i
     if np.any(own):
-        start, end = boundary.starts[i], boundary.starts[i + 1]
-        along = boundary.ring.nearest(feet[own])[1]
-        labels[own] = np.where(along - start <= end - along, (i - 1) % k, (i + 1) % k)
+        # Nearer ``p_i`` (the chain's start) or ``p_{i+1}``: by distance, as the ring's arc length is ambiguous
+        # at its closing point ``p_0``.
+        chain = boundary.chains[i]
+        nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
+        labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
     rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
     return np.mod(i - 1 - rank, k)
