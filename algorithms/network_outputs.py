@@ -160,8 +160,8 @@ class NetworkWriter:
                     "from_node": node_ids[branch.start_node],
                     "to_node": node_ids[branch.end_node],
                     "kind": branch.kind,
-                    "right_chain": chains[branch.right_chain],
-                    "left_chain": chains[branch.left_chain],
+                    "right_chain": self._chain_name(chains, branch.right_chain),
+                    "left_chain": self._chain_name(chains, branch.left_chain),
                     **statistics,
                 }
                 feature = QgsFeature(self.fields)
@@ -174,6 +174,11 @@ class NetworkWriter:
                         )
                     )
                 self.centerline_count += 1
+
+    @staticmethod
+    def _chain_name(chains, chain):
+        """Return a chain's name, or "island:<j>" for channel island ``j`` (``ISLANDS`` = channels)."""
+        return chains[chain] if chain < len(chains) else f"island:{chain - len(chains)}"
 
     @staticmethod
     def _point_name(network, point, node, ids):

@@ -103,9 +103,13 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             self.tr(
                 "{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, "
                 "so the branches go round it on the side of the wider channel. {ignore}: holes are filled before "
-                "computing."
+                "computing. {channels}: every island at least as long as the river around it is wide (its own "
+                "width plus twice its distance to the outline) gets a branch on each side, so the network has a "
+                "loop around it with exact junctions up- and downstream (branches of kind 'loop'); smaller "
+                "islands are passed on the side of the wider channel."
             ),
             self.ISLANDS,
+            channels=True,
         )
         self.add_optional_parameter(
             QgsProcessingParameterNumber(
@@ -178,8 +182,8 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         min_arm_length = self.parameterAsDouble(parameters, self.MIN_ARM_LENGTH, context) or None
         snap_tolerance = self.parameterAsDouble(parameters, self.SNAP_TOLERANCE, context)
         sampling = self.sampling_options(parameters, context)
-        # The enum's choices are in the order of the core's ISLAND_MODES.
-        islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        # The enum's choices are in the order of the core's NETWORK_ISLAND_MODES.
+        islands = run.core.NETWORK_ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
         gates = None
         if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):

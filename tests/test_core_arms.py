@@ -234,3 +234,64 @@ def test_arm_ends_of_a_long_pointed_arm_are_its_tip():
     ends = find_arm_ends(polygon)
     assert len(ends.points) == 3
     assert min(np.hypot(*(ends.points - (50.0, 4.0 + 40.0 * math.sqrt(3.0))).T)) <= 1e-9 * 100.0
+
+
+def check_loops(polygon, network, islands):
+    """Every vertex of every branch lies at its radius from its two chains (an island's ring for a channel
+    island's chain) and no nearer to any other; every junction is equidistant from three of them."""
+    from tests.test_core_network import distance_to, ring_chains
+
+    _, sites = ring_chains(polygon, network)
+    sites = sites + [[np.asarray(ring)] for ring in islands]
+    tolerance = RELATIVE * extent_of(polygon)
+    for branch in network.branches:
+        vertices = shapely.get_coordinates(branch.result.line)
+        distances = np.array([distance_to(vertices, site) for site in sites])
+        for chain in (branch.right_chain, branch.left_chain):
+            assert np.abs(distances[chain] - branch.result.radii).max() <= tolerance
+        assert np.all(distances.min(axis=0) >= branch.result.radii - tolerance)
+    for junction, radius in zip(network.junctions, network.junction_radii):
+        distances = np.array([distance_to(junction[None], site)[0] for site in sites])
+        assert np.sum(np.abs(distances - radius) <= tolerance) >= 3
+        assert distances.min() >= radius - tolerance
+
+
+def braided_reach():
+    """A reach 600 long and 60 wide with three islands in a row, 20 and 10 wide: closed-form junctions."""
+    islands = [box(100.0, 20.0, 180.0, 40.0), box(260.0, 25.0, 340.0, 35.0), box(420.0, 15.0, 520.0, 35.0)]
+    polygon = Polygon(box(0.0, 0.0, 600.0, 60.0).exterior.coords, [island.exterior.coords for island in islands])
+    return polygon, islands
+
+
+def test_a_braided_reach_with_three_islands_has_a_loop_around_each():
+    polygon, islands = braided_reach()
+    network = polygon_network(polygon, islands="channels")
+    assert same_points(network.split_points, [(0.0, 30.0), (600.0, 30.0)], RELATIVE * 600.0)
+    assert len(network.junctions) == 6
+    # Up- and downstream of each island the circle touches both banks (radius 30, centre y = 30) and the
+    # island's end face: its centre lies 30 before or after it (the islands' end faces are straight).
+    expected = [(x, 30.0) for island in islands for x in (island.bounds[0] - 30.0, island.bounds[2] + 30.0)]
+    assert same_points(network.junctions, expected, RELATIVE * 600.0)
+    assert np.allclose(network.junction_radii, 30.0, atol=RELATIVE * 600.0)
+    kinds = sorted(branch.kind for branch in network.branches)
+    assert kinds == ["arm"] * 2 + ["inner"] * 2 + ["loop"] * 6
+    degrees = network.node_degrees
+    assert list(degrees[:2]) == [1, 1] and set(degrees[2:]) == {3}
+    check_loops(polygon, network, [shapely.get_coordinates(island.exterior) for island in islands])
+
+
+def test_small_islands_keep_the_main_channel_rule_among_channels():
+    polygon, _ = braided_reach()
+    pebble = box(40.0, 10.0, 42.0, 12.0)
+    with_pebble = Polygon(
+        polygon.exterior.coords, [*[ring.coords for ring in polygon.interiors], pebble.exterior.coords]
+    )
+    network = polygon_network(with_pebble, islands="channels")
+    assert len(network.junctions) == 6
+    for branch in network.branches:
+        assert not branch.result.line.intersects(pebble)
+    # The other modes keep their meaning: one line past every island.
+    (branch,) = polygon_network(polygon, islands="main_channel").branches
+    assert branch.kind == "arm"
+    with pytest.raises(Exception, match="island mode"):
+        polygon_network(polygon, islands="braided")

@@ -40,13 +40,14 @@ from .errors import (
 from .frames import centerlines, networks
 from .geodesy import LocalProjection
 from .layers import LayerNetworks, layer_networks
-from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
+from .network import NETWORK_ISLAND_MODES, NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .touching import touching_gates
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
     "END_RULES",
     "ISLAND_MODES",
+    "NETWORK_ISLAND_MODES",
     "ArmEnds",
     "Cancelled",
     "CenterlineError",

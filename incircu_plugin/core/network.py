@@ -52,6 +52,14 @@ from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
 from .steps import run_together
 
+#: Island modes of a network: those of a centerline, and ``"channels"`` (channels on both sides of the large
+#: islands, see :func:`polygon_network`).
+NETWORK_ISLAND_MODES = ("main_channel", "ignore", "channels")
+
+#: An island is a channel island (``islands="channels"``) when its bounding-box diagonal is at least this
+#: many times the local width: its own typical width plus twice its distance to the outline.
+CHANNEL_ISLAND_RATIO = 1.0
+
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9
 
@@ -192,8 +200,13 @@ def polygon_network(
         Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
     snap_tolerance : float, optional
         Largest distance, CRS units, between a split point and the ring; default ``1e-6`` of the extent.
-    islands : {"main_channel", "ignore"}
-        As in :func:`polygon_centerline`.
+    islands : {"main_channel", "ignore", "channels"}
+        As in :func:`polygon_centerline`, or ``"channels"``: every island whose bounding-box diagonal is at
+        least ``CHANNEL_ISLAND_RATIO`` times the local width (its own typical width plus twice its distance
+        to the outline) is a chain of its own, so the network has a loop around it (a junction upstream and
+        one downstream, exact; branches of kind ``"loop"`` along it); smaller islands are passed on the side
+        of the wider channel. Every run is traced (``k`` instead of ``k - 1``); a branch between two channel
+        islands (no outline chain) is not traced.
     progress : callable, optional
         Called with the fraction done; returning False raises :class:`Cancelled`.
     **engine_options
@@ -216,7 +229,11 @@ def polygon_network(
     [100.0]
     """
     validate_polygon(polygon)
-    check_island_mode(islands)
+    if islands not in NETWORK_ISLAND_MODES:
+        check_island_mode(islands)
+    channel_islands, polygon = _channel_islands(polygon) if islands == "channels" else ([], polygon)
+    if islands == "channels":
+        islands = "main_channel"
     split_points = [] if split_points is None else list(split_points)
     given = len(split_points)
     gates = [] if gates is None else list(gates)
@@ -230,13 +247,15 @@ def polygon_network(
     points = [_as_xy(split_points[index]) for index in order]
     chains = _bridged_chains(polygon, points, snap_tolerance, islands)
     k = len(chains)
-    extent = extent_of(*chains)
-    boundary = _Boundary(chains, extent)
+    extent = extent_of(*chains, *channel_islands)
+    boundary = _Boundary(chains, extent, channel_islands)
     junctions = _Junctions(boundary)
     pieces = []
-    for i, result in enumerate(_runs(chains, spacing, progress, engine_options)):
-        pieces.extend(_run_pieces(result, i, _vertex_labels(result, i, boundary), junctions))
-    branches, centres, radii = _assemble(pieces, junctions, order)
+    runs = _runs(chains, spacing, progress, engine_options, channel_islands)
+    for i, (result, bridged) in enumerate(runs):
+        labels = _vertex_labels(result, i, boundary, bridged)
+        pieces.extend(_run_pieces(result, i, labels, junctions))
+    branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
     automatic = "automatic" in sources
@@ -382,7 +401,7 @@ def _as_xy(point):
     return np.asarray(point.coords[0] if isinstance(point, Point) else point, dtype=float)[:2]
 
 
-def _runs(chains, spacing, progress, engine_options):
+def _runs(chains, spacing, progress, engine_options, channel_islands=()):
     """Return the centerlines between ``C_i`` and ``D_i`` for ``i < k - 1``, traced together.
 
     One run (two chains) is traced alone, exactly as :func:`polygon_centerline` traces it; more runs are
@@ -397,14 +416,37 @@ def _runs(chains, spacing, progress, engine_options):
         The first run's error, if one failed.
     """
     k = len(chains)
-    if k == 2:
-        return [centerline_from_chains(chains[0], chains[1][::-1], spacing, progress=progress, **engine_options)]
-    steps = [centerline_steps(chains[i], _complement(chains, i), spacing, **engine_options) for i in range(k - 1)]
+    if k == 2 and not channel_islands:
+        return [
+            (centerline_from_chains(chains[0], chains[1][::-1], spacing, progress=progress, **engine_options), None)
+        ]
+    complements = [_complement(chains, i) for i in range(k if channel_islands else k - 1)]
+    if channel_islands:
+        # Each run sees every channel island as part of the rest of the ring, so it traces its own channel.
+        complements = [
+            bridge_islands(chains[i], complement, channel_islands, to_second=[True] * len(channel_islands))[1]
+            for i, complement in enumerate(complements)
+        ]
+    steps = [
+        centerline_steps(chains[i], complement, spacing, **engine_options) for i, complement in enumerate(complements)
+    ]
     results = run_together(steps, progress=progress)
     for result in results:
         if isinstance(result, Exception):
             raise result
-    return results
+    return [(result, complement if channel_islands else None) for result, complement in zip(results, complements)]
+
+
+def _channel_islands(polygon):
+    """Return the rings of the channel islands (see ``islands="channels"``) and the polygon without them."""
+    outline = Polygon(polygon.exterior)
+    big, small = [], []
+    for ring in polygon.interiors:
+        island = Polygon(ring)
+        west, south, east, north = island.bounds
+        local = 2.0 * island.area / island.length + 2.0 * outline.exterior.distance(island)
+        (big if np.hypot(east - west, north - south) >= CHANNEL_ISLAND_RATIO * local else small).append(ring)
+    return [shapely.get_coordinates(ring) for ring in big], Polygon(polygon.exterior, small)
 
 
 def _ring_order(polygon, split_points, tolerance):
@@ -483,7 +525,7 @@ def _complement(chains, i):
     return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
 
 
-def _vertex_labels(result, i, boundary):
+def _vertex_labels(result, i, boundary, bridged=None):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
     Each foot lies on the ring (the chains end to end, counter-clockwise): its arc length there names its
@@ -491,9 +533,11 @@ def _vertex_labels(result, i, boundary):
     ring may place on ``C_i``, takes the neighbouring chain. Labels that go back against ``D_i``'s order (a
     foot at the very junction) take the label before them.
     """
-    k = len(boundary.chains)
+    k = boundary.exterior_count
     feet = np.asarray(result.foot_b, dtype=float)
     labels = boundary.chain_at(feet)
+    if bridged is not None:
+        return _channel_labels(feet, labels, i, boundary, bridged)
     own = labels == i
     if np.any(own):
         # Nearer ``p_i`` (the chain's start) or ``p_{i+1}``: by distance, as the ring's arc length is ambiguous
@@ -506,13 +550,37 @@ def _vertex_labels(result, i, boundary):
     return np.mod(i - 1 - rank, k)
 
 
+def _channel_labels(feet, labels, i, boundary, bridged):
+    """Labels of run ``i`` with channel islands: a foot on island ``j`` is labelled ``k + j``; a label whose
+    foot lies back along the bridged ``D_i`` (a foot at the very junction) takes the one before it."""
+    k = boundary.exterior_count
+    for j, ring in enumerate(boundary.chains[k:]):
+        on = IndexedPolyline(ring).nearest(feet)[0] <= JUNCTION_TOLERANCE * boundary.extent
+        labels[on] = k + j
+    own = labels == i
+    if np.any(own):
+        chain = boundary.chains[i]
+        nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
+        labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
+    labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
+    along = IndexedPolyline(bridged).nearest(feet)[1]
+    back = along < np.maximum.accumulate(along) - JUNCTION_TOLERANCE * boundary.extent
+    for index in np.flatnonzero(back):
+        labels[index] = labels[index - 1]
+    return labels
+
+
 class _Boundary:
     """The chains with spatial indices (built when first needed): exact distances and feet to each chain."""
 
-    def __init__(self, chains, extent):
+    def __init__(self, chains, extent, islands=()):
+        #: Outline chains first, then the channel islands' rings (chains of their own).
+        self.exterior_count = len(chains)
+        chains = [*chains, *islands]
         self.chains = chains
         self.indexed = [None] * len(chains)
         self.extent = extent
+        chains = chains[: self.exterior_count]
         self.ring = IndexedPolyline(np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]]))
         ends = np.cumsum([0] + [len(chain) - 1 for chain in chains])
         #: Arc length on the ring where each chain starts (and the ring's length last), CRS units.
@@ -556,6 +624,7 @@ class _Boundary:
         near = {int(chain) for chain in np.searchsorted(self.starts, self.ring.cumulative[segments], side="right") - 1}
         # A segment starting at a chain's end vertex belongs to the next chain; its predecessor may be near too.
         near |= {(chain - 1) % len(self.chains) for chain in near}
+        near |= set(range(self.exterior_count, len(self.chains)))
         found = {chain: self.nearest(point, chain)[0] for chain in sorted(near)}
         return {chain: distance for chain, distance in found.items() if distance < reach}
 
@@ -582,15 +651,16 @@ class _Junctions:
         list of (tuple of int, ndarray of shape (2,), float)
             Each junction's three chains (sorted), centre and radius, from ``a``'s side to ``b``'s.
         """
-        key = tuple(sorted((i, a, b)))
+        key = self._key(tuple(sorted((i, a, b))), start, end)
         if key not in self.by_chains:
-            centre = _newton_junction(self.boundary, key, start, end)
-            radius = float(np.mean([self.boundary.nearest(centre, chain)[0] for chain in key]))
+            centre = _newton_junction(self.boundary, key[:3], start, end)
+            radius = float(np.mean([self.boundary.nearest(centre, chain)[0] for chain in key[:3]]))
             distances = self.boundary.distances_within(centre, radius * (1.0 - EMPTY_CIRCLE_TOLERANCE))
-            inside = [m for m in sorted(distances, key=distances.get) if m not in key]
+            inside = [m for m in sorted(distances, key=distances.get) if m not in key[:3]]
             if inside:
-                between = _between_in_order(i, a, b, int(inside[0]), len(self.boundary.chains))
-                if between is None or depth > len(self.boundary.chains):
+                k = self.boundary.exterior_count
+                between = None if max(a, b, inside[0]) >= k else _between_in_order(i, a, b, int(inside[0]), k)
+                if between is None or depth > k:
                     raise IncirCuError(
                         f"The junction near {format_point(centre)} could not be located: its circle holds another "
                         "chain out of order. Move the split points farther out along the arms."
@@ -601,6 +671,19 @@ class _Junctions:
             self.by_chains[key] = (centre, radius)
         centre, radius = self.by_chains[key]
         return [(key, centre, radius)]
+
+    def _key(self, chains, start, end):
+        """Return the key of the junction of ``chains`` between two run vertices: the chains themselves, or,
+        for a channel island's chains (which meet twice: up- and downstream of it), the chains and the number
+        of the junction of theirs lying near the segment (a new number when none does)."""
+        if max(chains) < self.boundary.exterior_count:
+            return chains
+        same = [key for key in self.by_chains if key[:3] == chains]
+        segment = LineString([start, end]) if np.any(start != end) else Point(start)
+        for key in same:
+            if segment.distance(Point(self.by_chains[key][0])) <= max(segment.length, JUNCTION_TOLERANCE):
+                return key
+        return chains if not same else (*chains, len(same))
 
 
 def _between_in_order(i, a, b, m, k):
@@ -656,8 +739,10 @@ def _junction_off_a_split_point(boundary, key):
     normal at distance ``t`` from the third chain, found by bisection, and kept when ``p`` is indeed nearest
     to it on both chains (the circle is empty of them).
     """
-    k = len(boundary.chains)
+    k = boundary.exterior_count
     for m in key:
+        if m >= k:
+            continue
         before = (m - 1) % k
         if before not in key:
             continue
@@ -736,7 +821,7 @@ def _run_pieces(result, i, labels, junctions):
         ``("junction", key)``; ``vertices``, ``radii``, ``foot_a`` (on ``C_i``), ``foot_b`` (on ``C_j``) of
         the run's vertices on the piece, in run order (a junction is not among them).
     """
-    k = len(junctions.boundary.chains)
+    k = junctions.boundary.exterior_count
     arrays = {
         "vertices": shapely.get_coordinates(result.line),
         "radii": np.asarray(result.radii, dtype=float),
@@ -757,7 +842,7 @@ def _run_pieces(result, i, labels, junctions):
         piece = {name: values[first:stop] for name, values in arrays.items()}
         pieces.append({"chains": (i, label), "ends": (node, end), **piece})
         for before, after in zip(found[:-1], found[1:]):
-            (shared,) = set(before[0]) & set(after[0]) - {i}
+            (shared,) = set(before[0][:3]) & set(after[0][:3]) - {i}
             pieces.append(
                 {"chains": (i, shared), "ends": (("junction", before[0]), ("junction", after[0])), **_empty()}
             )
@@ -818,7 +903,7 @@ def _piece_arrays(piece, ends, junctions):
     return {name: np.concatenate(values) for name, values in parts.items()}
 
 
-def _assemble(pieces, junctions, order):
+def _assemble(pieces, junctions, order, loops=0):
     """Turn the pieces of all runs into oriented branches and check that they form the expected tree.
 
     Parameters
@@ -828,6 +913,8 @@ def _assemble(pieces, junctions, order):
     junctions : _Junctions
     order : list of int
         Input index of each split point in ring order.
+    loops : int
+        Number of channel islands: independent cycles the graph must have.
 
     Returns
     -------
@@ -864,7 +951,7 @@ def _assemble(pieces, junctions, order):
         point_of = [order[node[1]] if node[0] == "leaf" else None for node, _, _ in ends]
         branches.append(NetworkBranch(result, point_of[0], point_of[1], right, left))
         edges.append((ends[0][0], ends[1][0]))
-    _check_tree(edges, len(order))
+    _check_tree(edges, len(order), loops)
     used = sorted({node[1] for edge in edges for node in edge if node[0] == "junction"})
     number = {key: len(order) + index for index, key in enumerate(used)}
 
@@ -876,7 +963,9 @@ def _assemble(pieces, junctions, order):
             branch,
             start_node=node_id(start),
             end_node=node_id(end),
-            kind="loop" if start == end else ("arm" if "leaf" in (start[0], end[0]) else "inner"),
+            kind="loop"
+            if start == end or max(branch.right_chain, branch.left_chain) >= len(order)
+            else ("arm" if "leaf" in (start[0], end[0]) else "inner"),
         )
         for branch, (start, end) in zip(branches, edges)
     ]
@@ -884,8 +973,9 @@ def _assemble(pieces, junctions, order):
     return branches, centres, np.array([junctions.by_chains[key][1] for key in used], dtype=float)
 
 
-def _check_tree(edges, k):
-    """Raise :class:`IncirCuError` unless the edges form a tree with leaves 0..k-1 and junctions of degree >= 3."""
+def _check_tree(edges, k, loops=0):
+    """Raise :class:`IncirCuError` unless the edges form a tree with leaves 0..k-1 and junctions of degree >= 3
+    (a connected graph with ``loops`` independent cycles, one around each channel island)."""
     degree = {}
     for edge in edges:
         for node in edge:
@@ -902,7 +992,7 @@ def _check_tree(edges, k):
     for a, b in edges:
         parent[root(a)] = root(b)
     connected = len({root(node) for node in degree}) == 1
-    if leaves != list(range(k)) or weak or not connected or len(edges) != len(degree) - 1:
+    if leaves != list(range(k)) or weak or not connected or len(edges) != len(degree) - 1 + loops:
         raise IncirCuError(
             f"The network found is not a tree with one end at each of the {k} split points "
             f"({len(edges)} branches, {len(leaves)} ends, {len(weak)} junctions of degree below 3); "
