@@ -104,7 +104,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 "{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, "
                 "so the branches go round it on the side of the wider channel. {ignore}: holes are filled before "
                 "computing. {channels}: every island at least as long as the river around it is wide (its own "
-                "width plus twice its distance to the outline) gets a branch on each side, so the network has a "
+                "width plus twice its distance to the nearest bank or island) gets a branch on each side, so the network has a "
                 "loop around it with exact junctions up- and downstream (branches of kind 'loop'); smaller "
                 "islands are passed on the side of the wider channel."
             ),

@@ -238,3 +238,21 @@ def test_touching_reaches_meet_exactly_and_share_their_node(provider, crs):
     cl = [as_shapely(feature.geometry()).coords for feature in centerlines["OUTPUT"].getFeatures()]
     assert len({cl[0][0], cl[0][-1]} & {cl[1][0], cl[1][-1]}) == 1
     assert len({cl[1][0], cl[1][-1]} & {cl[2][0], cl[2][-1]}) == 1
+
+
+def test_channels_on_both_sides_of_a_large_island_make_a_loop(provider):
+    island = box(120.0, 15.0, 180.0, 25.0)
+    reach = Polygon(box(0.0, 0.0, 300.0, 40.0).exterior.coords, [island.exterior.coords])
+    results, feedback = run(
+        {"INPUT": memory_layer("Polygon", "EPSG:2180", [(reach, "braided")]), "ISLANDS": 2, "OUTPUT_NODES": "memory:"}
+    )
+    assert results["CENTERLINE_COUNT"] == 4 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    branches = list(results["OUTPUT"].getFeatures())
+    assert sorted(branch["kind"] for branch in branches) == ["arm", "arm", "loop", "loop"]
+    loops = [branch for branch in branches if branch["kind"] == "loop"]
+    assert {loops[0]["from_node"], loops[0]["to_node"]} == {loops[1]["from_node"], loops[1]["to_node"]}
+    assert {branch["right_chain"] for branch in loops} | {branch["left_chain"] for branch in loops} >= {"island:0"}
+    junctions = [node for node in results["OUTPUT_NODES"].getFeatures() if node["kind"] == "junction"]
+    assert sorted((node.geometry().asPoint().x(), node["degree"]) for node in junctions) == [(100.0, 3), (200.0, 3)]
+    for branch in branches:
+        assert not as_shapely(branch.geometry()).intersects(island)

@@ -57,7 +57,7 @@ from .steps import run_together
 NETWORK_ISLAND_MODES = ("main_channel", "ignore", "channels")
 
 #: An island is a channel island (``islands="channels"``) when its bounding-box diagonal is at least this
-#: many times the local width: its own typical width plus twice its distance to the outline.
+#: many times the local width: its own typical width plus twice its distance to the nearest other ring.
 CHANNEL_ISLAND_RATIO = 1.0
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
@@ -203,7 +203,7 @@ def polygon_network(
     islands : {"main_channel", "ignore", "channels"}
         As in :func:`polygon_centerline`, or ``"channels"``: every island whose bounding-box diagonal is at
         least ``CHANNEL_ISLAND_RATIO`` times the local width (its own typical width plus twice its distance
-        to the outline) is a chain of its own, so the network has a loop around it (a junction upstream and
+        to the nearest other ring) is a chain of its own, so the network has a loop around it (a junction upstream and
         one downstream, exact; branches of kind ``"loop"`` along it); smaller islands are passed on the side
         of the wider channel. Every run is traced (``k`` instead of ``k - 1``); a branch between two channel
         islands (no outline chain) is not traced.
@@ -438,13 +438,18 @@ def _runs(chains, spacing, progress, engine_options, channel_islands=()):
 
 
 def _channel_islands(polygon):
-    """Return the rings of the channel islands (see ``islands="channels"``) and the polygon without them."""
-    outline = Polygon(polygon.exterior)
+    """Return the rings of the channel islands (see ``islands="channels"``) and the polygon without them.
+
+    The local width of an island is its own typical width (``2 A / P``) plus twice its distance to the
+    nearest other ring (the outline or another island).
+    """
+    rings = [polygon.exterior, *polygon.interiors]
     big, small = [], []
-    for ring in polygon.interiors:
+    for index, ring in enumerate(polygon.interiors, start=1):
         island = Polygon(ring)
         west, south, east, north = island.bounds
-        local = 2.0 * island.area / island.length + 2.0 * outline.exterior.distance(island)
+        gap = min(float(shapely.distance(island, other)) for number, other in enumerate(rings) if number != index)
+        local = 2.0 * island.area / island.length + 2.0 * gap
         (big if np.hypot(east - west, north - south) >= CHANNEL_ISLAND_RATIO * local else small).append(ring)
     return [shapely.get_coordinates(ring) for ring in big], Polygon(polygon.exterior, small)
 
