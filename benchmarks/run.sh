@@ -91,6 +91,12 @@ fi
 "$PYTHON" "$BENCH_DIR/profile_incircu.py"
 "$PYTHON" "$BENCH_DIR/write_docs.py"
 "$PYTHON" "$BENCH_DIR/bench_mainstem.py"   # after write_docs.py: adds its marked section to docs/benchmark.md
+# Networks: cost against the centerline, arms found against pygeoops, SFCGAL (and GRASS); adds its section.
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_network.py" --peers --repeats 1 --write
+else
+  "$PYTHON" "$BENCH_DIR/bench_network.py" --peers --grass --write
+fi
 # The plugin's feature loop against the core per feature (issue 9's small features); prints its table.
 if [ -n "$QUICK" ]; then
   "$PYTHON" "$BENCH_DIR/bench_plugin.py" --count 500 --repeats 1
