@@ -9,47 +9,47 @@
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="355"/>
+        <location filename="../algorithms/base.py" line="362"/>
         <source>Store the local width as M value</source>
         <translation>Zapisz lokalną szerokość jako wartość M</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Centerline vertices</source>
         <translation>Wierzchołki linii środkowej</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Incircles</source>
         <translation>Okręgi wpisane</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Transects</source>
         <translation>Przekroje poprzeczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="405"/>
+        <location filename="../algorithms/base.py" line="412"/>
         <source>Distance between transects (0 = mean width)</source>
         <translation>Odległość między przekrojami (0 = średnia szerokość)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="415"/>
+        <location filename="../algorithms/base.py" line="422"/>
         <source>Number of centerlines</source>
         <translation>Liczba linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="415"/>
+        <location filename="../algorithms/base.py" line="422"/>
         <source>Number of centerline features written.</source>
         <translation>Liczba zapisanych obiektów linii środkowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="420"/>
+        <location filename="../algorithms/base.py" line="427"/>
         <source>Number of skipped features</source>
         <translation>Liczba pominiętych obiektów</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="420"/>
+        <location filename="../algorithms/base.py" line="427"/>
         <source>Number of input features (or parts) skipped with a warning.</source>
         <translation>Liczba obiektów wejściowych (lub ich części) pominiętych z ostrzeżeniem.</translation>
     </message>
@@ -94,22 +94,22 @@
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="355"/>
+        <location filename="../algorithms/base.py" line="362"/>
         <source>Write the incircle diameter (local width, layer units or metres) as M value of each vertex.</source>
         <translation>Zapisz średnicę okręgu wpisanego (lokalną szerokość, w jednostkach warstwy lub metrach) jako wartość M każdego wierzchołka.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Optional point layer: every centerline vertex with its chainage, incircle radius and width.</source>
         <translation>Opcjonalna warstwa punktowa: każdy wierzchołek linii środkowej z kilometrażem, promieniem okręgu wpisanego i szerokością.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Optional polygon layer: the incircle of every vertex, with its radius and chainage.</source>
         <translation>Opcjonalna warstwa poligonowa: okrąg wpisany każdego wierzchołka z promieniem i kilometrażem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="405"/>
+        <location filename="../algorithms/base.py" line="412"/>
         <source>Distance along the centerline between two transects, layer units (metres for a layer in degrees); 0 uses the mean width of each centerline.</source>
         <translation>Odległość wzdłuż linii środkowej między dwoma przekrojami, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 oznacza średnią szerokość każdej linii środkowej.</translation>
     </message>
@@ -119,7 +119,7 @@
         <translation>Nie udało się zapisać linii środkowej: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="377"/>
+        <location filename="../algorithms/base.py" line="384"/>
         <source>Optional line layer: cross-sections from bank to bank through the centerline, one every &apos;Distance between transects&apos;, with their width and chainage.</source>
         <translation>Opcjonalna warstwa liniowa: przekroje poprzeczne od brzegu do brzegu przez linię środkową, jeden co 'Odległość między przekrojami', z szerokością i kilometrażem.</translation>
     </message>
@@ -154,17 +154,17 @@
         <translation>Największa odległość punktu podziału od zewnętrznego obrysu poligonu, w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 = jedna milionowa rozmiaru poligonu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="334"/>
+        <location filename="../algorithms/base.py" line="341"/>
         <source>Islands (holes)</source>
         <translation>Wyspy (otwory)</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="333"/>
+        <location filename="../algorithms/base.py" line="337"/>
         <source>Pass through the main channel</source>
         <translation>Prowadź głównym korytem</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="333"/>
+        <location filename="../algorithms/base.py" line="337"/>
         <source>Ignore islands</source>
         <translation>Pomijaj wyspy</translation>
     </message>
@@ -214,14 +214,19 @@
         <translation>Wartości Z są pomijane: '{}' ma współrzędną Z, ale linia środkowa jest obliczana na płaszczyźnie i zapisywana bez Z (jej wartości M, jeśli są zapisywane, to lokalna szerokość).</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="348"/>
         <source>Connect features that share a boundary</source>
         <translation>Połącz obiekty o wspólnej granicy</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="341"/>
+        <location filename="../algorithms/base.py" line="348"/>
         <source>Where two polygons of the layer share a stretch of boundary (a river cut into reaches, water or road-area pieces), the middle of that stretch becomes an end of both, so their lines meet there exactly (and, in a network, share the node id). A polygon with one such gate gets its other end(s) automatically.</source>
         <translation>Gdzie dwa poligony warstwy mają wspólny odcinek granicy (rzeka pocięta na odcinki, kawałki wód lub powierzchni dróg), środek tego odcinka staje się końcem obu, więc ich linie spotykają się tam dokładnie (a w sieci mają wspólny identyfikator węzła). Poligon z jedną taką bramą dostaje pozostałe końce automatycznie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="340"/>
+        <source>Channels on both sides of large islands</source>
+        <translation>Koryta po obu stronach dużych wysp</translation>
     </message>
 </context>
 <context>
@@ -488,12 +493,12 @@
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="163"/>
+        <location filename="../algorithms/polygon_network.py" line="167"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="163"/>
+        <location filename="../algorithms/polygon_network.py" line="167"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
@@ -501,11 +506,6 @@
         <location filename="../algorithms/polygon_network.py" line="69"/>
         <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
         <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="102"/>
-        <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
-        <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do bliższego łańcucha, więc gałęzie omijają ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
         <location filename="../algorithms/polygon_network.py" line="50"/>
@@ -518,39 +518,44 @@
         <translation>Końce sieci, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od pierścienia zewnętrznego części, zwykle po jednym w poprzek końca każdego ramienia. Część z dwoma lub więcej używa dokładnie ich; część bez punktu lub z jednym dostaje końce ramion automatycznie (podany punkt zastępuje najbliższy mu koniec automatyczny, jeśli leży w obrębie szerokości tego ramienia). Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="110"/>
+        <location filename="../algorithms/polygon_network.py" line="114"/>
         <source>Minimum arm length, in junction widths</source>
         <translation>Minimalna długość ramienia, w szerokościach węzła</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="110"/>
+        <location filename="../algorithms/polygon_network.py" line="114"/>
         <source>Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than the river is wide make no branch; a tributary does).</source>
         <translation>Końce automatyczne: ramię zostaje, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej tyle szerokości tego węzła (1: garby brzegu, schodki digitalizacji i zatoki płytsze niż szerokość rzeki nie tworzą gałęzi; dopływ tworzy).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <location filename="../algorithms/polygon_network.py" line="128"/>
         <source>Minimum arm length</source>
         <translation>Minimalna długość ramienia</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <location filename="../algorithms/polygon_network.py" line="128"/>
         <source>Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction&apos;s circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation.</source>
         <translation>Końce automatyczne: ramię zostaje tylko wtedy, gdy sięga też co najmniej tak daleko poza okrąg swojego węzła, w jednostkach warstwy (metry dla warstwy w stopniach); 0 = bez takiego ograniczenia. Do generalizacji.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="136"/>
+        <location filename="../algorithms/polygon_network.py" line="140"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids, &apos;gate&apos;, &apos;auto&apos; or &apos;junction&apos;), from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named &apos;a-b&apos; after the ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
         <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia gałęzi z nim), from_point, to_point (identyfikatory punktów podziału, 'gate', 'auto' lub 'junction'), from_node, to_node (identyfikatory węzłów wspólne dla spotykających się gałęzi, także między poligonami o wspólnych końcach), kind (arm, inner lub loop), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od końców na jego krańcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="150"/>
+        <location filename="../algorithms/polygon_network.py" line="154"/>
         <source>Network nodes</source>
         <translation>Węzły sieci</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="150"/>
+        <location filename="../algorithms/polygon_network.py" line="154"/>
         <source>Optional point layer: every end and junction with its node id, degree (number of branch ends), radius (the junction&apos;s circle; 0 at an end) and kind (end or junction).</source>
         <translation>Opcjonalna warstwa punktowa: każdy koniec i węzeł z identyfikatorem węzła, stopniem (liczbą końców gałęzi), promieniem (okręgu węzła; 0 na końcu) i rodzajem (end lub junction).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="102"/>
+        <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing. {channels}: every island at least as long as the river around it is wide (its own width plus twice its distance to the nearest bank or island) gets a branch on each side, so the network has a loop around it with exact junctions up- and downstream (branches of kind &apos;loop&apos;); smaller islands are passed on the side of the wider channel.</source>
+        <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do łańcucha, do którego jest bliżej, więc gałęzie omijają ją po stronie szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem. {channels}: każda wyspa co najmniej tak długa, jak szeroka jest rzeka wokół niej (jej własna szerokość plus dwukrotna odległość do najbliższego brzegu lub wyspy), dostaje gałąź z każdej strony, więc sieć ma wokół niej pętlę z dokładnymi węzłami powyżej i poniżej (gałęzie rodzaju 'loop'); mniejsze wyspy są omijane po stronie szerszego koryta.</translation>
     </message>
 </context>
 </TS>
