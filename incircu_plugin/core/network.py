@@ -5,12 +5,17 @@
 incircles touch two different chains: a tree whose ``k`` leaves are the split points, whose *junctions* are
 the centres of incircles touching three chains, and whose *branches* each separate two chains.
 
-Method (only the engine's public :func:`centerline_from_chains`):
+Without split points (or with one) the ends are those of the polygon's arms (:mod:`.arms`); gates shared
+with touching polygons (:mod:`.touching`) are ends too.
+
+Method (only the engine's public :func:`centerline_from_chains` and step generators):
 
 1. Because the ring is cyclic, the complement of ``C_i`` is one chain ``D_i`` (``C_{i-1}, C_{i-2}, ...,
    C_{i+1}`` run backwards). The centerline between ``C_i`` and ``D_i`` (run ``i``) runs from ``p_i`` to
    ``p_{i+1}`` through every branch touching ``C_i``; each vertex is labelled with the chain its foot on
-   ``D_i`` lies on. Labels follow ``D_i``'s order along the line.
+   ``D_i`` lies on (its arc length on the ring, one index query per run). Labels follow ``D_i``'s order
+   along the line. The runs are traced together in one adaptive tracing (:func:`.steps.run_together`), so
+   the cost grows with the outline far less than ``k - 1`` separate runs would (``benchmarks/bench_network.py``).
 2. Where the label changes from ``C_j`` to ``C_j'`` the incircle touches ``C_i``, ``C_j`` and ``C_j'``: a
    junction. It is located exactly by Newton's method on the exact distances to the three chains (equal
    distances), starting between the two vertices whose labels differ, and checked to be an empty circle; a
@@ -20,13 +25,18 @@ Method (only the engine's public :func:`centerline_from_chains`):
 3. Branch ``(i, j)``, ``i < j``, appears in runs ``i`` and ``j``; it is taken from run ``i`` only. Both
    runs sample both chains ``C_i`` and ``C_j`` at the same spacing, so either has the same density, and a
    single run keeps the vertices in the engine's order (no interleaving of two sample sets); for ``k = 2``
-   the network is therefore exactly :func:`polygon_centerline`'s line. Run ``k - 1`` is never needed.
+   the network is therefore exactly :func:`polygon_centerline`'s line (traced alone, as it is). Run
+   ``k - 1`` is not needed (without channel islands).
 4. Islands are joined once, for all runs, to the chains of one split of the ring (``C_0`` and ``D_0``)
    with :func:`bridge_islands`: each island becomes part of the chain its slit starts from, so every run
-   sees the same chains and the network passes each island on the side of the wider channel.
+   sees the same chains and the network passes each island on the side of the wider channel. With
+   ``islands="channels"`` each large island is instead a chain of its own (index ``k + j``), joined to every
+   run's ``D_i``: run ``i`` then traces the channel between ``C_i`` and the island, the labels change to the
+   island where the channel starts, and every run is traced (``k`` of them). The island's chains meet twice
+   (up- and downstream), so their junctions are also numbered by place.
 
-The result is checked to be a tree with exactly ``k`` leaves at the split points and junctions of degree
-three or more; otherwise :class:`IncirCuError` says so.
+The result is checked to be a tree (a connected graph with one cycle per channel island) with exactly ``k``
+leaves at the split points and junctions of degree three or more; otherwise :class:`IncirCuError` says so.
 """
 
 from dataclasses import dataclass, replace
@@ -402,7 +412,8 @@ def _as_xy(point):
 
 
 def _runs(chains, spacing, progress, engine_options, channel_islands=()):
-    """Return the centerlines between ``C_i`` and ``D_i`` for ``i < k - 1``, traced together.
+    """Return ``(centerline, D_i with the channel islands or None)`` of the runs ``i < k - 1`` (all ``k`` with
+    channel islands), traced together.
 
     One run (two chains) is traced alone, exactly as :func:`polygon_centerline` traces it; more runs are
     traced side by side in one adaptive tracing (:func:`.steps.run_together`), the same lines up to float64
