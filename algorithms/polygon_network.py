@@ -8,7 +8,7 @@ from qgis.core import (
 )
 
 from .base import IncirCuAlgorithm
-from .compat import GeometryType, ProcessingSourceType
+from .compat import GeometryType, ProcessingNumberParameterType, ProcessingSourceType
 from .split_points import SplitPoints
 
 
@@ -115,7 +115,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             QgsProcessingParameterNumber(
                 self.MIN_ARM_RATIO,
                 self.tr("Minimum arm length, in junction widths"),
-                QgsProcessingParameterNumber.Double,
+                ProcessingNumberParameterType.Double,
                 1.0,
                 minValue=0.0,
             ),
