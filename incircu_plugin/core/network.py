@@ -554,16 +554,22 @@ def _vertex_labels(result, i, boundary, bridged=None):
     labels = boundary.chain_at(feet)
     if bridged is not None:
         return _channel_labels(feet, labels, i, boundary, bridged)
+    _outline_ends(labels, feet, i, boundary)
+    rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
+    return np.mod(i - 1 - rank, k)
+
+
+def _outline_ends(labels, feet, i, boundary):
+    """Relabel, in place, the feet the ring put on run ``i``'s own chain (at ``p_i`` or ``p_{i+1}``: the
+    neighbour they are nearer to by distance, as the ring's arc length is ambiguous at its closing point
+    ``p_0``) and the run's two ends (the chains before and after ``C_i``)."""
+    k = boundary.exterior_count
     own = labels == i
     if np.any(own):
-        # Nearer ``p_i`` (the chain's start) or ``p_{i+1}``: by distance, as the ring's arc length is ambiguous
-        # at its closing point ``p_0``.
         chain = boundary.chains[i]
         nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
         labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
-    rank = np.maximum.accumulate(np.mod(i - 1 - labels, k))
-    return np.mod(i - 1 - rank, k)
 
 
 def _channel_labels(feet, labels, i, boundary, bridged):
@@ -573,12 +579,7 @@ def _channel_labels(feet, labels, i, boundary, bridged):
     for j, ring in enumerate(boundary.chains[k:]):
         on = IndexedPolyline(ring).nearest(feet)[0] <= JUNCTION_TOLERANCE * boundary.extent
         labels[on] = k + j
-    own = labels == i
-    if np.any(own):
-        chain = boundary.chains[i]
-        nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
-        labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
-    labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
+    _outline_ends(labels, feet, i, boundary)
     along = IndexedPolyline(bridged).nearest(feet)[1]
     back = along < np.maximum.accumulate(along) - JUNCTION_TOLERANCE * boundary.extent
     for index in np.flatnonzero(back):
