@@ -26,7 +26,9 @@ Why ``min_arm_ratio = 1`` (see :data:`MIN_ARM_RATIO`): an arm must reach beyond 
 least the junction's width. A bump of the bank or a digitising step reaches a small fraction of the width (a
 5 % bump: 0.05); a bay as deep as it is wide at the mouth of a river twice as wide reaches about 0.5; a
 tributary, a drowned valley or a road leaving a junction is several widths long. On the 16 reservoirs of
-``tests/data`` every named arm reaches at least 1.6 junction widths (see ``tests/test_core_arms.py``).
+``tests/data`` it keeps 2 to 30 arms, the main stem's ends among them (``tests/test_core_arms.py``; pictures
+in ``docs/images/real_network_vs_sfcgal.png``), and on generated shapes with bank noise at 5 % of the width
+it adds no branch (``benchmarks/bench_network.py``).
 """
 
 import heapq
