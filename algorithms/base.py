@@ -405,21 +405,42 @@ class IncirCuAlgorithm(QgsProcessingAlgorithm):
             dynamic=True,
         )
 
-    def add_islands_parameter(self, help_template, name="ISLANDS"):
-        """Add the island mode, its choices in the order of the core's ``ISLAND_MODES``.
+    def add_islands_parameter(self, help_template, name="ISLANDS", channels=False):
+        """Add the island mode, its choices in the order of the core's ``ISLAND_MODES`` (``NETWORK_ISLAND_MODES``
+        with ``channels``).
 
         Parameters
         ----------
         help_template : str
             What the choices do in this algorithm, already translated, naming them ``{pass_through}`` and
-            ``{ignore}``: the help then names them exactly as the drop-down does, in every language.
+            ``{ignore}`` (and ``{channels}``): the help then names them exactly as the drop-down does, in every
+            language.
         name : str
             Parameter name.
+        channels : bool
+            Offer the third choice, channels on both sides of the large islands (networks).
         """
         pass_through, ignore = self.tr("Pass through the main channel"), self.tr("Ignore islands")
+        choices = [pass_through, ignore]
+        if channels:
+            choices.append(self.tr("Channels on both sides of large islands"))
         self.add_parameter(
-            QgsProcessingParameterEnum(name, self.tr("Islands (holes)"), [pass_through, ignore], defaultValue=0),
-            help_template.format(pass_through=pass_through, ignore=ignore),
+            QgsProcessingParameterEnum(name, self.tr("Islands (holes)"), choices, defaultValue=0),
+            help_template.format(pass_through=pass_through, ignore=ignore, channels=choices[-1]),
+        )
+
+    def add_connect_touching_parameter(self):
+        """Add ``CONNECT_TOUCHING`` (gates between touching features)."""
+        self.add_parameter(
+            QgsProcessingParameterBoolean(
+                self.CONNECT_TOUCHING, self.tr("Connect features that share a boundary"), False
+            ),
+            self.tr(
+                "Where two polygons of the layer share a stretch of boundary (a river cut into reaches, water or "
+                "road-area pieces), the middle of that stretch becomes an end of both, so their lines meet there "
+                "exactly (and, in a network, share the node id). A polygon with one such gate gets its other "
+                "end(s) automatically."
+            ),
         )
 
     END_CAP = "END_CAP"

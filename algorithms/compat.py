@@ -39,12 +39,14 @@ if QGIS_VERSION >= 33600:
     ProcessingParameterFlag = Qgis.ProcessingParameterFlag
     ProcessingFeatureSourceFlag = Qgis.ProcessingFeatureSourceFlag
     CrsWktVariant = Qgis.CrsWktVariant
+    ProcessingNumberParameterType = Qgis.ProcessingNumberParameterType
 else:
     from qgis.core import (
         QgsCoordinateReferenceSystem,
         QgsProcessing,
         QgsProcessingFeatureSource,
         QgsProcessingParameterDefinition,
+        QgsProcessingParameterNumber,
     )
 
     ProcessingSourceType = SimpleNamespace(
@@ -60,6 +62,7 @@ else:
         SkipGeometryValidityChecks=QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks,
     )
     CrsWktVariant = SimpleNamespace(Wkt2_2019=QgsCoordinateReferenceSystem.WktVariant.WKT2_2019)
+    ProcessingNumberParameterType = SimpleNamespace(Double=QgsProcessingParameterNumber.Type.Double)
 
 # QGIS 3.30 scoped the data-defined properties of symbol layers (QgsSymbolLayer.Property.StrokeWidth).
 if hasattr(QgsSymbolLayer.Property, "StrokeWidth"):

@@ -1,7 +1,15 @@
 """Output layer of ``incircu:polygonnetwork``: one line feature per branch of each network."""
 
 import numpy as np
-from qgis.core import QgsFeature, QgsFeatureSink, QgsGeometry, QgsProcessingException, QgsProcessingUtils, QgsWkbTypes
+from qgis.core import (
+    QgsFeature,
+    QgsFeatureSink,
+    QgsGeometry,
+    QgsPointXY,
+    QgsProcessingException,
+    QgsProcessingUtils,
+    QgsWkbTypes,
+)
 from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import WkbType
@@ -17,16 +25,22 @@ from .outputs import (
     rounded_statistics,
 )
 from .styles import CENTERLINE, style_outputs_on_load
-from .units import length_decimals, metres_per_unit
+from .units import length_decimals, metres_per_unit, rounded
 
 #: Fields added to the input attributes on every branch (lengths and widths in layer units, metres when
-#: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, or "junction";
-#: ``right_chain``/``left_chain``: the boundary chain on either side, named "a-b" after the ids of the split
-#: points at its ends (counter-clockwise); ``source_fid``: the id of the input feature.
+#: geographic). ``from_point``/``to_point``: id of the split point at the branch's start/end, "auto" at an end
+#: found automatically, or "junction"; ``from_node``/``to_node``: ids of the nodes at the branch's start and
+#: end, shared by every branch meeting there (also across features whose ends coincide exactly); ``kind``:
+#: "arm", "inner" or "loop"; ``right_chain``/``left_chain``: the boundary chain on either side, named "a-b"
+#: after the ids of the ends at its ends (counter-clockwise, "auto:<node>" for an automatic end);
+#: ``source_fid``: the id of the input feature.
 BRANCH_FIELDS = (
     ("source_fid", FEATURE_ID),
     ("from_point", STRING),
     ("to_point", STRING),
+    ("from_node", FEATURE_ID),
+    ("to_node", FEATURE_ID),
+    ("kind", STRING),
     ("right_chain", STRING),
     ("left_chain", STRING),
     ("length", DOUBLE),
@@ -36,8 +50,22 @@ BRANCH_FIELDS = (
     ("n_vertices", INTEGER),
 )
 
+#: Fields of the optional node layer: its id (as in the branches' ``from_node``/``to_node``), the number of
+#: branch ends there, the radius of the junction's circle (0 at an end; layer units, metres when geographic)
+#: and "end" or "junction".
+NODE_FIELDS = (("node", FEATURE_ID), ("degree", INTEGER), ("radius", DOUBLE), ("kind", STRING))
+
 #: Value of ``from_point``/``to_point`` at a junction.
 JUNCTION = "junction"
+
+#: Value of ``from_point``/``to_point`` at an end found automatically.
+AUTOMATIC = "auto"
+
+#: Value of ``from_point``/``to_point`` at a gate (``CONNECT_TOUCHING``).
+GATE = "gate"
+
+#: An end this close to a gate, as a fraction of its network's extent, is the gate (see ``core.layers``).
+GATE_SNAP = 1e-9
 
 
 class NetworkWriter:
@@ -59,9 +87,16 @@ class NetworkWriter:
         line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
         self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, line_type, crs)
+        self.nodes, self.nodes_id = algorithm.parameterAsSink(
+            parameters, algorithm.OUTPUT_NODES, context, make_fields(NODE_FIELDS), WkbType.Point, crs
+        )
         self.decimals = length_decimals(crs)
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
+        self.nodes_name = algorithm.OUTPUT_NODES
+        # Node id -> [layer (x, y), degree, radius, kind]; ends keyed by their exact layer coordinates too.
+        self.node_table = {}
+        self.end_ids = {}
         style_outputs_on_load(
             context,
             {CENTERLINE: self.sink_id},
@@ -70,12 +105,47 @@ class NetworkWriter:
         )
 
     def close(self):
-        """Flush and release the branch layer's sink, which closes (commits) its file; safe to call twice."""
-        release_sinks(self, ("sink",))
+        """Write the node layer, then flush and release the sinks, which closes (commits) their files; safe to
+        call twice."""
+        if self.nodes is not None:
+            for node, (xy, degree, radius, kind) in sorted(self.node_table.items()):
+                feature = QgsFeature(make_fields(NODE_FIELDS))
+                feature.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(*xy)))
+                feature.setAttributes([node, degree, rounded(radius, self.decimals), kind])
+                self.nodes.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
+            self.node_table = {}
+        release_sinks(self, ("sink", "nodes"))
 
     def destinations(self):
-        """Return the output id keyed by parameter name."""
-        return {self.output_name: self.sink_id}
+        """Return the output ids keyed by parameter name."""
+        return {self.output_name: self.sink_id, self.nodes_name: self.nodes_id}
+
+    def _node_ids(self, network, coordinates, gates):
+        """Return the layer-wide id of each node of a network (its ``nodes`` rows in layer coordinates, its ends
+        moved onto the gates within ``GATE_SNAP`` of its extent, in place): an end takes the id of an earlier
+        end at exactly the same place, a junction a new id; degrees are added up."""
+        count = len(network.split_points)
+        if len(gates):
+            extent = float(np.hypot(*np.ptp(coordinates, axis=0)))
+            for row in range(count):
+                distance = np.hypot(*(gates - coordinates[row]).T)
+                if distance.min() <= GATE_SNAP * extent:
+                    coordinates[row] = gates[int(np.argmin(distance))]
+        ids = []
+        degrees = network.node_degrees
+        radii = network.node_radii
+        for row, xy in enumerate(map(tuple, coordinates.tolist())):
+            if row < count and xy in self.end_ids:
+                node = self.end_ids[xy]
+            else:
+                node = len(self.node_table)
+                kind = "end" if row < count else "junction"
+                self.node_table[node] = [xy, 0, float(radii[row]), kind]
+                if row < count:
+                    self.end_ids[xy] = node
+            self.node_table[node][1] += int(degrees[row])
+            ids.append(node)
+        return ids
 
     def write(self, attributes, source_fid, parts, frame):
         """Write one feature per branch of the networks of one input feature.
@@ -85,19 +155,29 @@ class NetworkWriter:
         the ids of the split points the network's indices refer to; ``frame`` is the working frame the
         networks are expressed in.
         """
-        for _, network, ids in parts:
-            names = [str(point_id) for point_id in ids]
-            chains = [f"{names[start]}-{names[end]}" for start, end in network.chains]
+        for _, network, ids, gates in parts:
+            nodes = np.array(frame.to_layer(network.nodes), dtype=float)
+            node_ids = self._node_ids(network, nodes, np.asarray(gates, dtype=float).reshape(-1, 2))
+            names = [
+                str(ids[index]) if index is not None else f"{network.end_sources[row][:4]}:{node_ids[row]}"
+                for row, index in enumerate(network.point_indices)
+            ]
+            chains = [f"{names[start]}-{names[end]}" for start, end in network.chain_nodes]
             for branch in network.branches:
                 result = branch.result
-                coordinates = frame.to_layer(np.asarray(result.line.coords, dtype=float))
+                coordinates = np.array(frame.to_layer(np.asarray(result.line.coords, dtype=float)), dtype=float)
+                # The ends exactly at their nodes (a gate's coordinates after a geographic round trip).
+                coordinates[0], coordinates[-1] = nodes[branch.start_node], nodes[branch.end_node]
                 statistics = rounded_statistics([result], self.decimals)
                 added = {
                     "source_fid": source_fid,
-                    "from_point": JUNCTION if branch.start_point is None else names[branch.start_point],
-                    "to_point": JUNCTION if branch.end_point is None else names[branch.end_point],
-                    "right_chain": chains[branch.right_chain],
-                    "left_chain": chains[branch.left_chain],
+                    "from_point": self._point_name(network, branch.start_point, branch.start_node, ids),
+                    "to_point": self._point_name(network, branch.end_point, branch.end_node, ids),
+                    "from_node": node_ids[branch.start_node],
+                    "to_node": node_ids[branch.end_node],
+                    "kind": branch.kind,
+                    "right_chain": self._chain_name(chains, branch.right_chain),
+                    "left_chain": self._chain_name(chains, branch.left_chain),
                     **statistics,
                 }
                 feature = QgsFeature(self.fields)
@@ -110,3 +190,17 @@ class NetworkWriter:
                         )
                     )
                 self.centerline_count += 1
+
+    @staticmethod
+    def _chain_name(chains, chain):
+        """Return a chain's name, or "island:<j>" for channel island ``j`` (``ISLANDS`` = channels)."""
+        return chains[chain] if chain < len(chains) else f"island:{chain - len(chains)}"
+
+    @staticmethod
+    def _point_name(network, point, node, ids):
+        """Return ``from_point``/``to_point``: the split point's id, "gate", "auto" or "junction"."""
+        if point is not None:
+            return str(ids[point])
+        if node >= len(network.split_points):
+            return JUNCTION
+        return GATE if network.end_sources[node] == "gate" else AUTOMATIC

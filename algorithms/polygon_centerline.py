@@ -25,6 +25,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
     SEPARATE_PARTS = "SEPARATE_PARTS"
+    CONNECT_TOUCHING = "CONNECT_TOUCHING"
     END_RULE = "END_RULE"
     GUIDE_LINES = "GUIDE_LINES"
 
@@ -48,7 +49,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             "Line layer: input attributes plus source_fid (the polygon's feature id, to join the line back to "
             "it), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive "
             "width; layer units, metres for a layer in degrees), n_vertices, ends_found (true when no split "
-            "points were used) and ends_from (split_points, guide or automatic)."
+            "points were used) and ends_from (split_points, guide, automatic, or split_points_and_automatic for one given split point)."
         )
 
     def tags(self):
@@ -94,7 +95,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             self.tr(
                 "Points marking where each centerline starts and ends: two per polygon part, within "
                 "'Split point snapping tolerance' of its exterior ring. A part with none gets automatic ends; a part with one "
-                "or more than two is skipped. Another CRS is reprojected to the polygon layer's."
+                "starts there and ends at the far end of its main stem; a part with more than two is skipped. Another "
+                "CRS is reprojected to the polygon layer's."
             ),
         )
         self.add_snap_tolerance_parameter(self.SNAP_TOLERANCE)
@@ -138,6 +140,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "input feature."
             ),
         )
+        self.add_connect_touching_parameter()
         self.add_result_parameters()
 
     def rule_name(self, parameters, context):
@@ -176,6 +179,11 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guides.append(guide_feature.geometry())
 
         end_cap = self.end_cap_option(run, parameters, context)
+        gates = None
+        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
+            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
+
+            gates = LayerGates(run, source)
 
         def task(feature):
             if not run.has_geometry(feature):
@@ -191,7 +199,13 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
-            core_geometry = run.frame.to_core(geometry)
+            core_geometry = None
+            if gates is not None:
+                # The gates are split points; the geometry carries them as vertices, so the line ends there.
+                core_geometry, core_gates, _ = gates.of(feature.id(), run.frame)
+                candidates = [*candidates, *core_gates]
+            if core_geometry is None:
+                core_geometry = run.frame.to_core(geometry)
             steps = run.core.multipolygon_centerline_steps(
                 core_geometry,
                 candidates if len(candidates) else None,

@@ -1,13 +1,14 @@
-"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between two or more split points."""
+"""Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between the ends of a polygon's arms."""
 
 from qgis.core import (
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
+    QgsProcessingParameterNumber,
 )
 
 from .base import IncirCuAlgorithm
-from .compat import GeometryType, ProcessingSourceType
+from .compat import GeometryType, ProcessingNumberParameterType, ProcessingSourceType
 from .split_points import SplitPoints
 
 
@@ -19,6 +20,10 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     SPLIT_ID_FIELD = "SPLIT_ID_FIELD"
     SNAP_TOLERANCE = "SNAP_TOLERANCE"
     ISLANDS = "ISLANDS"
+    MIN_ARM_RATIO = "MIN_ARM_RATIO"
+    MIN_ARM_LENGTH = "MIN_ARM_LENGTH"
+    OUTPUT_NODES = "OUTPUT_NODES"
+    CONNECT_TOUCHING = "CONNECT_TOUCHING"
 
     ICON = "polygonnetwork.svg"
     #: Section of the README (for the help URL) and the layer the lengths refer to.
@@ -46,16 +51,19 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def summary(self):
         return (
             self.tr(
-                "Computes, for each polygon (each part of a multipart polygon) with two or more 'Split points' on its "
-                "outline (the ends of the arms of a confluence, a delta or a road junction), lines down the middle of "
-                "its arms, joined where the arms meet. The split points cut the outline into pieces, the chains, one "
-                "between each two neighbouring points; each line runs through the centres of circles touching two "
-                "chains, a path of the shape's medial axis (the line of the centres of all circles touching two sides): "
-                "a tree with one end at each split point and junctions where a circle touches three chains, without side"
-                " branches. Each branch is one line "
-                "feature with the ids of the split points at its ends ('junction' at a junction), the chains on its right"
-                " and left, its length and widths; the M value of each vertex is the local width. Two split points give "
-                "exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored."
+                "Computes, for each polygon (each part of a multipart polygon), the part of the medial axis that "
+                "separates the outline's chains between its ends (the ends of the arms of a confluence, a lake, a delta"
+                " or a road junction): a tree with one end at each arm and junctions where a circle touches three "
+                "chains, without side branches. The ends are the 'Split points' on the outline when a part has two or "
+                "more; otherwise they are found automatically (one given split point replaces the automatic end nearest"
+                " to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least 'Minimum"
+                " arm length, in junction widths' (bank noise and small bays do not). Each branch is one line feature "
+                "with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the "
+                "split points at its ends ('gate' at a gate, 'auto' at an automatic end, 'junction' at a junction), the "
+                "chains on its "
+                "right and left, its length and widths; the M value of each vertex is the local width. Two split points"
+                " give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or "
+                "ignored."
                 " Geographic layers are computed in a local metric projection; distances are then in metres. A polygon "
                 "that cannot be processed is skipped with a warning naming its id and the reason."
             )
@@ -78,12 +86,13 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
-                self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint]
+                self.SPLIT_POINTS, self.tr("Split points"), [ProcessingSourceType.VectorPoint], optional=True
             ),
             self.tr(
-                "The ends of the network: at least two per polygon part, within 'Split point snapping "
-                "tolerance' of its exterior ring, typically one across each arm's end. A part with fewer is "
-                "skipped. Another CRS is reprojected to the polygon layer's."
+                "The ends of the network, within 'Split point snapping tolerance' of a part's exterior ring, "
+                "typically one across each arm's end. A part with two or more uses exactly these; a part with none "
+                "or one gets its arm ends automatically (the one given replaces the automatic end nearest to it, "
+                "when within that arm's width). Another CRS is reprojected to the polygon layer's."
             ),
         )
         self.add_parameter(
@@ -103,11 +112,40 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             self.tr(
                 "{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, "
                 "so the branches go round it on the side of the wider channel. {ignore}: holes are filled before "
-                "computing."
+                "computing. {channels}: every island at least as long as the river around it is wide (its own "
+                "width plus twice its distance to the nearest bank or island) gets a branch on each side, so the network has a "
+                "loop around it with exact junctions up- and downstream (branches of kind 'loop'); smaller "
+                "islands are passed on the side of the wider channel."
             ),
             self.ISLANDS,
+            channels=True,
         )
         self.add_end_cap_parameter(self.tr("the split point (junctions are left as they are)"))
+        self.add_parameter(
+            QgsProcessingParameterNumber(
+                self.MIN_ARM_RATIO,
+                self.tr("Minimum arm length, in junction widths"),
+                ProcessingNumberParameterType.Double,
+                1.0,
+                minValue=0.0,
+            ),
+            self.tr(
+                "Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at "
+                "least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than "
+                "the river is wide make no branch; a tributary does)."
+            ),
+        )
+        self.add_length_parameter(
+            self.MIN_ARM_LENGTH,
+            self.tr("Minimum arm length"),
+            0.0,
+            self.tr(
+                "Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction's "
+                "circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation."
+            ),
+            advanced=True,
+        )
+        self.add_connect_touching_parameter()
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
@@ -115,10 +153,25 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             ),
             self.tr(
                 "Line layer, one feature per branch: input attributes plus source_fid (the polygon's feature id, "
-                "to join the branch back to it), from_point, to_point (split point ids or 'junction'), "
-                "right_chain, left_chain (each chain named 'a-b' after the split points at its ends, "
-                "counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the "
-                "vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices."
+                "to join the branch back to it), from_point, to_point (split point ids, 'gate', 'auto' or 'junction'), "
+                "from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends "
+                "coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named 'a-b' after the "
+                "ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle "
+                "diameters over the vertices with a positive width; layer units, metres for a layer in degrees) "
+                "and n_vertices."
+            ),
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.OUTPUT_NODES,
+                self.tr("Network nodes"),
+                ProcessingSourceType.VectorPoint,
+                optional=True,
+                createByDefault=False,
+            ),
+            self.tr(
+                "Optional point layer: every end and junction with its node id, degree (number of branch ends), "
+                "radius (the junction's circle; 0 at an end) and kind (end or junction)."
             ),
         )
         self.add_count_outputs(self.tr("Number of branches"), self.tr("Number of branch features written."))
@@ -129,13 +182,25 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         source = run.source(self.INPUT, GeometryType.Polygon)
         crs = source.sourceCrs()
         run.warn_dropped_z(source)
-        split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
+        split_source = None
+        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
+            split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
+        id_field = None
+        if split_source is not None:
+            id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
+        min_arm_ratio = self.parameterAsDouble(parameters, self.MIN_ARM_RATIO, context)
+        min_arm_length = self.parameterAsDouble(parameters, self.MIN_ARM_LENGTH, context) or None
         snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
         sampling_of = self.feature_sampling(parameters, context)
-        # The enum's choices are in the order of the core's ISLAND_MODES.
-        islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        # The enum's choices are in the order of the core's NETWORK_ISLAND_MODES.
+        islands = run.core.NETWORK_ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
+        end_cap = self.end_cap_option(run, parameters, context)
         add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
+        gates = None
+        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
+            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
+
+            gates = LayerGates(run, source)
         run.use_writer(NetworkWriter(self, parameters, context, source.fields(), crs, add_m), crs)
         split_points = SplitPoints(split_source, crs, context, id_field)
 
@@ -144,16 +209,22 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             geometry = feature.geometry()
             run.frame.centre_on(geometry)
             candidates, ids = split_points.near(geometry, snap_tolerance, run.frame)
+            core_geometry, core_gates, layer_gates = None, [], []
+            if gates is not None:
+                core_geometry, core_gates, layer_gates = gates.of(feature.id(), run.frame)
             outcomes = run.compute(
                 feature.id(),
                 None,
                 run.core.multipolygon_networks,
-                run.frame.to_core(geometry),
+                run.frame.to_core(geometry) if core_geometry is None else core_geometry,
                 candidates,
+                gates=core_gates,
                 snap_tolerance=snap_tolerance or None,
                 **sampling_of(feature),
                 islands=islands,
-                end_cap=self.end_cap_option(run, parameters, context),
+                end_cap=end_cap,
+                min_arm_ratio=min_arm_ratio,
+                min_arm_length=min_arm_length,
             )
             several = len(outcomes or ()) > 1
             parts = []
@@ -163,6 +234,6 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                     continue
                 for note in outcome.result.notes:
                     run.warn_feature(feature.id(), note, outcome.part_index if several else None)
-                parts.append((outcome.part_index, outcome.result, ids))
+                parts.append((outcome.part_index, outcome.result, ids, layer_gates))
             run.write(feature, parts)
         return run.finish()

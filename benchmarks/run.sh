@@ -95,6 +95,12 @@ fi
 # Outside polygons (glyphs, Natural Earth countries and reservoirs): share with a line and time against the
 # peers; adds its marked section.
 "$PYTHON" "$BENCH_DIR/bench_outside.py" $QUICK
+# Networks: cost against the centerline, arms found against pygeoops, SFCGAL (and GRASS); adds its section.
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_network.py" --peers --repeats 1 --write
+else
+  "$PYTHON" "$BENCH_DIR/bench_network.py" --peers --grass --write
+fi
 # The plugin's feature loop against the core per feature (issue 9's small features); prints its table.
 if [ -n "$QUICK" ]; then
   "$PYTHON" "$BENCH_DIR/bench_plugin.py" --count 500 --repeats 1

@@ -230,6 +230,7 @@ def write_model(path):
             "ISLANDS": QgsProcessingModelChildParameterSource.fromStaticValue(0),
             "END_RULE": QgsProcessingModelChildParameterSource.fromStaticValue(0),
             "END_CAP": QgsProcessingModelChildParameterSource.fromStaticValue(0),
+            "CONNECT_TOUCHING": QgsProcessingModelChildParameterSource.fromStaticValue(False),
             "SEPARATE_PARTS": QgsProcessingModelChildParameterSource.fromStaticValue(False),
             "ADD_M": QgsProcessingModelChildParameterSource.fromStaticValue(False),
             "TRANSECT_INTERVAL": QgsProcessingModelChildParameterSource.fromStaticValue(0.0),
@@ -280,6 +281,7 @@ def example_models():
         "END_RULE": 0,
         "END_CAP": 0,
         "SEPARATE_PARTS": False,
+        "CONNECT_TOUCHING": False,
         "ADD_M": True,
     }
     widths_help = {

@@ -6,7 +6,9 @@ Writes ``docs/images/real_reservoir_main_stem.png``: the Natural Earth 1:10m pol
 1:50m river line (the main stem), and IncirCu's lines with ``end_rule`` main stem and longest path, in
 local metres (``tests/support/real_rivers.py``); and ``docs/images/real_reservoir_network.png``: the
 network (``polygon_network``) between the three ends the two rules found, i.e. the confluence of the main
-river and its side arm.
+river and its side arm; and ``docs/images/real_network_vs_sfcgal.png``: the automatic network (no split
+points) beside SFCGAL's approximate medial axis (what QGIS 4.2's *Approximate medial axis* runs; needs
+``pysfcgal``, in ``benchmarks/.venv-peers``).
 """
 
 import sys
@@ -26,6 +28,7 @@ from tests.support.real_rivers import main_stem_share, real_rivers
 
 OUTPUT = ROOT / "docs" / "images" / "real_reservoir_main_stem.png"
 NETWORK_OUTPUT = ROOT / "docs" / "images" / "real_reservoir_network.png"
+AUTOMATIC_OUTPUT = ROOT / "docs" / "images" / "real_network_vs_sfcgal.png"
 BRANCH_COLOURS = ("#b2182b", "#2166ac", "#1b7837", "#762a83", "#e08214")
 
 
@@ -79,6 +82,7 @@ def main(name):
         axes.plot(*(shapely.get_coordinates(line)[[0, -1]] / 1000.0).T, "o", color=color, ms=5)
     finish(figure, axes, f"{name}: Natural Earth 1:10m polygon, automatic ends", OUTPUT)
     draw_network(river, ends)
+    draw_automatic_network(river)
 
 
 def draw_network(river, ends):
@@ -98,6 +102,28 @@ def draw_network(river, ends):
     axes.plot(*(shapely.get_coordinates(shapely.points(distinct)) / 1000.0).T, "o", color="black", ms=5)
     title = f"{river.name}: incircu:polygonnetwork between {len(distinct)} split points"
     finish(figure, axes, title, NETWORK_OUTPUT)
+
+
+def draw_automatic_network(river):
+    """The automatic network beside SFCGAL's approximate medial axis, side by side."""
+    from pysfcgal import geometry as sfcgal_geometry
+
+    network = polygon_network(river.polygon)
+    medial = sfcgal_geometry.Geometry.from_wkb(shapely.to_wkb(river.polygon)).approximate_medial_axis()
+    medial = shapely.from_wkb(bytes(medial.to_wkb()))
+    figure, (left, right) = plt.subplots(1, 2, figsize=(13.0, 7.0), dpi=110, sharex=True, sharey=True)
+    for axes in (left, right):
+        draw_polygon(axes, river.polygon)
+    for index, branch in enumerate(network.branches):
+        draw_lines(left, branch.result.line, color="#b2182b", lw=1.4, label="branch" if index == 0 else None)
+    left.plot(*(network.junctions / 1000.0).T, "s", color="black", ms=4, label="junction")
+    left.plot(*(network.split_points / 1000.0).T, "o", color="black", ms=4, label="arm end (automatic)")
+    draw_lines(right, medial, color="#2166ac", lw=0.9, label="SFCGAL approximate medial axis")
+    right.set_aspect("equal")
+    right.set_title(f"SFCGAL approximate medial axis ({len(shapely.get_parts(medial))} segments)")
+    right.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    title = f"{river.name}: IncirCu automatic network, {len(network.split_points)} arms"
+    finish(figure, left, title, AUTOMATIC_OUTPUT)
 
 
 if __name__ == "__main__":

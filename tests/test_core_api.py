@@ -160,12 +160,12 @@ def test_multipolygon_gives_one_outcome_per_part_and_isolates_failures():
     good = box(0.0, 0.0, 50.0, 4.0)
     bad = box(0.0, 10.0, 50.0, 14.0)
     third = box(0.0, 20.0, 80.0, 26.0)
-    points = [(0.0, 2.0), (50.0, 2.0), (0.0, 12.0), (0.0, 23.0), (80.0, 23.0)]
+    points = [(0.0, 2.0), (50.0, 2.0), (0.0, 12.0), (50.0, 12.0), (25.0, 14.0), (0.0, 23.0), (80.0, 23.0)]
     outcomes = multipolygon_centerlines(MultiPolygon([good, bad, third]), points, spacing=0.5)
     assert [o.part_index for o in outcomes] == [0, 1, 2]
     assert outcomes[0].error is None and outcomes[0].result.line.length == pytest.approx(50.0)
     assert outcomes[1].result is None and isinstance(outcomes[1].error, SplitPointError)
-    assert "1" in str(outcomes[1].error)
+    assert "3" in str(outcomes[1].error)
     assert outcomes[2].error is None and outcomes[2].result.line.length == pytest.approx(80.0)
     assert outcomes[2].result.widths[1:-1] == pytest.approx(6.0)
 

@@ -203,11 +203,12 @@ def test_polygon_with_a_spike_folding_back_is_rejected():
     "points", [[], [(0.0, 5.0)], [(0.0, 5.0), (100.0, 5.0), (50.0, 0.0)]], ids=["zero", "one", "three"]
 )
 def test_split_points_not_two(points):
-    # An empty list means "find the ends" to polygon_centerline; split_polygon needs exactly two.
+    # An empty list means "find the ends" to polygon_centerline, one point "find the other end"; split_polygon
+    # needs exactly two.
     with pytest.raises(SplitPointError, match="exactly 2") as caught:
         split_polygon(RECTANGLE, points)
     assert str(len(points)) in str(caught.value)
-    if points:
+    if len(points) > 1:
         with pytest.raises(SplitPointError, match="exactly 2"):
             polygon_centerline(RECTANGLE, points)
 
@@ -636,14 +637,23 @@ def test_checked_coordinates_give_their_extent_when_whole():
     assert check_coordinates(coordinates, "pair of lines", whole=False) is None
 
 
-@pytest.mark.parametrize("find", [multipolygon_centerlines, multipolygon_networks], ids=["centerline", "network"])
-def test_a_wrong_split_point_count_names_no_part_of_a_single_polygon(find):
-    # One split point on a plain polygon: there is no "part 0" to speak of, one point is singular, and the
+def test_a_wrong_split_point_count_names_no_part_of_a_single_polygon():
+    # Three split points for a centerline of a plain polygon: there is no "part 0" to speak of, and the
     # tolerance has its unit.
-    (outcome,) = find(box(0.0, 0.0, 50.0, 4.0), [(0.0, 2.0)], snap_tolerance=0.5)
+    points = [(0.0, 2.0), (50.0, 2.0), (25.0, 0.0)]
+    (outcome,) = multipolygon_centerlines(box(0.0, 0.0, 50.0, 4.0), points, snap_tolerance=0.5)
     message = str(outcome.error)
-    assert message.startswith("The polygon has 1 split point within the snap tolerance (0.5 CRS units) of"), message
+    assert message.startswith("The polygon has 3 split points within the snap tolerance (0.5 CRS units) of"), message
     assert "Part" not in message
+
+
+@pytest.mark.parametrize("find", [multipolygon_centerlines, multipolygon_networks], ids=["centerline", "network"])
+def test_one_split_point_is_one_end_and_the_other_is_found(find):
+    (outcome,) = find(box(0.0, 0.0, 50.0, 4.0), [(0.0, 1.0)], snap_tolerance=0.5)
+    assert outcome.error is None
+    result = outcome.result if find is multipolygon_centerlines else outcome.result.branches[0].result
+    ends = sorted(tuple(np.round(xy, 9)) for xy in shapely.get_coordinates(result.line)[[0, -1]])
+    assert ends == [(0.0, 1.0), (50.0, 2.0)]
 
 
 def test_a_wrong_split_point_count_of_a_part_speaks_of_the_part():

@@ -112,7 +112,7 @@ def test_two_split_points_give_the_polygon_centerline(provider):
         assert branch[field] == line[field]
 
 
-def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provider):
+def test_a_part_with_one_split_point_gets_its_other_end_and_islands_are_avoided(provider):
     y_polygon, y_caps, _, _ = cases.symmetric_y(half_width=8.0)
     island = box(-2.0, 30.0, 4.0, 45.0)
     with_island = Polygon(y_polygon.exterior.coords, [island.exterior.coords])
@@ -123,13 +123,46 @@ def test_parts_without_enough_split_points_are_skipped_and_islands_avoided(provi
             "SPLIT_POINTS": split_layer([*y_caps, (500.0, 5.0)]),
         }
     )
-    assert results["CENTERLINE_COUNT"] == 3
-    assert results["SKIPPED_COUNT"] == 1
-    assert any("has 1 split point within" in warning for warning in feedback.warnings), feedback.warnings
-    ids = {feature["from_point"] for feature in results["OUTPUT"].getFeatures()}
-    assert ids == {"1", "2", "3"}
-    for feature in results["OUTPUT"].getFeatures():
+    assert results["CENTERLINE_COUNT"] == 4 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    features = list(results["OUTPUT"].getFeatures())
+    assert {feature["from_point"] for feature in features} | {feature["to_point"] for feature in features} == {
+        "1",
+        "2",
+        "3",
+        "4",
+        "auto",
+        "junction",
+    }
+    (lonely_line,) = [feature for feature in features if feature["name"] == "one point"]
+    line = as_shapely(lonely_line.geometry())
+    assert line.coords[0] == (500.0, 5.0) and np.allclose(line.coords[-1], (600.0, 5.0), atol=1e-9)
+    assert lonely_line["kind"] == "arm" and lonely_line["right_chain"].startswith("4-auto:")
+    for feature in features:
         assert not as_shapely(feature.geometry()).intersects(island)
+
+
+def test_automatic_network_carries_its_topology_and_nodes(provider):
+    polygon, caps, _, radius = cases.symmetric_y()
+    results, feedback = run(
+        {"INPUT": memory_layer("Polygon", "EPSG:2180", [(polygon, "Y")]), "OUTPUT_NODES": "memory:"}
+    )
+    assert results["CENTERLINE_COUNT"] == 3 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    branches = list(results["OUTPUT"].getFeatures())
+    nodes = {feature["node"]: feature for feature in results["OUTPUT_NODES"].getFeatures()}
+    assert len(nodes) == 4
+    (junction,) = [node for node in nodes.values() if node["kind"] == "junction"]
+    assert junction["degree"] == 3 and junction["radius"] == pytest.approx(radius, rel=1e-9)
+    assert junction.geometry().asPoint().distance(0.0, 0.0) <= 1e-9 * 120.0
+    for branch in branches:
+        assert branch["kind"] == "arm" and branch["from_point"] == "auto" and branch["to_point"] == "junction"
+        assert branch["to_node"] == junction["node"]
+        line = as_shapely(branch.geometry())
+        start = nodes[branch["from_node"]]
+        assert start["kind"] == "end" and start["degree"] == 1 and start["radius"] == 0.0
+        assert (
+            Point(line.coords[0]).distance(Point(start.geometry().asPoint().x(), start.geometry().asPoint().y())) == 0.0
+        )
+        assert min(Point(line.coords[0]).distance(Point(cap)) for cap in caps) <= 1e-9 * 120.0
 
 
 def test_geographic_layer_is_computed_in_metres(provider):
@@ -209,3 +242,52 @@ def test_rings_and_spikes_give_lines_with_warnings_in_every_algorithm(provider):
     (line,) = banks["OUTPUT"].getFeatures()
     assert as_shapely(line.geometry()).coords[:] == [(0.0, 4.0), (100.0, 4.0)]
     assert any("zero-width spike" in warning for warning in feedback.warnings), feedback.warnings
+
+
+@pytest.mark.parametrize("crs", ["EPSG:2180", "EPSG:4326"])
+def test_touching_reaches_meet_exactly_and_share_their_node(provider, crs):
+    # A river cut into three reaches (in degrees: about 70 m by 10 m at 52 N); the cuts are slanted.
+    scale = (1.0 / 68_000.0, 1.0 / 111_000.0) if crs == "EPSG:4326" else (1.0, 1.0)
+    offset = (19.0, 52.0) if crs == "EPSG:4326" else (0.0, 0.0)
+    outline = [
+        [(0, 0), (30, 0), (32, 10), (0, 10)],
+        [(30, 0), (60, 0), (57, 10), (32, 10)],
+        [(60, 0), (90, 0), (90, 10), (57, 10)],
+    ]
+    reaches = [Polygon([(offset[0] + x * scale[0], offset[1] + y * scale[1]) for x, y in ring]) for ring in outline]
+    layer = memory_layer("Polygon", crs, [(reach, f"reach {i}") for i, reach in enumerate(reaches)])
+    results, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True, "OUTPUT_NODES": "memory:"})
+    assert results["CENTERLINE_COUNT"] == 3 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    lines = {feature["name"]: feature for feature in results["OUTPUT"].getFeatures()}
+    ends = {name: as_shapely(feature.geometry()).coords for name, feature in lines.items()}
+    for a, b in (("reach 0", "reach 1"), ("reach 1", "reach 2")):
+        shared = {ends[a][0], ends[a][-1]} & {ends[b][0], ends[b][-1]}
+        assert len(shared) == 1, (a, b)  # end-to-end distance exactly 0
+        nodes_a = {lines[a]["from_node"], lines[a]["to_node"]}
+        assert len(nodes_a & {lines[b]["from_node"], lines[b]["to_node"]}) == 1
+    degrees = sorted(feature["degree"] for feature in results["OUTPUT_NODES"].getFeatures())
+    assert degrees == [1, 1, 2, 2]
+    assert {lines["reach 1"]["from_point"], lines["reach 1"]["to_point"]} == {"gate"}
+    centerlines, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True}, algorithm="polygoncenterline")
+    assert centerlines["SKIPPED_COUNT"] == 0, feedback.warnings
+    cl = [as_shapely(feature.geometry()).coords for feature in centerlines["OUTPUT"].getFeatures()]
+    assert len({cl[0][0], cl[0][-1]} & {cl[1][0], cl[1][-1]}) == 1
+    assert len({cl[1][0], cl[1][-1]} & {cl[2][0], cl[2][-1]}) == 1
+
+
+def test_channels_on_both_sides_of_a_large_island_make_a_loop(provider):
+    island = box(120.0, 15.0, 180.0, 25.0)
+    reach = Polygon(box(0.0, 0.0, 300.0, 40.0).exterior.coords, [island.exterior.coords])
+    results, feedback = run(
+        {"INPUT": memory_layer("Polygon", "EPSG:2180", [(reach, "braided")]), "ISLANDS": 2, "OUTPUT_NODES": "memory:"}
+    )
+    assert results["CENTERLINE_COUNT"] == 4 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    branches = list(results["OUTPUT"].getFeatures())
+    assert sorted(branch["kind"] for branch in branches) == ["arm", "arm", "loop", "loop"]
+    loops = [branch for branch in branches if branch["kind"] == "loop"]
+    assert {loops[0]["from_node"], loops[0]["to_node"]} == {loops[1]["from_node"], loops[1]["to_node"]}
+    assert {branch["right_chain"] for branch in loops} | {branch["left_chain"] for branch in loops} >= {"island:0"}
+    junctions = [node for node in results["OUTPUT_NODES"].getFeatures() if node["kind"] == "junction"]
+    assert sorted((node.geometry().asPoint().x(), node["degree"]) for node in junctions) == [(100.0, 3), (200.0, 3)]
+    for branch in branches:
+        assert not as_shapely(branch.geometry()).intersects(island)

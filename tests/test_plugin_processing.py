@@ -811,19 +811,24 @@ def test_split_points_beyond_the_snap_tolerance_are_warned_about(provider):
 
 
 def test_core_lengths_in_a_skip_are_named_in_the_layers_unit(provider):
-    """A polygon with one split point is skipped with the core's reason, its lengths named in metres for a layer
-    in degrees (the core says "CRS units": those of the frame it computed in)."""
+    """A polygon with three split points is skipped with the core's reason, its lengths named in metres for a
+    layer in degrees (the core says "CRS units": those of the frame it computed in)."""
     polygon = "POLYGON((10 50, 10.01 50, 10.01 50.001, 10 50.001, 10 50))"
     polygons = QgsVectorLayer("Polygon?crs=EPSG:4326", "degrees", "memory")
     points = QgsVectorLayer("Point?crs=EPSG:4326", "one end", "memory")
-    for layer_, wkt in ((polygons, polygon), (points, "POINT(10 50.0005)")):
+    for layer_, wkt in (
+        (polygons, polygon),
+        (points, "POINT(10 50.0005)"),
+        (points, "POINT(10.01 50.0005)"),
+        (points, "POINT(10.005 50)"),
+    ):
         feature = QgsFeature()
         feature.setGeometry(QgsGeometry.fromWkt(wkt))
         layer_.dataProvider().addFeatures([feature])
     results, feedback = run("polygoncenterline", {"INPUT": polygons, "SPLIT_POINTS": points, "SNAP_TOLERANCE": 1.0})
     assert results["SKIPPED_COUNT"] == 1
     (warning,) = feedback.warnings
-    assert "1 split point within the snap tolerance (1 m) of its exterior ring" in warning, warning
+    assert "3 split points within the snap tolerance (1 m) of its exterior ring" in warning, warning
     assert "CRS units" not in warning
 
 
@@ -915,13 +920,24 @@ def test_messages_name_the_dialog_labels_and_count_branches(provider):
 
 
 def test_a_wrong_split_point_count_names_no_part_of_a_single_polygon(provider):
-    points = memory_layer("Point", [("west", "POINT(0 20)")])
+    points = memory_layer("Point", [("west", "POINT(0 20)"), ("east", "POINT(300 20)"), ("south", "POINT(150 0)")])
     results, feedback = run(
         "polygoncenterline", {"INPUT": memory_layer("Polygon", [("channel", CHANNEL)]), "SPLIT_POINTS": points}
     )
     assert results["SKIPPED_COUNT"] == 1
     (warning,) = feedback.warnings
-    assert warning.startswith("Feature 1 skipped: The polygon has 1 split point within the snap tolerance"), warning
+    assert warning.startswith("Feature 1 skipped: The polygon has 3 split points within the snap tolerance"), warning
+
+
+def test_one_split_point_is_the_start_and_the_far_end_is_found(provider):
+    points = memory_layer("Point", [("west", "POINT(0 10)")])
+    results, _ = run(
+        "polygoncenterline", {"INPUT": memory_layer("Polygon", [("channel", CHANNEL)]), "SPLIT_POINTS": points}
+    )
+    (feature,) = results["OUTPUT"].getFeatures()
+    line = feature.geometry().constGet()
+    assert (line.startPoint().x(), line.startPoint().y()) == (0.0, 10.0)
+    assert abs(line.endPoint().x() - 300.0) < 1e-9 and abs(line.endPoint().y() - 20.0) < 1e-9
 
 
 def test_banks_of_very_different_lengths_are_warned_about(provider):

@@ -23,6 +23,7 @@ from .api import (
     polygon_centerline,
     polygon_centerline_steps,
 )
+from .arms import ArmEnds, find_arm_ends
 from .caps import END_CAPS
 from .chains import orient_bank_lines, split_polygon
 from .ends import END_RULES, EndsResult, find_ends, find_ends_together
@@ -37,15 +38,19 @@ from .errors import (
     OptionError,
     SplitPointError,
 )
-from .frames import centerlines
+from .frames import centerlines, networks
 from .geodesy import LocalProjection
-from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
+from .layers import LayerNetworks, layer_networks
+from .network import NETWORK_ISLAND_MODES, NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
+from .touching import touching_gates
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
 __all__ = [
     "END_CAPS",
     "END_RULES",
     "ISLAND_MODES",
+    "NETWORK_ISLAND_MODES",
+    "ArmEnds",
     "Cancelled",
     "CenterlineError",
     "CenterlineResult",
@@ -55,6 +60,7 @@ __all__ = [
     "IncirCuError",
     "Incircle",
     "InvalidGeometryError",
+    "LayerNetworks",
     "LocalProjection",
     "NetworkBranch",
     "NetworkResult",
@@ -68,19 +74,23 @@ __all__ = [
     "centerlines_together",
     "default_spacing",
     "default_tolerance",
+    "find_arm_ends",
     "find_ends",
     "find_ends_together",
     "incircle_polygons",
+    "layer_networks",
     "lines_centerline",
     "lines_centerline_steps",
     "multipolygon_centerline_steps",
     "multipolygon_centerlines",
     "multipolygon_networks",
+    "networks",
     "orient_bank_lines",
     "polygon_centerline",
     "polygon_centerline_steps",
     "polygon_network",
     "split_polygon",
+    "touching_gates",
     "transects",
     "vertex_chainages",
     "width_statistics",

@@ -88,6 +88,8 @@ def polygon_centerline(
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of two Point or (x, y), optional
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`.ends.find_ends`.
+        One point: it is the start, and the end is whichever of :func:`.ends.find_ends`' two ends lies
+        farther from it (the far end of the main stem).
     spacing : float, optional
         Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
         adaptive sampling (the default; what a user wants unless reproducing the paper).
@@ -185,7 +187,7 @@ def polygon_centerline_steps(
     ends_found = len(split_points) == 0
     ends_from = "split_points"
     region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
-    if ends_found:
+    if len(split_points) < 2:
         _check_ends_width(region)
         ends = yield from _automatic_ends(
             region, end_rule, guide, _progress_share(progress, 0.0, ENDS_PROGRESS_SHARE), notes
@@ -198,8 +200,15 @@ def polygon_centerline_steps(
             values = {name: getattr(_checked(result, region), name) for name in _RESULT_FIELDS}
             values.update(ends_found=True, notes=(*notes, RING_NOTE, *result.notes), ends_from="automatic")
             return PolygonCenterlineResult(**values)
-        split_points = split_point_coordinates((ends.start, ends.end))
-        ends_from = "guide" if ends.guided else "automatic"
+        found = split_point_coordinates((ends.start, ends.end))
+        if len(split_points) == 1:
+            # The given point is one end; the other is the end of the main stem farther from it.
+            farther = int(np.argmax(np.hypot(*(found - split_points[0]).T)))
+            split_points = np.concatenate([split_points, found[farther : farther + 1]])
+            ends_from = "split_points_and_automatic"
+        else:
+            split_points = found
+            ends_from = "guide" if ends.guided else "automatic"
     c1, c2 = split_checked_polygon(polygon, split_points, snap_tolerance)
     steps = clean_chains_steps
     if islands == "main_channel" and polygon.interiors:
@@ -262,8 +271,9 @@ class PolygonCenterlineResult(CenterlineResult):
 
     Attributes
     ----------
-    ends_from : {"split_points", "guide", "automatic"}
-        The given split points, the skeleton path following a guide line, or the automatic end rule.
+    ends_from : {"split_points", "guide", "automatic", "split_points_and_automatic"}
+        The given split points, the skeleton path following a guide line, the automatic end rule, or one
+        given split point and the far end of the main stem.
     """
 
     ends_from: str = "split_points"
@@ -384,7 +394,7 @@ def split_point_count_error(count, snap_tolerance, several, needed):
         The geometry has several parts: the message speaks of "the part" (its caller knows which, see
         :class:`PartOutcome`), else of "the polygon".
     needed : str
-        The code of what the part needs in :data:`.errors.MESSAGES`: ``"needs_two_or_none"`` (a centerline) or
+        The code of what the part needs in :data:`.errors.MESSAGES`: ``"needs_two_or_fewer"`` (a centerline) or
         ``"network_needs_two"``.
 
     Returns
@@ -530,7 +540,8 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     """Centerline of each part of a polygon or multipolygon.
 
     Each part takes the split points lying within ``snap_tolerance`` of its exterior ring: two of them are
-    its ends; none means its ends are found automatically; one or more than two is an error for that part.
+    its ends; none means its ends are found automatically; one is its start, and its end is found
+    automatically (see :func:`polygon_centerline`); more than two is an error for that part.
     A part that fails does not stop the others.
 
     Parameters
@@ -580,8 +591,8 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
         try:
             validate_polygon(part)
             mine = coordinates[near]
-            if len(mine) not in (0, 2):
-                raise split_point_count_error(len(mine), snap_tolerance, len(parts) > 1, "needs_two_or_none")
+            if len(mine) > 2:
+                raise split_point_count_error(len(mine), snap_tolerance, len(parts) > 1, "needs_two_or_fewer")
             result = yield from polygon_centerline_steps(
                 part,
                 mine if len(mine) else None,

@@ -475,10 +475,11 @@ def _no_check(fraction):
     """A progress check that never cancels."""
 
 
-def _joint_trunks(frames, rule, outcomes, check):
+def _joint_trunks(frames, rule, outcomes, check, skeleton=None):
     """Return per frame its trunk ``(points, radii, junction, step, guided)``, None for a failed one.
 
-    The skeletons of all frames are built, weighed and contracted together (see :func:`.paths.heaviest_paths`).
+    The skeletons of all frames are built (unless ``skeleton``, the :func:`.skeleton.joint_skeletons` of the
+    frames' local polygons, is given), weighed and contracted together (see :func:`.paths.heaviest_paths`).
     A polygon that cannot be triangulated, or whose skeleton has no edge, gets :class:`InvalidGeometryError`
     in ``outcomes``.
     """
@@ -486,7 +487,8 @@ def _joint_trunks(frames, rule, outcomes, check):
     framed = [index for index, frame in enumerate(frames) if frame is not None]
     if not framed:
         return trunks
-    skeleton = joint_skeletons([frames[index].local for index in framed])
+    if skeleton is None:
+        skeleton = joint_skeletons([frames[index].local for index in framed])
     nodes, spans, edges = skeleton.nodes, skeleton.spans, skeleton.edges
     node_start = np.searchsorted(skeleton.owner, np.arange(len(framed) + 1))
     edge_owner = skeleton.owner[edges[:, 0]]

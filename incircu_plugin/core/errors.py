@@ -41,7 +41,9 @@ MESSAGES = {
     "subject_part": QT_TRANSLATE_NOOP("IncirCuCore", "The part"),
     "split_point_one": QT_TRANSLATE_NOOP("IncirCuCore", "split point"),
     "split_point_many": QT_TRANSLATE_NOOP("IncirCuCore", "split points"),
-    "needs_two_or_none": QT_TRANSLATE_NOOP("IncirCuCore", "it needs 2 (or none, to find its ends automatically)"),
+    "needs_two_or_fewer": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "it needs 2 (or fewer, to find the missing ends automatically)"
+    ),
     "network_needs_two": QT_TRANSLATE_NOOP("IncirCuCore", "a network needs at least 2"),
     # Options.
     "unknown_island_mode": QT_TRANSLATE_NOOP("IncirCuCore", "Unknown island mode {mode!r}; use one of {choices}."),

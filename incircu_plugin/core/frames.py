@@ -256,3 +256,134 @@ def _message(error):
     if isinstance(error, IncirCuError):
         return str(error)
     return f"unexpected {type(error).__name__}: {error}"
+
+
+#: Columns of :func:`networks`' branch frame besides the geometry, with their pandas dtypes.
+NETWORK_COLUMNS = {
+    "source": "object",
+    "part": "Int64",
+    "from_node": "Int64",
+    "to_node": "Int64",
+    "kind": "string",
+    "from_point": "string",
+    "to_point": "string",
+    "length": "float64",
+    "width_min": "float64",
+    "width_mean": "float64",
+    "width_max": "float64",
+    "n_vertices": "Int64",
+    "error": "string",
+}
+
+
+def networks(
+    data,
+    split_points=None,
+    *,
+    connect_touching=False,
+    min_arm_ratio=None,
+    min_arm_length=None,
+    islands="main_channel",
+    tolerance=None,
+    spacing=None,
+    snap_tolerance=1.0,
+    nodes=False,
+):
+    """Network of every (multi)polygon of a GeoSeries or GeoDataFrame: one row per branch.
+
+    Each feature is computed as the ``incircu:polygonnetwork`` algorithm computes it (see
+    :func:`.layers.layer_networks`): ends from the split points near each part (two or more), else found
+    automatically; with ``connect_touching``, the middle of each boundary stretch two features share is an
+    end of both. Node ids are shared by every branch meeting there, across features. A dask frame is computed
+    first (the node ids and the gates need the whole layer).
+
+    Parameters
+    ----------
+    data : geopandas.GeoSeries, geopandas.GeoDataFrame or dask_geopandas.GeoDataFrame
+        Polygons and multipolygons, any CRS (geographic: computed in metres around each feature).
+    split_points : GeoSeries, GeoDataFrame or sequence of shapely geometries, optional
+        Every vertex is a candidate split point (reprojected to ``data``'s CRS).
+    connect_touching : bool
+        Gates between touching features.
+    min_arm_ratio, min_arm_length : float, optional
+        See :func:`.network.polygon_network`; passed only when given (``min_arm_length`` in CRS units,
+        metres when geographic).
+    islands : {"main_channel", "ignore"}
+    tolerance, spacing : float, optional
+        As for :func:`centerlines`.
+    snap_tolerance : float
+        As for :func:`centerlines`.
+    nodes : bool
+        Also return the node frame.
+
+    Returns
+    -------
+    geopandas.GeoDataFrame or (geopandas.GeoDataFrame, geopandas.GeoDataFrame)
+        Branches: ``source`` (the feature's index label), ``part``, ``from_node``, ``to_node``, ``kind``,
+        ``from_point``, ``to_point`` (the split point's position among the candidate vertices, ``gate``,
+        ``auto`` or ``junction``), ``length``, ``width_min``, ``width_mean``, ``width_max``, ``n_vertices``,
+        ``error`` (a failed feature or part: one row without geometry); same CRS. Nodes (with ``nodes``):
+        indexed by node id, ``degree``, ``radius``, ``kind``.
+
+    Examples
+    --------
+    >>> import geopandas
+    >>> from shapely.geometry import box
+    >>> reaches = geopandas.GeoSeries([box(0, 0, 50, 10), box(50, 0, 100, 10)], crs="EPSG:2180")
+    >>> branches = networks(reaches, connect_touching=True)
+    >>> branches[["source", "from_node", "to_node", "from_point"]].values.tolist()
+    [[0, 0, 1, 'gate'], [1, 0, 2, 'gate']]
+    """
+    import geopandas
+    import pandas
+
+    from .layers import layer_networks
+
+    if hasattr(data, "npartitions"):
+        data = data.compute()
+    geometry = _geometry_of(data)
+    crs = geometry.crs
+    geographic = crs is not None and crs.is_geographic
+    options = {"islands": islands, "spacing": spacing}
+    given = (
+        ("tolerance", tolerance),
+        ("min_arm_ratio", min_arm_ratio),
+        ("min_arm_length", min_arm_length),
+    )
+    options.update({name: value for name, value in given if value is not None})
+    points = None if split_points is None else _coordinates_in(split_points, crs)
+    layer = layer_networks(
+        list(geometry.values),
+        points,
+        connect_touching=connect_touching,
+        geographic_crs=crs.srs if geographic else None,
+        snap_tolerance=snap_tolerance or None,
+        **options,
+    )
+    labels = list(geometry.index)
+    rows = [
+        {**{name: branch.get(name) for name in NETWORK_COLUMNS}, "source": labels[branch["feature"]]}
+        for branch in layer.branches
+    ]
+    rows += [{"source": labels[feature], "part": part, "error": message} for feature, part, message in layer.errors]
+    shapes = [branch["geometry"] for branch in layer.branches] + [None] * len(layer.errors)
+    for row in rows:
+        for end in ("from_point", "to_point"):
+            row[end] = None if row.get(end) is None else str(row[end])
+    columns = {
+        name: pandas.Series([row.get(name) for row in rows], dtype=dtype) for name, dtype in NETWORK_COLUMNS.items()
+    }
+    branches = geopandas.GeoDataFrame(columns, geometry=geopandas.GeoSeries(shapes, crs=crs), crs=crs)
+    if not nodes:
+        return branches
+    node_frame = geopandas.GeoDataFrame(
+        {
+            "degree": pandas.Series([node["degree"] for node in layer.nodes], dtype="Int64"),
+            "radius": pandas.Series([node["radius"] for node in layer.nodes], dtype="float64"),
+            "kind": pandas.Series([node["kind"] for node in layer.nodes], dtype="string"),
+        },
+        geometry=geopandas.GeoSeries([node["geometry"] for node in layer.nodes], crs=crs),
+        crs=crs,
+    )
+    node_frame.index.name = "node"
+    return branches, node_frame

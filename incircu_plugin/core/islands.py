@@ -60,7 +60,7 @@ SLIT_ULPS = 64
 SLIT_CANDIDATES = 256
 
 
-def bridge_islands(c1, c2, holes):
+def bridge_islands(c1, c2, holes, to_second=None):
     """Join each island to the chain it is nearer to through a slit of negligible width.
 
     See the module docstring for the rule.
@@ -73,6 +73,9 @@ def bridge_islands(c1, c2, holes):
     holes : sequence of (ndarray of shape (m, 2), LinearRing or Polygon)
         The islands: rings (closed or not) or polygons (their exterior is used), CRS units. They must lie
         between the chains and not touch each other.
+    to_second : sequence of bool, optional
+        Per island, True to join it to ``c2`` (directly or through other islands joined to ``c2``) whichever
+        chain is nearer (the networks' channel islands, see :func:`.network.polygon_network`).
 
     Returns
     -------
@@ -107,7 +110,7 @@ def bridge_islands(c1, c2, holes):
     origin = local_origin(*chains, *rings)
     islands = _Islands.near_origin(chains, rings, origin)
     local = [chain - origin for chain in chains]
-    joining = _join_all(local, islands)
+    joining = _join_all(local, islands, [False] * len(rings) if to_second is None else list(to_second))
     detours = _detours(joining, islands)
     bridged = []
     for side, original in enumerate(chains):
@@ -249,7 +252,7 @@ class _SlitSearch:
     slit_tree: Optional[shapely.STRtree]
 
 
-def _join_all(chains, islands):
+def _join_all(chains, islands, to_second):
     """Join every island to a host, nearest free pair first (see the module docstring).
 
     Parameters
@@ -257,6 +260,8 @@ def _join_all(chains, islands):
     chains : list of two ndarray of shape (n, 2)
         The chains, shifted like the islands, CRS units.
     islands : _Islands
+    to_second : list of bool
+        Per island, whether it must end up joined to the second chain.
 
     Returns
     -------
@@ -268,7 +273,12 @@ def _join_all(chains, islands):
     targets = [_Target(chains[0]), _Target(chains[1])] + [None] * count
     bank_distance = np.stack([target.distance_to(islands.polygons) for target in targets[:2]], axis=1)
     reach = float(bank_distance.min(axis=1).max()) + islands.tie
-    pairs = [(float(bank_distance[i, side]), side, side, i) for i in range(count) for side in (0, 1)]
+    pairs = [
+        (float(bank_distance[i, side]), side, side, i)
+        for i in range(count)
+        for side in (0, 1)
+        if side == 1 or not to_second[i]
+    ]
     heapq.heapify(pairs)
     component = np.full(count + 2, -1)
     component[:2] = (0, 1)
@@ -286,7 +296,8 @@ def _join_all(chains, islands):
         near = islands.tree.query(polygon, predicate="dwithin", distance=reach)
         near = near[component[2 + near] < 0]
         for other, gap in zip(near.tolist(), shapely.distance(islands.polygons[near], polygon).tolist()):
-            heapq.heappush(joining.pairs, (gap, int(component[host]), 2 + island, other))
+            if component[host] == 1 or not to_second[other]:
+                heapq.heappush(joining.pairs, (gap, int(component[host]), 2 + island, other))
     return joining
 
 

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import LineString, Polygon, box
 from shapely.ops import unary_union
 
 
@@ -148,3 +148,38 @@ def delta():
     basin = LineString([(0.0, 0.0), (1.0, 0.0)]).buffer(9.0)
     polygon = shapely.set_precision(unary_union([*arms, basin]), 0.0).normalize()
     return polygon, [np.asarray(line.coords[-1], dtype=float) for line in lines]
+
+
+def fishbone(sides=5, spacing=40.0, half_width=5.0, side_half_width=3.0, side_length=45.0):
+    """A main road with ``sides`` side roads on each side (alternating, flat ends): ``2 sides + 2`` arms."""
+    length = spacing * (sides + 1)
+    pieces = [box(0.0, -half_width, length, half_width)]
+    caps = [(0.0, 0.0), (length, 0.0)]
+    for index in range(2 * sides):
+        x = spacing * (index // 2 + 1) + (spacing / 2.0 if index % 2 else 0.0) - spacing / 4.0
+        sign = 1.0 if index % 2 == 0 else -1.0
+        pieces.append(box(x - side_half_width, 0.0, x + side_half_width, sign * side_length).normalize())
+        caps.append((x, sign * side_length))
+    return unary_union(pieces), caps
+
+
+def noisy(polygon, width, seed):
+    """The polygon with bank noise: the outline sampled every 0.3 ``width`` and each sample moved along the
+    outward normal by up to 5 % of ``width`` (steps of random sign every few samples: bumps, notches and
+    digitising steps), except within one ``width`` of a corner, so the outline stays simple."""
+    rng = np.random.default_rng(seed)
+    ring = shapely.geometry.polygon.orient(polygon, 1.0).exterior
+    corners = shapely.get_coordinates(ring)[:-1]
+    before, after = corners - np.roll(corners, 1, axis=0), np.roll(corners, -1, axis=0) - corners
+    turn = np.abs(
+        np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0], np.einsum("ij,ij->i", before, after))
+    )
+    sharp = shapely.multipoints(corners[turn > np.radians(20.0)])
+    samples = shapely.get_coordinates(shapely.segmentize(ring, 0.3 * width))[:-1]
+    tangent = np.roll(samples, -1, axis=0) - np.roll(samples, 1, axis=0)
+    normal = np.stack([tangent[:, 1], -tangent[:, 0]], axis=1) / np.hypot(*tangent.T)[:, None]
+    blocks = np.repeat(rng.choice([-1.0, 0.0, 1.0], size=len(samples) // 3 + 1), 3)[: len(samples)]
+    amplitude = 0.05 * width * blocks * rng.uniform(0.5, 1.0, len(samples))
+    far = shapely.distance(shapely.points(samples), sharp) > width
+    moved = samples + (amplitude * far)[:, None] * normal
+    return Polygon(moved)

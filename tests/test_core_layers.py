@@ -1,0 +1,132 @@
+"""Layers of touching polygons: gates (``core.touching``), layer networks (``core.layers``) and ``frames.networks``.
+
+The generated layer (``tests/support/river_layer.py``) is rivers with tributaries cut across the main stem
+at random gates: every reach's lines must meet its neighbours' exactly (end-to-end distance 0, one shared
+node id per gate) and each river must be one connected network.
+"""
+
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import box
+
+from incircu_plugin.core import polygon_network
+from incircu_plugin.core.layers import layer_networks
+from incircu_plugin.core.touching import touching_gates
+from tests.support import network_cases as cases
+from tests.support.river_layer import river_reaches
+from tests.test_core_network import check_network
+
+
+def components(layer):
+    """Connected components of the layer's node graph: node id -> component root."""
+    parent = list(range(len(layer.nodes)))
+
+    def root(node):
+        while parent[node] != node:
+            parent[node] = parent[parent[node]]
+            node = parent[node]
+        return node
+
+    for branch in layer.branches:
+        parent[root(branch["from_node"])] = root(branch["to_node"])
+    return [root(node) for node in range(len(layer.nodes))]
+
+
+def check_layer(reaches, river_of, layer):
+    """Every gate joins exactly the lines of two reaches at one node; every river is one network."""
+    assert not layer.errors, layer.errors[:3]
+    assert {branch["feature"] for branch in layer.branches} == set(range(len(reaches)))
+    _, gates = touching_gates(reaches)
+    ends_at = {}
+    for branch in layer.branches:
+        coordinates = shapely.get_coordinates(branch["geometry"])
+        for node, xy in ((branch["from_node"], coordinates[0]), (branch["to_node"], coordinates[-1])):
+            # Each line ends exactly at its node.
+            assert tuple(xy) == layer.nodes[node]["geometry"].coords[0]
+            ends_at.setdefault(node, set()).add(branch["feature"])
+    for feature, points in enumerate(gates):
+        for gate in points:
+            (node,) = [n for n, data in enumerate(layer.nodes) if data["geometry"].coords[0] == tuple(gate)]
+            assert len(ends_at[node]) == 2 and feature in ends_at[node], "a gate joins exactly two reaches"
+    roots = components(layer)
+    for river in set(river_of):
+        features = [i for i, r in enumerate(river_of) if r == river]
+        nodes = {b[end] for b in layer.branches if b["feature"] in features for end in ("from_node", "to_node")}
+        assert len({roots[node] for node in nodes}) == 1, f"river {river} is not one network"
+
+
+def test_touching_gates_are_the_middles_of_shared_stretches_and_vertices_of_both():
+    shapes, gates = touching_gates([box(0, 0, 50, 10), box(50, 0, 100, 10), box(100, -20, 110, 30), None])
+    assert [g.tolist() for g in gates] == [[[50.0, 5.0]], [[50.0, 5.0], [100.0, 5.0]], [[100.0, 5.0]], []]
+    for shape, points in zip(shapes[:3], gates[:3]):
+        ring = shapely.get_coordinates(shape.exterior)
+        assert all(np.any(np.all(ring == gate, axis=1)) for gate in points)
+        assert shape.equals(shape.normalize())  # the same region, one vertex more
+    # Corners touching at a point make no gate.
+    _, gates = touching_gates([box(0, 0, 10, 10), box(10, 10, 20, 20)])
+    assert [len(g) for g in gates] == [0, 0]
+
+
+def test_a_gate_in_the_middle_of_a_bank_is_joined_by_an_exact_junction():
+    polygon, _, _, _ = cases.t_junction()
+    network = polygon_network(polygon, [(20.0, -5.0)])
+    assert len(network.split_points) == 4
+    check_network(polygon, network)
+    # The junction's circle touches the gate and the far bank: centre 5 above the gate, radius 5.
+    assert np.min(np.hypot(*(network.junctions - (20.0, 0.0)).T)) <= 1e-9 * 100.0
+
+
+def test_reaches_of_generated_rivers_meet_their_neighbours_exactly():
+    reaches, river_of = river_reaches(rivers=2, cuts_per_river=6, seed=7)
+    layer = layer_networks(reaches, connect_touching=True)
+    check_layer(reaches, river_of, layer)
+
+
+@pytest.mark.slow
+def test_two_thousand_reaches_of_generated_rivers_meet_their_neighbours_exactly():
+    reaches, river_of = river_reaches(rivers=185, cuts_per_river=10)
+    assert len(reaches) >= 2000
+    layer = layer_networks(reaches, connect_touching=True)
+    check_layer(reaches, river_of, layer)
+
+
+def test_geographic_reaches_meet_exactly_in_degrees():
+    # Two reaches of a river 10 m wide at 52 N, in degrees: each computed in metres around itself.
+    east, north = 1.0 / 68_000.0, 1.0 / 111_000.0
+    reaches = [
+        box(19.0, 52.0, 19.0 + 50 * east, 52.0 + 10 * north),
+        box(19.0 + 50 * east, 52.0, 19.0 + 100 * east, 52.0 + 10 * north),
+    ]
+    layer = layer_networks(reaches, connect_touching=True, geographic_crs="EPSG:4326")
+    assert not layer.errors
+    first, second = (shapely.get_coordinates(branch["geometry"]) for branch in layer.branches)
+    shared = {layer.branches[0]["from_node"], layer.branches[0]["to_node"]} & {
+        layer.branches[1]["from_node"],
+        layer.branches[1]["to_node"],
+    }
+    assert len(shared) == 1
+    ends = {tuple(first[0]), tuple(first[-1])} & {tuple(second[0]), tuple(second[-1])}
+    assert len(ends) == 1
+    assert 49.0 < sum(branch["length"] for branch in layer.branches) / 2.0 < 51.0  # metres
+
+
+def test_frames_networks_number_nodes_across_features():
+    geopandas = pytest.importorskip("geopandas")
+    from incircu_plugin.core.frames import networks
+
+    reaches = geopandas.GeoDataFrame(
+        {"name": ["a", "b", "bad"]},
+        geometry=[box(0, 0, 50, 10), box(50, 0, 100, 10), shapely.Polygon([(500, 0), (504, 4), (504, 0), (500, 4)])],
+        crs="EPSG:2180",
+        index=[10, 20, 30],
+    )
+    branches, nodes = networks(reaches, connect_touching=True, nodes=True)
+    good = branches[branches["error"].isna()]
+    assert good["source"].tolist() == [10, 20]
+    assert good["from_point"].tolist() == ["gate", "gate"] and good["kind"].tolist() == ["arm", "arm"]
+    (shared,) = set(good["from_node"])  # both lines start at the gate
+    assert nodes.loc[shared, "degree"] == 2 and nodes.loc[shared].geometry.coords[0] == (50.0, 5.0)
+    (failed,) = branches[branches["error"].notna()].itertuples()
+    assert failed.source == 30 and failed.geometry is None and "Self-intersection" in failed.error
+    assert branches.crs == reaches.crs and nodes.crs == reaches.crs
