@@ -38,6 +38,7 @@ from .errors import (
 )
 from .frames import centerlines
 from .geodesy import LocalProjection
+from .labels import LabelResult, curvature_radii, feature_label, label_line_steps, label_lines
 from .network import NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .widths import Incircle, Transect, incircle_polygons, transects, vertex_chainages, width_statistics
 
@@ -53,6 +54,7 @@ __all__ = [
     "IncirCuError",
     "Incircle",
     "InvalidGeometryError",
+    "LabelResult",
     "LocalProjection",
     "NetworkBranch",
     "NetworkResult",
@@ -64,11 +66,15 @@ __all__ = [
     "centerline_from_chains",
     "centerlines",
     "centerlines_together",
+    "curvature_radii",
     "default_spacing",
     "default_tolerance",
+    "feature_label",
     "find_ends",
     "find_ends_together",
     "incircle_polygons",
+    "label_line_steps",
+    "label_lines",
     "lines_centerline",
     "lines_centerline_steps",
     "multipolygon_centerline_steps",
