@@ -46,7 +46,6 @@ from .api import PartOutcome, batches, centerlines_together, multipolygon_center
 from .errors import IncirCuError, OptionError
 from .polyline import cumulative_lengths, points_at
 from .steps import run_alone
-from .widths import width_statistics
 
 #: Default ``trim``: the label stretch keeps the main stem where the polygon is at least half its widest width.
 #: Lettering sized to the stretch's narrowest width is then at least half as tall as the widest point allows,
@@ -71,9 +70,9 @@ BEND = 0.5
 #: the line still bends too tightly and lower it where it comes too near the shore.
 SMOOTHING = 0.5
 
-#: Default ``min_elongation``: below this ratio of the main stem's length to its mean width a part gets a
-#: label point. A disc's main stem has ratio 2, an ellipse with axes 2:1 about 3; a horizontal name is then
-#: the better label.
+#: Default ``min_elongation``: below this ratio of the main stem's length to the part's mean width (its area
+#: over that length) a part gets a label point. A disc has ratio 4/pi = 1.27, an ellipse with axes 2:1 2.5,
+#: 3:1 3.8, a rectangle its length over its width: up to about 2.4:1 a horizontal name is the better label.
 MIN_ELONGATION = 3.0
 
 #: Lines whose chord is within this angle (degrees) of north-south are read from south to north.
@@ -115,7 +114,7 @@ class LabelResult:
         Narrowest width (incircle diameter) along the label stretch, CRS units: the tallest lettering that
         fits; for a point, the widest incircle's diameter.
     elongation : float
-        The main stem's length over its mean width (see :func:`.widths.width_statistics`).
+        The main stem's length over the part's mean width (its area over that length).
     widths : ndarray of shape (n,)
         Local width of each vertex of ``geometry`` (one value for a point), CRS units.
     centerline : CenterlineResult
@@ -202,7 +201,7 @@ def label_lines(geometry, split_points=None, **options):
     smoothing : float
         Gaussian length scale along the line, in local widths (default :data:`SMOOTHING`).
     min_elongation : float
-        Below this length over mean width, a label point (default :data:`MIN_ELONGATION`).
+        Below this main-stem length over mean width (area over that length), a label point (default :data:`MIN_ELONGATION`).
     **options
         The centerline's: ``end_rule``, ``guide``, ``islands``, ``tolerance``, ``snap_tolerance``, ...
 
@@ -277,9 +276,10 @@ def label_from_centerline(
     """
     xy = shapely.get_coordinates(centerline.line)
     widths = np.asarray(centerline.widths, dtype=float)
-    statistics = width_statistics([centerline])
-    mean_width = statistics["width_mean"] or 0.0
-    elongation = centerline.length / mean_width if mean_width > 0 else math.inf
+    # The mean width of the part: its area over its main stem's length (a rectangle's width, pi/4 of an
+    # ellipse's minor axis). The incircles' mean would undercount compact shapes, whose main stem runs through
+    # the thin stubs where the incircles touch one point of the outline.
+    elongation = centerline.length**2 / polygon.area if polygon.area > 0 else math.inf
     widest = int(np.argmax(widths))
 
     def point_label():
