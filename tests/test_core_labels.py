@@ -125,7 +125,7 @@ def test_lines_read_west_to_east(angle):
     assert dx > 0
 
 
-@pytest.mark.parametrize("angle", [90.0, 270.0, 88.0])
+@pytest.mark.parametrize("angle", [90.0, 270.0, 88.0, 92.0])
 def test_vertical_lines_read_south_to_north(angle):
     lake = affinity.rotate(box(0, 0, 1000, 100), angle, origin=(0, 0))
     [outcome] = label_lines(lake)

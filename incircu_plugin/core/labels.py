@@ -75,7 +75,9 @@ SMOOTHING = 0.5
 #: 3:1 3.8, a rectangle its length over its width: up to about 2.4:1 a horizontal name is the better label.
 MIN_ELONGATION = 3.0
 
-#: Lines whose chord is within this angle (degrees) of north-south are read from south to north.
+#: Lines whose chord is within this angle (degrees) of north-south are read from south to north (bottom to
+#: top). A small angle: a renderer that keeps labels upright (QGIS, MapLibre) turns a steep line whose end
+#: lies west of its start round, and may then fail to place the name along it.
 VERTICAL_ANGLE = 5.0
 
 #: Spacing of the label line's vertices, as a share of the narrowest width on the label stretch.
@@ -128,6 +130,16 @@ class LabelResult:
     elongation: float
     widths: np.ndarray
     centerline: Any
+
+    @property
+    def ends_found(self):
+        """bool: the main stem's ends were found automatically (no split points)."""
+        return self.centerline.ends_found
+
+    @property
+    def notes(self):
+        """tuple of str: the main stem's messages for the user."""
+        return tuple(getattr(self.centerline, "notes", ()))
 
 
 def check_label_options(trim, clearance, bend, smoothing, min_elongation):
