@@ -30,7 +30,7 @@ export QT_QPA_PLATFORM := offscreen
 export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
 export PYTHONDONTWRITEBYTECODE := 1
 
-.PHONY: help setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
+.PHONY: help setup system-packages demo label-style test test-core lint package deploy transup transcompile bench fuzz clean
 
 help:
 	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"

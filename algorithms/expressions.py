@@ -352,5 +352,8 @@ def register_functions():
 def unregister_functions():
     """Remove the functions this module registered, and forget the cached results."""
     while REGISTERED:
-        QgsExpression.unregisterFunction(REGISTERED.pop().name())
+        # Python owns each function: it must outlive its removal from QGIS's list.
+        function = REGISTERED[-1]
+        QgsExpression.unregisterFunction(function.name())
+        REGISTERED.pop()
     CACHE.clear()

@@ -146,13 +146,17 @@ def render(layer, extent, size, crs=None):
     return job.renderedImage(), job.takeLabelingResults()
 
 
-def lake_extent(layer, name, crs):
-    """The extent of lake ``name`` in ``crs``, grown by 5 %."""
+def to_map(layer, crs):
+    """The transformation from ``layer``'s CRS to ``crs``."""
     from qgis.core import QgsCoordinateTransform, QgsProject
 
+    return QgsCoordinateTransform(layer.crs(), crs, QgsProject.instance())
+
+
+def lake_extent(layer, name, crs):
+    """The extent of lake ``name`` in ``crs``, grown by 5 %."""
     feature = next(f for f in layer.getFeatures() if f["name"] == name)
-    transform = QgsCoordinateTransform(layer.crs(), crs, QgsProject.instance())
-    box = transform.transformBoundingBox(feature.geometry().boundingBox())
+    box = to_map(layer, crs).transformBoundingBox(feature.geometry().boundingBox())
     box.scale(1.05)
     return box
 
