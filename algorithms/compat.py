@@ -30,12 +30,14 @@ if QGIS_VERSION >= 33600:
     ProcessingParameterFlag = Qgis.ProcessingParameterFlag
     ProcessingFeatureSourceFlag = Qgis.ProcessingFeatureSourceFlag
     CrsWktVariant = Qgis.CrsWktVariant
+    ProcessingNumberParameterType = Qgis.ProcessingNumberParameterType
 else:
     from qgis.core import (
         QgsCoordinateReferenceSystem,
         QgsProcessing,
         QgsProcessingFeatureSource,
         QgsProcessingParameterDefinition,
+        QgsProcessingParameterNumber,
     )
 
     ProcessingSourceType = SimpleNamespace(
@@ -51,6 +53,7 @@ else:
         SkipGeometryValidityChecks=QgsProcessingFeatureSource.Flag.FlagSkipGeometryValidityChecks,
     )
     CrsWktVariant = SimpleNamespace(Wkt2_2019=QgsCoordinateReferenceSystem.WktVariant.WKT2_2019)
+    ProcessingNumberParameterType = SimpleNamespace(Double=QgsProcessingParameterNumber.Type.Double)
 
 if QGIS_VERSION >= 33800:
     from qgis.PyQt.QtCore import QMetaType

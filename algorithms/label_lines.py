@@ -4,7 +4,7 @@ from functools import partial
 
 from qgis.core import QgsProcessingParameterFeatureSink, QgsProcessingParameterNumber
 
-from .compat import GeometryType, ProcessingSourceType
+from .compat import GeometryType, ProcessingNumberParameterType, ProcessingSourceType
 from .dependencies import shapely_problem
 from .polygon_centerline import PolygonCenterlineAlgorithm
 
@@ -38,7 +38,8 @@ class LabelLinesAlgorithm(PolygonCenterlineAlgorithm):
     MIN_ELONGATION = "MIN_ELONGATION"
     OUTPUT_POINTS = "OUTPUT_POINTS"
 
-    HELP_ANCHOR = "label-lines--incirculabellines"
+    ICON = "labellines.svg"
+    HELP_ANCHOR = "label-lines-of-polygons--incirculabellines"
 
     def name(self):
         return "labellines"
@@ -135,7 +136,7 @@ class LabelLinesAlgorithm(PolygonCenterlineAlgorithm):
         )
         for name, description, default, largest, help_text in shares:
             parameter = QgsProcessingParameterNumber(
-                name, description, QgsProcessingParameterNumber.Type.Double, default, True, 0.0
+                name, description, ProcessingNumberParameterType.Double, default, True, 0.0
             )
             if largest is not None:
                 parameter.setMaximum(largest)

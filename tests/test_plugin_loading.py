@@ -71,12 +71,22 @@ def test_provider_identity(provider):
     assert provider.versionInfo() == metadata()["version"]
     assert not provider.icon().isNull()
     ids = sorted(algorithm.id() for algorithm in provider.algorithms())
-    assert ids == ["incircu:linescenterline", "incircu:polygoncenterline", "incircu:polygonnetwork"]
+    assert ids == [
+        "incircu:labellines",
+        "incircu:linescenterline",
+        "incircu:polygoncenterline",
+        "incircu:polygonnetwork",
+    ]
 
 
 def test_algorithms_document_every_parameter(provider):
     registry = QgsApplication.processingRegistry()
-    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline", "incircu:polygonnetwork"):
+    for algorithm_id in (
+        "incircu:polygoncenterline",
+        "incircu:linescenterline",
+        "incircu:polygonnetwork",
+        "incircu:labellines",
+    ):
         algorithm = registry.algorithmById(algorithm_id)
         assert algorithm.group() == "Centerlines"
         assert algorithm.shortHelpString()
