@@ -38,11 +38,6 @@ LABEL_LINE_FUNCTION = "incircu_label_line"
 REGISTERED = []
 
 
-def tr(text):
-    """Translate ``text`` in the expression functions' context."""
-    return QCoreApplication.translate("IncirCuExpressions", text)
-
-
 class ResultCache:
     """A bounded, thread-safe least-recently-used map (map rendering evaluates expressions in threads)."""
 
@@ -255,14 +250,20 @@ def _number(value, name):
     try:
         return float(value)
     except (TypeError, ValueError):
-        raise ValueError(tr("{} must be a number, not {!r}").format(name, value)) from None
+        raise ValueError(
+            QCoreApplication.translate("IncirCuExpressions", "{} must be a number, not {!r}").format(name, value)
+        ) from None
 
 
 def _end_rule(value):
     core = require_core()
     rule = str(value or "main_stem")
     if rule not in core.END_RULES:
-        raise ValueError(tr("end_rule must be one of {}, not {!r}").format(", ".join(core.END_RULES), rule))
+        raise ValueError(
+            QCoreApplication.translate("IncirCuExpressions", "end_rule must be one of {}, not {!r}").format(
+                ", ".join(core.END_RULES), rule
+            )
+        )
     return rule
 
 
@@ -288,7 +289,10 @@ def label_options(values):
 
 
 def centerline_help():
-    return tr(
+    # (No comma after the text: pylupdate5 would not read the call.)
+    # fmt: off
+    return QCoreApplication.translate(
+        "IncirCuExpressions",
         "<h3>incircu_centerline(geometry, tolerance, end_rule)</h3>"
         "<p>The centerline of every part of a polygon (IncirCu's Curve of Incircles, between automatic ends), "
         "as a multi-line in the layer's CRS; NULL when no part has one. For a geometry generator symbol.</p>"
@@ -300,10 +304,14 @@ def centerline_help():
         "<p>Results are cached per geometry: panning and zooming do not recompute them.</p>"
         "<h4>Example</h4><p><code>incircu_centerline($geometry)</code></p>"
     )
+    # fmt: on
 
 
 def label_line_help():
-    return tr(
+    # (No comma after the text: pylupdate5 would not read the call.)
+    # fmt: off
+    return QCoreApplication.translate(
+        "IncirCuExpressions",
         "<h3>incircu_label_line(geometry, trim, clearance, bend, min_elongation, smoothing, end_rule, points)</h3>"
         "<p>The line a curved label of a lake or a wide river follows, as the 'Label lines of polygons' "
         "algorithm computes it for the polygon's largest part: the main stem trimmed to where the polygon is "
@@ -320,6 +328,7 @@ def label_line_help():
         "<p>Results are cached per geometry: panning and zooming do not recompute them.</p>"
         "<h4>Example</h4><p><code>incircu_label_line($geometry, points:=false)</code></p>"
     )
+    # fmt: on
 
 
 def register_functions():
