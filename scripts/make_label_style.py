@@ -95,25 +95,47 @@ def apply_style(layer, size=11.0):
     layer.setLabelsEnabled(True)
 
 
+def polygon_layer(polygons, names, crs="EPSG:4326"):
+    """A memory layer of Shapely polygons with their ``name`` (a string field)."""
+    from qgis.core import QgsFeature, QgsGeometry, QgsVectorLayer
+
+    layer = QgsVectorLayer(f"Polygon?crs={crs}&field=name:string", "lakes", "memory")
+    features = []
+    for polygon, name in zip(polygons, names):
+        feature = QgsFeature(layer.fields())
+        feature.setAttributes([name])
+        feature.setGeometry(QgsGeometry.fromWkt(polygon.wkt))
+        features.append(feature)
+    layer.dataProvider().addFeatures(features)
+    layer.updateExtents()
+    return layer
+
+
 def lakes_layer(names=None):
     """A memory layer (EPSG:4326) of the reservoirs of the test data, with their ``name``."""
     import shapely.geometry
-    from qgis.core import QgsFeature, QgsGeometry, QgsVectorLayer
 
     features = json.loads(DATA.read_text(encoding="utf-8"))["features"]
-    layer = QgsVectorLayer("Polygon?crs=EPSG:4326&field=name:string", "lakes", "memory")
-    added = []
-    for feature in features:
-        name = feature["properties"]["name"]
-        if feature["properties"]["role"] != "polygon" or (names is not None and name not in names):
-            continue
-        lake = QgsFeature(layer.fields())
-        lake.setAttributes([name])
-        lake.setGeometry(QgsGeometry.fromWkt(shapely.geometry.shape(feature["geometry"]).wkt))
-        added.append(lake)
-    layer.dataProvider().addFeatures(added)
-    layer.updateExtents()
-    return layer
+    lakes = [
+        (shapely.geometry.shape(feature["geometry"]), feature["properties"]["name"])
+        for feature in features
+        if feature["properties"]["role"] == "polygon" and (names is None or feature["properties"]["name"] in names)
+    ]
+    return polygon_layer(*zip(*lakes))
+
+
+def plugin_expressions():
+    """Register the plugin's expression functions, imported as QGIS imports the plugin (the package ``incircu``
+    from ``out/plugins``); return their module."""
+    plugins = REPOSITORY / "out" / "plugins"
+    plugins.mkdir(parents=True, exist_ok=True)
+    if not (plugins / "incircu").exists():
+        (plugins / "incircu").symlink_to(REPOSITORY, target_is_directory=True)
+    sys.path.insert(0, str(plugins))
+    from incircu.algorithms import expressions
+
+    expressions.register_functions()
+    return expressions
 
 
 def render(layer, extent, size, crs=None):
@@ -197,15 +219,7 @@ def main():
 
     application = QgsApplication([], False)
     application.initQgis()
-    sys.path.insert(0, str(REPOSITORY.parent))
-    plugins = REPOSITORY / "out" / "plugins"
-    plugins.mkdir(parents=True, exist_ok=True)
-    if not (plugins / "incircu").exists():
-        (plugins / "incircu").symlink_to(REPOSITORY, target_is_directory=True)
-    sys.path.insert(0, str(plugins))
-    from incircu.algorithms.expressions import register_functions  # the plugin's package, as QGIS imports it
-
-    register_functions()
+    plugin_expressions()
     write_style()
     write_picture()
     print(STYLE, PICTURE)

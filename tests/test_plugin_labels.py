@@ -15,9 +15,7 @@ from qgis.core import (
     QgsExpression,
     QgsExpressionContext,
     QgsExpressionContextUtils,
-    QgsFeature,
     QgsGeometry,
-    QgsVectorLayer,
 )
 from shapely.geometry import Point, box
 
@@ -41,18 +39,9 @@ def run_labels(layer, **parameters):
     )
 
 
-def projected_layer(shapes, crs="EPSG:2180"):
-    """A memory polygon layer of Shapely shapes with a ``name``."""
-    layer = QgsVectorLayer(f"Polygon?crs={crs}&field=name:string", "lakes", "memory")
-    features = []
-    for index, shape in enumerate(shapes):
-        feature = QgsFeature(layer.fields())
-        feature.setAttributes([f"Lake number {index}"])
-        feature.setGeometry(QgsGeometry.fromWkt(shape.wkt))
-        features.append(feature)
-    layer.dataProvider().addFeatures(features)
-    layer.updateExtents()
-    return layer
+def projected_layer(shapes):
+    """A memory polygon layer (EPSG:2180) of Shapely shapes with a ``name``."""
+    return label_style.polygon_layer(shapes, [f"Lake number {index}" for index in range(len(shapes))], "EPSG:2180")
 
 
 def evaluate(layer, feature, text):
