@@ -22,6 +22,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QCoreApplication
 
+from .compat import GeometryType
 from .dependencies import require_core
 
 #: The group of the expression builder the functions are listed in.
@@ -101,7 +102,7 @@ def compute_label(geometry, crs, options):
     crs : QgsCoordinateReferenceSystem
         The layer's CRS (in degrees: computed in a local projection, the options' lengths in metres).
     options : dict
-        The core's ``label_lines`` keywords, plus ``points`` (False: None instead of a label point).
+        The core's ``label_lines`` keywords.
 
     Returns
     -------
@@ -110,11 +111,8 @@ def compute_label(geometry, crs, options):
     core = require_core()
     frame = ThreadFrame(geometry, crs)
     shape = frame.to_core(geometry)
-    points = options.pop("points", True)
     label = core.feature_label(core.label_lines(shape, **options), shape)
-    if label is None or (label.kind == "point" and not points):
-        return None
-    return frame.to_layer(label.geometry)
+    return None if label is None else frame.to_layer(label.geometry)
 
 
 def compute_centerline(geometry, crs, options):
@@ -192,7 +190,13 @@ def _ellipsoid(crs):
 
 
 def cached(name, compute, geometry, crs, options):
-    """``compute(geometry, crs, options)`` through :data:`CACHE`; errors of the core give None (cached too)."""
+    """``compute(geometry, crs, options)`` through :data:`CACHE`; errors of the core give None (cached too).
+
+    A ``points`` option is applied after the cache (False: a point result gives None), so a style asking for
+    the line and for the point of the same feature computes it once.
+    """
+    options = dict(options)
+    points = options.pop("points", True)
     key = (name, geometry_key(geometry), crs.authid() or crs.toWkt(), tuple(sorted(options.items())))
     found, value = CACHE.get(key)
     if not found:
@@ -202,7 +206,9 @@ def cached(name, compute, geometry, crs, options):
         except core.IncirCuError:
             value = None
         CACHE.put(key, value)
-    return None if value is None else QgsGeometry(value)
+    if value is None or (not points and value.type() == GeometryType.Point):
+        return None
+    return QgsGeometry(value)
 
 
 class IncirCuFunction(QgsExpressionFunction):
