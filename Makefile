@@ -27,13 +27,13 @@ QGIS_PROFILE_DIR ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/$(PROFILE)
 DIST := dist
 # What a user installs: everything else (tests, benchmarks, scripts, CI, docs) stays out of the release zip; the
 # packaged README links what it references outside the zip on the repository (scripts/release_links.py).
-RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n help models
+RELEASE_PATHS := metadata.txt LICENSE __init__.py README.md incircu_plugin algorithms icons i18n help models styles
 export QT_QPA_PLATFORM := offscreen
 # Keep the tests' and the demo's QGIS settings out of the user's profile.
 export QGIS_CUSTOM_CONFIG_PATH ?= $(CURDIR)/out/qgis-profile
 export PYTHONDONTWRITEBYTECODE := 1
 
-.PHONY: help help-page setup system-packages demo test test-core lint package deploy transup transcompile bench fuzz clean
+.PHONY: help help-page setup system-packages demo label-style test test-core lint package deploy transup transcompile bench fuzz clean
 
 help:
 	@echo "make setup        install QGIS (Debian packages, if absent) and the pinned Python tools into $(VENV)"
@@ -83,6 +83,10 @@ $(QGIS_SITE)/.installed: requirements.txt requirements-build.txt $(VENV)/.instal
 
 demo: setup
 	$(PYTHON) scripts/demo.py
+
+# The example lake-label style (styles/lake_labels.qml) and its README picture, rendered by QGIS.
+label-style: setup
+	$(PYTHON) scripts/make_label_style.py
 
 # pytest-qgis starts QGIS with its GUI classes (the dialog tests need them) on the offscreen platform exported above.
 CORE_DOCTESTS := --doctest-modules incircu_plugin/core

@@ -76,6 +76,20 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
 
     def initAlgorithm(self, configuration=None):
+        self.add_polygon_parameters()
+        self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
+            self.tr(
+                "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
+                "input feature."
+            ),
+        )
+        self.add_connect_touching_parameter()
+        self.add_result_parameters()
+
+    def add_polygon_parameters(self):
+        """Add the inputs shared with the label algorithm: polygons, split points, sampling, islands, ends."""
         self.add_parameter(
             QgsProcessingParameterFeatureSource(
                 self.INPUT, self.tr("Polygon layer"), [ProcessingSourceType.VectorPolygon]
@@ -132,16 +146,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 "polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected."
             ),
         )
-        self.add_end_cap_parameter(self.tr("the split point, or for automatic ends where that line meets the outline"))
-        self.add_parameter(
-            QgsProcessingParameterBoolean(self.SEPARATE_PARTS, self.tr("One feature per polygon part"), False),
-            self.tr(
-                "Write one line feature per part of a multipart polygon instead of one MultiLineString per "
-                "input feature."
-            ),
-        )
-        self.add_connect_touching_parameter()
-        self.add_result_parameters()
 
     def rule_name(self, parameters, context):
         """Return where the ends of this run come from: "split points", "guide lines", or the automatic rule."""
@@ -155,6 +159,29 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
     def process_features(self, run, parameters, context, feedback):
         source = run.source(self.INPUT, GeometryType.Polygon)
         run.warn_dropped_z(source)
+        separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
+        multi = not separate and QgsWkbTypes.isMultiType(source.wkbType())
+        run.open_outputs(source.fields(), source.sourceCrs(), multi=multi)
+        return self.run_polygons(run, source, parameters, context, run.core.multipolygon_centerline_steps)
+
+    def run_polygons(self, run, source, parameters, context, steps_function):
+        """Compute every polygon of ``source`` in batches and write it through ``run``'s writer (open already).
+
+        Parameters
+        ----------
+        run : FeatureRun
+        source : QgsProcessingFeatureSource
+            The polygon layer.
+        parameters, context : dict, QgsProcessingContext
+        steps_function : callable
+            The core's ``multipolygon_centerline_steps`` or a function taking the same arguments whose
+            outcomes are :class:`PartOutcome` lists too (the label lines').
+
+        Returns
+        -------
+        dict
+            The algorithm's result map.
+        """
         crs = source.sourceCrs()
         split_source = None
         if parameters.get(self.SPLIT_POINTS) not in (None, ""):
@@ -164,8 +191,6 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         # The enum's choices are in the order of the core's ISLAND_MODES.
         islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
         end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
-        separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
-        run.open_outputs(source.fields(), crs, multi=not separate and QgsWkbTypes.isMultiType(source.wkbType()))
 
         split_points = SplitPoints(split_source, crs, context)
 
@@ -178,9 +203,11 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                     guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
                     guides.append(guide_feature.geometry())
 
-        end_cap = self.end_cap_option(run, parameters, context)
+        # The label algorithm shares these inputs but has neither an end cap choice (its line is trimmed) nor gates.
+        has = self.parameterDefinition
+        end_cap = self.end_cap_option(run, parameters, context) if has(self.END_CAP) else "axis"
         gates = None
-        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
+        if has(self.CONNECT_TOUCHING) and self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
             from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
 
             gates = LayerGates(run, source)
@@ -206,7 +233,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
                 candidates = [*candidates, *core_gates]
             if core_geometry is None:
                 core_geometry = run.frame.to_core(geometry)
-            steps = run.core.multipolygon_centerline_steps(
+            steps = steps_function(
                 core_geometry,
                 candidates if len(candidates) else None,
                 guide=_guide_near(run.frame, geometry, guides, guide_index),

@@ -114,6 +114,18 @@ if [ -n "$QUICK" ]; then
 else
   "$PYTHON" "$BENCH_DIR/bench_scale.py"
 fi
+# Label lines (issue 38): IncirCu against label_centerlines, pygeoops and the centerline -> QGIS Smooth chain, and
+# 10,000 lakes labelled through the expression function; needs the project's venv (QGIS), runs the peers in
+# this venv; adds its marked section to docs/benchmark.md.
+if [ -x "$REPO_ROOT/.venv/bin/python" ]; then
+  if [ -n "$QUICK" ]; then
+    "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_labels.py" --count 100 --peer-count 20 --render-count 1000
+  else
+    "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_labels.py"
+  fi
+else
+  echo "== bench_labels.py skipped: no $REPO_ROOT/.venv (run make setup)"
+fi
 # Last, bench_frames.py prints its table: the data-frame API on 1 and 2 dask workers against qgis_process
 # (issue 12). It needs the project's venv (geopandas, dask-geopandas, QGIS): make setup.
 if [ -x "$REPO_ROOT/.venv/bin/python" ]; then

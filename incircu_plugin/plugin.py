@@ -34,11 +34,17 @@ class IncirCuPlugin:
             self.provider.refreshAlgorithms()
 
     def initGui(self):
-        """Desktop start-up: the toolbox entries are the whole user interface."""
+        """Desktop start-up: the toolbox entries and the IncirCu expression functions."""
+        from ..algorithms.expressions import register_functions
+
         self.initProcessing()
+        register_functions()
 
     def unload(self):
-        """Remove the provider and the translator."""
+        """Remove the provider, the expression functions and the translator."""
+        from ..algorithms.expressions import unregister_functions
+
+        unregister_functions()
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None

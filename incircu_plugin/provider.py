@@ -46,6 +46,7 @@ class IncirCuProvider(QgsProcessingProvider):
         return plugin_metadata()["version"]
 
     def loadAlgorithms(self):
+        from ..algorithms.label_lines import LabelLinesAlgorithm
         from ..algorithms.lines_centerline import LinesCenterlineAlgorithm
         from ..algorithms.polygon_centerline import PolygonCenterlineAlgorithm
         from ..algorithms.polygon_network import PolygonNetworkAlgorithm
@@ -53,6 +54,7 @@ class IncirCuProvider(QgsProcessingProvider):
         self.addAlgorithm(PolygonCenterlineAlgorithm())
         self.addAlgorithm(LinesCenterlineAlgorithm())
         self.addAlgorithm(PolygonNetworkAlgorithm())
+        self.addAlgorithm(LabelLinesAlgorithm())
         for path in sorted(MODEL_FOLDER.glob("*.model3")):
             model = QgsProcessingModelAlgorithm()
             if model.fromFile(str(path)):

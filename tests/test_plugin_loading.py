@@ -79,7 +79,12 @@ def test_provider_identity(provider):
     ids = sorted(
         algorithm.id() for algorithm in provider.algorithms() if not isinstance(algorithm, QgsProcessingModelAlgorithm)
     )
-    assert ids == ["incircu:linescenterline", "incircu:polygoncenterline", "incircu:polygonnetwork"]
+    assert ids == [
+        "incircu:labellines",
+        "incircu:linescenterline",
+        "incircu:polygoncenterline",
+        "incircu:polygonnetwork",
+    ]
     examples = sorted(
         algorithm.displayName()
         for algorithm in provider.algorithms()
@@ -90,7 +95,12 @@ def test_provider_identity(provider):
 
 def test_algorithms_document_every_parameter(provider):
     registry = QgsApplication.processingRegistry()
-    for algorithm_id in ("incircu:polygoncenterline", "incircu:linescenterline", "incircu:polygonnetwork"):
+    for algorithm_id in (
+        "incircu:polygoncenterline",
+        "incircu:linescenterline",
+        "incircu:polygonnetwork",
+        "incircu:labellines",
+    ):
         algorithm = registry.algorithmById(algorithm_id)
         assert algorithm.group() == "Centerlines"
         assert algorithm.shortHelpString()

@@ -40,6 +40,7 @@ from .errors import (
 )
 from .frames import centerlines, networks
 from .geodesy import LocalProjection
+from .labels import LabelResult, curvature_radii, feature_label, label_line_steps, label_lines
 from .layers import LayerNetworks, layer_networks
 from .network import NETWORK_ISLAND_MODES, NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .touching import touching_gates
@@ -60,6 +61,7 @@ __all__ = [
     "IncirCuError",
     "Incircle",
     "InvalidGeometryError",
+    "LabelResult",
     "LayerNetworks",
     "LocalProjection",
     "NetworkBranch",
@@ -72,12 +74,16 @@ __all__ = [
     "centerline_from_chains",
     "centerlines",
     "centerlines_together",
+    "curvature_radii",
     "default_spacing",
     "default_tolerance",
+    "feature_label",
     "find_arm_ends",
     "find_ends",
     "find_ends_together",
     "incircle_polygons",
+    "label_line_steps",
+    "label_lines",
     "layer_networks",
     "lines_centerline",
     "lines_centerline_steps",
