@@ -51,10 +51,12 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
     def summary(self):
         return (
             self.tr(
-                "Computes, for each polygon (each part of a multipart polygon), the part of the medial axis that "
-                "separates the outline's chains between its ends (the ends of the arms of a confluence, a lake, a delta"
-                " or a road junction): a tree with one end at each arm and junctions where a circle touches three "
-                "chains, without side branches. The ends are the 'Split points' on the outline when a part has two or "
+                "Computes, for each polygon (each part of a multipart polygon), lines down the middle of its arms (the "
+                "arms of a confluence, a lake, a delta or a road junction), joined where the arms meet. The ends cut "
+                "the outline into pieces, the chains; each line runs through the centres of circles touching two "
+                "chains, a path of the shape's medial axis (the line of the centres of all circles touching two "
+                "sides): a tree with one end at each arm and junctions where a circle touches three chains, without "
+                "side branches. The ends are the 'Split points' on the outline when a part has two or "
                 "more; otherwise they are found automatically (one given split point replaces the automatic end nearest"
                 " to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least 'Minimum"
                 " arm length, in junction widths' (bank noise and small bays do not). Each branch is one line feature "
