@@ -23,12 +23,14 @@ from incircu_plugin.core import (
     polygon_centerline,
     polygon_centerline_steps,
 )
+from incircu_plugin.core.chains import _spikes_note
 from incircu_plugin.core.ends import find_ends, find_ends_together
 from incircu_plugin.core.errors import (
     CenterlineError,
     ChainError,
     CrossingLinesError,
     InvalidGeometryError,
+    Message,
     OptionError,
 )
 from incircu_plugin.core.polyline import typical_width
@@ -261,6 +263,11 @@ def test_spikes_on_an_island_and_with_automatic_ends():
     result = polygon_centerline(polygon)
     assert result.notes[0].startswith("2 zero-width spikes were removed from the exterior ring at (150, 6)")
     assert "island 1 at (115, 5)" in result.notes[0]
+    # A Message whose places are Messages too, so the plugin words every part in the user's language.
+    note = result.notes[0]
+    assert note.code == "note_spikes" and note.values["places"].code == "places_two"
+    places = note.values["places"].values
+    assert {places["first"].code, places["second"].code} == {"spike_exterior", "spike_island"}
     assert result.line.is_simple and {round(result.line.coords[0][0]), round(result.line.coords[-1][0])} == {0, 200}
 
 
@@ -320,7 +327,7 @@ def test_a_tolerance_the_user_set_too_fine_is_named_and_its_advice_works():
     polygon = box(0, 0, 2.0000000001, 1e-3)
     with pytest.raises(OptionError, match=r"The tolerance 1e-12 \(CRS units\) you set") as caught:
         polygon_centerline(polygon, tolerance=1e-12)
-    advised = float(str(caught.value).split("Use at least ")[1].split(",")[0])
+    advised = float(str(caught.value).split("Use at least ")[1].split()[0])
     assert polygon_centerline(polygon, tolerance=advised).line.is_simple
 
 
@@ -367,3 +374,18 @@ def test_find_ends_of_a_ring_without_a_trunk_line_does_not_crash():
     river, ring, other = find_ends_together([box(0, 0, 100, 10), moat, box(0, 20, 50, 25)])
     assert ring.trunk is None
     assert river.trunk.length == pytest.approx(100.0, rel=0.05) and other.trunk.length == pytest.approx(50.0, rel=0.05)
+
+
+def test_a_spikes_note_names_three_places_and_counts_the_rest():
+    """Past three spikes the note names the first three and how many more were removed."""
+    places = [Message("spike_first_line", point=f"({x}, 0)", length=0.5) for x in range(5)]
+    note = _spikes_note(places)
+    assert note == (
+        "5 zero-width spikes were removed from the first line at (0, 0) (0.5 CRS units long); the first line at "
+        "(1, 0) (0.5 CRS units long); the first line at (2, 0) (0.5 CRS units long); and 2 more before the "
+        "centerline was computed."
+    )
+    assert _spikes_note(places[:1]) == (
+        "A zero-width spike was removed from the first line at (0, 0) (0.5 CRS units long) before the centerline "
+        "was computed."
+    )

@@ -232,9 +232,7 @@ def _check_ends_width(polygon):
     width = typical_width(polygon.area, 0.5 * polygon.length)
     if width < ENDS_MIN_WIDTH * extent:
         raise InvalidGeometryError(
-            f"The polygon is {width:.3g} wide (its area over half its perimeter), {width / extent:.3g} of its "
-            f"extent ({extent:.6g} CRS units), under the {ENDS_MIN_WIDTH:g} at which its ends can be found "
-            "automatically in float64; give two split points."
+            Message("ends_too_narrow", width=width, relative=width / extent, extent=extent, minimum=ENDS_MIN_WIDTH)
         )
 
 

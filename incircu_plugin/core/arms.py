@@ -48,7 +48,7 @@ from .ends import (
     _Rings,
     _Tips,
 )
-from .errors import InvalidGeometryError, OptionError
+from .errors import InvalidGeometryError, Message, OptionError
 from .polyline import typical_width
 from .skeleton import joint_skeletons
 
@@ -83,9 +83,9 @@ def check_arm_options(min_arm_ratio, min_arm_length):
     ratio = MIN_ARM_RATIO if min_arm_ratio is None else float(min_arm_ratio)
     length = 0.0 if min_arm_length is None else float(min_arm_length)
     if not (np.isfinite(ratio) and ratio >= 0.0):
-        raise OptionError(f"min_arm_ratio must be a finite number >= 0, got {min_arm_ratio!r}.")
+        raise OptionError(Message("arm_ratio_bad", value=min_arm_ratio))
     if not (np.isfinite(length) and length >= 0.0):
-        raise OptionError(f"min_arm_length must be a finite length >= 0 (CRS units), got {min_arm_length!r}.")
+        raise OptionError(Message("arm_length_bad", value=min_arm_length))
     return ratio, length
 
 
@@ -132,7 +132,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     if skeleton.errors[0] is not None:
         raise skeleton.errors[0]
     if len(skeleton.edges) == 0:
-        raise InvalidGeometryError("The polygon is too thin or too small to find its arms automatically.")
+        raise InvalidGeometryError(Message("arms_too_thin"))
     main = _main_stem(frame, skeleton)
     graph = _Graph(skeleton.nodes, skeleton.radii, skeleton.edges)
     graph.prune(ratio, length / scale)

@@ -16,7 +16,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString
 
-from .errors import IncirCuError
+from .errors import IncirCuError, Message
 from .polyline import chord_directions, cumulative_lengths
 from .widths import end_cap_vertices, measured_stretch
 
@@ -28,7 +28,7 @@ END_CAPS = ("runout", "axis")
 def check_end_cap(end_cap):
     """Raise :class:`IncirCuError` unless ``end_cap`` is one of :data:`END_CAPS`."""
     if end_cap not in END_CAPS:
-        raise IncirCuError("Unknown end cap {!r}; use one of {}.".format(end_cap, ", ".join(END_CAPS)))
+        raise IncirCuError(Message("unknown_end_cap", cap=end_cap, choices=", ".join(END_CAPS)))
 
 
 def run_out_ends(result, region, move_ends=False, open_ends=False):

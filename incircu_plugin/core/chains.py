@@ -249,8 +249,8 @@ def polygon_without_folds(polygon):
     for number, ring in enumerate(rings):
         ring, removed = without_folds(ring, True, tolerance)
         cleaned.append(ring)
-        name = "the exterior ring" if number == 0 else f"island {number}"
-        places += [f"{name} at {format_point(tip)} ({length:.6g} CRS units long)" for tip, length in removed]
+        kind = "spike_exterior" if number == 0 else "spike_island"
+        places += [Message(kind, point=format_point(tip), length=length, number=number) for tip, length in removed]
     if not places:
         return polygon, None
     result = Polygon(cleaned[0], cleaned[1:])
@@ -261,10 +261,19 @@ def polygon_without_folds(polygon):
 
 
 def _spikes_note(places):
-    """The note naming the zero-width spikes removed at ``places`` (descriptions, see :func:`without_folds`)."""
-    spikes = "A zero-width spike was" if len(places) == 1 else f"{len(places)} zero-width spikes were"
-    shown = "; ".join(places[:3]) + (f"; and {len(places) - 3} more" if len(places) > 3 else "")
-    return f"{spikes} removed from {shown} before the centerline was computed."
+    """The note naming the zero-width spikes removed at ``places`` (``spike_*`` :class:`.errors.Message` objects,
+    see :func:`without_folds`): the first three, and how many more."""
+    count = len(places)
+    if count == 1:
+        return Message("note_spike_one", places=places[0])
+    parts = dict(zip(("first", "second", "third"), places))
+    if count == 2:
+        shown = Message("places_two", **parts)
+    elif count == 3:
+        shown = Message("places_three", **parts)
+    else:
+        shown = Message("places_more", **parts, more=count - 3)
+    return Message("note_spikes", count=count, places=shown)
 
 
 def ensure_bounding_chains(chain_a, chain_b):
@@ -296,10 +305,7 @@ def ensure_bounding_chains(chain_a, chain_b):
         contact = shapely.get_coordinates(shapely.shortest_line(*lines))[:1]
     elsewhere = [point for point in contact if all(np.hypot(*(point - end)) > coincidence for end in shared)]
     if elsewhere:
-        raise CrossingLinesError(
-            f"The two chains cross or touch at {format_point(elsewhere[0])}; they must bound a region between "
-            "them, meeting at most at shared end points."
-        )
+        raise CrossingLinesError(Message("chains_cross", point=format_point(elsewhere[0])))
 
 
 def _steps(coordinates):
@@ -567,8 +573,8 @@ def orient_bank_lines(line_a, line_b, notes=None):
     fold = FOLD_SINE_TOLERANCE * extent_of(a, b)
     (a, removed_a), (b, removed_b) = without_folds(a, False, fold), without_folds(b, False, fold)
     places = [
-        f"the {name} line at {format_point(tip)} ({length:.6g} CRS units long)"
-        for name, removed in (("first", removed_a), ("second", removed_b))
+        Message(kind, point=format_point(tip), length=length)
+        for kind, removed in (("spike_first_line", removed_a), ("spike_second_line", removed_b))
         for tip, length in removed
     ]
     if places and notes is not None:

@@ -97,6 +97,16 @@ MESSAGES = {
         "IncirCuCore", "The transect interval must be a positive distance, got {value!r}."
     ),
     "guides_count": QT_TRANSLATE_NOOP("IncirCuCore", "{guides} guides were given for {polygons} polygons."),
+    "unknown_end_cap": QT_TRANSLATE_NOOP("IncirCuCore", "Unknown end cap {cap!r}; use one of {choices}."),
+    "unknown_transect_style": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "Unknown transect style {style!r}; use one of {choices}."
+    ),
+    "arm_ratio_bad": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "min_arm_ratio must be a finite number >= 0, got {value!r}."
+    ),
+    "arm_length_bad": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "min_arm_length must be a finite length >= 0 ({units}), got {value!r}."
+    ),
     # Geometries.
     "polygon_null": QT_TRANSLATE_NOOP("IncirCuCore", "The polygon is null (no geometry)."),
     "polygon_empty": QT_TRANSLATE_NOOP("IncirCuCore", "The polygon is empty."),
@@ -161,6 +171,11 @@ MESSAGES = {
     "lines_cross": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The two lines cross or touch at {point}; they must bound a region between them."
     ),
+    "chains_cross": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The two chains cross or touch at {point}; they must bound a region between them, meeting at most at "
+        "shared end points."
+    ),
     "lines_no_area": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The two lines enclose no area between them (they lie on one line)."
     ),
@@ -179,6 +194,24 @@ MESSAGES = {
         "beyond the other, where the region between them is closed by the straight gap between their ends, and the "
         "centerline follows that gap there. Cut the lines to where they face each other."
     ),
+    # Zero-width spikes removed: the note names up to three places, each a spike_* message.
+    "note_spike_one": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "A zero-width spike was removed from {places} before the centerline was computed."
+    ),
+    "note_spikes": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "{count} zero-width spikes were removed from {places} before the centerline was computed."
+    ),
+    "spike_exterior": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "the exterior ring at {point} ({length:.6g} {units} long)"
+    ),
+    "spike_island": QT_TRANSLATE_NOOP("IncirCuCore", "island {number} at {point} ({length:.6g} {units} long)"),
+    "spike_first_line": QT_TRANSLATE_NOOP("IncirCuCore", "the first line at {point} ({length:.6g} {units} long)"),
+    "spike_second_line": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "the second line at {point} ({length:.6g} {units} long)"
+    ),
+    "places_two": QT_TRANSLATE_NOOP("IncirCuCore", "{first}; {second}"),
+    "places_three": QT_TRANSLATE_NOOP("IncirCuCore", "{first}; {second}; {third}"),
+    "places_more": QT_TRANSLATE_NOOP("IncirCuCore", "{first}; {second}; {third}; and {more} more"),
     # Split points and ends.
     "split_point_far": QT_TRANSLATE_NOOP(
         "IncirCuCore",
@@ -217,6 +250,19 @@ MESSAGES = {
     "ends_too_thin": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon is too thin or too small to find its ends automatically; give two split points."
     ),
+    "ends_too_narrow": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The polygon is {width:.3g} {units} wide (its area over half its perimeter), {relative:.3g} of its extent "
+        "({extent:.6g} {units}), under the {minimum:g} at which its ends can be found automatically in float64; "
+        "give two split points."
+    ),
+    "arms_too_thin": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "The polygon is too thin or too small to find its arms automatically."
+    ),
+    "arm_ends_too_few": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "Only {count} arm end was found automatically on this polygon; give its ends as split points."
+    ),
     "outline_not_triangulated": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon's outline could not be triangulated to find its ends automatically."
     ),
@@ -235,6 +281,11 @@ MESSAGES = {
         "IncirCuCore",
         "The shape is not elongated, with no dominant trunk; its automatic ends lie across its centre, "
         "along its longest axis."
+    ),
+    "note_ring": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The polygon is a ring around one island: its centerline is the closed loop around the island, from and "
+        "back to the ring's narrowest place. Give two split points for a line between them."
     ),
     # Islands.
     "island_blocked": QT_TRANSLATE_NOOP(

@@ -335,9 +335,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
                 automatic.pop(nearest)
     points = given + [end for end, _ in automatic]
     if len(points) < 2:
-        raise SplitPointError(
-            f"Only {len(points)} arm end was found automatically on this polygon; give its ends as split points."
-        )
+        raise SplitPointError(Message("arm_ends_too_few", count=len(points)))
     return points
 
 

@@ -27,6 +27,7 @@ import shapely
 
 from .chains import COINCIDENCE_TOLERANCE, _insert_at, clean_chain, extent_of, signed_area
 from .engine import clean_chains_steps
+from .errors import Message
 from .polyline import cumulative_lengths, nearest_entries
 
 #: Trunk length, as a share of the hole's perimeter, under which the loop around the hole is the polygon's
@@ -34,10 +35,7 @@ from .polyline import cumulative_lengths, nearest_entries
 RING_TRUNK_SHARE = 1.0
 
 #: The note a ring's result carries.
-RING_NOTE = (
-    "The polygon is a ring around one island: its centerline is the closed loop around the island, from and "
-    "back to the ring's narrowest place. Give two split points for a line between them."
-)
+RING_NOTE = Message("note_ring")
 
 
 def loop_is_main_feature(polygon, ends):

@@ -238,7 +238,7 @@ def transects(result, interval, chains=None, style="nearest"):
     [[(50.0, 0.0), (50.0, 5.0), (50.0, 10.0)]]
     """
     if style not in TRANSECT_STYLES:
-        raise IncirCuError("Unknown transect style {!r}; use one of {}.".format(style, ", ".join(TRANSECT_STYLES)))
+        raise IncirCuError(Message("unknown_transect_style", style=style, choices=", ".join(TRANSECT_STYLES)))
     try:
         interval = float(interval)
     except (TypeError, ValueError):
