@@ -511,13 +511,17 @@ def test_parts_are_numbered_from_one_in_fields_and_messages(provider):
     )
     assert {feature["part"] for feature in results["OUTPUT_VERTICES"].getFeatures()} == {1, 2}
     polygon = next(layer("multipart_2180.geojson").getFeatures())
-    one_point = QgsVectorLayer("Point?crs=EPSG:2180", "one split point", "memory")
-    first_part = polygon.geometry().constGet().geometryN(0).exteriorRing().pointN(0)
-    point = QgsFeature()
-    point.setGeometry(QgsGeometry(first_part.clone()))
-    one_point.dataProvider().addFeatures([point])
+    # Three split points on the first part: it is skipped, and the warning names it as the fields do.
+    three_points = QgsVectorLayer("Point?crs=EPSG:2180", "three split points", "memory")
+    ring = polygon.geometry().constGet().geometryN(0).exteriorRing()
+    points = []
+    for index in range(3):
+        point = QgsFeature()
+        point.setGeometry(QgsGeometry(ring.pointN(index).clone()))
+        points.append(point)
+    three_points.dataProvider().addFeatures(points)
     _results, feedback = run(
-        "polygoncenterline", {"INPUT": str(DATA / "multipart_2180.geojson"), "SPLIT_POINTS": one_point}
+        "polygoncenterline", {"INPUT": str(DATA / "multipart_2180.geojson"), "SPLIT_POINTS": three_points}
     )
     assert any(f"Feature {polygon.id()} (part 1) skipped" in warning for warning in feedback.warnings), (
         feedback.warnings

@@ -184,8 +184,8 @@ class EndsResult:
         should warn.
     trunk : LineString or None
         The skeleton path the ends were derived from (diagnostics), CRS units; it may cross islands smaller
-        than the typical width, which the skeleton leaves out. For a compact or star-like shape, the two
-        ends joined through the centre.
+        than the typical width, which the skeleton leaves out; None where that path is one point (a ring's
+        skeleton is a cycle without leaves). A compact or star-like shape's ends are not this path's.
     guided : bool
         True when a guide line came near the polygon and chose the path.
     kind : {"elongated", "compact", "star"}
@@ -629,7 +629,7 @@ def _ends_of_trunks(frames, trunks):
     path_lengths = tips.along[last] + tips.radii[tips.starts[::2]] + tips.radii[last]
     elongated = (diameters > 0.0) & (path_lengths >= ELONGATION_THRESHOLD * diameters)
     unguided = np.array([not trunks[index][4] for index in chosen])
-    kinds, centres = _across_centre(rings, diameters / 2.0, elongated, unguided, ends)
+    kinds = _across_centre(rings, diameters / 2.0, elongated, unguided, ends)
     backward = tips.group % 2 == 1
     # The start rule is decided in the local frame (unit diagonal), before the origin's rounding.
     east = ends[:, 1, 0] - ends[:, 0, 0]
@@ -651,16 +651,12 @@ def _ends_of_trunks(frames, trunks):
         lines[having] = shapely.linestrings(
             tips.points[forward] * scales[owners, None] + origins[owners], indices=compact
         )
-    centres = centres * scales[:, None] + origins
     for number, index in enumerate(chosen):
-        trunk = lines[number]
-        if kinds[number] != ELONGATED:
-            trunk = LineString([ends[number, 0], centres[number], ends[number, 1]])
         results[index] = EndsResult(
             start=points[number, 0],
             end=points[number, 1],
             elongated=bool(elongated[number]),
-            trunk=trunk,
+            trunk=lines[number],
             guided=trunks[index][4],
             kind=kinds[number],
         )
@@ -684,14 +680,11 @@ def _across_centre(rings, radii, elongated, unguided, ends):
 
     Returns
     -------
-    kinds : list of str
+    list of str
         :attr:`EndsResult.kind` of each shape.
-    centres : ndarray of shape (p, 2)
-        The centre the ends of a compact or star-like shape lie across (zero for the others), local units.
     """
     count = len(rings.exteriors)
     kinds = [ELONGATED] * count
-    centres = np.zeros((count, 2))
     outlines = shapely.polygons(rings.exteriors)
     centroids = shapely.centroid(outlines)
     xy = shapely.get_coordinates(centroids)
@@ -704,10 +697,10 @@ def _across_centre(rings, radii, elongated, unguided, ends):
         own = slice(rings.starts[number], rings.starts[number] + rings.lengths[number])
         tips = _star_tips(outlines[number], centroids[number], clearance[number], rings.vertices[own], distance[own])
         if tips is not None:
-            kinds[number], ends[number], centres[number] = STAR, tips, xy[number]
+            kinds[number], ends[number] = STAR, tips
     compact = np.flatnonzero(unguided & ~elongated & (np.array(kinds) == ELONGATED))
     if len(compact) == 0:
-        return kinds, centres
+        return kinds
     centre = xy[compact].copy()
     for position in np.flatnonzero(clearance[compact] < 0.5 * radii[compact]):
         # The centroid lies outside the outline or near its edge: the centre of the largest inscribed disk.
@@ -724,9 +717,9 @@ def _across_centre(rings, radii, elongated, unguided, ends):
     found = found.reshape(2, -1).all(axis=0)
     for position in np.flatnonzero(found):
         number = compact[position]
-        kinds[number], centres[number] = COMPACT, centre[position]
+        kinds[number] = COMPACT
         ends[number] = points[:, position]
-    return kinds, centres
+    return kinds
 
 
 def _star_tips(outline, centre, clearance, vertices, distance):
