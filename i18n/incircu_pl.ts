@@ -338,6 +338,11 @@
         <source>{straight}: one straight cross-section square to the centerline&apos;s direction, smoothed over about one width, from where it first meets a bank or island on one side to the other: what is surveyed in the field; its width is its length, at least the local width (method &apos;straight&apos;). {nearest}: from the centerline to the nearest point of each bank, the incircle&apos;s diameter; it bends at the centerline where the banks are not parallel (method &apos;nearest&apos;).</source>
         <translation>{straight}: jeden prosty przekrój prostopadły do kierunku linii środkowej, wygładzonego na długości około jednej szerokości, od miejsca, w którym po jednej stronie pierwszy raz napotyka brzeg lub wyspę, do takiego samego miejsca po drugiej stronie: taki, jaki mierzy się w terenie; jego szerokość to jego długość, nie mniejsza niż lokalna szerokość (metoda 'straight'). {nearest}: od linii środkowej do najbliższego punktu każdego brzegu, czyli średnica okręgu wpisanego; załamuje się na linii środkowej tam, gdzie brzegi nie są równoległe (metoda 'nearest').</translation>
     </message>
+    <message>
+        <location filename="../algorithms/label_outputs.py" line="78"/>
+        <source>Could not write a label: {}</source>
+        <translation>Nie można zapisać etykiety: {}</translation>
+    </message>
 </context>
 <context>
     <name>IncirCuCore</name>
@@ -918,6 +923,132 @@
     </message>
 </context>
 <context>
+    <name>IncirCuExpressions</name>
+    <message>
+        <location filename="../algorithms/expressions.py" line="259"/>
+        <source>{} must be a number, not {!r}</source>
+        <translation>{} musi być liczbą, a nie {!r}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/expressions.py" line="268"/>
+        <source>end_rule must be one of {}, not {!r}</source>
+        <translation>end_rule musi być jednym z: {}, a nie {!r}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/expressions.py" line="300"/>
+        <source>&lt;h3&gt;incircu_centerline(geometry, tolerance, end_rule)&lt;/h3&gt;&lt;p&gt;The centerline of every part of a polygon (IncirCu&apos;s Curve of Incircles, between automatic ends), as a multi-line in the layer&apos;s CRS; NULL when no part has one. For a geometry generator symbol.&lt;/p&gt;&lt;h4&gt;Arguments&lt;/h4&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;geometry&lt;/b&gt;: a polygon, usually &lt;code&gt;$geometry&lt;/code&gt;.&lt;/li&gt;&lt;li&gt;&lt;b&gt;tolerance&lt;/b&gt; (optional): largest distance from the exact medial axis, layer units (metres for a layer in degrees); 0 or NULL: 1/200 of the typical width.&lt;/li&gt;&lt;li&gt;&lt;b&gt;end_rule&lt;/b&gt; (optional): &apos;main_stem&apos; (default) or &apos;longest_path&apos;.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Results are cached per geometry: panning and zooming do not recompute them.&lt;/p&gt;&lt;h4&gt;Example&lt;/h4&gt;&lt;p&gt;&lt;code&gt;incircu_centerline($geometry)&lt;/code&gt;&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;incircu_centerline(geometry, tolerance, end_rule)&lt;/h3&gt;&lt;p&gt;Linia środkowa każdej części poligonu (krzywa okręgów wpisanych IncirCu, między automatycznymi końcami) jako wielolinia w układzie warstwy; NULL, gdy żadna część jej nie ma. Do symbolu z generatorem geometrii.&lt;/p&gt;&lt;h4&gt;Argumenty&lt;/h4&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;geometry&lt;/b&gt;: poligon, zwykle &lt;code&gt;$geometry&lt;/code&gt;.&lt;/li&gt;&lt;li&gt;&lt;b&gt;tolerance&lt;/b&gt; (opcjonalny): największa odległość od dokładnej osi środkowej w jednostkach warstwy (w metrach dla warstwy w stopniach); 0 lub NULL: 1/200 typowej szerokości.&lt;/li&gt;&lt;li&gt;&lt;b&gt;end_rule&lt;/b&gt; (opcjonalny): 'main_stem' (domyślnie) lub 'longest_path'.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Wyniki są zapamiętywane dla każdej geometrii: przesuwanie i powiększanie mapy ich nie przelicza.&lt;/p&gt;&lt;h4&gt;Przykład&lt;/h4&gt;&lt;p&gt;&lt;code&gt;incircu_centerline($geometry)&lt;/code&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/expressions.py" line="319"/>
+        <source>&lt;h3&gt;incircu_label_line(geometry, trim, clearance, bend, min_elongation, smoothing, end_rule, points)&lt;/h3&gt;&lt;p&gt;The line a curved label of a lake or a wide river follows, as the &apos;Label lines of polygons&apos; algorithm computes it for the polygon&apos;s largest part: the main stem trimmed to where the polygon is at least &lt;i&gt;trim&lt;/i&gt; of its widest width, smoothed, at least &lt;i&gt;clearance&lt;/i&gt; local widths off the shore, bending no tighter than &lt;i&gt;bend&lt;/i&gt; local widths, reading from left to right. A compact part gives a label point (the centre of its largest incircle), or NULL when &lt;i&gt;points&lt;/i&gt; is false. Use it as the label&apos;s geometry generator with curved placement.&lt;/p&gt;&lt;h4&gt;Arguments&lt;/h4&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;geometry&lt;/b&gt;: a polygon, usually &lt;code&gt;$geometry&lt;/code&gt;.&lt;/li&gt;&lt;li&gt;&lt;b&gt;trim&lt;/b&gt;, &lt;b&gt;clearance&lt;/b&gt;, &lt;b&gt;bend&lt;/b&gt;, &lt;b&gt;min_elongation&lt;/b&gt;, &lt;b&gt;smoothing&lt;/b&gt; (optional): as in the algorithm; NULL: its defaults (0.5, 0.25, 0.5, 3, 0.5).&lt;/li&gt;&lt;li&gt;&lt;b&gt;end_rule&lt;/b&gt; (optional): &apos;main_stem&apos; (default) or &apos;longest_path&apos;.&lt;/li&gt;&lt;li&gt;&lt;b&gt;points&lt;/b&gt; (optional): true (default) to return a label point for compact parts.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Results are cached per geometry: panning and zooming do not recompute them.&lt;/p&gt;&lt;h4&gt;Example&lt;/h4&gt;&lt;p&gt;&lt;code&gt;incircu_label_line($geometry, points:=false)&lt;/code&gt;&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;incircu_label_line(geometry, trim, clearance, bend, min_elongation, smoothing, end_rule, points)&lt;/h3&gt;&lt;p&gt;Linia, wzdłuż której biegnie wygięta etykieta jeziora lub szerokiej rzeki, tak jak wyznacza ją algorytm 'Linie etykiet poligonów' dla największej części poligonu: główny nurt przycięty do miejsc, w których poligon ma co najmniej &lt;i&gt;trim&lt;/i&gt; swojej największej szerokości, wygładzony, co najmniej &lt;i&gt;clearance&lt;/i&gt; lokalnych szerokości od brzegu, wygięty nie ciaśniej niż &lt;i&gt;bend&lt;/i&gt; lokalnych szerokości, czytany od lewej do prawej. Zwarta część daje punkt etykiety (środek największego koła wpisanego) albo NULL, gdy &lt;i&gt;points&lt;/i&gt; jest fałszem. Użyj jej jako generatora geometrii etykiety z rozmieszczeniem zakrzywionym.&lt;/p&gt;&lt;h4&gt;Argumenty&lt;/h4&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;geometry&lt;/b&gt;: poligon, zwykle &lt;code&gt;$geometry&lt;/code&gt;.&lt;/li&gt;&lt;li&gt;&lt;b&gt;trim&lt;/b&gt;, &lt;b&gt;clearance&lt;/b&gt;, &lt;b&gt;bend&lt;/b&gt;, &lt;b&gt;min_elongation&lt;/b&gt;, &lt;b&gt;smoothing&lt;/b&gt; (opcjonalne): jak w algorytmie; NULL: jego wartości domyślne (0.5, 0.25, 0.5, 3, 0.5).&lt;/li&gt;&lt;li&gt;&lt;b&gt;end_rule&lt;/b&gt; (opcjonalny): 'main_stem' (domyślnie) lub 'longest_path'.&lt;/li&gt;&lt;li&gt;&lt;b&gt;points&lt;/b&gt; (opcjonalny): prawda (domyślnie), by zwracać punkt etykiety dla zwartych części.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Wyniki są zapamiętywane dla każdej geometrii: przesuwanie i powiększanie mapy ich nie przelicza.&lt;/p&gt;&lt;h4&gt;Przykład&lt;/h4&gt;&lt;p&gt;&lt;code&gt;incircu_label_line($geometry, points:=false)&lt;/code&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>LabelLinesAlgorithm</name>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="48"/>
+        <source>Label lines of polygons</source>
+        <translation>Linie etykiet poligonów</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="51"/>
+        <source>The line a curved lake or river name follows, or a label point for a round lake.</source>
+        <translation>Linia, wzdłuż której biegnie wygięta nazwa jeziora lub rzeki, albo punkt etykiety dla okrągłego jeziora.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="54"/>
+        <source>Label lines</source>
+        <translation>Linie etykiet</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="57"/>
+        <source>Line layer: one label line per elongated polygon part, reading from left to right, with the input attributes plus source_fid, part, length, width_min (the narrowest width along the line: the tallest lettering that fits; layer units, metres for a layer in degrees), elongation and kind (line).</source>
+        <translation>Warstwa liniowa: jedna linia etykiety na każdą wydłużoną część poligonu, czytana od lewej do prawej, z atrybutami wejściowymi oraz source_fid, part, length, width_min (najmniejsza szerokość wzdłuż linii: najwyższe mieszczące się litery; w jednostkach warstwy, w metrach dla warstwy w stopniach), elongation i kind (line).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="65"/>
+        <source>label,labels,lake,reservoir,river,name,curved,centerline,placement,cartography</source>
+        <translation>etykieta,etykiety,jezioro,zbiornik,rzeka,nazwa,wygięta,linia środkowa,rozmieszczenie,kartografia</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="68"/>
+        <source>Computes, for each polygon part, the line a curved label should follow: the main stem (as &apos;Centerline of polygons&apos; finds it, between split points, along guide lines or between automatic ends), trimmed at both ends to where the polygon is at least &apos;Trim&apos; times its widest width, smoothed so that it bends no tighter than &apos;Bend&apos; times the local width, and checked to keep &apos;Clearance&apos; times the local width off the shore at every segment (where it cannot, the longest piece that can is kept). Lines read from left to right (west to east; south to north when vertical). A part whose main stem is shorter than &apos;Minimum elongation&apos; times its mean width gets a label point instead: the centre of its largest incircle. Geographic layers are computed in a local metric projection; lengths are then in metres.</source>
+        <translation>Wyznacza dla każdej części poligonu linię, wzdłuż której powinna biec wygięta etykieta: główny nurt (tak jak znajduje go 'Linia środkowa poligonów': między punktami podziału, wzdłuż linii prowadzących lub między automatycznymi końcami), przycięty z obu stron do miejsc, w których poligon ma co najmniej 'Przycięcie' razy swoją największą szerokość, wygładzony tak, by nie wyginał się ciaśniej niż 'Zgięcie' razy lokalna szerokość, i sprawdzony, czy każdy odcinek leży co najmniej 'Odstęp' razy lokalna szerokość od brzegu (gdzie to niemożliwe, zostaje najdłuższy fragment, który to spełnia). Linie czyta się od lewej do prawej (z zachodu na wschód; z południa na północ, gdy są pionowe). Część, której główny nurt jest krótszy niż 'Najmniejsze wydłużenie' razy jej średnia szerokość, dostaje zamiast tego punkt etykiety: środek największego koła wpisanego. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; długości są wtedy w metrach.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Trim: ends where the width falls below this share of the widest</source>
+        <translation>Przycięcie: końce tam, gdzie szerokość spada poniżej tego ułamka największej</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Both ends of the main stem are cut back to the first and last point where the polygon is at least this share of its widest width: out of the narrow tips and bays. 0 keeps the whole main stem.</source>
+        <translation>Oba końce głównego nurtu są skracane do pierwszego i ostatniego punktu, w którym poligon ma co najmniej ten ułamek swojej największej szerokości: poza wąskie końce i zatoki. 0 zachowuje cały główny nurt.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Clearance from the shore, share of the local width</source>
+        <translation>Odstęp od brzegu, ułamek lokalnej szerokości</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Every segment of a label line is at least this share of the local width away from the outline (0.25: the line keeps to the middle half).</source>
+        <translation>Każdy odcinek linii etykiety leży co najmniej o ten ułamek lokalnej szerokości od obrysu (0,25: linia trzyma się środkowej połowy).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Tightest bend: radius of curvature, share of the local width</source>
+        <translation>Najciaśniejsze zgięcie: promień krzywizny, ułamek lokalnej szerokości</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>The radius of curvature at every vertex is at least this share of the local width: a label bends gently where the lake is wide.</source>
+        <translation>Promień krzywizny w każdym wierzchołku wynosi co najmniej ten ułamek lokalnej szerokości: etykieta wygina się łagodnie tam, gdzie jezioro jest szerokie.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Minimum elongation for a line</source>
+        <translation>Najmniejsze wydłużenie dla linii</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>A part whose main-stem length over mean width (its area over that length) is below this gets a label point, the centre of its largest incircle (a disc: 1.27; a 3:1 ellipse: 3.8).</source>
+        <translation>Część, której stosunek długości głównego nurtu do średniej szerokości (pola powierzchni przez tę długość) jest mniejszy, dostaje punkt etykiety, środek największego koła wpisanego (koło: 1,27; elipsa 3:1: 3,8).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Smoothing, share of the local width</source>
+        <translation>Wygładzanie, ułamek lokalnej szerokości</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="83"/>
+        <source>Standard deviation of the Gaussian smoothing along the main stem, as a share of the local width; it is lowered where the line would come too near the shore and raised where it would bend too tightly.</source>
+        <translation>Odchylenie standardowe wygładzania gaussowskiego wzdłuż głównego nurtu jako ułamek lokalnej szerokości; jest zmniejszane tam, gdzie linia zbliżyłaby się za bardzo do brzegu, i zwiększane tam, gdzie wygięłaby się zbyt ciasno.</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="150"/>
+        <source>Label points</source>
+        <translation>Punkty etykiet</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="150"/>
+        <source>Point layer: one label point per compact polygon part (the centre of its largest incircle), with the same fields (length 0, width_min the incircle&apos;s diameter, kind point).</source>
+        <translation>Warstwa punktowa: jeden punkt etykiety na każdą zwartą część poligonu (środek jej największego koła wpisanego), z tymi samymi polami (length 0, width_min średnica koła, kind point).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="159"/>
+        <source>Number of labels</source>
+        <translation>Liczba etykiet</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/label_lines.py" line="159"/>
+        <source>Number of label lines and points written.</source>
+        <translation>Liczba zapisanych linii i punktów etykiet.</translation>
+    </message>
+</context>
+<context>
     <name>LinesCenterlineAlgorithm</name>
     <message>
         <location filename="../algorithms/lines_centerline.py" line="51"/>
@@ -1043,22 +1174,22 @@
         <translation>linia środkowa,oś,oś medialna,szkielet,rzeka,droga,wał,szerokość,okrąg wpisany</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="79"/>
+        <location filename="../algorithms/polygon_centerline.py" line="93"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="88"/>
+        <location filename="../algorithms/polygon_centerline.py" line="102"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="136"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>One feature per polygon part</source>
         <translation>Jeden obiekt na każdą część poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="136"/>
+        <location filename="../algorithms/polygon_centerline.py" line="81"/>
         <source>Write one line feature per part of a multipart polygon instead of one MultiLineString per input feature.</source>
         <translation>Zapisz osobny obiekt liniowy dla każdej części poligonu wieloczęściowego zamiast jednego MultiLineString na obiekt wejściowy.</translation>
     </message>
@@ -1083,82 +1214,82 @@
         <translation>Wyznacza jedną nierozgałęzioną linię środkową bez pętli dla każdego poligonu (każdej części poligonu wieloczęściowego) metodą Krzywej Okręgów Wpisanych: każdy wierzchołek jest środkiem okręgu stycznego do obu stron obrysu. Linia biegnie między dwoma 'Punktami podziału' leżącymi na obrysie poligonu, a bez nich między końcami automatycznymi: końcami drogi wewnątrz kształtu wzdłuż 'Linii prowadzących', a bez nich głównego nurtu (lub najdłuższej drogi wewnątrz kształtu, zob. 'Końce automatyczne'). Wyspy (otwory) są omijane od strony szerszego koryta albo pomijane. Wartość M każdego wierzchołka to lokalna szerokość. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="112"/>
+        <location filename="../algorithms/polygon_centerline.py" line="126"/>
         <source>Automatic ends</source>
         <translation>Końce automatyczne</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="111"/>
+        <location filename="../algorithms/polygon_centerline.py" line="125"/>
         <source>Main stem (widest path)</source>
         <translation>Główny nurt (najszersza droga)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="111"/>
+        <location filename="../algorithms/polygon_centerline.py" line="125"/>
         <source>Longest path</source>
         <translation>Najdłuższa droga</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="122"/>
+        <location filename="../algorithms/polygon_centerline.py" line="136"/>
         <source>Guide lines</source>
         <translation>Linie prowadzące</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="122"/>
+        <location filename="../algorithms/polygon_centerline.py" line="136"/>
         <source>Rough river lines (a national network, OpenStreetMap waterways) for polygons without split points: the ends are those of the internal path that best covers the guide lines near the polygon. Gaps, offsets, generalised pieces and tributaries are fine. Another CRS is reprojected.</source>
         <translation>Przybliżone linie rzek (sieć krajowa, cieki OpenStreetMap) dla poligonów bez punktów podziału: końcami są końce drogi wewnątrz kształtu, która najlepiej pokrywa linie prowadzące w pobliżu poligonu. Przerwy, przesunięcia, uogólnione fragmenty i dopływy nie przeszkadzają. Inny układ współrzędnych jest przeliczany.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="79"/>
+        <location filename="../algorithms/polygon_centerline.py" line="93"/>
         <source>Elongated polygons (rivers, roads, dikes); multipart polygons get one centerline per part. Z values are ignored: the centerline is computed in the plane.</source>
         <translation>Wydłużone poligony (rzeki, drogi, wały); poligony wieloczęściowe dostają jedną linię środkową na część. Wartości Z są pomijane: linia środkowa jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="104"/>
+        <location filename="../algorithms/polygon_centerline.py" line="118"/>
         <source>{pass_through}: the line never crosses an island and goes round it on the side of the wider channel. {ignore}: holes are filled before computing.</source>
         <translation>{pass_through}: linia nigdy nie przecina wyspy i omija ją od strony szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="112"/>
+        <location filename="../algorithms/polygon_centerline.py" line="126"/>
         <source>For polygons without split points. {main_stem}: the internal path that sweeps the largest channel area (length times width), so a wide main river wins over a longer but narrow side arm. {longest_path}: the tips of the two longest arms.</source>
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="274"/>
+        <location filename="../algorithms/polygon_centerline.py" line="301"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="253"/>
+        <location filename="../algorithms/polygon_centerline.py" line="280"/>
         <source>{} Its ends were found automatically.</source>
         <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="276"/>
+        <location filename="../algorithms/polygon_centerline.py" line="303"/>
         <source>{} holds no point.</source>
         <translation>{} nie zawiera żadnego punktu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="277"/>
+        <location filename="../algorithms/polygon_centerline.py" line="304"/>
         <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
         <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="149"/>
+        <location filename="../algorithms/polygon_centerline.py" line="153"/>
         <source>split points</source>
         <translation>punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="151"/>
+        <location filename="../algorithms/polygon_centerline.py" line="155"/>
         <source>guide lines</source>
         <translation>linie prowadzące</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="152"/>
+        <location filename="../algorithms/polygon_centerline.py" line="156"/>
         <source>main stem</source>
         <translation>główny nurt</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="152"/>
+        <location filename="../algorithms/polygon_centerline.py" line="156"/>
         <source>longest path</source>
         <translation>najdłuższa droga</translation>
     </message>
@@ -1173,12 +1304,12 @@
         <translation>Pierścień wokół jednej wyspy (rondo, fosa, atol) otrzymuje bez punktów podziału zamkniętą pętlę wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego. Kolce obrysu o zerowej szerokości (wychodzące i wracające po sobie) są najpierw usuwane, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="88"/>
+        <location filename="../algorithms/polygon_centerline.py" line="102"/>
         <source>Points marking where each centerline starts and ends: two per polygon part, within &apos;Split point snapping tolerance&apos; of its exterior ring. A part with none gets automatic ends; a part with one starts there and ends at the far end of its main stem; a part with more than two is skipped. Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Punkty wyznaczające początek i koniec każdej linii środkowej: dwa na część poligonu, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od jej pierścienia zewnętrznego. Część bez punktów dostaje końce automatyczne; część z jednym zaczyna się w nim i kończy na dalszym końcu swojego głównego nurtu; część z więcej niż dwoma jest pomijana. Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="135"/>
+        <location filename="../algorithms/polygon_centerline.py" line="80"/>
         <source>the split point, or for automatic ends where that line meets the outline</source>
         <translation>punktu podziału, a dla końców automatycznych do miejsca, w którym ta prosta przecina obrys</translation>
     </message>
@@ -1206,37 +1337,37 @@
         <translation>sieć,zlewisko,delta,węzeł,skrzyżowanie,oś środkowa,szkielet,rzeka,droga,szerokość</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="78"/>
+        <location filename="../algorithms/polygon_network.py" line="80"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="87"/>
+        <location filename="../algorithms/polygon_network.py" line="89"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="98"/>
+        <location filename="../algorithms/polygon_network.py" line="100"/>
         <source>Split point id field</source>
         <translation>Pole identyfikatora punktu podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="98"/>
+        <location filename="../algorithms/polygon_network.py" line="100"/>
         <source>Attribute naming each split point in from_point, to_point and the chains; default: its feature id.</source>
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="177"/>
+        <location filename="../algorithms/polygon_network.py" line="179"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="177"/>
+        <location filename="../algorithms/polygon_network.py" line="179"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="78"/>
+        <location filename="../algorithms/polygon_network.py" line="80"/>
         <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
         <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
     </message>
@@ -1247,63 +1378,63 @@
     </message>
     <message>
         <location filename="../algorithms/polygon_network.py" line="52"/>
-        <source>Computes, for each polygon (each part of a multipart polygon), the part of the medial axis that separates the outline&apos;s chains between its ends (the ends of the arms of a confluence, a lake, a delta or a road junction): a tree with one end at each arm and junctions where a circle touches three chains, without side branches. The ends are the &apos;Split points&apos; on the outline when a part has two or more; otherwise they are found automatically (one given split point replaces the automatic end nearest to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least &apos;Minimum arm length, in junction widths&apos; (bank noise and small bays do not). Each branch is one line feature with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the split points at its ends (&apos;gate&apos; at a gate, &apos;auto&apos; at an automatic end, &apos;junction&apos; at a junction), the chains on its right and left, its length and widths; the M value of each vertex is the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
-        <translation>Wyznacza dla każdego poligonu (każdej części poligonu wieloczęściowego) tę część osi środkowej, która rozdziela łańcuchy obrysu między jego końcami (końcami ramion zlewiska, jeziora, delty lub skrzyżowania dróg): drzewo z jednym końcem w każdym ramieniu i węzłami tam, gdzie okrąg styka się z trzema łańcuchami, bez bocznych odgałęzień. Końcami są 'Punkty podziału' na obrysie, gdy część ma ich dwa lub więcej; w przeciwnym razie są wyznaczane automatycznie (jeden podany punkt podziału zastępuje najbliższy mu koniec automatyczny): ramię się liczy, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej 'Minimalna długość ramienia, w szerokościach węzła' (szum brzegu i małe zatoki nie sięgają). Każda gałąź to jeden obiekt liniowy z identyfikatorami węzłów (from_node, to_node, wspólnymi dla gałęzi, które się spotykają), rodzajem, identyfikatorami punktów podziału na końcach ('gate' przy bramie, 'auto' przy końcu automatycznym, 'junction' w węźle), łańcuchami po prawej i lewej, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane po stronie szerszego koryta albo pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/polygon_network.py" line="52"/>
         <source>Zero-width spikes of the outline (going out and back along themselves) are removed first, with a warning naming where.</source>
         <translation>Kolce obrysu o zerowej szerokości (wychodzące i wracające po sobie) są najpierw usuwane, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="87"/>
+        <location filename="../algorithms/polygon_network.py" line="89"/>
         <source>The ends of the network, within &apos;Split point snapping tolerance&apos; of a part&apos;s exterior ring, typically one across each arm&apos;s end. A part with two or more uses exactly these; a part with none or one gets its arm ends automatically (the one given replaces the automatic end nearest to it, when within that arm&apos;s width). Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Końce sieci, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od pierścienia zewnętrznego części, zwykle po jednym w poprzek końca każdego ramienia. Część z dwoma lub więcej używa dokładnie ich; część bez punktu lub z jednym dostaje końce ramion automatycznie (podany punkt zastępuje najbliższy mu koniec automatyczny, jeśli leży w obrębie szerokości tego ramienia). Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="111"/>
+        <location filename="../algorithms/polygon_network.py" line="113"/>
         <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing. {channels}: every island at least as long as the river around it is wide (its own width plus twice its distance to the nearest bank or island) gets a branch on each side, so the network has a loop around it with exact junctions up- and downstream (branches of kind &apos;loop&apos;); smaller islands are passed on the side of the wider channel.</source>
         <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do łańcucha, do którego jest bliżej, więc gałęzie omijają ją po stronie szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem. {channels}: każda wyspa co najmniej tak długa, jak szeroka jest rzeka wokół niej (jej własna szerokość plus dwukrotna odległość do najbliższego brzegu lub wyspy), dostaje gałąź z każdej strony, więc sieć ma wokół niej pętlę z dokładnymi węzłami powyżej i poniżej (gałęzie rodzaju 'loop'); mniejsze wyspy są omijane po stronie szerszego koryta.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="123"/>
+        <location filename="../algorithms/polygon_network.py" line="125"/>
         <source>the split point (junctions are left as they are)</source>
         <translation>punktu podziału (węzły pozostają bez zmian)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <location filename="../algorithms/polygon_network.py" line="126"/>
         <source>Minimum arm length, in junction widths</source>
         <translation>Minimalna długość ramienia, w szerokościach węzła</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="124"/>
+        <location filename="../algorithms/polygon_network.py" line="126"/>
         <source>Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than the river is wide make no branch; a tributary does).</source>
         <translation>Końce automatyczne: ramię zostaje, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej tyle szerokości tego węzła (1: garby brzegu, schodki digitalizacji i zatoki płytsze niż szerokość rzeki nie tworzą gałęzi; dopływ tworzy).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="138"/>
+        <location filename="../algorithms/polygon_network.py" line="140"/>
         <source>Minimum arm length</source>
         <translation>Minimalna długość ramienia</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="138"/>
+        <location filename="../algorithms/polygon_network.py" line="140"/>
         <source>Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction&apos;s circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation.</source>
         <translation>Końce automatyczne: ramię zostaje tylko wtedy, gdy sięga też co najmniej tak daleko poza okrąg swojego węzła, w jednostkach warstwy (metry dla warstwy w stopniach); 0 = bez takiego ograniczenia. Do generalizacji.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="150"/>
+        <location filename="../algorithms/polygon_network.py" line="152"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids, &apos;gate&apos;, &apos;auto&apos; or &apos;junction&apos;), from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named &apos;a-b&apos; after the ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
         <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia gałęzi z nim), from_point, to_point (identyfikatory punktów podziału, 'gate', 'auto' lub 'junction'), from_node, to_node (identyfikatory węzłów wspólne dla spotykających się gałęzi, także między poligonami o wspólnych końcach), kind (arm, inner lub loop), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od końców na jego krańcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="164"/>
+        <location filename="../algorithms/polygon_network.py" line="166"/>
         <source>Network nodes</source>
         <translation>Węzły sieci</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="164"/>
+        <location filename="../algorithms/polygon_network.py" line="166"/>
         <source>Optional point layer: every end and junction with its node id, degree (number of branch ends), radius (the junction&apos;s circle; 0 at an end) and kind (end or junction).</source>
         <translation>Opcjonalna warstwa punktowa: każdy koniec i węzeł z identyfikatorem węzła, stopniem (liczbą końców gałęzi), promieniem (okręgu węzła; 0 na końcu) i rodzajem (end lub junction).</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/polygon_network.py" line="52"/>
+        <source>Computes, for each polygon (each part of a multipart polygon), lines down the middle of its arms (the arms of a confluence, a lake, a delta or a road junction), joined where the arms meet. The ends cut the outline into pieces, the chains; each line runs through the centres of circles touching two chains, a path of the shape&apos;s medial axis (the line of the centres of all circles touching two sides): a tree with one end at each arm and junctions where a circle touches three chains, without side branches. The ends are the &apos;Split points&apos; on the outline when a part has two or more; otherwise they are found automatically (one given split point replaces the automatic end nearest to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least &apos;Minimum arm length, in junction widths&apos; (bank noise and small bays do not). Each branch is one line feature with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the split points at its ends (&apos;gate&apos; at a gate, &apos;auto&apos; at an automatic end, &apos;junction&apos; at a junction), the chains on its right and left, its length and widths; the M value of each vertex is the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
+        <translation>Wyznacza dla każdego poligonu (każdej części poligonu wieloczęściowego) linie biegnące środkiem jego ramion (ramion zlewiska, jeziora, delty lub skrzyżowania dróg), połączone tam, gdzie ramiona się spotykają. Końce dzielą obrys na odcinki, łańcuchy; każda linia biegnie przez środki okręgów stykających się z dwoma łańcuchami, po fragmencie osi środkowej kształtu (linii środków wszystkich okręgów stykających się z dwoma bokami): drzewo z jednym końcem w każdym ramieniu i węzłami tam, gdzie okrąg styka się z trzema łańcuchami, bez bocznych odgałęzień. Końcami są 'Punkty podziału' na obrysie, gdy część ma ich dwa lub więcej; w przeciwnym razie są wyznaczane automatycznie (jeden podany punkt podziału zastępuje najbliższy mu koniec automatyczny): ramię się liczy, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej 'Minimalna długość ramienia, w szerokościach węzła' (szum brzegu i małe zatoki nie sięgają). Każda gałąź to jeden obiekt liniowy z identyfikatorami węzłów (from_node, to_node, wspólnymi dla gałęzi, które się spotykają), rodzajem, identyfikatorami punktów podziału na końcach ('gate' przy bramie, 'auto' przy końcu automatycznym, 'junction' w węźle), łańcuchami po prawej i lewej, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane po stronie szerszego koryta albo pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
 </context>
 </TS>
