@@ -8,8 +8,8 @@ import shapely
 
 #: Metres per degree of latitude, and of longitude at the equator (enough for placing test shapes).
 METRES_PER_DEGREE = (110_540.0, 111_320.0)
-#: Every how many rows a bad row of each kind occurs (a self-crossing outline, a single split point, no geometry).
-BOWTIE_EVERY, ONE_POINT_EVERY, NULL_EVERY = 997, 1009, 1013
+#: Every how many rows a bad row of each kind occurs (a self-crossing outline, three split points, no geometry).
+BOWTIE_EVERY, THREE_POINTS_EVERY, NULL_EVERY = 997, 1009, 1013
 #: Every how many rows the channel has no split points and finds its ends itself.
 AUTOMATIC_EVERY = 50
 #: Every how many rows the channel bends (a straight one costs the core about half as much).
@@ -21,8 +21,8 @@ def channels_lonlat(count, seed=0):
 
     Each channel is a hexagon with split points at the middle of its two short sides; in every
     :data:`BENT_EVERY`-th row its two long sides bend at their middle, elsewhere they are straight. Rows that
-    are multiples of :data:`BOWTIE_EVERY` cross themselves, of :data:`ONE_POINT_EVERY` get one split point
-    only, of :data:`NULL_EVERY` have no geometry; rows that are multiples of :data:`AUTOMATIC_EVERY` (and none
+    are multiples of :data:`BOWTIE_EVERY` cross themselves, of :data:`THREE_POINTS_EVERY` get a third split point
+    (a vertex of a long side), of :data:`NULL_EVERY` have no geometry; rows that are multiples of :data:`AUTOMATIC_EVERY` (and none
     of those) have no split points.
 
     Parameters
@@ -64,11 +64,14 @@ def channels_lonlat(count, seed=0):
     null = rows % NULL_EVERY == NULL_EVERY - 1
     for row in np.flatnonzero(null):
         channels[row] = None
-    one_point = rows % ONE_POINT_EVERY == ONE_POINT_EVERY - 1
-    automatic = (rows % AUTOMATIC_EVERY == AUTOMATIC_EVERY - 1) & ~(bowtie | one_point | null)
-    points = shapely.points(to_degrees(ends))  # (count, 2)
-    split_points = [point for row in np.flatnonzero(~automatic) for point in points[row, : 1 if one_point[row] else 2]]
-    return channels, split_points, set(np.flatnonzero(bowtie | one_point | null).tolist())
+    three_points = rows % THREE_POINTS_EVERY == THREE_POINTS_EVERY - 1
+    automatic = (rows % AUTOMATIC_EVERY == AUTOMATIC_EVERY - 1) & ~(bowtie | three_points | null)
+    # The two ends, and for the rows with three split points the middle vertex of the first long side.
+    points = shapely.points(to_degrees(np.concatenate([ends, outline[:, 1:2]], axis=1)))  # (count, 3)
+    split_points = [
+        point for row in np.flatnonzero(~automatic) for point in points[row, : 3 if three_points[row] else 2]
+    ]
+    return channels, split_points, set(np.flatnonzero(bowtie | three_points | null).tolist())
 
 
 def _metres_to_degrees(longitude, latitude, angle):
