@@ -31,6 +31,10 @@ GROUP = "IncirCu"
 #: Most results kept (each a line of a few hundred vertices at most: some tens of megabytes when full).
 CACHE_ENTRIES = 100_000
 
+#: Most argument tuples whose converted options a function remembers (a style uses a few; data-defined options
+#: one per distinct value): the memory is cleared when full.
+CONVERTED_ENTRIES = 1_000
+
 #: Names of the functions, registered by :func:`register_functions`.
 CENTERLINE_FUNCTION = "incircu_centerline"
 LABEL_LINE_FUNCTION = "incircu_label_line"
@@ -233,13 +237,30 @@ class IncirCuFunction(QgsExpressionFunction):
         super().__init__(name, arguments, GROUP, help_text)
         self.compute = compute
         self.convert = convert
+        self.converted = {}
+
+    def options(self, values):
+        """``convert(values)``, remembered per argument values: a redraw evaluates the function for every
+        feature with the same few arguments, and converting them (checking the end rule against the core's)
+        took longer than the cache look-up itself."""
+        try:
+            key = tuple(values)
+            found = self.converted.get(key)
+        except TypeError:  # an unhashable argument: converted every time
+            return self.convert(values)
+        if found is None:
+            found = self.convert(values)
+            if len(self.converted) >= CONVERTED_ENTRIES:
+                self.converted.clear()
+            self.converted[key] = found
+        return found
 
     def func(self, values, context, parent, node):
         geometry = values[0]
         if not isinstance(geometry, QgsGeometry) or geometry.isNull() or geometry.isEmpty():
             return None
         try:
-            options = self.convert(values[1:])
+            options = self.options(values[1:])
             return cached(self.name(), self.compute, geometry, layer_crs(context), options)
         except Exception as error:  # noqa: BLE001 - any failure becomes the expression's error, not a crash
             parent.setEvalErrorString(f"{self.name()}: {error}")

@@ -116,12 +116,15 @@ else
 fi
 # Label lines (issue 38): IncirCu against label_centerlines, pygeoops and the centerline -> QGIS Smooth chain, and
 # 10,000 lakes labelled through the expression function; needs the project's venv (QGIS), runs the peers in
-# this venv; adds its marked section to docs/benchmark.md.
+# this venv; adds its marked section to docs/benchmark.md. profile_label_redraw.py prints where a warm-cache
+# redraw of the labelled lakes spends its time (IncirCu's expression function or QGIS).
 if [ -x "$REPO_ROOT/.venv/bin/python" ]; then
   if [ -n "$QUICK" ]; then
     "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_labels.py" --count 100 --peer-count 20 --render-count 1000
+    "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/profile_label_redraw.py" --count 1000
   else
     "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/bench_labels.py"
+    "$REPO_ROOT/.venv/bin/python" "$BENCH_DIR/profile_label_redraw.py" --count 10000
   fi
 else
   echo "== bench_labels.py skipped: no $REPO_ROOT/.venv (run make setup)"

@@ -1,5 +1,5 @@
-"""The data-frame API: ``centerlines`` on GeoPandas frames equals the core feature by feature, and on
-dask-geopandas (a LocalCluster of two worker processes, GeoParquet in and out) equals the serial run.
+"""The data-frame API: ``centerlines`` and ``frame_labels`` on GeoPandas frames equal the core feature by
+feature, and on dask-geopandas (a LocalCluster of two worker processes, GeoParquet in and out) the serial run.
 
 Expected values come from the core called directly on each feature (every split point offered, so the
 core's own distance rule picks them, not the API's bounding-box search), never from a previous run. The
@@ -18,12 +18,16 @@ from incircu_plugin.core import (
     IncirCuError,
     LocalProjection,
     centerlines,
+    feature_label,
+    frame_labels,
+    label_lines,
     multipolygon_centerline_steps,
     multipolygon_centerlines,
     width_statistics,
 )
 from tests.support.frame_cases import channels_lonlat
 from tests.support.project import DATA, REPOSITORY
+from tests.support.real_rivers import DATA as RESERVOIRS
 
 geopandas = pytest.importorskip("geopandas")
 pandas = pytest.importorskip("pandas")
@@ -290,3 +294,119 @@ def test_dask_cluster_on_geoparquet_equals_the_serial_run(tmp_path, monkeypatch)
     errors = set(np.flatnonzero(serial["error"].notna().to_numpy()).tolist())
     assert errors == bad_rows
     assert serial.geometry.iloc[sorted(set(range(count)) - bad_rows)].notna().all()
+
+
+def reservoirs_lonlat():
+    """The real reservoirs (Natural Earth polygons, lon/lat) as a frame indexed by name."""
+    features = json.loads(RESERVOIRS.read_text(encoding="utf-8"))["features"]
+    polygons = [f for f in features if f["properties"]["role"] == "polygon"]
+    return geopandas.GeoDataFrame(
+        geometry=[shapely.geometry.shape(f["geometry"]) for f in polygons],
+        index=[f["properties"]["name"] for f in polygons],
+        crs="EPSG:4326",
+    )
+
+
+def expected_labels(data, **options):
+    """``label_lines`` on the frame's features as an array (each in a LocalProjection when geographic), and
+    each feature's largest part's label: per row ``(label or None, geometry in the layer's CRS or None, error
+    or None)``. Computed together as the frame is (the joint tracing's rounding is then the same)."""
+    shapes = list(data.geometry.values)
+    projections = [
+        LocalProjection.around(shape, data.crs.srs)
+        if data.crs.is_geographic and shape is not None and not shape.is_empty
+        else None
+        for shape in shapes
+    ]
+    local = [
+        shape if projection is None else projection.to_local(shape) for shape, projection in zip(shapes, projections)
+    ]
+    rows = []
+    for shape, projection, outcomes in zip(shapes, projections, label_lines(local, **options)):
+        if isinstance(outcomes, Exception):
+            rows.append((None, None, str(outcomes)))
+            continue
+        prefix = "part {}: " if isinstance(shape, MultiPolygon) else ""
+        error = "; ".join(prefix.format(o.part_index) + str(o.error) for o in outcomes if o.error is not None)
+        label = feature_label(outcomes, shape)
+        geometry = None if label is None else label.geometry
+        if projection is not None and geometry is not None:
+            geometry = projection.to_geographic(geometry)
+        rows.append((label, geometry, error or None))
+    return rows
+
+
+def assert_labels_equal_core(result, data, **options):
+    assert list(result.index) == list(data.index) and result.crs == data.crs
+    assert list(result.columns) == ["kind", "length", "width_min", "elongation", "error", "geometry"]
+    for (name, row), line, (label, geometry, error) in zip(
+        result.iterrows(), result.geometry, expected_labels(data, **options)
+    ):
+        assert (None if pandas.isna(row["error"]) else row["error"]) == error, name
+        if label is None:
+            assert line is None and pandas.isna(row["kind"]) and np.isnan(row["length"]), name
+            continue
+        assert row["kind"] == label.kind and line.wkb == geometry.wkb, name
+        for column in ("length", "width_min", "elongation"):
+            assert row[column] == getattr(label, column), (name, column)
+
+
+def test_labels_of_real_reservoirs_in_lon_lat_equal_label_lines_row_by_row():
+    lakes = reservoirs_lonlat()
+    result = frame_labels(lakes)
+    assert_labels_equal_core(result, lakes)
+    assert result["error"].isna().all() and (result["kind"] == "line").all()
+    # In metres although the layer is in degrees: each lake's label stays inside it, its length is a length on
+    # the ground (a Natural Earth reservoir is kilometres long, not a fraction of a degree).
+    assert all(lake.contains(line) for lake, line in zip(lakes.geometry, result.geometry))
+    assert (result["length"] > 1000.0).all() and (result["width_min"] < result["length"]).all()
+
+
+def test_labels_in_a_projected_crs_with_options_a_round_lake_and_a_multipolygon():
+    lakes = reservoirs_lonlat().to_crs("EPSG:3857")
+    round_lake = Point(0, 0).buffer(5000.0)
+    two_lakes = MultiPolygon([box(0, 0, 100, 100), box(200, 0, 1200, 100)])
+    frame = geopandas.GeoDataFrame(geometry=[*lakes.geometry[:4], round_lake, two_lakes], crs="EPSG:3857")
+    result = frame_labels(frame, trim=0.7, clearance=0.3, min_elongation=4.0)
+    assert_labels_equal_core(result, frame, trim=0.7, clearance=0.3, min_elongation=4.0)
+    assert result["kind"].tolist() == ["line"] * 4 + ["point", "line"]
+    assert result.geometry.iloc[4].distance(Point(0, 0)) < 1e-6 * 5000.0
+    # The larger part (the 1000 x 100 box) gives the multipolygon's label.
+    assert result.geometry.iloc[5].within(box(200, 0, 1200, 100))
+
+
+def test_a_bad_label_row_reports_its_error_and_the_others_are_labelled():
+    good = reservoirs_lonlat().to_crs("EPSG:3857").geometry.iloc[0]
+    frame = geopandas.GeoDataFrame(
+        geometry=[good, None, Polygon(), LineString([(0, 0), (1, 1)]), box(0, 0, 100, 10)], crs="EPSG:3857"
+    )
+    result = frame_labels(frame)
+    assert_labels_equal_core(result, frame)
+    assert result["error"].isna().tolist() == [True, False, False, False, True]
+    assert result["error"].iloc[1] == "The polygon is null (no geometry)."
+    with pytest.raises(IncirCuError):  # a bad option is one error for every row, as the core raises it
+        label_lines(box(0, 0, 100, 10), clearance=0.6)
+    assert_labels_equal_core(frame_labels(frame, clearance=0.6), frame, clearance=0.6)
+    assert frame_labels(frame, clearance=0.6)["error"].notna().all()
+
+
+def test_dask_labels_are_lazy_and_equal_the_eager_run_of_each_partition_byte_for_byte():
+    """Each partition is computed as the eager API computes that frame. (Rows traced in other batches may
+    differ a little: the joint tracing's rounding moves the main stem by ~1e-9 of its extent, which can move
+    where the label's smoothing and trimming settle.)"""
+    dask_geopandas = pytest.importorskip("dask_geopandas")
+    lakes = reservoirs_lonlat()
+    frame = geopandas.GeoDataFrame(geometry=[*lakes.geometry, None], index=[*lakes.index, "none"], crs="EPSG:4326")
+    lazy_frame = dask_geopandas.from_geopandas(frame, npartitions=3, sort=False)
+    lazy = frame_labels(lazy_frame)
+    assert isinstance(lazy, dask_geopandas.GeoDataFrame)
+    computed = lazy.compute(scheduler="synchronous")
+    assert dict(lazy._meta.dtypes) == dict(computed.dtypes) and lazy.crs == computed.crs
+    eager = pandas.concat([frame_labels(part.compute()) for part in lazy_frame.partitions])
+    assert list(computed.index) == list(frame.index) == list(eager.index)
+    assert computed.geometry.to_wkb().tolist() == eager.geometry.to_wkb().tolist()
+    pandas.testing.assert_frame_equal(
+        pandas.DataFrame(computed.drop(columns="geometry")), pandas.DataFrame(eager.drop(columns="geometry"))
+    )
+    serial = frame_labels(frame)
+    assert computed["kind"].equals(serial["kind"]) and computed["error"].equals(serial["error"])

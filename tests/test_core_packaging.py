@@ -36,7 +36,7 @@ RUN_IN_FRESH_VENV = textwrap.dedent(
     result = incircu.polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=1.0)
     assert result.line.coords[0] == (0.0, 5.0) and result.line.coords[-1] == (100.0, 5.0), list(result.line.coords)
     assert abs(float(result.widths.max()) - 10.0) < 1e-9
-    assert callable(incircu.centerlines)
+    assert callable(incircu.centerlines) and callable(incircu.frame_labels)
     leaked = sorted(name for name in sys.modules if name.split(".")[0] in ("geopandas", "pandas", "qgis"))
     assert not leaked, leaked
     print("incircu", incircu.__name__, "ok")

@@ -126,6 +126,38 @@ def test_expression_options_and_points(provider):
     assert bad.evaluate(context) is None
 
 
+def test_arguments_are_converted_once_and_cached_labels_equal_computed_ones(provider):
+    """A redraw evaluates the function for every feature with the same arguments: they are converted once per
+    distinct tuple (a bad one every time, giving its error), and the cached label equals a fresh computation."""
+    from incircu.algorithms import expressions
+
+    [function] = [f for f in expressions.REGISTERED if f.name() == "incircu_label_line"]
+    lakes = projected_layer([box(2000, 0, 6000, 500), box(0, 1000, 3000, 1400)])
+    converted = []
+    convert = function.convert
+    function.convert = lambda values: converted.append(tuple(values)) or convert(values)
+    try:
+        text = "incircu_label_line($geometry, trim:=0.8)"
+        for feature in lakes.getFeatures():
+            for _ in range(3):
+                value = evaluate(lakes, feature, text)
+                fresh = expressions.compute_label(
+                    feature.geometry(), lakes.crs(), {"trim": 0.8, "end_rule": "main_stem"}
+                )
+                assert as_shapely(value).equals_exact(as_shapely(fresh), 0.0)
+        assert len(converted) == 1
+        evaluate(lakes, feature, "incircu_label_line($geometry, trim:=0.7)")
+        assert len(converted) == 2
+        context = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(lakes))
+        context.setFeature(feature)
+        for _ in range(2):
+            bad = QgsExpression("incircu_label_line($geometry, trim:='wide')")
+            assert bad.evaluate(context) is None and "trim must be a number" in bad.evalErrorString()
+        assert len(converted) == 4
+    finally:
+        function.convert = convert
+
+
 def test_functions_are_in_the_incircu_group_and_removed_on_unload(provider):
     from incircu.algorithms.expressions import register_functions, unregister_functions
 

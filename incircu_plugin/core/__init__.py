@@ -38,7 +38,7 @@ from .errors import (
     OptionError,
     SplitPointError,
 )
-from .frames import centerlines, networks
+from .frames import centerlines, frame_labels, networks
 from .geodesy import LocalProjection
 from .labels import LabelResult, curvature_radii, feature_label, label_line_steps, label_lines
 from .layers import LayerNetworks, layer_networks
@@ -81,6 +81,7 @@ __all__ = [
     "find_arm_ends",
     "find_ends",
     "find_ends_together",
+    "frame_labels",
     "incircle_polygons",
     "label_line_steps",
     "label_lines",

@@ -1,7 +1,7 @@
-"""Data-frame API: the centerline of every polygon of a GeoPandas or dask-geopandas frame.
+"""Data-frame API: the centerline (or the label line) of every polygon of a GeoPandas or dask-geopandas frame.
 
-GeoPandas (and, for lazy frames, dask-geopandas) is imported only when :func:`centerlines` is called, so the
-core itself still needs nothing but numpy, Shapely and pyproj.
+GeoPandas (and, for lazy frames, dask-geopandas) is imported only when :func:`centerlines`, :func:`frame_labels` or
+:func:`networks` is called, so the core itself still needs nothing but numpy, Shapely and pyproj.
 
 Example
 -------
@@ -21,6 +21,7 @@ from .api import batches, centerlines_together, multipolygon_centerline_steps
 from .ends import GUIDE_SEARCH_SHARE
 from .errors import IncirCuError
 from .geodesy import LocalProjection, degrees_covering
+from .labels import BEND, CLEARANCE, MIN_ELONGATION, SMOOTHING, TRIM, feature_label, label_line_steps
 from .widths import width_statistics
 
 #: Columns of the result besides the geometry, with their pandas dtypes (widths and lengths in metres for
@@ -32,6 +33,16 @@ RESULT_COLUMNS = {
     "width_max": "float64",
     "ends_found": "boolean",
     "ends_from": "string",
+    "error": "string",
+}
+
+#: Columns of :func:`frame_labels`' result besides the geometry, with their pandas dtypes (lengths and widths in
+#: metres for geographic CRSs, CRS units otherwise).
+LABEL_COLUMNS = {
+    "kind": "string",
+    "length": "float64",
+    "width_min": "float64",
+    "elongation": "float64",
     "error": "string",
 }
 
@@ -96,18 +107,102 @@ def centerlines(
     --------
     See the module docstring.
     """
-    options = {"islands": islands, "spacing": spacing, "end_cap": end_cap}
-    options.update(
-        {name: value for name, value in (("tolerance", tolerance), ("end_rule", end_rule)) if value is not None}
-    )
+    options = {
+        "islands": islands,
+        "spacing": spacing,
+        "end_cap": end_cap,
+        **_given(tolerance=tolerance, end_rule=end_rule),
+    }
+    return _frame_result(data, split_points, guide, snap_tolerance, options, None)
+
+
+def frame_labels(
+    data,
+    split_points=None,
+    *,
+    trim=TRIM,
+    clearance=CLEARANCE,
+    bend=BEND,
+    smoothing=SMOOTHING,
+    min_elongation=MIN_ELONGATION,
+    tolerance=None,
+    islands="main_channel",
+    end_rule=None,
+    guide=None,
+    spacing=None,
+    snap_tolerance=1.0,
+):
+    """Label line (or label point) of every (multi)polygon of a GeoSeries or GeoDataFrame, eager or dask.
+
+    Each row is computed as :func:`.labels.label_lines` computes a feature, with its main stem found as in
+    :func:`centerlines` (split points within ``snap_tolerance`` of a part, guide lines near the feature, a
+    :class:`LocalProjection` around each feature in a geographic CRS); a multipolygon's row gets the label of
+    its largest part that has one (:func:`.labels.feature_label`, what QGIS labels by default). A row that
+    fails gets its reason in ``error`` and never stops the others.
+
+    Parameters
+    ----------
+    data : geopandas.GeoSeries, geopandas.GeoDataFrame or dask_geopandas.GeoDataFrame
+        Polygons and multipolygons (the active geometry column), any CRS.
+    split_points : GeoSeries, GeoDataFrame or sequence of shapely geometries, optional
+        As for :func:`centerlines`.
+    trim, clearance, bend, smoothing, min_elongation : float
+        See :func:`.labels.label_lines` (shares of the local or widest width; no unit).
+    tolerance : float, optional
+        As for :func:`centerlines`, CRS units (metres when geographic).
+    islands : {"main_channel", "ignore"}
+    end_rule : str, optional
+    guide : GeoSeries, GeoDataFrame or sequence of line geometries, optional
+        As for :func:`centerlines`.
+    spacing : float, optional
+        Distance between boundary samples, CRS units (metres when geographic); None: automatic.
+    snap_tolerance : float
+        As for :func:`centerlines`, CRS units (metres when geographic).
+
+    Returns
+    -------
+    geopandas.GeoDataFrame or dask_geopandas.GeoDataFrame
+        Same index and CRS as ``data`` (lazy for a dask frame). ``geometry``: the label LineString (reading
+        left to right) or Point, None without a label; ``kind`` (``line`` or ``point``); ``length`` (0 for a
+        point), ``width_min`` (narrowest width along the label stretch; for a point, the widest incircle's
+        diameter), metres when geographic; ``elongation``; ``error`` (<NA>, or the core's message, prefixed
+        with ``part i:`` for a part of a multipolygon, also when another part gave the label).
+
+    Examples
+    --------
+    >>> import geopandas
+    >>> from shapely.geometry import Point, box
+    >>> lakes = geopandas.GeoSeries([box(0, 0, 100, 10), Point(0, 0).buffer(50)], crs="EPSG:2180")
+    >>> lakes_labels = frame_labels(lakes)
+    >>> lakes_labels["kind"].tolist(), lakes_labels.geometry.iloc[1].distance(Point(0, 0)) < 1e-6
+    (['line', 'point'], True)
+    """
+    options = {"islands": islands, "spacing": spacing, **_given(tolerance=tolerance, end_rule=end_rule)}
+    label_options = {
+        "trim": trim,
+        "clearance": clearance,
+        "bend": bend,
+        "smoothing": smoothing,
+        "min_elongation": min_elongation,
+    }
+    return _frame_result(data, split_points, guide, snap_tolerance, options, label_options)
+
+
+def _given(**values):
+    """The keywords whose value is not None: passed to the core only when given."""
+    return {name: value for name, value in values.items() if value is not None}
+
+
+def _frame_result(data, split_points, guide, snap_tolerance, options, label_options):
+    """The result of :func:`centerlines` (``label_options`` None) or :func:`frame_labels`, lazy for a dask frame."""
     geometry = _geometry_of(data)
     points = None if split_points is None else _coordinates_in(split_points, geometry.crs)
     guides = None if guide is None else _geometries_in(guide, geometry.crs)
+    arguments = (points, guides, snap_tolerance, options, label_options)
     if hasattr(data, "npartitions"):
-        return data.map_partitions(
-            _frame_centerlines, points, guides, snap_tolerance, options, meta=_empty_result(data._meta)
-        )
-    return _frame_centerlines(data, points, guides, snap_tolerance, options)
+        meta = _empty_result(data._meta, RESULT_COLUMNS if label_options is None else LABEL_COLUMNS)
+        return data.map_partitions(_frame_centerlines, *arguments, meta=meta)
+    return _frame_centerlines(data, *arguments)
 
 
 def _geometry_of(data):
@@ -132,18 +227,18 @@ def _coordinates_in(points, crs):
     return shapely.get_coordinates(_geometries_in(points, crs))
 
 
-def _empty_result(like):
-    """An empty result frame with the columns and dtypes of :data:`RESULT_COLUMNS` (a dask ``meta``)."""
+def _empty_result(like, result_columns):
+    """An empty result frame with the columns and dtypes of ``result_columns`` (a dask ``meta``)."""
     import geopandas
     import pandas
 
     index = like.index[:0]
-    columns = {name: pandas.Series([], dtype=dtype, index=index) for name, dtype in RESULT_COLUMNS.items()}
+    columns = {name: pandas.Series([], dtype=dtype, index=index) for name, dtype in result_columns.items()}
     return geopandas.GeoDataFrame(columns, geometry=geopandas.GeoSeries([], index=index), crs=_geometry_of(like).crs)
 
 
-def _frame_centerlines(data, points, guides, snap_tolerance, options):
-    """Centerlines of one (partition of a) frame; see :func:`centerlines`."""
+def _frame_centerlines(data, points, guides, snap_tolerance, options, label_options=None):
+    """Centerlines (or, with ``label_options``, labels) of one (partition of a) frame; see :func:`centerlines`."""
     import geopandas
     import pandas
 
@@ -156,18 +251,21 @@ def _frame_centerlines(data, points, guides, snap_tolerance, options):
     )
     nearby_guides = _nearby(shapes, _guide_margins(shapes), guides)
     crs_name = crs.srs if geographic else None
+    result_columns, row_of = (RESULT_COLUMNS, _row) if label_options is None else (LABEL_COLUMNS, _label_row)
     rows = []
     for batch in batches(range(len(shapes)), lambda i: int(shapely.get_num_coordinates(shapes[i]))):
         starts = [
-            _row_start(shapes[i], nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options) for i in batch
+            _row_start(shapes[i], nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options, label_options)
+            for i in batch
         ]
         traced = iter(centerlines_together([start[1] for start in starts if not isinstance(start, Exception)]))
         for i, start in zip(batch, starts):
             outcome = start if isinstance(start, Exception) else next(traced)
-            rows.append(_failed(outcome) if isinstance(outcome, Exception) else _row(shapes[i], start[0], outcome))
+            failed = isinstance(outcome, Exception)
+            rows.append(_failed(outcome, result_columns) if failed else row_of(shapes[i], start[0], outcome))
     columns = {
         name: pandas.Series([row[1][name] for row in rows], dtype=dtype, index=geometry.index)
-        for name, dtype in RESULT_COLUMNS.items()
+        for name, dtype in result_columns.items()
     }
     lines = geopandas.GeoSeries([row[0] for row in rows], index=geometry.index, crs=crs)
     return geopandas.GeoDataFrame(columns, geometry=lines, crs=crs)
@@ -202,8 +300,9 @@ def _nearby(shapes, margins, candidates):
     return found
 
 
-def _row_start(shape, points, guides, crs_name, snap_tolerance, options):
-    """The work of one row: ``(projection or None, multipolygon_centerline_steps)``, or the exception raised."""
+def _row_start(shape, points, guides, crs_name, snap_tolerance, options, label_options=None):
+    """The work of one row: ``(projection or None, multipolygon_centerline_steps)`` (``label_line_steps`` with
+    ``label_options``), or the exception raised."""
     try:
         geographic = crs_name is not None and shape is not None and not shape.is_empty
         projection = LocalProjection.around(shape, crs_name) if geographic else None
@@ -217,8 +316,14 @@ def _row_start(shape, points, guides, crs_name, snap_tolerance, options):
         if projection is not None:
             candidates = [projection.to_local(point) for point in candidates]
             extra = {name: projection.to_local(value) for name, value in extra.items()}
-        steps = multipolygon_centerline_steps(
-            local, candidates or None, snap_tolerance=snap_tolerance or None, **options, **extra
+        steps_of = multipolygon_centerline_steps if label_options is None else label_line_steps
+        steps = steps_of(
+            local,
+            candidates or None,
+            snap_tolerance=snap_tolerance or None,
+            **options,
+            **extra,
+            **(label_options or {}),
         )
         return projection, steps
     except Exception as error:  # noqa: BLE001 - one bad row must not stop a frame of millions
@@ -229,11 +334,7 @@ def _row(shape, projection, outcomes):
     """A row's ``(geometry, attributes)`` from its parts' outcomes; the parts that failed are named in ``error``."""
     try:
         several = isinstance(shape, MultiPolygon)
-        error = "; ".join(
-            (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
-            for outcome in outcomes
-            if outcome.error is not None
-        )
+        error = _part_errors(shape, outcomes)
         results = [outcome.result for outcome in outcomes if outcome.error is None]
         if not results:
             return None, {**dict.fromkeys(RESULT_COLUMNS), "error": error}
@@ -246,9 +347,33 @@ def _row(shape, projection, outcomes):
         return _failed(error)
 
 
-def _failed(error):
+def _label_row(shape, projection, outcomes):
+    """A row of :func:`frame_labels`: the largest labelled part's label; the parts that failed in ``error``."""
+    try:
+        error = _part_errors(shape, outcomes)
+        label = feature_label(outcomes, shape)
+        if label is None:
+            return None, {**dict.fromkeys(LABEL_COLUMNS), "error": error}
+        attributes = {name: getattr(label, name) for name in LABEL_COLUMNS if name != "error"}
+        attributes["error"] = error or None
+        return (label.geometry if projection is None else projection.to_geographic(label.geometry)), attributes
+    except Exception as error:  # noqa: BLE001 - as in _row_start
+        return _failed(error, LABEL_COLUMNS)
+
+
+def _part_errors(shape, outcomes):
+    """The messages of a row's failed parts, ``part i:`` first for a multipolygon's; empty when none failed."""
+    several = isinstance(shape, MultiPolygon)
+    return "; ".join(
+        (f"part {outcome.part_index}: " if several else "") + _message(outcome.error)
+        for outcome in outcomes
+        if outcome.error is not None
+    )
+
+
+def _failed(error, result_columns=RESULT_COLUMNS):
     """The ``(geometry, attributes)`` of a row that failed with ``error``."""
-    return None, {**dict.fromkeys(RESULT_COLUMNS), "error": _message(error)}
+    return None, {**dict.fromkeys(result_columns), "error": _message(error)}
 
 
 def _message(error):
