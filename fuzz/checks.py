@@ -43,6 +43,8 @@ ACROSS_SHARE = 0.02
 
 def _across_problems(case, ends):
     """What is wrong with the automatic ends of a compact or star-like shape (``case.centre`` or ``case.tips``)."""
+    if case.centre is None and case.tips is None:
+        return []
     ends = np.asarray(ends, dtype=float)
     tolerance = 10.0 * _tolerance(case.polygon)
     found = []

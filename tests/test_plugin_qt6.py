@@ -147,8 +147,24 @@ def deprecation_note(value):
     documentation = getattr(value, "__doc__", None) or ""
     if isinstance(value, enum.Enum) and documentation == (type(value).__doc__ or ""):
         return None  # a member without its own docstring
+    if isinstance(value, type):
+        # A class's docstring holds one block per constructor overload: one deprecated overload (the CRS from a
+        # QGIS-internal id) is not a deprecated class; every overload deprecated is.
+        blocks = re.split(rf"^(?={re.escape(value.__name__)}\()", documentation, flags=re.MULTILINE)
+        blocks = [block for block in blocks if block.strip()]
+        if blocks and not all(DEPRECATED.search(block) for block in blocks):
+            return None
     marker = DEPRECATED.search(documentation)
     return documentation[max(0, marker.start() - 200) : marker.end() + 200] if marker else None
+
+
+def test_a_class_is_deprecated_only_when_every_constructor_is():
+    assert deprecation_note(resolve("QgsCoordinateReferenceSystem")[0][1]) is None  # one overload deprecated
+
+    class QgsOld:
+        """QgsOld(a: int)\n.. deprecated:: QGIS 3.10\n\nQgsOld(b: str)\n.. deprecated:: QGIS 3.12"""
+
+    assert deprecation_note(QgsOld) is not None
 
 
 def test_the_deprecation_scan_catches_a_deprecated_method():

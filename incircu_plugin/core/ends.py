@@ -88,6 +88,7 @@ from typing import Optional
 import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
+from shapely.ops import polylabel
 
 from .chains import extent_of, validate_polygon
 from .contacts import ranges
@@ -705,8 +706,8 @@ def _across_centre(rings, radii, elongated, unguided, ends):
     for position in np.flatnonzero(clearance[compact] < 0.5 * radii[compact]):
         # The centroid lies outside the outline or near its edge: the centre of the largest inscribed disk.
         number = compact[position]
-        circle = shapely.maximum_inscribed_circle(outlines[number], 1e-3 * radii[number])
-        centre[position] = shapely.get_coordinates(circle)[0]
+        # polylabel (Shapely 2.0) rather than maximum_inscribed_circle (2.1): the same centre, QGIS ships 2.0 too.
+        centre[position] = polylabel(outlines[number], 1e-3 * radii[number]).coords[0]
     direction = _longest_axes(rings, xy, compact, centre)
     points, _, found = rings.first_crossings(
         np.concatenate([compact, compact]),
