@@ -20,6 +20,7 @@ from qgis.core import (
 from shapely.geometry import Point, box
 
 from incircu_plugin.core import LocalProjection, label_lines
+from incircu_plugin.core.engine import DEFAULT_TOLERANCE_PER_WIDTH
 from tests.support.project import REPOSITORY
 
 SPEC = importlib.util.spec_from_file_location("label_style", REPOSITORY / "scripts" / "make_label_style.py")
@@ -102,9 +103,10 @@ def test_expression_gives_the_algorithms_line(provider, reservoirs):
     for feature in reservoirs.getFeatures():
         value = evaluate(reservoirs, feature, "incircu_label_line($geometry)")
         line, expected = as_shapely(value), as_shapely(written[feature.id()].geometry())
-        # Computed alone rather than in a batch: equal up to the tracing's rounding, far below a width.
+        # Computed alone rather than in a batch (issue 39: a batch may round an event the other way): both stem
+        # from centerlines within the automatic tolerance (width / 200) of the exact axis, so within two of it.
         width_degrees = written[feature.id()]["width_min"] / 111_000
-        assert line.hausdorff_distance(expected) < 1e-3 * width_degrees
+        assert line.hausdorff_distance(expected) < 2 * DEFAULT_TOLERANCE_PER_WIDTH * width_degrees
         again = evaluate(reservoirs, feature, "incircu_label_line($geometry)")
         assert again.equals(value)
 

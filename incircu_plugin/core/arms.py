@@ -122,7 +122,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     >>> from shapely.ops import unary_union
     >>> t = unary_union([box(-50, -5, 50, 5), box(-3, 0, 3, 50)])
     >>> ends = find_arm_ends(t)
-    >>> sorted((round(x, 6) + 0.0, round(y, 6) + 0.0) for x, y in ends.points)
+    >>> sorted((round(float(x), 6) + 0.0, round(float(y), 6) + 0.0) for x, y in ends.points)
     [(-50.0, 0.0), (0.0, 50.0), (50.0, 0.0)]
     """
     ratio, length = check_arm_options(min_arm_ratio, min_arm_length)
