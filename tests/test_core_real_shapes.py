@@ -194,6 +194,12 @@ def test_a_ring_with_split_points_gives_the_line_between_them():
     assert result.notes == ()
 
 
+def test_a_ring_with_one_split_point_gets_its_loop_and_says_the_point_is_not_used():
+    result = polygon_centerline(RINGS["moat"], [(-10, 0)])
+    assert result.line.is_closed and result.line.is_simple
+    assert [note.code for note in result.notes] == ["note_ring_point_unused"]
+
+
 def test_a_river_with_an_island_keeps_its_ends():
     """One island in a long river: the trunk runs past it, longer than the island's perimeter, so no loop."""
     river = box(0, 0, 100, 10).difference(box(40, 3, 50, 7))

@@ -198,7 +198,8 @@ def polygon_centerline_steps(
                 region, spacing, samples_per_chain=samples_per_chain, tolerance=tolerance, progress=progress
             )
             values = {name: getattr(_checked(result, region), name) for name in _RESULT_FIELDS}
-            values.update(ends_found=True, notes=(*notes, RING_NOTE, *result.notes), ends_from="automatic")
+            ring_note = Message("note_ring_point_unused") if len(split_points) else RING_NOTE
+            values.update(ends_found=True, notes=(*notes, ring_note, *result.notes), ends_from="automatic")
             return PolygonCenterlineResult(**values)
         found = split_point_coordinates((ends.start, ends.end))
         if len(split_points) == 1:

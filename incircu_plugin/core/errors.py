@@ -287,6 +287,12 @@ MESSAGES = {
         "The polygon is a ring around one island: its centerline is the closed loop around the island, from and "
         "back to the ring's narrowest place. Give two split points for a line between them."
     ),
+    "note_ring_point_unused": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The polygon is a ring around one island: its centerline is the closed loop around the island, from and "
+        "back to the ring's narrowest place; the one split point given is not used. Give two split points for a "
+        "line between them."
+    ),
     # Islands.
     "island_blocked": QT_TRANSLATE_NOOP(
         "IncirCuCore",

@@ -412,6 +412,7 @@ def networks(
     tolerance=None,
     spacing=None,
     snap_tolerance=1.0,
+    end_cap="runout",
     nodes=False,
 ):
     """Network of every (multi)polygon of a GeoSeries or GeoDataFrame: one row per branch.
@@ -433,11 +434,14 @@ def networks(
     min_arm_ratio, min_arm_length : float, optional
         See :func:`.network.polygon_network`; passed only when given (``min_arm_length`` in CRS units,
         metres when geographic).
-    islands : {"main_channel", "ignore"}
+    islands : {"main_channel", "ignore", "channels"}
     tolerance, spacing : float, optional
         As for :func:`centerlines`.
     snap_tolerance : float
         As for :func:`centerlines`.
+    end_cap : {"runout", "axis"}
+        How a branch crosses the end cap at an end on the outline, as the algorithm's ``END_CAP`` (default, as
+        there, the straight run-out; junctions are left as they are).
     nodes : bool
         Also return the node frame.
 
@@ -469,7 +473,7 @@ def networks(
     geometry = _geometry_of(data)
     crs = geometry.crs
     geographic = crs is not None and crs.is_geographic
-    options = {"islands": islands, "spacing": spacing}
+    options = {"islands": islands, "spacing": spacing, "end_cap": end_cap}
     given = (
         ("tolerance", tolerance),
         ("min_arm_ratio", min_arm_ratio),
