@@ -60,6 +60,15 @@ def reservoirs(qgis_app):
     return label_style.lakes_layer()
 
 
+@pytest.fixture(autouse=True)
+def expression_functions(provider):
+    """The plugin's expression functions, as its ``initGui`` registers them: a test that unloaded the plugin
+    before (tests/test_plugin_loading.py) removed them."""
+    from incircu.algorithms.expressions import register_functions
+
+    register_functions()
+
+
 def test_label_lines_of_lon_lat_reservoirs(provider, reservoirs):
     results = run_labels(reservoirs)
     lines = results["OUTPUT"]
