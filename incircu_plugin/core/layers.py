@@ -18,7 +18,7 @@ from shapely.geometry import LineString, Point
 from .errors import IncirCuError
 from .geodesy import LocalProjection
 from .network import multipolygon_networks
-from .touching import touching_gates
+from .touching import bounding_diagonal, touching_gates
 from .widths import width_statistics
 
 #: An end this close to a gate, as a fraction of its feature's bounding-box diagonal, is the gate.
@@ -105,21 +105,13 @@ def layer_networks(
             layer.errors.append((feature, None, str(error)))
             continue
         several = len(outcomes) > 1
-        extent = _diagonal(geometry)
+        extent = bounding_diagonal(geometry)
         for outcome in outcomes:
             if outcome.error is not None:
                 layer.errors.append((feature, outcome.part_index if several else None, str(outcome.error)))
                 continue
             _add_network(layer, end_ids, feature, outcome, projection, gates[feature], GATE_SNAP * extent)
     return layer
-
-
-def _diagonal(geometry):
-    """Bounding-box diagonal of a geometry (0 for none), CRS units."""
-    if geometry is None or geometry.is_empty:
-        return 0.0
-    west, south, east, north = geometry.bounds
-    return float(np.hypot(east - west, north - south))
 
 
 def _add_network(layer, end_ids, feature, outcome, projection, gates, snap):

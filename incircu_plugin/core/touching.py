@@ -59,7 +59,7 @@ def touching_gates(geometries):
         if not lines:
             continue
         merged = shapely.line_merge(shapely.union_all(lines))
-        scale = min(_diagonal(shapes[a]), _diagonal(shapes[b]))
+        scale = min(bounding_diagonal(shapes[a]), bounding_diagonal(shapes[b]))
         for stretch in shapely.get_parts(merged):
             if stretch.length <= SHARED_FRACTION * scale:
                 continue
@@ -72,8 +72,10 @@ def touching_gates(geometries):
     return with_gates, [np.array(points, dtype=float).reshape(-1, 2) for points in gates]
 
 
-def _diagonal(geometry):
-    """The bounding-box diagonal of a geometry, CRS units."""
+def bounding_diagonal(geometry):
+    """Bounding-box diagonal of a geometry (0 for none or an empty one), CRS units."""
+    if geometry is None or geometry.is_empty:
+        return 0.0
     west, south, east, north = geometry.bounds
     return float(np.hypot(east - west, north - south))
 
