@@ -1,14 +1,12 @@
 """Many features traced together (``centerlines_together`` over the ``*_steps`` generators) equal each one alone.
 
-The joint tracing shifts the features into one coordinate space, so a feature's result may differ from the
-plain function's by float64 rounding, which can only tip the final simplification between equally good axis
-vertices (see ``tests/test_core_joint.py``): lines agree within the feature's axis tolerance, their ends and
-end radii within ``ROUNDING`` of the feature's extent, every foot lies at its vertex's radius, and errors
-agree in type and message, in input order.
+Each feature is computed in its own frame whatever its batch (the joint tracing places features side by side
+in its spatial index only), so a feature's outcome is the same bytes alone, in any batch, in any order:
+errors agree in type and message, results in every float64 of their lines, radii and feet
+(:func:`fuzz.checks.outcome_key`).
 """
 
 import gc
-import math
 from dataclasses import dataclass
 from typing import Callable
 
@@ -18,24 +16,23 @@ import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon, box
 
 from benchmarks.rivers import river_layer
+from fuzz.checks import outcome_key
+from fuzz.inputs import STEPS, call, make_case, steps
 from incircu_plugin.core import (
     Cancelled,
     CenterlineError,
     CenterlineResult,
     InvalidGeometryError,
     OptionError,
-    PartOutcome,
     SplitPointError,
     adaptive,
     api,
     centerlines_together,
     contacts,
-    default_tolerance,
     lines_centerline_steps,
     multipolygon_centerline_steps,
     polygon_centerline,
     polygon_centerline_steps,
-    split_polygon,
 )
 from incircu_plugin.core import steps as steps_module
 from incircu_plugin.core.lines import LineRequest
@@ -48,115 +45,65 @@ from incircu_plugin.core.steps import (
 )
 from tests.support import geometry_cases
 
-#: Largest difference allowed between a feature traced together and alone at the line's ends, as a fraction
-#: of the feature's extent.
-ROUNDING = 1e-9
-
 #: A self-crossing ring: an invalid polygon.
 BOW_TIE = Polygon([(0, 0), (10, 10), (10, 0), (0, 10)])
 
 
 @dataclass
 class Feature:
-    """One input of the mix: ``make()`` returns a fresh step generator.
-
-    ``rounding`` is the coordinate tolerance of rounding, ``axis_tolerance`` the sampling tolerance (the
-    largest default tolerance of its parts; 0 for the fixed sampling, which is not traced), CRS units.
-    """
+    """One input of the mix: ``make()`` returns a fresh step generator."""
 
     name: str
     make: Callable
-    rounding: float
-    axis_tolerance: float = 0.0
-
-
-def rounding_of(geometry):
-    """``ROUNDING`` of a geometry's extent plus 16 float64 steps of its coordinates, CRS units."""
-    coordinates = shapely.get_coordinates(geometry)
-    extent = float(np.max(coordinates.max(axis=0) - coordinates.min(axis=0)))
-    return ROUNDING * extent + 16 * float(np.spacing(np.max(np.abs(coordinates))))
-
-
-def case_tolerance(*cases):
-    """The largest default tolerance of the cases' chains, CRS units."""
-    return max(default_tolerance(case.chain_a, case.chain_b) for case in cases)
-
-
-def island_channel():
-    """A 200 x 20 channel with an island nearer its upper bank; split points on the short sides; the default
-    tolerance of its outline's chains (the island only narrows it, so this bounds the true one from above)."""
-    outline, ends = box(0, 0, 200, 20), [(0, 10), (200, 10)]
-    return outline.difference(box(80, 11, 120, 15)), ends, default_tolerance(*split_polygon(outline, ends))
 
 
 def mixed_features():
     """A mix of inputs, good and bad, as :class:`Feature` objects."""
     features = [
-        Feature(
-            case.name,
-            lambda c=case: polygon_centerline_steps(c.polygon, c.split_points),
-            rounding_of(case.polygon),
-            case_tolerance(case),
-        )
+        Feature(case.name, lambda c=case: polygon_centerline_steps(c.polygon, c.split_points))
         for case in geometry_cases.analytic_cases(("unit", "projected"))
     ]
     rectangle = geometry_cases.rectangle(length=300.0, width=12.0, n=9)
     tapered = geometry_cases.tapered_channel()
     meander = geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0, n=(301, 287))
     two_parts = MultiPolygon([rectangle.polygon, shapely.affinity.translate(tapered.polygon, 0, 200)])
-    islands, island_ends, island_tolerance = island_channel()
+    islands = box(0, 0, 200, 20).difference(box(80, 11, 120, 15))
+    island_ends = [(0, 10), (200, 10)]
     far = (rectangle.split_points[0], (1e3, 1e3))
-    both = case_tolerance(rectangle, tapered)
     features += [
         Feature(
             "automatic ends",
             lambda: polygon_centerline_steps(meander.polygon),
-            rounding_of(meander.polygon),
-            case_tolerance(meander),
         ),
-        Feature(
-            "multipart, automatic ends", lambda: multipolygon_centerline_steps(two_parts), rounding_of(two_parts), both
-        ),
+        Feature("multipart, automatic ends", lambda: multipolygon_centerline_steps(two_parts)),
         Feature(
             "multipart, one part with split points",
             lambda: multipolygon_centerline_steps(two_parts, list(rectangle.split_points)),
-            rounding_of(two_parts),
-            both,
         ),
         Feature(
             "multipart, bad part",
             lambda: multipolygon_centerline_steps(MultiPolygon([BOW_TIE, box(20, 0, 80, 6)])),
-            rounding_of(box(20, 0, 80, 6)),
-            6.0 / 200.0,
         ),
-        Feature(
-            "islands", lambda: polygon_centerline_steps(islands, island_ends), rounding_of(islands), island_tolerance
-        ),
+        Feature("islands", lambda: polygon_centerline_steps(islands, island_ends)),
         Feature(
             "islands ignored",
             lambda: polygon_centerline_steps(islands, island_ends, islands="ignore"),
-            rounding_of(islands),
-            island_tolerance,
         ),
         Feature(
             "lines",
             lambda: lines_centerline_steps(*geometry_cases.bank_pair(meander, reverse_b=True)),
-            rounding_of(meander.polygon),
-            default_tolerance(meander.bank_a, meander.bank_b),
         ),
         Feature(
             "fixed spacing",
             lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, spacing=2.0),
-            rounding_of(rectangle.polygon),
         ),
-        Feature("invalid polygon", lambda: polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)]), 0.0),
-        Feature("split point off the ring", lambda: polygon_centerline_steps(rectangle.polygon, far), 0.0),
+        Feature("invalid polygon", lambda: polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)])),
+        Feature("split point off the ring", lambda: polygon_centerline_steps(rectangle.polygon, far)),
         Feature(
             "negative tolerance",
             lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, tolerance=-1.0),
-            0.0,
         ),
-        Feature("bad island mode", lambda: multipolygon_centerline_steps(two_parts, islands="swim"), 0.0),
+        Feature("bad island mode", lambda: multipolygon_centerline_steps(two_parts, islands="swim")),
     ]
     return features
 
@@ -169,32 +116,11 @@ def alone(make_steps):
         return error
 
 
-def assert_same_outcome(together, expected, feature):
-    if isinstance(expected, Exception):
-        assert type(together) is type(expected) and str(together) == str(expected), feature.name
-        assert together.__traceback__ is None, feature.name
-    elif isinstance(expected, list):
-        assert [type(o) for o in together] == [PartOutcome] * len(expected), feature.name
-        for one, other in zip(together, expected, strict=True):
-            assert one.part_index == other.part_index, feature.name
-            assert_same_outcome(one.error if one.error else one.result, other.error or other.result, feature)
-    else:
-        assert type(together) is type(expected), (feature.name, together)
-        assert_same_result(together, expected, feature.rounding, feature.axis_tolerance, feature.name)
-
-
-def assert_same_result(together, expected, rounding, axis_tolerance, name):
-    """Lines within ``axis_tolerance`` (plus rounding), ends and end radii within ``rounding``, every foot at its
-    vertex's radius, the same notes and ends."""
-    assert together.line.hausdorff_distance(expected.line) <= axis_tolerance + rounding, name
-    for index in (0, -1):
-        assert np.hypot(*np.subtract(together.line.coords[index], expected.line.coords[index])) <= rounding, name
-        assert abs(together.radii[index] - expected.radii[index]) <= rounding, name
-    centres = shapely.get_coordinates(together.line)
-    for foot in (together.foot_a, together.foot_b):
-        assert np.max(np.abs(np.hypot(*(foot - centres).T) - together.radii)) <= rounding, name
-    for field in ("ends_found", "notes", "ends_from"):
-        assert getattr(together, field, None) == getattr(expected, field, None), (name, field)
+def assert_identical(together, expected, name):
+    """``together`` and ``expected`` are the same outcome, to the last bit; a kept error has no traceback."""
+    assert outcome_key(together) == outcome_key(expected), name
+    if isinstance(together, Exception):
+        assert together.__traceback__ is None, name
 
 
 def test_a_mix_of_features_traced_together_equals_each_alone():
@@ -210,7 +136,7 @@ def test_a_mix_of_features_traced_together_equals_each_alone():
         together = centerlines_together([features[i].make() for i in order])
         assert len(together) == len(order)
         for i, outcome in zip(order, together):
-            assert_same_outcome(outcome, expected[i], features[i])
+            assert_identical(outcome, expected[i], features[i].name)
 
 
 def test_features_of_different_sizes_and_places_together_equal_each_alone():
@@ -221,7 +147,7 @@ def test_features_of_different_sizes_and_places_together_equal_each_alone():
     together = centerlines_together([polygon_centerline_steps(c.polygon, c.split_points) for c in cases])
     for case, outcome in zip(cases, together):
         expected = polygon_centerline(case.polygon, case.split_points)
-        assert_same_result(outcome, expected, rounding_of(case.polygon), case_tolerance(case), case.name)
+        assert_identical(outcome, expected, case.name)
 
 
 def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
@@ -232,14 +158,7 @@ def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
     rivers = river_layer(256, seed=7, first=19_712)
     together = centerlines_together([polygon_centerline_steps(river.polygon) for river in rivers])
     for river, outcome in zip(rivers, together, strict=True):
-        expected = polygon_centerline(river.polygon)
-        assert type(outcome) is type(expected), (river.index, outcome)
-        ends = [expected.line.coords[0], expected.line.coords[-1]]
-        tolerance = default_tolerance(*split_polygon(river.polygon, ends))
-        # A foot found through a vertex contact near a tangency (a double root) keeps half the digits of its
-        # radius, alone as together (river 19,822: 1.6e-8 of the radius both ways).
-        rounding = rounding_of(river.polygon) + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(expected.radii))
-        assert_same_result(outcome, expected, rounding, tolerance, river.index)
+        assert_identical(outcome, polygon_centerline(river.polygon), river.index)
 
 
 def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
@@ -327,9 +246,7 @@ def test_lines_with_an_error_together_with_good_ones():
     expected = alone(lambda: lines_centerline_steps(*crossing))
     assert isinstance(expected, Exception)
     assert type(together[0]) is type(expected) and str(together[0]) == str(expected)
-    expected = run_alone(lines_centerline_steps(*good))
-    tolerance = default_tolerance(*(np.asarray(line.coords) for line in good))
-    assert_same_result(together[1], expected, rounding_of(good[0].union(good[1])), tolerance, "good")
+    assert_identical(together[1], run_alone(lines_centerline_steps(*good)), "good")
 
 
 def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeypatch):
@@ -412,3 +329,23 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
     together = centerlines_together([polygon_centerline_steps(*cases[i][1:]) for i in order])
     for i, outcome in zip(order, together, strict=True):
         assert exactly(outcome) == expected[i], cases[i][0]
+
+
+@pytest.mark.parametrize("seed", [3, 29])
+def test_fuzzed_inputs_are_the_same_bytes_alone_in_a_batch_reversed_and_in_slices(seed):
+    # The fuzz generator's inputs (channels with and without split points, bank lines, islands, rings, spikes,
+    # compact shapes, bad inputs) that have a step form: each outcome alone, then in one batch, in the reverse
+    # order and in four slices, as a dask frame's partitions or a selection in QGIS would split a layer.
+    cases = [make_case(seed, index, small=True) for index in range(120)]
+    cases = [case for case in cases if case.function in STEPS]
+    expected = []
+    for case in cases:
+        try:
+            expected.append(call(case))
+        except Exception as error:  # noqa: BLE001 - the error is the expected outcome
+            expected.append(error)
+    order = list(range(len(cases)))
+    for batch in (order, order[::-1], *np.array_split(order, 4)):
+        together = centerlines_together([steps(cases[index]) for index in batch])
+        for index, outcome in zip(batch, together, strict=True):
+            assert_identical(outcome, expected[index], (seed, index, cases[index].category))

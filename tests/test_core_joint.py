@@ -1,17 +1,15 @@
 """Joint tracing (``adaptive.trace_together``): many features in one vectorised tracing, each still exact.
 
-The features of a joint tracing share one frame and one set of rounds; contacts are only sought within a
-feature's own pair of chains. Checked against the segment-Voronoi oracle and against tracing each feature
-alone:
+The features of a joint tracing share one set of rounds, each in its own frame (they are placed side by side
+in the spatial index only); contacts are only sought within a feature's own pair of chains. Checked against
+the segment-Voronoi oracle and against tracing each feature alone:
 
 - every feature of a mixed batch (closed and open chains, straight and curved axes, islands, extents from
   1 to 1,000) is within its tolerance of its exact medial axis, with its vertices on it;
-- each feature's line is the one it gets alone, up to the rounding of the shared frame (a few float64
-  steps of the frame's coordinates, which stay within a few tens of the feature's extent), which may tip
-  the final simplification between equally good vertices: ends equal, lines within the tolerance;
-- features overlapping in space (the same place in the joint frame before their shift) never see each other;
+- each feature's line is the one it gets alone, bit for bit;
+- features overlapping in space (the same place in the index before their shift) never see each other;
 - features of very different extents are traced in different groups, each group within the documented
-  extent ratio and segment budget; groups are traced together (their frames overlapping) within the segment
+  extent ratio and segment budget; groups are traced together (overlapping in the index) within the segment
   budget, each feature's points exactly those its group gets traced alone.
 """
 
@@ -92,15 +90,9 @@ def test_a_joint_tracing_gives_each_feature_the_line_it_gets_alone(joint_results
     _, (chain_a, chain_b), _, _, _ = JOBS[job]
     alone = run_alone(centerline_steps(chain_a, chain_b))
     joint = joint_results[job]
-    extent = np.ptp(np.concatenate([chain_a, chain_b]), axis=0).max()
-    # Both lines are the exact axis points simplified to half the tolerance; the shared frame's rounding
-    # (a few float64 steps of coordinates a few tens of extents large) can only tip the simplification's
-    # choice between vertices that deviate equally (symmetric shapes), so the lines agree to the tolerance
-    # and their ends and end radii to rounding.
-    assert joint.line.hausdorff_distance(alone.line) <= default_tolerance(chain_a, chain_b)
-    for index in (0, -1):
-        assert np.hypot(*np.subtract(joint.line.coords[index], alone.line.coords[index])) <= 1e-9 * extent
-        assert abs(joint.radii[index] - alone.radii[index]) <= 1e-9 * extent
+    assert joint.line.wkb == alone.line.wkb
+    for name in ("radii", "foot_a", "foot_b"):
+        np.testing.assert_array_equal(getattr(joint, name), getattr(alone, name))
 
 
 def test_features_at_the_same_place_do_not_see_each_other():

@@ -1617,10 +1617,10 @@ def trace_one(request, report):
     )
 
 
-#: A joint group places its features on a grid of cells this many times their largest extent, and holds
-#: features whose extents differ at most by ``JOINT_EXTENT_RATIO``: coordinates then stay within a few tens
-#: of each feature's extent, so the shared frame costs a few bits of float64 at most. The groups of one
-#: tracing share the frame, their grids overlapping; their extents differ at most by ``JOINT_BATCH_RATIO``.
+#: A joint group places its features, in the spatial index only, on a grid of cells this many times their
+#: largest extent, and holds features whose extents differ at most by ``JOINT_EXTENT_RATIO`` (a cell's
+#: candidate boxes then list few segments of its neighbours). The groups of one tracing overlap in the index;
+#: their extents differ at most by ``JOINT_BATCH_RATIO``. Every value is computed in the feature's own frame.
 JOINT_CELL = 1.25
 JOINT_EXTENT_RATIO = 4.0
 JOINT_BATCH_RATIO = JOINT_EXTENT_RATIO**2
@@ -1695,24 +1695,23 @@ def _group_offsets(requests):
 
 
 def _trace_batch(requests, batch, report):
-    """Trace the groups of ``batch`` in one tracing: each group's requests shifted to its grid
-    (:func:`_group_offsets`), their points shifted back; returns them in the order of the batch's requests."""
+    """Trace the groups of ``batch`` in one tracing, each feature in its own frame: its chains are placed on
+    its group's grid in the spatial index only (:func:`_group_offsets`, ``index_shift`` of
+    :class:`.contacts.Boundary`), so its points are those it gets traced alone; returns them in the order of
+    the batch's requests."""
     offsets = np.concatenate([_group_offsets([requests[index] for index in group]) for group in batch])
     requests = [requests[index] for group in batch for index in group]
-    chains = [chain + offset for request, offset in zip(requests, offsets) for chain in request.chains]
+    chains = [chain for request in requests for chain in request.chains]
     sides = [side for request in requests for side in request.sides]
     per_chain = [
         np.repeat([getattr(request, name) for request in requests], 2)
         for name in ("closed", "tolerance", "width", "max_t", "min_t")
     ]
     rounding = np.repeat([request.rounding for request in requests], 2)
-    points, chain = _Tracer(sides, Boundary(chains, rounding), *per_chain).trace(report)
+    boundary = Boundary(chains, rounding, index_shift=np.repeat(offsets, 2, axis=0))
+    points, chain = _Tracer(sides, boundary, *per_chain).trace(report)
     feature = chain >> 1
     order = np.argsort(feature, kind="stable")
-    feature = feature[order]
-    # Every point shifted back at once; then each feature's points are a slice of the sorted arrays.
-    shift = rows(offsets, feature)
     points = points.subset(order)
-    points = replace(points, centre=points.centre - shift, foot_a=points.foot_a - shift, foot_b=points.foot_b - shift)
-    bounds = np.searchsorted(feature, np.arange(len(requests) + 1)).tolist()
+    bounds = np.searchsorted(feature[order], np.arange(len(requests) + 1)).tolist()
     return [points.subset(slice(begin, end)) for begin, end in zip(bounds[:-1], bounds[1:])]
