@@ -28,14 +28,14 @@ from shapely.geometry import LineString, Polygon, box
 from incircu_plugin.core import (
     IncirCuError,
     centerline_from_chains,
-    centerlines_together,
     default_tolerance,
     lines,
     lines_centerline,
     polygon_centerline,
-    polygon_centerline_steps,
     split_polygon,
 )
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core.api import _polygon_centerline_steps
 from incircu_plugin.core.errors import OptionError
 from tests.support import geometry_cases
 from tests.support.oracle import MedialOracle, assert_within_tolerance, check_centerline
@@ -967,8 +967,8 @@ def test_a_split_point_a_hair_from_a_vertex_keeps_every_foot_on_its_disk(vertex,
     split_points = [ring[vertex] + 7.3e-8 * toward, 0.5 * (corners[other_end[0]] + corners[other_end[1]])]
     alone = polygon_centerline(square, split_points)
     slab = box(30_000.0, 0.0, 30_040.0, 3.0)
-    steps = [polygon_centerline_steps(slab, [(30_000.0, 1.5), (30_040.0, 1.5)])]
-    batch = centerlines_together([*steps, polygon_centerline_steps(square, split_points)])[1]
+    steps = [_polygon_centerline_steps(slab, [(30_000.0, 1.5), (30_040.0, 1.5)])]
+    batch = run_many_steps([*steps, _polygon_centerline_steps(square, split_points)])[1]
     chain_a, chain_b = split_polygon(square, split_points)
     for result in (alone, batch):
         check_centerline(result, chain_a, chain_b, square, [chain_a[0], chain_a[-1]])

@@ -454,7 +454,7 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
     assert np.array_equal(site, 79 - np.floor(along).astype(int))
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high):
+    def reversed_candidates(boundary, low, high, chain=None):
         box, segment = listed(boundary, low, high)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]
@@ -557,7 +557,7 @@ def test_a_disk_touching_its_own_chain_twice_at_once_reports_the_lower_site(monk
     # at t = 5: the sample is skipped and its own-chain site is the lower one, whatever the listing order.
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high):
+    def reversed_candidates(boundary, low, high, chain=None):
         box, segment = listed(boundary, low, high)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]

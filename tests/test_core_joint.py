@@ -18,6 +18,7 @@ import pytest
 import shapely
 
 from incircu_plugin.core import default_tolerance, split_polygon
+from incircu_plugin.core._steps import run_alone, run_together
 from incircu_plugin.core.adaptive import (
     JOINT_BATCH_RATIO,
     JOINT_EXTENT_RATIO,
@@ -28,7 +29,6 @@ from incircu_plugin.core.adaptive import (
 )
 from incircu_plugin.core.chains import orient_bank_lines
 from incircu_plugin.core.engine import centerline_steps
-from incircu_plugin.core.steps import run_alone, run_together
 from tests.support import geometry_cases
 from tests.support.oracle import assert_within_tolerance, check_centerline
 

@@ -1600,7 +1600,7 @@ def adaptive_axis_points(sides, boundary, closed, tolerance, width, max_t, min_t
 
 
 def trace_one(request, report):
-    """:func:`adaptive_axis_points` of one :class:`.steps.TraceRequest`, reporting to ``report``.
+    """:func:`adaptive_axis_points` of one :class:`._steps.TraceRequest`, reporting to ``report``.
 
     The request's :class:`.contacts.Boundary` is built here and released with the tracer (not cached on the
     request, which lives on while its centerline is assembled).
@@ -1630,7 +1630,7 @@ JOINT_SEGMENTS = 1 << 17
 
 
 def trace_together(requests, report):
-    """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
+    """:func:`adaptive_axis_points` of many :class:`._steps.TraceRequest` objects, traced jointly.
 
     Requests of similar extent are placed side by side in one frame (a group, :func:`_joint_groups`); groups
     are traced together in one set of vectorised rounds up to ``JOINT_SEGMENTS`` (:func:`_joint_batches`: their

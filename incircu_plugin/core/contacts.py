@@ -167,7 +167,7 @@ class Boundary:
         if count + len(chains) > MAX_SEGMENTS:
             raise InvalidGeometryError(Message("too_many_segments", count=count))
         self.segment_count = count
-        #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
+        #: More than one pair of chains (a joint tracing of several features, see :mod:`._steps`): chains
         #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.
         self.several_pairs = len(chains) > 2
         self.offset = list(np.cumsum(sizes) - sizes)
@@ -205,7 +205,9 @@ class Boundary:
         #: there), in a joint tracing's frame far from the origin.
         #: Per segment, the rounding of its pair of chains (a float for one pair): what the pair's result may
         #: depend on, whichever other pairs share the boundary.
-        self.rounding = _pair_rounding(self.vertex, sizes + 1) if self.several_pairs else coordinate_rounding(self.vertex)
+        self.rounding = (
+            _pair_rounding(self.vertex, sizes + 1) if self.several_pairs else coordinate_rounding(self.vertex)
+        )
         #: Per chain, the larger of its pair's rounding and the chain's ``input_rounding``, CRS units.
         self.chain_rounding = (
             self.rounding[self.offset] if self.several_pairs and count else np.full(len(chains), self.rounding)
@@ -248,9 +250,10 @@ class Boundary:
         """Free the spatial index (it is built again on the next use)."""
         self._index = None
 
-    def candidates(self, low, high, chain):
+    def candidates(self, low, high, chain=None):
         """Pairs (box index, segment index), each box's pairs consecutive, of segments whose bounding box meets
-        a box (``low``, ``high``: its corners, CRS units, shifted here by the ``index_shift`` of its ``chain``).
+        a box (``low``, ``high``: its corners, CRS units, shifted here by the ``index_shift`` of its ``chain``, which
+        is needed only with an ``index_shift``).
 
         With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
