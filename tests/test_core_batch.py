@@ -25,7 +25,6 @@ from incircu_plugin.core import (
     InvalidGeometryError,
     OptionError,
     SplitPointError,
-    adaptive,
     api,
     centerlines_together,
     contacts,
@@ -43,6 +42,7 @@ from incircu_plugin.core.steps import (
     run_settings_paused,
     trace_alone,
 )
+from incircu_plugin.core.tracing import joint
 from tests.support import geometry_cases
 
 #: A self-crossing ring: an invalid polygon.
@@ -324,7 +324,7 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
         for (name, polygon, ends), bits in zip(cases, expected, strict=True):
             assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, index_run)
     monkeypatch.undo()
-    monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
+    monkeypatch.setattr(joint, "JOINT_CELL", 0.0)
     order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)
     together = centerlines_together([polygon_centerline_steps(*cases[i][1:]) for i in order])
     for i, outcome in zip(order, together, strict=True):
