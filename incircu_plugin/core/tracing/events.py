@@ -1,6 +1,6 @@
 """Events: where an open interval's two sites are equally far from the disk (closed form), the probe placed
 there, and how a solved probe is judged: an event of its interval or not, an axis point or not
-(docs/tracing.md, *Events*)."""
+(docs/tracing.md, *The rounds*)."""
 
 import numpy as np
 

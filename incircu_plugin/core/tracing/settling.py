@@ -47,11 +47,11 @@ def off_the_axis(tracer, intervals, row):
     it.
 
     The disks between two samples first touch the boundary between the two contacts, on the side away from
-    the span (docs/tracing.md, *Off the axis*); when both contacts lie on the own chain before the span, or both after it,
-    that part of the boundary is the own chain between them, so every disk between touches its own chain
-    first: the samples there lie on side branches, and their events are not points of the axis. (With two
-    bank lines the other chain, joined to the own one nowhere, could lie wholly inside that part: not
-    for open pairs.)
+    the span (docs/tracing.md, *Off the axis*); when both contacts lie on the own chain before the span, or
+    both after it, that part of the boundary is the own chain between them, so every disk between touches its
+    own chain first: the samples there lie on side branches, and their events are not points of the axis.
+    (With two bank lines the other chain, joined to the own one nowhere, could lie wholly inside that part:
+    not for open pairs.)
     """
     span, site0, site1 = intervals.span[row], intervals.site0[row], intervals.site1[row]
     own = tracer.spans.chain[span]
