@@ -38,6 +38,7 @@ from incircu_plugin.core import (
 )
 from incircu_plugin.core.contacts import Boundary
 from incircu_plugin.core.errors import OptionError
+from incircu_plugin.core.steps import TraceRequest
 from incircu_plugin.core.tracing import SETTLED_CHORD, TraceOptions, Tracer, TraceStats, observed
 from incircu_plugin.core.tracing.initial import initial_samples, intervals_between
 from incircu_plugin.core.tracing.intervals import Intervals, split_at_nodes
@@ -460,6 +461,28 @@ def test_the_ends_middles_and_corners_of_the_edges_are_solved_in_one_pass_along_
     assert len(probes) == stats.rounds and not any(solution.corners for solution in probes)
     chain, position = initial[0].chain, initial[0].position
     assert np.all((chain[1:] > chain[:-1]) | ((chain[1:] == chain[:-1]) & (position[1:] >= position[:-1])))
+
+
+def test_trace_options_hold_each_requests_values_for_both_its_chains_and_stats_only_count_inside_the_block():
+    chains = [np.array([(0.0, 0.0), (10.0, 0.0)]), np.array([(10.0, 2.0), (0.0, 2.0)])]
+    values = [(True, 0.01, 2.0, 50.0, 0.0, (1.0, -1.0)), (False, 0.5, 3.0, 60.0, 1e-9, (-1.0, 1.0))]
+    requests = [
+        TraceRequest(chains, sides, closed, tolerance, width, max_t, min_t, None)
+        for closed, tolerance, width, max_t, min_t, sides in values
+    ]
+    options = TraceOptions.from_requests(requests)
+    assert options.sides.tolist() == [1.0, -1.0, -1.0, 1.0]
+    assert options.closed.tolist() == [True, True, False, False]
+    assert options.tolerance.tolist() == [0.01, 0.01, 0.5, 0.5]
+    assert options.min_t.tolist() == [0.0, 0.0, 1e-9, 1e-9]
+    alone = TraceOptions.from_request(requests[1])
+    assert alone.width.tolist() == [3.0, 3.0] and alone.max_t.tolist() == [60.0, 60.0]
+    polygon = box(0.0, 0.0, 10.0, 2.0)
+    with observed() as stats:
+        polygon_centerline(polygon, [(0.0, 1.0), (10.0, 1.0)])
+        inside = (stats.tracings, stats.rounds)
+    polygon_centerline(polygon, [(0.0, 1.0), (10.0, 1.0)])
+    assert inside[0] == 1 and (stats.tracings, stats.rounds) == inside
 
 
 def make_tracer(bank_a, bank_b, sides, closed):

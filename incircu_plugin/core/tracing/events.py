@@ -19,7 +19,7 @@ LOOSE_EVENT_TOLERANCE = 1e-6
 
 def event_candidates(tracer, intervals):
     """Where to probe each open interval: its event candidate, the trial radius, whether it is one, which end
-    it lies at (see :func:`crossing`) and its radius (CRS units) where it is the one crossing in the
+    it lies at (see :func:`.closed_form.crossing`) and its radius (CRS units) where it is the one crossing in the
     interval (else NaN)."""
     span = intervals.span
     # Both sites' terms in one call (each row depends on its own values only: the same floats).
@@ -42,7 +42,7 @@ def across_split_points(tracer, intervals, terms0, u, found, at_end):
 
     At a straight split point both runs lie on one line: their radii are that line's, so they never cross, and
     the contact passes from one run to the other where the disk is tangent to the line at the split point.
-    That parameter, where the foot on the first site's line (``terms0``: its :meth:`Sites.radius_terms`) is
+    That parameter, where the foot on the first site's line (``terms0``: its :meth:`.sites.Sites.radius_terms`) is
     the split point, is a root of ``D0 + D1 u`` on an edge and of ``D0 + D1 cos(u) + D2 sin(u)`` on a fan:
     written into ``u`` and ``found`` in place where it lies inside the interval, into ``at_end`` where it lies
     at an end. Like any event candidate it is only a candidate: its probe is judged as an event's

@@ -188,7 +188,7 @@ def settle_at_ends(tracer, intervals, at_end):
 
 def emit_junctions(tracer, intervals, end):
     """Emit the end samples ``end`` of ``intervals`` (their disks touch both sites of their interval, which is
-    settled at that end) that touch a site of each chain exactly (:func:`is_event`), not at a split point.
+    settled at that end) that touch a site of each chain exactly (:func:`.events.is_event`), not at a split point.
 
     Such a disk touches both chains: its centre is a point of the axis, where a branch of the own chain joins
     it. A probe placed there for another pair of sites (two of the own chain whose event falls on the same

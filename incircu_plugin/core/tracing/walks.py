@@ -16,7 +16,7 @@ MAX_PREDICTED = 8
 
 
 def pair_events(tracer, intervals, terms0, terms1):
-    """The event of two sites (their :meth:`Sites.radius_terms`) inside each interval, in closed form: its
+    """The event of two sites (their :meth:`.sites.Sites.radius_terms`) inside each interval, in closed form: its
     parameter, its radius and whether it lies strictly inside (the probe decides whether it is one)."""
     tracer.stats.predicted_events += len(intervals.span)
     u, found, _ = crossing(tracer.spans, intervals, terms0, terms1)
