@@ -20,7 +20,7 @@ JOINT_SEGMENTS = 1 << 17
 
 
 def trace_together(requests, report):
-    """:func:`adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
+    """:func:`.tracer.adaptive_axis_points` of many :class:`.steps.TraceRequest` objects, traced jointly.
 
     Requests of similar extent are placed side by side in one frame (a group, :func:`joint_groups`); groups
     are traced together in one set of vectorised rounds up to ``JOINT_SEGMENTS`` (:func:`joint_batches`: their
