@@ -26,7 +26,6 @@ from incircu_plugin.core import (
     OptionError,
     SplitPointError,
     _many,
-    adaptive,
     contacts,
     polygon_centerline,
 )
@@ -41,6 +40,7 @@ from incircu_plugin.core._steps import (
 )
 from incircu_plugin.core.api import _lines_centerline_steps, _multipolygon_centerline_steps, _polygon_centerline_steps
 from incircu_plugin.core.lines import LineRequest
+from incircu_plugin.core.tracing import joint
 from tests.support import geometry_cases
 
 #: A self-crossing ring: an invalid polygon.
@@ -320,7 +320,7 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
         for (name, polygon, ends), bits in zip(cases, expected, strict=True):
             assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, index_run)
     monkeypatch.undo()
-    monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
+    monkeypatch.setattr(joint, "JOINT_CELL", 0.0)
     order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)
     together = run_many_steps([_polygon_centerline_steps(*cases[i][1:]) for i in order])
     for i, outcome in zip(order, together, strict=True):

@@ -6,7 +6,7 @@ the chains, and ordered by where they touch the chains they form one unbranched 
 orchestrator: it checks the options, works in a local frame, gets the axis points from one of two samplers
 and has them ordered into the line (:mod:`.lines`).
 
-- **Adaptive** (default, :mod:`.adaptive`): samples start at the boundary's vertices and are refined only
+- **Adaptive** (default, :mod:`.tracing`): samples start at the boundary's vertices and are refined only
   where the axis can leave the chord between two of them; events of the axis are located exactly (or,
   where the axis bends there by less than the tolerance, proven to need no vertex) and parabolic pieces get
   vertices placed in closed form, so the line stays within ``tolerance`` of the exact medial axis with about
