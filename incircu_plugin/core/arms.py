@@ -37,20 +37,9 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from .ends import (
-    ON_RING,
-    _centred_ends,
-    _ends_of_trunks,
-    _frames,
-    _joint_trunks,
-    _local_box,
-    _on_ring,
-    _Rings,
-    _Tips,
-)
+from .ends import PolygonSkeleton
 from .errors import InvalidGeometryError, Message, OptionError
 from .polyline import typical_width
-from .skeleton import joint_skeletons
 
 #: Default ``min_arm_ratio``: an arm is kept when it reaches beyond its junction's incircle by at least this
 #: many junction widths (see the module docstring).
@@ -126,20 +115,15 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     [(-50.0, 0.0), (0.0, 50.0), (50.0, 0.0)]
     """
     ratio, length = check_arm_options(min_arm_ratio, min_arm_length)
-    origin, scale = _local_box(polygon, None)
-    (frame,) = _frames([polygon], [None], [(origin, scale)])
-    skeleton = joint_skeletons([frame.local])
-    if skeleton.errors[0] is not None:
-        raise skeleton.errors[0]
+    shape = PolygonSkeleton(polygon)
+    skeleton, scale = shape.skeleton, shape.scale
     if len(skeleton.edges) == 0:
         raise InvalidGeometryError(Message("arms_too_thin"))
-    main = _main_stem(frame, skeleton)
+    main = shape.main_stem()
     graph = _Graph(skeleton.nodes, skeleton.radii, skeleton.edges)
     graph.prune(ratio, length / scale)
     arms = graph.arms()
-    if not arms:
-        return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
-    exterior = frame.local.exterior
+    exterior = shape.local.exterior
     step = float(skeleton.steps[0])
     # An arm whose tip lies on an island's shore (a large bump of an island) is not an end of the network.
     arms = [
@@ -150,27 +134,13 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     if not arms:
         return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     degree = np.bincount(skeleton.edges.ravel(), minlength=len(skeleton.nodes))
-    trunks = [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step, False) for arm in arms]
-    tips = _Tips(trunks)
-    rings = _Rings(np.array([exterior] * len(arms), dtype=object))
-    local = _centred_ends(tips, rings)[::2]
-    points = local * scale + origin
-    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
-        points = np.array([_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in points])
+    points = shape.trunk_ends(
+        [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step) for arm in arms]
+    )
     widths = np.array([arm.width for arm in arms]) * scale
     reaches = np.array([arm.reach for arm in arms])
     keep = _separate(points, widths, reaches)
     return _with_main_stem(polygon, main, ArmEnds(points[keep], widths[keep], reaches[keep]))
-
-
-def _main_stem(frame, skeleton):
-    """Return the :class:`.ends.EndsResult` :func:`.ends.find_ends` gives for the frame's polygon, from the
-    skeleton already built (its main-stem rule, the same cap centring)."""
-    outcomes = [None]
-    trunks = _joint_trunks([frame], "main_stem", outcomes, lambda fraction: None, skeleton=skeleton)
-    if outcomes[0] is not None:
-        raise outcomes[0]
-    return _ends_of_trunks([frame], trunks)[0]
 
 
 def _with_main_stem(polygon, main, arms):

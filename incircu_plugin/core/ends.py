@@ -1147,3 +1147,72 @@ def _opposite_points(exteriors, perimeters, xy):
 def _nearest_boundary_points(exteriors, xy):
     """Return the point of each ring ``exteriors`` nearest to each of the points ``xy`` (shape (n, 2))."""
     return shapely.get_coordinates(shapely.shortest_line(shapely.points(xy), exteriors))[1::2]
+
+
+class PolygonSkeleton:
+    """A polygon's skeleton as :func:`find_ends` builds it, for a caller that walks it itself (:mod:`.arms`).
+
+    The polygon is moved to its local frame (origin at its box centre, unit bounding-box diagonal; islands
+    smaller than its typical width left out) and triangulated once; :meth:`main_stem` and :meth:`trunk_ends`
+    then apply :func:`find_ends`'s own rules to that skeleton.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units.
+
+    Attributes
+    ----------
+    origin : ndarray of shape (2,)
+        Centre of the polygon's bounding box, CRS units.
+    scale : float
+        Its bounding-box diagonal, CRS units (one local unit).
+    local : Polygon
+        The polygon in the local frame, counter-clockwise.
+    skeleton : Skeletons
+        Its :func:`.skeleton.joint_skeletons` (one polygon), local units.
+
+    Raises
+    ------
+    InvalidGeometryError
+        As :func:`find_ends` (an invalid, absurdly scaled or untriangulable polygon).
+    """
+
+    def __init__(self, polygon):
+        self.origin, self.scale = _local_box(polygon, None)
+        (self._frame,) = _frames([polygon], [None], [(self.origin, self.scale)])
+        self.local = self._frame.local
+        self.skeleton = joint_skeletons([self.local])
+        if self.skeleton.errors[0] is not None:
+            raise self.skeleton.errors[0]
+
+    def main_stem(self):
+        """Return the :class:`EndsResult` :func:`find_ends` gives for the polygon (rule ``"main_stem"``)."""
+        outcomes = [None]
+        trunks = _joint_trunks([self._frame], "main_stem", outcomes, _no_check, skeleton=self.skeleton)
+        if outcomes[0] is not None:
+            raise outcomes[0]
+        return _ends_of_trunks([self._frame], trunks)[0]
+
+    def trunk_ends(self, trunks):
+        """Return the first end of each trunk centred in its end cap (step 3 of the module docstring).
+
+        Parameters
+        ----------
+        trunks : list of tuple
+            Per end, ``(points, radii, junction, step)``: the skeleton path from the tip inward (local
+            units), each point's clearance (local units), whether it is a skeleton junction, and the
+            skeleton's densification step (local units).
+
+        Returns
+        -------
+        ndarray of shape (len(trunks), 2)
+            The ends on the exterior ring, CRS units.
+        """
+        tips = _Tips([(*trunk, False) for trunk in trunks])
+        rings = _Rings(np.array([self.local.exterior] * len(trunks), dtype=object))
+        points = _centred_ends(tips, rings)[::2] * self.scale + self.origin
+        if np.max(np.abs(self.origin)) * np.finfo(float).eps > ON_RING * self.scale:
+            exterior = self._frame.polygon.exterior
+            points = np.array([_on_ring(exterior, xy, ON_RING * self.scale) for xy in points])
+        return points.reshape(-1, 2)
