@@ -77,6 +77,20 @@ def test_a_gate_in_the_middle_of_a_bank_is_joined_by_an_exact_junction():
     assert np.min(np.hypot(*(network.junctions - (20.0, 0.0)).T)) <= 1e-9 * 100.0
 
 
+def test_ends_from_names_the_gates_when_a_reach_has_no_split_point():
+    # A river cut into three reaches: the middle one ends at its two gates only, the outer ones at a gate and
+    # an automatic end; a given split point with a gate names both.
+    reaches = [box(0, 0, 50, 10), box(50, 0, 100, 10), box(100, 0, 150, 10)]
+    shapes, gates = touching_gates(reaches)
+    found = [polygon_network(shape, gates=points) for shape, points in zip(shapes, gates)]
+    assert [network.ends_from for network in found] == ["gates_and_automatic", "gates", "gates_and_automatic"]
+    assert found[1].end_sources == ("gate", "gate")
+    assert [sorted(network.end_sources) for network in found[::2]] == [["automatic", "gate"]] * 2
+    given = polygon_network(shapes[0], [(0.0, 5.0)], gates=gates[0])
+    assert given.ends_from == "split_points_and_gates" and given.end_sources == ("split_point", "gate")
+    assert polygon_network(shapes[0], [(0.0, 5.0), (50.0, 5.0)]).ends_from == "split_points"
+
+
 def test_reaches_of_generated_rivers_meet_their_neighbours_exactly():
     reaches, river_of = river_reaches(rivers=2, cuts_per_river=6, seed=7)
     layer = layer_networks(reaches, connect_touching=True)

@@ -137,8 +137,9 @@ class NetworkResult:
     end_sources : tuple of str
         Per row of ``split_points``: ``"split_point"`` (given), ``"gate"`` (see ``gates`` of
         :func:`polygon_network`) or ``"automatic"`` (see :mod:`.arms`).
-    ends_from : {"split_points", "automatic", "split_points_and_automatic"}
-        Where the ends came from (gates count as split points).
+    ends_from : str
+        Where the ends came from: ``"split_points"``, ``"gates"``, ``"automatic"`` or those present joined
+        by ``"_and_"`` (``"gates_and_automatic"`` for a reach with one gate; see :func:`ends_from`).
     chain_nodes : tuple of (int, int)
         For each chain, the rows of ``split_points`` (node ids) at its start and end: ``chains`` before
         :func:`multipolygon_networks` renumbers it.
@@ -283,7 +284,6 @@ def polygon_network(
         branches = [replace(branch, result=run_out_ends(branch.result, region)) for branch in branches]
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
-    automatic = "automatic" in sources
     return NetworkResult(
         branches=tuple(branches),
         split_points=snapped,
@@ -292,11 +292,33 @@ def polygon_network(
         junction_radii=radii,
         chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
         end_sources=tuple(sources),
-        ends_from=("split_points_and_automatic" if len(sources) > sources.count("automatic") else "automatic")
-        if automatic
-        else "split_points",
+        ends_from=ends_from(sources),
         notes=(spikes,) if spikes else (),
     )
+
+
+def ends_from(sources):
+    """Return :attr:`NetworkResult.ends_from` for the sources of the ends.
+
+    Parameters
+    ----------
+    sources : sequence of {"split_point", "gate", "automatic"}
+        Per end, where it came from.
+
+    Returns
+    -------
+    str
+        The sources present, in the order split points, gates, automatic ends, joined by ``"_and_"``:
+        ``"split_points"``, ``"gates"``, ``"automatic"``, ``"split_points_and_automatic"``,
+        ``"gates_and_automatic"``, ``"split_points_and_gates"`` or ``"split_points_and_gates_and_automatic"``.
+
+    Examples
+    --------
+    >>> ends_from(["gate", "gate", "gate"]), ends_from(["gate", "automatic"])
+    ('gates', 'gates_and_automatic')
+    """
+    names = {"split_point": "split_points", "gate": "gates", "automatic": "automatic"}
+    return "_and_".join(names[source] for source in names if source in sources)
 
 
 def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
