@@ -166,9 +166,10 @@ def _separate(points, widths, reaches):
     farther beyond its junction is kept (the first one on a tie), the farthest-reaching ends first.
     """
     order = sorted(range(len(points)), key=lambda index: (-reaches[index], index))
+    apart = np.hypot(*(points[:, None, :] - points[None, :, :]).T).T > np.minimum(widths[:, None], widths[None, :])
     keep = []
     for index in order:
-        if all(np.hypot(*(points[index] - points[other])) > min(widths[index], widths[other]) for other in keep):
+        if np.all(apart[index, keep]):
             keep.append(index)
     return sorted(keep)
 

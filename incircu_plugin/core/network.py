@@ -275,8 +275,13 @@ def polygon_network(
     junctions = _Junctions(boundary)
     pieces = []
     runs = _runs(chains, spacing, progress, engine_options, channel_islands)
-    for i, (result, bridged) in enumerate(runs):
-        labels = _vertex_labels(result, i, boundary, bridged)
+    feet = [np.asarray(result.foot_b, dtype=float) for result, _ in runs]
+    on_ring = np.split(boundary.chain_at(np.concatenate(feet)), np.cumsum([len(f) for f in feet])[:-1])
+    labelled = [
+        (result, _vertex_labels(result, i, boundary, bridged, on_ring[i])) for i, (result, bridged) in enumerate(runs)
+    ]
+    junctions.locate_ahead([request for i, run in enumerate(labelled) for request in _label_changes(i, *run)])
+    for i, (result, labels) in enumerate(labelled):
         pieces.extend(_run_pieces(result, i, labels, junctions))
     branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
     if end_cap == "runout":
@@ -575,17 +580,18 @@ def _complement(chains, i):
     return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
 
 
-def _vertex_labels(result, i, boundary, bridged=None):
+def _vertex_labels(result, i, boundary, bridged=None, on_ring=None):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
     Each foot lies on the ring (the chains end to end, counter-clockwise): its arc length there names its
     chain (one index query for all the feet of the run). A foot at ``p_i`` or ``p_{i+1}`` itself, which the
     ring may place on ``C_i``, takes the neighbouring chain. Labels that go back against ``D_i``'s order (a
-    foot at the very junction) take the label before them.
+    foot at the very junction) take the label before them. ``on_ring``: the feet's chains on the ring, when
+    already found (:meth:`_Boundary.chain_at` of all runs' feet at once), changed in place.
     """
     k = boundary.exterior_count
     feet = np.asarray(result.foot_b, dtype=float)
-    labels = boundary.chain_at(feet)
+    labels = boundary.chain_at(feet) if on_ring is None else on_ring
     if bridged is not None:
         return _channel_labels(feet, labels, i, boundary, bridged)
     _outline_ends(labels, feet, i, boundary)
@@ -630,6 +636,9 @@ class _Boundary:
         chains = [*chains, *islands]
         self.chains = chains
         self.indexed = [None] * len(chains)
+        #: :meth:`nearest`'s answers by (x, y, chain): a junction's feet are asked for again by its branches.
+        self.known = {}
+        self.segments = self.segment_counts = None
         self.extent = extent
         chains = chains[: self.exterior_count]
         self.ring = IndexedPolyline(np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]]))
@@ -649,6 +658,9 @@ class _Boundary:
         (a few microseconds; the junctions ask one point at a time), a longer one through its spatial index.
         """
         point = np.asarray(point, dtype=float)
+        memo = (float(point[0]), float(point[1]), int(chain))
+        if memo in self.known:
+            return self.known[memo]
         if self.indexed[chain] is None:
             xy = np.asarray(self.chains[chain], dtype=float)
             if len(xy) - 1 <= BRUTE_FORCE_SEGMENTS and len(xy) > 1:
@@ -659,14 +671,74 @@ class _Boundary:
         indexed = self.indexed[chain]
         if isinstance(indexed, IndexedPolyline):
             distance, _, foot = indexed.nearest(point[None])
-            return float(distance[0]), foot[0]
+            self.known[memo] = float(distance[0]), foot[0]
+            return self.known[memo]
         start, direction, squared = indexed
         offset = point - start
         along = np.clip(np.einsum("ij,ij->i", offset, direction) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
         gap = offset - along[:, None] * direction
         distances = np.hypot(gap[:, 0], gap[:, 1])
         nearest = int(np.argmin(distances))
-        return float(distances[nearest]), start[nearest] + along[nearest] * direction[nearest]
+        self.known[memo] = float(distances[nearest]), start[nearest] + along[nearest] * direction[nearest]
+        return self.known[memo]
+
+    def nearest_many(self, points, chains):
+        """Return the distance from each point to its chain and the foot there, as :meth:`nearest` for each.
+
+        Parameters
+        ----------
+        points : ndarray of shape (n, 2)
+            CRS units.
+        chains : ndarray of shape (n,) of int
+
+        Returns
+        -------
+        distances : ndarray of shape (n,)
+        feet : ndarray of shape (n, 2)
+        """
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        chains = np.asarray(chains, dtype=np.int64)
+        distances, feet = np.empty(len(points)), np.empty((len(points), 2))
+        for chain in np.unique(chains):
+            if self.indexed[int(chain)] is None:
+                self.nearest(points[0], int(chain))  # builds the chain's arrays or index
+                self.segments = None
+        small = np.array([not isinstance(self.indexed[int(chain)], IndexedPolyline) for chain in chains], dtype=bool)
+        for chain in np.unique(chains[~small]):
+            rows = np.flatnonzero(chains == chain)
+            distance, _, foot = self.indexed[int(chain)].nearest(points[rows])
+            distances[rows], feet[rows] = distance, foot
+        rows = np.flatnonzero(small)
+        if len(rows):
+            distances[rows], feet[rows] = self._brute_force(points[rows], chains[rows])
+        return distances, feet
+
+    def _brute_force(self, points, chains):
+        """:meth:`nearest_many` for chains measured segment by segment: every (point, segment of its chain)
+        pair in one numpy pass, the first nearest segment of each point kept (as :meth:`nearest`)."""
+        if self.segments is None:
+            # Every chain's segments end to end (an indexed chain has none here), and where each chain's start.
+            arrays = [
+                item if isinstance(item, tuple) else (np.empty((0, 2)),) * 2 + (np.empty(0),) for item in self.indexed
+            ]
+            self.segments = tuple(np.concatenate([item[n] for item in arrays]) for n in range(3))
+            self.segment_counts = np.array([len(item[2]) for item in arrays], dtype=np.int64)
+        counts = self.segment_counts[chains]
+        owner = np.repeat(np.arange(len(points)), counts)
+        firsts = np.cumsum(counts) - counts
+        rows = np.arange(len(owner)) - np.repeat(firsts, counts)
+        rows += np.repeat((np.cumsum(self.segment_counts) - self.segment_counts)[chains], counts)
+        start, direction, squared = (values[rows] for values in self.segments)
+        offset = points[owner] - start
+        dot = offset[:, 0] * direction[:, 0] + offset[:, 1] * direction[:, 1]
+        along = np.clip(dot / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
+        gap = offset - along[:, None] * direction
+        distances = np.hypot(gap[:, 0], gap[:, 1])
+        smallest = np.minimum.reduceat(distances, firsts)
+        at_min = np.flatnonzero(distances == smallest[owner])
+        _, first = np.unique(owner[at_min], return_index=True)
+        nearest = at_min[first]
+        return distances[nearest], start[nearest] + along[nearest, None] * direction[nearest]
 
     def distances_within(self, point, reach):
         """Return ``{chain: distance}`` for the chains nearer than ``reach`` to ``point`` (CRS units): one
@@ -686,6 +758,37 @@ class _Junctions:
     def __init__(self, boundary):
         self.boundary = boundary
         self.by_chains = {}
+        #: Centres located ahead by :meth:`locate_ahead`, by their three chains, taken by :meth:`between`.
+        self.located = {}
+
+    def locate_ahead(self, requests):
+        """Locate at once (:func:`_newton_many`) the junctions :meth:`between` will be asked for.
+
+        Parameters
+        ----------
+        requests : list of (int, int, int, ndarray, ndarray)
+            ``(i, a, b, start, end)`` of each label change, in the order :meth:`between` will see them: the
+            first request of each junction of three outline chains decides its start, as it would alone.
+        """
+        k = self.boundary.exterior_count
+        first = {}
+        for i, a, b, start, end in requests:
+            key = tuple(sorted((i, a, b)))
+            if max(key) < k and len(set(key)) == 3 and key not in self.by_chains and key not in first:
+                first[key] = 0.5 * (start + end)
+        if not first:
+            return
+        keys = list(first)
+        centres = _newton_many(self.boundary, np.array(keys), np.array([first[key] for key in keys]))
+        settled = np.flatnonzero(np.all(np.isfinite(centres), axis=1))
+        distances, feet = self.boundary.nearest_many(
+            np.repeat(centres[settled], 3, axis=0), np.array(keys)[settled].ravel()
+        )
+        for row, index in enumerate(settled):
+            self.located[keys[index]] = centres[index]
+            x, y = (float(value) for value in centres[index])
+            for column, chain in enumerate(keys[index]):
+                self.boundary.known[(x, y, int(chain))] = float(distances[3 * row + column]), feet[3 * row + column]
 
     def between(self, i, a, b, start, end, depth=0):
         """Return the junctions on run ``i`` between a vertex labelled ``a`` and the next labelled ``b``.
@@ -704,7 +807,9 @@ class _Junctions:
         """
         key = self._key(tuple(sorted((i, a, b))), start, end)
         if key not in self.by_chains:
-            centre = _newton_junction(self.boundary, key[:3], start, end)
+            centre = self.located.pop(key) if key in self.located else None
+            if centre is None:
+                centre = _newton_junction(self.boundary, key[:3], start, end)
             radius = float(np.mean([self.boundary.nearest(centre, chain)[0] for chain in key[:3]]))
             distances = self.boundary.distances_within(centre, radius * (1.0 - EMPTY_CIRCLE_TOLERANCE))
             inside = [m for m in sorted(distances, key=distances.get) if m not in key[:3]]
@@ -856,6 +961,84 @@ def _newton_from(boundary, key, x):
     return x if np.max(np.abs(value)) <= JUNCTION_TOLERANCE * boundary.extent else None
 
 
+def _newton_many(boundary, keys, starts):
+    """:func:`_newton_from` for many junctions at once: the same iteration, vectorised over the junctions.
+
+    Parameters
+    ----------
+    boundary : _Boundary
+    keys : ndarray of shape (m, 3) of int
+        Each junction's three chains.
+    starts : ndarray of shape (m, 2)
+        Where each iteration starts, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+        The junctions, NaN where the iteration did not settle (the caller tries :func:`_newton_junction`).
+    """
+    count = len(keys)
+    x = np.array(starts, dtype=float)
+    floor = 4.0 * np.spacing(np.max(np.abs(x), axis=1) + boundary.extent)
+    chains = keys.ravel()
+
+    def residual(points, rows):
+        distances, feet = boundary.nearest_many(np.repeat(points, 3, axis=0), chains.reshape(-1, 3)[rows].ravel())
+        distances, feet = distances.reshape(-1, 3), feet.reshape(-1, 3, 2)
+        return distances[:, :1] - distances[:, 1:], distances, feet
+
+    value, distances, feet = residual(x, np.arange(count))
+    found = np.full((count, 2), np.nan)
+    active = np.arange(count)
+    for _ in range(NEWTON_STEPS):
+        if not len(active):
+            break
+        here = x[active]
+        bad = np.any(distances <= 0.0, axis=1)
+        gradients = (here[:, None, :] - feet) / np.where(bad[:, None], 1.0, distances)[:, :, None]
+        rows = gradients[:, :1] - gradients[:, 1:]
+        a, b, c, d = rows[:, 0, 0], rows[:, 0, 1], rows[:, 1, 0], rows[:, 1, 1]
+        determinant = a * d - b * c
+        bad |= (determinant == 0.0) | ~np.isfinite(determinant)
+        safe = np.where(bad, 1.0, determinant)
+        step = np.stack([d * -value[:, 0] - b * -value[:, 1], a * -value[:, 1] - c * -value[:, 0]], axis=1)
+        step = step / safe[:, None]
+        step[bad] = 0.0
+        size = np.max(np.abs(value), axis=1)
+        trial = [value.copy(), distances.copy(), feet.copy()]
+        searching = np.flatnonzero(~bad)
+        for _ in range(40):
+            if not len(searching):
+                break
+            got = residual(here[searching] + step[searching], active[searching])
+            for store, new in zip(trial, got):
+                store[searching] = new
+            done = (np.max(np.abs(got[0]), axis=1) < size[searching]) | (
+                np.hypot(*step[searching].T) <= floor[active[searching]]
+            )
+            searching = searching[~done]
+            step[searching] = 0.5 * step[searching]
+        x[active] = here + step
+        value, distances, feet = trial
+        settled = ~bad & (np.hypot(*step.T) <= floor[active])
+        found[active[settled]] = x[active[settled]]
+        keep = ~bad & ~settled
+        active, value, distances, feet = active[keep], value[keep], distances[keep], feet[keep]
+    close = np.max(np.abs(value), axis=1) <= JUNCTION_TOLERANCE * boundary.extent if len(active) else []
+    found[active[close]] = x[active[close]]
+    return found
+
+
+def _label_changes(i, result, labels):
+    """Return ``(i, a, b, start, end)`` for each change of label ``a`` to ``b`` along run ``i``, between the
+    vertices ``start`` and ``end`` (what :func:`_run_pieces` asks :meth:`_Junctions.between`)."""
+    vertices = shapely.get_coordinates(result.line)
+    return [
+        (i, int(labels[c]), int(labels[c + 1]), vertices[c], vertices[c + 1])
+        for c in np.flatnonzero(labels[1:] != labels[:-1])
+    ]
+
+
 def _run_pieces(result, i, labels, junctions):
     """Cut run ``i`` where its labels change and keep the pieces ``(i, j)`` with ``i < j``.
 
@@ -902,16 +1085,21 @@ def _empty():
 
 
 def _junction_clusters(junctions):
-    """Map each junction key to the key of its cluster (junctions within ``JUNCTION_TOLERANCE``)."""
+    """Map each junction key to the key of its cluster (junctions within ``JUNCTION_TOLERANCE``): that of the
+    first junction, in the keys' order, within the tolerance of it (itself when none is before it)."""
     keys = sorted(junctions.by_chains)
+    if not keys:
+        return {}
     tolerance = JUNCTION_TOLERANCE * junctions.boundary.extent
+    centres = np.array([junctions.by_chains[key][0] for key in keys])
+    near, other = shapely.STRtree(shapely.points(centres)).query(
+        shapely.points(centres), predicate="dwithin", distance=tolerance
+    )
+    first = np.arange(len(keys))
+    np.minimum.at(first, near, other)
     cluster = {}
-    for key in keys:
-        centre = junctions.by_chains[key][0]
-        cluster[key] = next(
-            (cluster[other] for other in cluster if np.hypot(*(junctions.by_chains[other][0] - centre)) <= tolerance),
-            key,
-        )
+    for index, key in enumerate(keys):
+        cluster[key] = cluster[keys[first[index]]] if first[index] < index else key
     return cluster
 
 
