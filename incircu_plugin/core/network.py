@@ -534,19 +534,35 @@ def _ring_order(polygon, split_points, tolerance):
     return order
 
 
-def _insert_vertex(chain, point, coincidence):
-    """Return ``chain`` with ``point`` projected onto it as a vertex, and that vertex's index."""
-    exact = np.flatnonzero(np.all(chain == point, axis=1))
-    if len(exact) == 1:
-        return chain, int(exact[0])
-    line = LineString(chain)
-    position = line.project(Point(point))
+def _insert_vertices(chain, points, coincidence):
+    """Return ``chain`` with each point projected onto it as a vertex, and each point's vertex index.
+
+    A point equal to exactly one vertex is that vertex; a point projecting within ``coincidence`` (CRS units,
+    along the chain) of a vertex is that vertex; the others are inserted where they project, all at once
+    (several on one segment in their order along it).
+    """
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
     cumulative = cumulative_lengths(chain)
-    nearest = int(np.argmin(np.abs(cumulative - position)))
-    if abs(cumulative[nearest] - position) <= coincidence:
-        return chain, nearest
-    index = int(np.searchsorted(cumulative, position, side="right"))
-    return np.insert(chain, index, np.asarray(line.interpolate(position).coords[0]), axis=0), index
+    positions = shapely.line_locate_point(LineString(chain), shapely.points(points))
+    vertex = np.full(len(points), -1, dtype=np.int64)
+    for row, point in enumerate(points):
+        exact = np.flatnonzero(np.all(chain == point, axis=1))
+        if len(exact) == 1:
+            vertex[row] = exact[0]
+            continue
+        nearest = int(np.argmin(np.abs(cumulative - positions[row])))
+        if abs(cumulative[nearest] - positions[row]) <= coincidence:
+            vertex[row] = nearest
+    new = np.flatnonzero(vertex < 0)
+    if not len(new):
+        return chain, vertex
+    new = new[np.argsort(positions[new], kind="stable")]
+    at = np.searchsorted(cumulative, positions[new], side="right")
+    xy = shapely.get_coordinates(shapely.line_interpolate_point(LineString(chain), positions[new]))
+    shift = np.searchsorted(at, vertex, side="right")  # inserted before (or at) each old vertex
+    index = np.where(vertex >= 0, vertex + shift, 0)
+    index[new] = at + np.arange(len(new))
+    return np.insert(chain, at, xy, axis=0), index
 
 
 def _bridged_chains(polygon, points, tolerance, islands):
@@ -558,15 +574,14 @@ def _bridged_chains(polygon, points, tolerance, islands):
     """
     c1, c2 = split_polygon(polygon, points[:2], tolerance)
     coincidence = COINCIDENCE_TOLERANCE * extent_of(c1, c2)
-    for point in points[2:]:
-        c2, _ = _insert_vertex(c2, point, coincidence)
+    if len(points) > 2:
+        c2, _ = _insert_vertices(c2, points[2:], coincidence)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     cuts = []
-    for point in points[:1:-1]:
-        before = len(c2)
-        c2, index = _insert_vertex(c2, point, coincidence)
-        cuts = [cut + (len(c2) - before if cut >= index else 0) for cut in cuts] + [index]
+    if len(points) > 2:
+        c2, index = _insert_vertices(c2, points[:1:-1], coincidence)
+        cuts = index.tolist()
     if cuts != sorted(cuts) or len(set(cuts)) != len(cuts) or (cuts and (cuts[0] == 0 or cuts[-1] == len(c2) - 1)):
         raise IncirCuError(Message("network_order"))
     bounds = [0, *cuts, len(c2) - 1]
