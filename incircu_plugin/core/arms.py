@@ -209,6 +209,7 @@ class _Graph:
         self.next_id = 0
         keys = [node for node, near in enumerate(neighbours) if len(near) not in (0, 2)]
         seen = set()
+        paths = []
         for key in keys:
             for first in neighbours[key]:
                 if (key, first) in seen:
@@ -218,14 +219,23 @@ class _Graph:
                     a, b = neighbours[path[-1]]
                     path.append(b if a == path[-2] else a)
                 seen.add((path[-1], path[-2]))
-                self._add(path)
+                paths.append(path)
+        if paths:
+            # The segments of all branches measured in one pass (summed per branch as :meth:`length` sums them).
+            flat = np.concatenate(paths)
+            steps = np.hypot(*(nodes[flat[1:]] - nodes[flat[:-1]]).T)
+            firsts = np.cumsum([0] + [len(path) for path in paths[:-1]]).tolist()
+            lengths = [float(np.sum(steps[first : first + len(path) - 1])) for first, path in zip(firsts, paths)]
+            for path, length in zip(paths, lengths):
+                self._add(path, length)
 
-    def _add(self, path):
-        """Add a branch along ``path`` (node indices); return its id."""
+    def _add(self, path, length=None):
+        """Add a branch along ``path`` (node indices) and of ``length`` (local units; measured when None);
+        return its id."""
         branch = self.next_id
         self.next_id += 1
         self.branches[branch] = np.asarray(path, dtype=np.int64)
-        self.lengths[branch] = self.length(self.branches[branch])
+        self.lengths[branch] = self.length(self.branches[branch]) if length is None else length
         for end in (path[0], path[-1]):
             self.incident.setdefault(end, set()).add(branch)
         return branch
