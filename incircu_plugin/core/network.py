@@ -58,10 +58,11 @@ from .chains import (
     split_polygon,
     validate_polygon,
 )
-from .engine import CenterlineResult, centerline_from_chains, centerline_steps
+from .engine import CenterlineResult, centerline_from_chains, centerline_steps, clean_chains_steps
 from .errors import IncirCuError, Message, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
+from .rings import seam_chains
 from .steps import run_together
 
 #: Island modes of a network: those of a centerline, and ``"channels"`` (channels on both sides of the large
@@ -71,6 +72,13 @@ NETWORK_ISLAND_MODES = ("main_channel", "ignore", "channels")
 #: An island is a channel island (``islands="channels"``) when its bounding-box diagonal is at least this
 #: many times the local width: its own typical width plus twice its distance to the nearest other ring.
 CHANNEL_ISLAND_RATIO = 1.0
+
+#: A channel island's loop run sees the polygon within this many times the island's widest channel of it (a
+#: circle at a right-angled crossing of two such channels reaches 1.42 times as far).
+LOOP_REACH = 2.0
+
+#: Samples along a chain or island measuring its widest channel (the distance to the rest of the boundary).
+LOOP_SAMPLES = 256
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9
@@ -254,6 +262,8 @@ def polygon_network(
         check_island_mode(islands)
     check_end_cap(end_cap)
     polygon, spikes = polygon_without_folds(polygon)
+    # The arms of a polygon with channel islands are those of the whole polygon (a road grid's streets).
+    whole = polygon
     channel_islands, polygon = _channel_islands(polygon) if islands == "channels" else ([], polygon)
     if islands == "channels":
         islands = "main_channel"
@@ -264,6 +274,7 @@ def polygon_network(
     split_points = split_points + gates
     if given < 2:
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+        region = whole if channel_islands else region
         split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length)
     sources += ["automatic"] * (len(split_points) - len(sources))
     order = _ring_order(polygon, split_points, snap_tolerance)
@@ -275,14 +286,18 @@ def polygon_network(
     junctions = _Junctions(boundary)
     pieces = []
     runs = _runs(chains, spacing, progress, engine_options, channel_islands)
-    feet = [np.asarray(result.foot_b, dtype=float) for result, _ in runs]
+    traced = [(i, run) for i, run in enumerate(runs) if run is not None]
+    feet = [np.asarray(result.foot_b, dtype=float) for _, (result, _) in traced]
     on_ring = np.split(boundary.chain_at(np.concatenate(feet)), np.cumsum([len(f) for f in feet])[:-1])
     labelled = [
-        (result, _vertex_labels(result, i, boundary, bridged, on_ring[i])) for i, (result, bridged) in enumerate(runs)
+        (i, result, _vertex_labels(result, i, boundary, bridged, ring_labels, loop=i >= k))
+        for (i, (result, bridged)), ring_labels in zip(traced, on_ring)
     ]
-    junctions.locate_ahead([request for i, run in enumerate(labelled) for request in _label_changes(i, *run)])
-    for i, (result, labels) in enumerate(labelled):
-        pieces.extend(_run_pieces(result, i, labels, junctions))
+    junctions.locate_ahead([request for run in labelled for request in _label_changes(*run)])
+    for i, result, labels in labelled:
+        pieces.extend(
+            _run_pieces(result, i, labels, junctions) if i < k else _loop_pieces(result, i, labels, junctions)
+        )
     branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
     if end_cap == "runout":
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
@@ -475,18 +490,98 @@ def _runs(chains, spacing, progress, engine_options, channel_islands=()):
     complements = [_complement(chains, i) for i in range(k if channel_islands else k - 1)]
     if channel_islands:
         # Each run sees every channel island as part of the rest of the ring, so it traces its own channel.
-        complements = [
-            bridge_islands(chains[i], complement, channel_islands, to_second=[True] * len(channel_islands))[1]
-            for i, complement in enumerate(complements)
-        ]
+        complements = [_channel_complement(chains, i, channel_islands) for i in range(len(complements))]
     steps = [
         centerline_steps(chains[i], complement, spacing, **engine_options) for i, complement in enumerate(complements)
     ]
+    loops = [_loop_chains(chains, channel_islands, j) for j in range(len(channel_islands))]
+    steps += [clean_chains_steps(*loop, spacing, **engine_options) for loop in loops if loop is not None]
     results = run_together(steps, progress=progress)
     for result in results:
         if isinstance(result, Exception):
             raise result
-    return [(result, complement if channel_islands else None) for result, complement in zip(results, complements)]
+    bridged = [complement if channel_islands else None for complement in complements]
+    traced = iter(results[len(complements) :])
+    return list(zip(results, bridged)) + [None if loop is None else (next(traced), loop[1]) for loop in loops]
+
+
+def _channel_complement(chains, i, islands):
+    """Return ``D_i`` with the channel islands for run ``i``: the boundary near ``C_i``, islands included.
+
+    The region within ``LOOP_REACH`` times ``C_i``'s widest channel of it (the polygon clipped there, beyond
+    every circle touching ``C_i``) has the islands reaching into it as notches of its outline, so ``D_i`` runs
+    round them without a slit (a slit across a channel would be a wall there); only the islands wholly
+    inside it are joined by slits (:func:`bridge_islands`). Where that region is not one polygon holding
+    ``C_i`` as it is, every island is joined by a slit.
+    """
+    complement = _complement(chains, i)
+    chain = chains[i]
+    rings = [Polygon(island) for island in islands]
+    rest = shapely.MultiLineString([complement, *islands])
+    samples = shapely.points(shapely.get_coordinates(shapely.segmentize(LineString(chain), _sampling(chain))))
+    reach = LOOP_REACH * float(np.max(shapely.distance(samples, rest)))
+    near = LineString(chain).buffer(reach, join_style="mitre")
+    whole = Polygon(np.concatenate([chain, complement[::-1][1:]]), list(islands))
+    parts = [
+        part for part in shapely.get_parts(shapely.intersection(whole, near)) if part.intersects(LineString(chain))
+    ]
+    if len(parts) == 1:
+        ring = shapely.get_coordinates(shapely.geometry.polygon.orient(parts[0], 1.0).exterior)[:-1]
+        first = np.flatnonzero(np.all(ring == chain[0], axis=1))
+        if len(first) == 1:
+            ring = np.roll(ring, -int(first[0]), axis=0)
+            if len(ring) > len(chain) and np.array_equal(ring[: len(chain)], chain):
+                local = np.concatenate([ring[len(chain) - 1 :], ring[:1]])[::-1]
+                outline = Polygon(parts[0].exterior)
+                inside = [island for island, polygon in zip(islands, rings) if outline.contains(polygon)]
+                if not inside:
+                    return local
+                return bridge_islands(chain, local, inside, to_second=[True] * len(inside))[1]
+    return bridge_islands(chain, complement, islands, to_second=[True] * len(islands))[1]
+
+
+def _loop_chains(chains, islands, j):
+    """Return the two closed chains of channel island ``j``'s loop run, or None when it needs none.
+
+    The run traces the axis around the island between its ring and the rest of the boundary *near* it: the
+    region within ``LOOP_REACH`` times the island's widest channel of it (the polygon clipped there; the clip
+    lies beyond every circle touching the island and its neighbours across those channels). That region has
+    the island as its one hole (other islands reaching into it become notches of its outline): both rings
+    counter-clockwise from the seam, the closest pair of points between them, as :func:`.rings.seam_chains`.
+    A loop is traced only for an island with another channel island within that reach (the branches between
+    two islands come from it; the others from the runs along the outline).
+    """
+    ring = np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]])
+    island = np.asarray(islands[j], dtype=float)
+    others = [other for m, other in enumerate(islands) if m != j]
+    if not others:
+        return None
+    rest = shapely.MultiLineString([ring, *others])
+    samples = shapely.points(shapely.get_coordinates(shapely.segmentize(LineString(island), _sampling(island))))
+    reach = LOOP_REACH * float(np.max(shapely.distance(samples, rest)))
+    near = Polygon(island).buffer(reach, join_style="mitre")
+    if not any(near.intersects(Polygon(other)) for other in others):
+        return None
+    region = shapely.intersection(Polygon(ring, [island, *others]), near)
+    local = [part for part in shapely.get_parts(region) if len(part.interiors) == 1]
+    if len(local) != 1:
+        return None
+    outer, inner = seam_chains(shapely.geometry.polygon.orient(local[0], 1.0))
+    return inner, outer
+
+
+def _sampling(line):
+    """Distance between the samples of a chain or ring measuring its widest channel (``LOOP_SAMPLES`` of
+    them), CRS units."""
+    return float(cumulative_lengths(np.asarray(line, dtype=float))[-1]) / LOOP_SAMPLES
+
+
+def _seamed(closed, point, coincidence):
+    """Return a closed chain starting and ending at ``point`` (made a vertex of it)."""
+    closed, (index,) = _insert_vertices(closed, [point], coincidence)
+    loop = closed[:-1]
+    index = int(index) % len(loop)
+    return np.concatenate([loop[index:], loop[:index], loop[index : index + 1]])
 
 
 def _channel_islands(polygon):
@@ -595,7 +690,7 @@ def _complement(chains, i):
     return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
 
 
-def _vertex_labels(result, i, boundary, bridged=None, on_ring=None):
+def _vertex_labels(result, i, boundary, bridged=None, on_ring=None, loop=False):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
     Each foot lies on the ring (the chains end to end, counter-clockwise): its arc length there names its
@@ -607,6 +702,8 @@ def _vertex_labels(result, i, boundary, bridged=None, on_ring=None):
     k = boundary.exterior_count
     feet = np.asarray(result.foot_b, dtype=float)
     labels = boundary.chain_at(feet) if on_ring is None else on_ring
+    if loop:
+        return _island_labels(feet, labels, boundary)
     if bridged is not None:
         return _channel_labels(feet, labels, i, boundary, bridged)
     _outline_ends(labels, feet, i, boundary)
@@ -625,6 +722,16 @@ def _outline_ends(labels, feet, i, boundary):
         nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
         labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
+
+
+def _island_labels(feet, labels, boundary):
+    """Labels of channel island ``j``'s loop run (``i = k + j``): the chain each foot lies on, ``k + m`` on
+    island ``m``."""
+    k = boundary.exterior_count
+    for m, ring in enumerate(boundary.chains[k:]):
+        on = IndexedPolyline(ring).nearest(feet)[0] <= JUNCTION_TOLERANCE * boundary.extent
+        labels[on] = k + m
+    return labels
 
 
 def _channel_labels(feet, labels, i, boundary, bridged):
@@ -1054,7 +1161,7 @@ def _label_changes(i, result, labels):
     ]
 
 
-def _run_pieces(result, i, labels, junctions):
+def _run_pieces(result, i, labels, junctions, start_node=None, end_node=None):
     """Cut run ``i`` where its labels change and keep the pieces ``(i, j)`` with ``i < j``.
 
     Returns
@@ -1073,7 +1180,7 @@ def _run_pieces(result, i, labels, junctions):
     }
     change = np.flatnonzero(labels[1:] != labels[:-1])
     starts, stops = np.concatenate([[0], change + 1]), np.concatenate([change + 1, [len(labels)]])
-    node = ("leaf", i)
+    node = ("leaf", i) if start_node is None else start_node
     pieces = []
     for first, stop in zip(starts, stops):
         label = int(labels[first])
@@ -1081,7 +1188,7 @@ def _run_pieces(result, i, labels, junctions):
         if stop < len(labels):
             vertices = arrays["vertices"]
             found = junctions.between(i, label, int(labels[stop]), vertices[stop - 1], vertices[stop])
-        end = ("junction", found[0][0]) if found else ("leaf", (i + 1) % k)
+        end = ("junction", found[0][0]) if found else (("leaf", (i + 1) % k) if end_node is None else end_node)
         piece = {name: values[first:stop] for name, values in arrays.items()}
         pieces.append({"chains": (i, label), "ends": (node, end), **piece})
         for before, after in zip(found[:-1], found[1:]):
@@ -1092,6 +1199,26 @@ def _run_pieces(result, i, labels, junctions):
         if found:
             node = ("junction", found[-1][0])
     return [piece for piece in pieces if piece["chains"][0] < piece["chains"][1]]
+
+
+def _loop_pieces(result, i, labels, junctions):
+    """:func:`_run_pieces` of a channel island's loop run (closed: from its seam round to it): the loop is
+    turned to start at its first label change, so every piece runs from a junction to a junction."""
+    changes = np.flatnonzero(labels[1:] != labels[:-1])
+    if not len(changes):
+        return []
+    start = int(changes[0]) + 1
+    order = np.concatenate([np.arange(start, len(labels) - 1), np.arange(0, start)])
+    turned = CenterlineResult(
+        line=LineString(shapely.get_coordinates(result.line)[order]),
+        radii=np.asarray(result.radii, dtype=float)[order],
+        foot_a=np.asarray(result.foot_a, dtype=float)[order],
+        foot_b=np.asarray(result.foot_b, dtype=float)[order],
+    )
+    vertices = shapely.get_coordinates(result.line)
+    found = junctions.between(i, int(labels[start - 1]), int(labels[start]), vertices[start - 1], vertices[start])
+    node = ("junction", found[-1][0])
+    return _run_pieces(turned, i, labels[order], junctions, start_node=node, end_node=("junction", found[0][0]))
 
 
 def _empty():
