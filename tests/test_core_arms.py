@@ -280,7 +280,7 @@ def test_a_braided_reach_with_three_islands_has_a_loop_around_each():
     check_loops(polygon, network, [shapely.get_coordinates(island.exterior) for island in islands])
 
 
-@pytest.mark.parametrize(("columns", "rows"), [(1, 1), (2, 1), (2, 2)])
+@pytest.mark.parametrize(("columns", "rows"), [(1, 1), (2, 1), (2, 2), (4, 2), (5, 5)])
 def test_a_road_grid_with_blocks_as_holes_gives_its_street_network(columns, rows):
     # Streets 10 wide around 40 x 40 blocks (holes), each street leaving by a stub: one branch per street
     # segment between two crossings (including those between two blocks) and one per stub; every crossing a

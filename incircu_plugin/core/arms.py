@@ -78,7 +78,7 @@ def check_arm_options(min_arm_ratio, min_arm_length):
     return ratio, length
 
 
-def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
+def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None, every_island=False):
     """Find one end per arm of a polygon: the leaves of its pruned skeleton, centred in their end caps.
 
     Parameters
@@ -90,6 +90,9 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
         Shortest reach of a kept arm beyond its junction's incircle, in widths of that junction.
     min_arm_length : float, optional
         Shortest reach of a kept arm beyond its junction's incircle, CRS units.
+    every_island : bool
+        Keep every hole in the skeleton, also those smaller than the typical width (the channel islands of a
+        network: a road grid's blocks).
 
     Returns
     -------
@@ -115,7 +118,7 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     [(-50.0, 0.0), (0.0, 50.0), (50.0, 0.0)]
     """
     ratio, length = check_arm_options(min_arm_ratio, min_arm_length)
-    shape = PolygonSkeleton(polygon)
+    shape = PolygonSkeleton(polygon, every_island=every_island)
     skeleton, scale = shape.skeleton, shape.scale
     if len(skeleton.edges) == 0:
         raise InvalidGeometryError(Message("arms_too_thin"))

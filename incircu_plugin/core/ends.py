@@ -388,7 +388,7 @@ def _moved(geometries, origin, scale):
     return shapely.transform(geometries, lambda xy: (xy - origin) / scale)
 
 
-def _frames(polygons, guides, boxes):
+def _frames(polygons, guides, boxes, every_island=False):
     """Return the :class:`_Frame` of each polygon with a local box (None for the others); the polygons are moved
     all at once, the guides one by one.
 
@@ -397,6 +397,8 @@ def _frames(polygons, guides, boxes):
     polygons, guides : list
     boxes : list of tuple or None
         Per polygon, the ``(origin, scale)`` of :func:`_local_box`, or None.
+    every_island : bool
+        Keep the islands smaller than the typical width too (see :func:`_without_small_islands`).
     """
     frames = [None] * len(polygons)
     chosen = [index for index, box in enumerate(boxes) if box is not None]
@@ -405,7 +407,7 @@ def _frames(polygons, guides, boxes):
     origins = np.array([boxes[index][0] for index in chosen])
     scales = np.array([boxes[index][1] for index in chosen])
     geometries = np.empty(len(chosen), dtype=object)
-    geometries[:] = [_without_small_islands(polygons[index]) for index in chosen]
+    geometries[:] = [polygons[index] if every_island else _without_small_islands(polygons[index]) for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
     # Without repeated vertices: GEOS 3.11 locates a point on a zero-length segment by dividing 0 by 0, and
     # numpy then warns "invalid value encountered in line_locate_point" (the answer is right).
@@ -1160,6 +1162,8 @@ class PolygonSkeleton:
     ----------
     polygon : Polygon
         A valid polygon, CRS units.
+    every_island : bool
+        Keep every island in the skeleton, also those smaller than the typical width (a road grid's blocks).
 
     Attributes
     ----------
@@ -1178,9 +1182,9 @@ class PolygonSkeleton:
         As :func:`find_ends` (an invalid, absurdly scaled or untriangulable polygon).
     """
 
-    def __init__(self, polygon):
+    def __init__(self, polygon, *, every_island=False):
         self.origin, self.scale = _local_box(polygon, None)
-        (self._frame,) = _frames([polygon], [None], [(self.origin, self.scale)])
+        (self._frame,) = _frames([polygon], [None], [(self.origin, self.scale)], every_island)
         self.local = self._frame.local
         self.skeleton = joint_skeletons([self.local])
         if self.skeleton.errors[0] is not None:

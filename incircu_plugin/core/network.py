@@ -262,8 +262,6 @@ def polygon_network(
         check_island_mode(islands)
     check_end_cap(end_cap)
     polygon, spikes = polygon_without_folds(polygon)
-    # The arms of a polygon with channel islands are those of the whole polygon (a road grid's streets).
-    whole = polygon
     channel_islands, polygon = _channel_islands(polygon) if islands == "channels" else ([], polygon)
     if islands == "channels":
         islands = "main_channel"
@@ -274,8 +272,11 @@ def polygon_network(
     split_points = split_points + gates
     if given < 2:
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
-        region = whole if channel_islands else region
-        split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length)
+        every_island = bool(channel_islands)
+        if every_island:
+            # The arms of a polygon with channel islands go round them too (a road grid's streets).
+            region = Polygon(polygon.exterior, channel_islands)
+        split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length, every_island)
     sources += ["automatic"] * (len(split_points) - len(sources))
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
@@ -341,7 +342,7 @@ def ends_from(sources):
     return "_and_".join(names[source] for source in names if source in sources)
 
 
-def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
+def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None, every_island=False):
     """Return the given points followed by the automatic arm ends they do not replace.
 
     A given point replaces the automatic end nearest to it when it lies within that arm's width of it (a
@@ -353,7 +354,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
         CRS units; its holes as the network sees them.
     split_points : sequence of Point or (x, y)
         CRS units (one split point and any gates).
-    min_arm_ratio, min_arm_length : float
+    min_arm_ratio, min_arm_length, every_island : float, float, bool
         See :func:`.arms.find_arm_ends`.
 
     Returns
@@ -367,7 +368,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
         When fewer than two ends are found (a shape without arms, such as a ring around an island).
     """
     given = [_as_xy(point) for point in split_points]
-    arms = find_arm_ends(polygon, min_arm_ratio=min_arm_ratio, min_arm_length=min_arm_length)
+    arms = find_arm_ends(polygon, min_arm_ratio=min_arm_ratio, min_arm_length=min_arm_length, every_island=every_island)
     automatic = list(zip(arms.points, arms.widths))
     for point in given:
         if automatic:
