@@ -333,3 +333,21 @@ def test_a_feature_whose_gates_cannot_be_found_does_not_stop_the_layer(provider)
         assert (results["CENTERLINE_COUNT"], results["SKIPPED_COUNT"]) == (2, 1), feedback.warnings
         lines = [as_shapely(feature.geometry()) for feature in results["OUTPUT"].getFeatures()]
         assert len({lines[0].coords[0], lines[0].coords[-1]} & {lines[1].coords[0], lines[1].coords[-1]}) == 1
+
+
+def test_a_road_grid_with_blocks_as_holes_gives_one_branch_per_street_segment(provider):
+    # 2 x 2 blocks with streets around and between them, every street leaving by a stub: 12 stubs and 12
+    # street segments, 9 crossings of degree four at the streets' crossing points.
+    polygon, caps, crossings, radius = cases.road_grid(2, 2)
+    tolerance = 1e-9 * 200.0  # of the grid's extent
+    layer = memory_layer("Polygon", "EPSG:2180", [(polygon, "roads")])
+    results, feedback = run({"INPUT": layer, "ISLANDS": 2, "OUTPUT_NODES": "memory:"})
+    assert results["CENTERLINE_COUNT"] == 24 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    nodes = {
+        kind: [n for n in results["OUTPUT_NODES"].getFeatures() if n["kind"] == kind] for kind in ("end", "junction")
+    }
+    assert {n["degree"] for n in nodes["junction"]} == {4}
+    assert all(abs(n["radius"] - radius) <= 0.0005 for n in nodes["junction"])  # rounded to the millimetre
+    for kind, expected in (("junction", crossings), ("end", caps)):
+        found = sorted((n.geometry().asPoint().x(), n.geometry().asPoint().y()) for n in nodes[kind])
+        assert np.allclose(found, sorted(map(tuple, expected)), rtol=0.0, atol=tolerance)
