@@ -30,10 +30,17 @@ Method (only the engine's public :func:`centerline_from_chains` and step generat
 4. Islands are joined once, for all runs, to the chains of one split of the ring (``C_0`` and ``D_0``)
    with :func:`bridge_islands`: each island becomes part of the chain its slit starts from, so every run
    sees the same chains and the network passes each island on the side of the wider channel. With
-   ``islands="channels"`` each large island is instead a chain of its own (index ``k + j``), joined to every
-   run's ``D_i``: run ``i`` then traces the channel between ``C_i`` and the island, the labels change to the
-   island where the channel starts, and every run is traced (``k`` of them). The island's chains meet twice
-   (up- and downstream), so their junctions are also numbered by place.
+   ``islands="channels"`` each large island is instead a chain of its own (index ``k + j``) in every run's
+   ``D_i``: run ``i`` then traces the channel between ``C_i`` and the island, the labels change to the
+   island where the channel starts, and every run is traced (``k`` of them). ``D_i`` is the boundary of the
+   polygon clipped near ``C_i`` (:func:`_channel_complement`): the islands reaching into that region are
+   notches of its outline, not joined by slits (a slit across a channel would be a wall for its circles).
+   An island with another channel island near it also gets a *loop run* (:func:`_loop_chains`): the closed
+   axis between its ring and the rest of the boundary near it (both closed chains from their seam, as
+   :mod:`.rings` traces a ring), which gives the branches between two islands (a road grid's streets between
+   two blocks, no outline chain beside them). The island's chains meet twice (up- and downstream), so their
+   junctions are also numbered by place. The automatic ends are those of the polygon with its channel
+   islands (every one of them kept in the skeleton).
 
 The result is checked to be a tree (a connected graph with one cycle per channel island) with exactly ``k``
 leaves at the split points and junctions of degree three or more; otherwise :class:`IncirCuError` says so.
@@ -231,8 +238,9 @@ def polygon_network(
         least ``CHANNEL_ISLAND_RATIO`` times the local width (its own typical width plus twice its distance
         to the nearest other ring) is a chain of its own, so the network has a loop around it (a junction upstream and
         one downstream, exact; branches of kind ``"loop"`` along it); smaller islands are passed on the side
-        of the wider channel. Every run is traced (``k`` instead of ``k - 1``); a branch between two channel
-        islands (no outline chain) is not traced.
+        of the wider channel. Every run is traced (``k`` instead of ``k - 1``), and a loop run round every
+        channel island with another near it gives the branches between two islands: a road area whose city
+        blocks are holes gives its street network (one branch per street segment between two crossings).
     end_cap : {"axis", "runout"}
         How a branch crosses the end cap at an end on the outline, as in :func:`polygon_centerline` (the
         branches' junction ends are left as they are).
