@@ -51,6 +51,7 @@ from typing import Optional
 
 import numpy as np
 import shapely
+from shapely.errors import GEOSException
 from shapely.geometry import LineString, Point, Polygon
 
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
@@ -531,9 +532,12 @@ def _channel_complement(chains, i, islands):
     reach = LOOP_REACH * float(np.max(shapely.distance(samples, rest)))
     near = LineString(chain).buffer(reach, join_style="mitre")
     whole = Polygon(np.concatenate([chain, complement[::-1][1:]]), list(islands))
-    parts = [
-        part for part in shapely.get_parts(shapely.intersection(whole, near)) if part.intersects(LineString(chain))
-    ]
+    try:
+        parts = [
+            part for part in shapely.get_parts(shapely.intersection(whole, near)) if part.intersects(LineString(chain))
+        ]
+    except GEOSException:  # the outline's chains carry the slits of its small islands: GEOS may refuse them
+        parts = []
     if len(parts) == 1:
         ring = shapely.get_coordinates(shapely.geometry.polygon.orient(parts[0], 1.0).exterior)[:-1]
         first = np.flatnonzero(np.all(ring == chain[0], axis=1))
@@ -571,26 +575,28 @@ def _loop_chains(chains, islands, j):
     near = Polygon(island).buffer(reach, join_style="mitre")
     if not any(near.intersects(Polygon(other)) for other in others):
         return None
-    region = shapely.intersection(Polygon(ring, [island, *others]), near)
-    local = [part for part in shapely.get_parts(region) if len(part.interiors) == 1]
-    if len(local) != 1:
+    inside = Polygon(island).representative_point()
+    try:
+        region = shapely.intersection(Polygon(ring, [island, *others]), near)
+    except GEOSException:  # the outline's chains carry the slits of its small islands: GEOS may refuse them
         return None
-    outer, inner = seam_chains(shapely.geometry.polygon.orient(local[0], 1.0))
-    return inner, outer
+    for part in shapely.get_parts(region):
+        holes = [hole for hole in part.interiors if Polygon(hole).contains(inside)]
+        if len(holes) == 1 and Polygon(part.exterior).contains(inside):
+            outer, inner = seam_chains(shapely.geometry.polygon.orient(Polygon(part.exterior, holes), 1.0))
+            # Islands wholly within the reach (blocks narrower than their streets) are joined by slits.
+            others = [shapely.get_coordinates(hole) for hole in part.interiors if hole is not holes[0]]
+            others = [hole for hole in others if not np.array_equal(hole, shapely.get_coordinates(holes[0]))]
+            if others:
+                outer = bridge_islands(inner, outer, others, to_second=[True] * len(others))[1]
+            return inner, outer
+    return None
 
 
 def _sampling(line):
-    """Distance between the samples of a chain or ring measuring its widest channel (``LOOP_SAMPLES`` of
-    them), CRS units."""
+    """Return the distance between the ``LOOP_SAMPLES`` samples of a chain or ring that measure its widest
+    channel (their largest distance to the rest of the boundary), CRS units."""
     return float(cumulative_lengths(np.asarray(line, dtype=float))[-1]) / LOOP_SAMPLES
-
-
-def _seamed(closed, point, coincidence):
-    """Return a closed chain starting and ending at ``point`` (made a vertex of it)."""
-    closed, (index,) = _insert_vertices(closed, [point], coincidence)
-    loop = closed[:-1]
-    index = int(index) % len(loop)
-    return np.concatenate([loop[index:], loop[:index], loop[index : index + 1]])
 
 
 def _channel_islands(polygon):
