@@ -22,7 +22,11 @@ class LayerGates:
         for feature in run.source_features(source):
             ids.append(feature.id())
             shapes.append(to_shapely(feature.geometry()) if feature.hasGeometry() else None)
-        with_gates, gates = run.core.touching_gates(shapes)
+        failed = []
+        with_gates, gates = run.core.touching_gates(shapes, errors=failed)
+        for index, error in failed:
+            # The feature is still computed, without the gates GEOS could not find.
+            run.warn_feature(ids[index], error)
         self.by_id = dict(zip(ids, zip(with_gates, gates)))
 
     def of(self, feature_id, frame):

@@ -266,6 +266,11 @@ MESSAGES = {
         "IncirCuCore",
         "Only {count} arm end was found automatically on this polygon; give its ends as split points."
     ),
+    "gates_failed": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The boundary this feature shares with the features it touches could not be computed ({reason}): it is "
+        "not connected to them. Repair it first (e.g. QGIS '{fix_geometries}')."
+    ),
     "outline_not_triangulated": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon's outline could not be triangulated to find its ends automatically."
     ),

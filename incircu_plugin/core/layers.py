@@ -4,7 +4,7 @@
 across the layer: a junction gets an id of its own, an end the id of any earlier end at exactly the same
 coordinates. With ``connect_touching`` the features first get their gates (:func:`.touching.touching_gates`):
 the middle of every stretch of boundary two features share is an end of both, so their lines meet there and
-share the node. In a geographic CRS each feature is computed in a :class:`.geodesy.LocalProjection` centred
+share the node (a feature whose gates GEOS cannot compute is still computed, alone, with a warning). In a geographic CRS each feature is computed in a :class:`.geodesy.LocalProjection` centred
 on it; an end within ``GATE_SNAP`` of the feature's extent from a gate is then given the gate's coordinates
 exactly (the projection's round trip moves it by about 1e-15 degrees).
 """
@@ -41,11 +41,15 @@ class LayerNetworks:
         ``kind`` (``"end"`` or ``"junction"``).
     errors : list of (int, int or None, str)
         Feature, part (None for a single polygon) and message of each failure.
+    warnings : list of (int, int or None, str)
+        Feature, part and message of what a computed feature's user should know: its gates could not be found
+        (``connect_touching``, see :func:`.touching.touching_gates`), so it is not connected to its neighbours.
     """
 
     branches: list = field(default_factory=list)
     nodes: list = field(default_factory=list)
     errors: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)
 
 
 def layer_networks(
@@ -85,10 +89,12 @@ def layer_networks(
     """
     geometries = list(geometries)
     gates = [np.empty((0, 2)) for _ in geometries]
-    if connect_touching:
-        geometries, gates = touching_gates(geometries)
-    candidates = np.empty((0, 2)) if split_points is None else np.asarray(split_points, dtype=float).reshape(-1, 2)
     layer = LayerNetworks()
+    if connect_touching:
+        failed = []
+        geometries, gates = touching_gates(geometries, errors=failed)
+        layer.warnings.extend((feature, None, str(error)) for feature, error in failed)
+    candidates = np.empty((0, 2)) if split_points is None else np.asarray(split_points, dtype=float).reshape(-1, 2)
     end_ids = {}
     for feature, geometry in enumerate(geometries):
         try:
