@@ -26,6 +26,7 @@ __all__ = [
     "is_many",
     "one_or_many",
     "per_geometry",
+    "point_sets_per_geometry",
     "run_many_steps",
 ]
 
@@ -117,21 +118,24 @@ def compute(make_steps, geometries, per_element, shared, progress=None):
     return outcomes
 
 
-def one_or_many(make_steps, geometry, split_points, options, progress):
+def one_or_many(make_steps, geometry, split_points, options, progress, point_sets=()):
     """``make_steps(geometry, split_points, **options)`` run alone for one geometry, else for each geometry of
     an array-like, in batches traced together (:func:`._many.compute`); ``split_points`` and every option are
-    then one value for all or one per geometry (split points: None, or one sequence of points per geometry)."""
+    then one value for all or one per geometry, except ``split_points`` and the options named in
+    ``point_sets`` (sequences of points): None, or one sequence (or None) per geometry."""
     if not is_many(geometry):
         return run_alone(make_steps(geometry, split_points, **options, progress=progress))
     geometries = list(geometry)
     per_element = {name: per_geometry(value, len(geometries), name) for name, value in options.items()}
-    per_element["split_points"] = split_points_per_geometry(split_points, len(geometries))
+    for name, value in (("split_points", split_points), *((name, options.get(name)) for name in point_sets)):
+        per_element[name] = point_sets_per_geometry(value, len(geometries), name)
     return compute(make_steps, geometries, per_element, {}, progress)
 
 
-def split_points_per_geometry(split_points, count):
-    """The split points of each of ``count`` geometries: None for all, or one sequence (or None) per geometry."""
-    return [None] * count if split_points is None else per_geometry(split_points, count, "split_points")
+def point_sets_per_geometry(points, count, name="split_points"):
+    """The points (split points, gates) of each of ``count`` geometries: None for all, or one sequence (or None)
+    per geometry."""
+    return [None] * count if points is None else per_geometry(points, count, name)
 
 
 def _batch_report(report, begin, share, fraction):

@@ -54,6 +54,7 @@ import shapely
 from shapely.errors import GEOSException
 from shapely.geometry import LineString, Point, Polygon
 
+from ._many import one_or_many
 from ._steps import run_together
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .arms import MIN_ARM_RATIO, find_arm_ends
@@ -391,18 +392,22 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
     return points
 
 
-def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, gates=None, **options):
-    """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
+def multipolygon_networks(geometry, split_points=None, *, snap_tolerance=None, gates=None, **options):
+    """Network of each part of a polygon or multipolygon between the split points on its exterior ring; of each
+    geometry of an array.
 
     A part takes the split points within ``snap_tolerance`` of its exterior ring; with fewer than two, the
     ends of its arms are found automatically (see :func:`polygon_network`). A part that fails does not stop
-    the others.
+    the others. An array-like of geometries gives a list, per geometry its list of outcomes or the exception
+    it raised, as :func:`.api.polygon_centerline` computes an array (``split_points`` and ``gates``: None, or
+    one sequence, or None, per geometry; each network traces its own runs together, one geometry after the
+    other).
 
     Parameters
     ----------
-    geometry : Polygon or MultiPolygon
+    geometry : Polygon or MultiPolygon, or array_like of them
         CRS units.
-    split_points : sequence of Point or (x, y)
+    split_points : sequence of Point or (x, y), optional
         Candidate split points for all parts.
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
@@ -434,6 +439,20 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, gates=
     >>> [[(b.start_point, b.end_point) for b in o.result.branches] for o in outcomes]
     [[(1, 3)], [(0, 2)]]
     """
+    progress = options.pop("progress", None)
+    options.update(snap_tolerance=snap_tolerance, gates=gates)
+    return one_or_many(_multipolygon_network_steps, geometry, split_points, options, progress, ("gates",))
+
+
+def _multipolygon_network_steps(geometry, split_points=None, *, snap_tolerance=None, gates=None, **options):
+    """:func:`multipolygon_networks` of one geometry as a step generator (:mod:`._steps`) that needs no shared
+    tracing: it computes its networks when first advanced and returns their outcomes."""
+    return _networks_of_parts(geometry, split_points, snap_tolerance, gates, options)
+    yield  # a generator function: computed in an array's batch like the centerlines
+
+
+def _networks_of_parts(geometry, split_points, snap_tolerance, gates, options):
+    """The outcomes of :func:`multipolygon_networks` for one geometry."""
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     gate_points = list(shapely.points(np.asarray(gates, dtype=float).reshape(-1, 2))) if gates is not None else []
     progress = options.pop("progress", None)
