@@ -33,7 +33,8 @@ RANK_PROPERTY = "incircu/rank"
 LIVE_STYLERS = []
 
 #: Place of each output in the layer tree, top first: the vertices sit on the centerline, so they go above it.
-VERTICES, CENTERLINE, TRANSECTS, INCIRCLES = range(4)
+#: The label algorithm's outputs are its lines (``CENTERLINE``) and its points (``LABEL_POINTS``).
+VERTICES, CENTERLINE, TRANSECTS, INCIRCLES, LABEL_POINTS = range(5)
 
 CENTERLINE_COLOUR = "215,25,40,255"
 CASING_COLOUR = "255,255,255,230"
@@ -170,6 +171,21 @@ def vertex_symbol():
     )
 
 
+def label_point_symbol():
+    """A label point: a dot of the centerline's colour with a white rim, a little larger than a vertex."""
+    return QgsMarkerSymbol.createSimple(
+        {
+            "name": "circle",
+            "color": CENTERLINE_COLOUR,
+            "size": str(1.5 * VERTEX_SIZE_MM),
+            "size_unit": "MM",
+            "outline_color": CASING_COLOUR,
+            "outline_width": "0.4",
+            "outline_width_unit": "MM",
+        }
+    )
+
+
 def readable_scale(typical_length, metres_per_unit):
     """Return the smallest scale (largest denominator) at which ``typical_length`` (layer units) is
     :data:`READABLE_MM` on the map; 0 (always shown) when it is unknown."""
@@ -184,7 +200,13 @@ def output_renderer(rank, metres_per_unit=None):
     if rank == CENTERLINE:
         symbol = centerline_symbol(metres_per_unit)
     else:
-        symbol = {VERTICES: vertex_symbol, TRANSECTS: transect_symbol, INCIRCLES: incircle_symbol}[rank]()
+        symbols = {
+            VERTICES: vertex_symbol,
+            TRANSECTS: transect_symbol,
+            INCIRCLES: incircle_symbol,
+            LABEL_POINTS: label_point_symbol,
+        }
+        symbol = symbols[rank]()
     renderer = QgsSingleSymbolRenderer(symbol)
     renderer.setUsingSymbolLevels(rank == CENTERLINE)
     return renderer
@@ -198,7 +220,7 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
     run_id : str
         Identifies the outputs of one run.
     rank : int
-        :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS` or :data:`INCIRCLES`.
+        :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS`, :data:`INCIRCLES` or :data:`LABEL_POINTS`.
     """
 
     def __init__(self, run_id, rank, name=None, group=None):
