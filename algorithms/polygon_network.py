@@ -156,6 +156,10 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             advanced=True,
         )
         self.add_connect_touching_parameter()
+        self.add_network_outputs()
+
+    def add_network_outputs(self):
+        """Add ``ADD_M``, the branch and node layers and the two counts."""
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(

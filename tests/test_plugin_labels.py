@@ -137,6 +137,19 @@ def test_expression_options_and_points(provider):
     assert bad.evaluate(context) is None
 
 
+def test_an_invalid_option_is_the_expressions_error_every_time(provider):
+    """An option out of its range is reported through QGIS's evaluation error (the core's message, worded by
+    ``messages.core_text``), on every evaluation: it is not cached as a NULL result."""
+    lakes = projected_layer([box(2000, 0, 6000, 500)])
+    context = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(lakes))
+    context.setFeature(next(lakes.getFeatures()))
+    for _ in range(2):
+        bad = QgsExpression("incircu_label_line($geometry, clearance:=0.7)")
+        assert bad.evaluate(context) is None
+        assert bad.hasEvalError()
+        assert "clearance" in bad.evalErrorString() and "0.7" in bad.evalErrorString()
+
+
 def test_arguments_are_converted_once_and_cached_labels_equal_computed_ones(provider):
     """A redraw evaluates the function for every feature with the same arguments: they are converted once per
     distinct tuple (a bad one every time, giving its error), and the cached label equals a fresh computation."""
