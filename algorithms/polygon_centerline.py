@@ -268,15 +268,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         """
         import shapely  # after require_core, like the core: a missing Shapely gets its install message
 
-        several = len(outcomes) > 1
         parts = []
-        for outcome in outcomes:
-            part_index = outcome.part_index if several else None
-            if outcome.error is not None:
-                run.skip(feature_id, outcome.error, part_index)
-                continue
-            for note in getattr(outcome.result, "notes", ()):
-                run.warn_feature(feature_id, note, part_index)
+        for outcome, part_index in run.successful_parts(feature_id, outcomes):
             if outcome.result.ends_found and split_points is not None:
                 part = shapely.get_parts(geometry)[outcome.part_index]
                 nearest = split_points.nearest_distance(part.exterior, frame)
@@ -311,16 +304,8 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
 
 
 class GuideLines:
-    """The lines of ``GUIDE_LINES`` in the polygon layer's CRS, read once, found per polygon by a spatial index.
-
-    Parameters
-    ----------
-    source : QgsProcessingFeatureSource or None
-        The guide lines; None: no guide lines.
-    crs : QgsCoordinateReferenceSystem
-        CRS of the polygon layer (the lines are reprojected to it).
-    context : QgsProcessingContext
-    """
+    """The lines of ``GUIDE_LINES`` (``source``, None without), reprojected to the polygon layer's ``crs`` with
+    the transformations of ``context``, read once and found per polygon by a spatial index."""
 
     def __init__(self, source, crs, context):
         self.lines, self.index = [], QgsSpatialIndex()

@@ -248,21 +248,9 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
                 min_arm_ratio=options.min_arm_ratio,
                 min_arm_length=options.min_arm_length,
             )
-            parts = [(*part, ids, layer_gates, extent) for part in self._parts(run, feature.id(), outcomes or ())]
+            parts = [
+                (outcome.part_index, outcome.result, ids, layer_gates, extent)
+                for outcome, _ in run.successful_parts(feature.id(), outcomes or ())
+            ]
             run.write(feature, parts, frame)
         return run.finish()
-
-    def _parts(self, run, feature_id, outcomes):
-        """The ``(part_index, NetworkResult)`` of every network of a feature; warn about the others and the
-        core's notes."""
-        several = len(outcomes) > 1
-        parts = []
-        for outcome in outcomes:
-            part_index = outcome.part_index if several else None
-            if outcome.error is not None:
-                run.skip(feature_id, outcome.error, part_index)
-                continue
-            for note in outcome.result.notes:
-                run.warn_feature(feature_id, note, part_index)
-            parts.append((outcome.part_index, outcome.result))
-        return parts

@@ -215,6 +215,22 @@ class FeatureRun:
             self.skip_failed(feature_id, error)
         return None
 
+    def successful_parts(self, feature_id, outcomes):
+        """Return ``(outcome, part_index)`` for every successful part of a feature (``outcomes``: the core's
+        ``PartOutcome`` list), ``part_index`` None for a single part (how messages name it); skip the others
+        with their error and warn about the core's notes."""
+        several = len(outcomes) > 1
+        successful = []
+        for outcome in outcomes:
+            part_index = outcome.part_index if several else None
+            if outcome.error is not None:
+                self.skip(feature_id, outcome.error, part_index)
+                continue
+            for note in getattr(outcome.result, "notes", ()):
+                self.warn_feature(feature_id, note, part_index)
+            successful.append((outcome, part_index))
+        return successful
+
     def skip_failed(self, feature_id, error, part_index=None):
         """Skip a feature (part) whose computation raised ``error``: a core error says why; another exception
         is unexpected and asks for a report."""

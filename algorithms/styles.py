@@ -156,34 +156,29 @@ def transect_symbol():
     return symbol
 
 
-def vertex_symbol():
-    """Small dark red dots with a white rim, standing out of the centerline they lie on."""
+def dot_symbol(colour, size_mm, rim_colour, rim_mm):
+    """A round dot of ``colour``, ``size_mm`` across, with a rim of ``rim_colour``, ``rim_mm`` wide."""
     return QgsMarkerSymbol.createSimple(
         {
             "name": "circle",
-            "color": VERTEX_COLOUR,
-            "size": str(VERTEX_SIZE_MM),
+            "color": colour,
+            "size": str(size_mm),
             "size_unit": "MM",
-            "outline_color": "255,255,255,255",
-            "outline_width": "0.2",
+            "outline_color": rim_colour,
+            "outline_width": str(rim_mm),
             "outline_width_unit": "MM",
         }
     )
+
+
+def vertex_symbol():
+    """Small dark red dots with a white rim, standing out of the centerline they lie on."""
+    return dot_symbol(VERTEX_COLOUR, VERTEX_SIZE_MM, "255,255,255,255", 0.2)
 
 
 def label_point_symbol():
     """A label point: a dot of the centerline's colour with a white rim, a little larger than a vertex."""
-    return QgsMarkerSymbol.createSimple(
-        {
-            "name": "circle",
-            "color": CENTERLINE_COLOUR,
-            "size": str(1.5 * VERTEX_SIZE_MM),
-            "size_unit": "MM",
-            "outline_color": CASING_COLOUR,
-            "outline_width": "0.4",
-            "outline_width_unit": "MM",
-        }
-    )
+    return dot_symbol(CENTERLINE_COLOUR, 1.5 * VERTEX_SIZE_MM, CASING_COLOUR, 0.4)
 
 
 def readable_scale(typical_length, metres_per_unit):
