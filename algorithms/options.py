@@ -208,13 +208,15 @@ def read_sampling(algorithm, parameters, context):
     tolerance = read_per_feature(algorithm, parameters, algorithm.TOLERANCE, context)
     spacing = algorithm.parameterAsDouble(parameters, algorithm.SPACING, context)
     if (tolerance.dynamic or tolerance.value) and spacing:
-        raise QgsProcessingException(
-            QCoreApplication.translate(
-                "IncirCuAlgorithm",
-                "Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary "
-                "sampling distance, not both; set the other one to 0.",
-            )
+        # fmt: off
+        # (No comma after the text: pylupdate5 would not read the call.)
+        message = QCoreApplication.translate(
+            "IncirCuAlgorithm",
+            "Give either a largest deviation from the axis (adaptive sampling) or a fixed boundary sampling "
+            "distance, not both; set the other one to 0."
         )
+        # fmt: on
+        raise QgsProcessingException(message)
     return Sampling(tolerance, spacing)
 
 
