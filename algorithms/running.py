@@ -3,7 +3,7 @@ the algorithms call the core's computations.
 
 The centerline algorithms describe each feature as a :class:`FeatureTask` (the core function's inputs, in the
 feature's working frame) and compute them in batches traced together (:meth:`FeatureRun.run_batches`, the core's
-``centerlines_together``); the network algorithm computes one feature at a time (:meth:`FeatureRun.features`
+``_many.run_many_steps``); the network algorithm computes one feature at a time (:meth:`FeatureRun.features`
 and :meth:`FeatureRun.network`).
 """
 
@@ -17,11 +17,11 @@ from .compat import ProcessingFeatureSourceFlag
 from .dependencies import require_core
 from .messages import core_text
 
-#: The core's step generators a :class:`FeatureTask` may name (its ``kind``).
+#: The core's step generators a :class:`FeatureTask` may name (its ``kind``): module and name in the core.
 STEP_FUNCTIONS = {
-    "polygon": "multipolygon_centerline_steps",
-    "label": "label_line_steps",
-    "lines": "lines_centerline_steps",
+    "polygon": ("api", "_multipolygon_centerline_steps"),
+    "label": ("labels", "_label_line_steps"),
+    "lines": ("api", "_lines_centerline_steps"),
 }
 
 
@@ -270,14 +270,15 @@ class FeatureRun:
         total : int
             Number of tasks, for the progress.
         """
-        from ..incircu_plugin.core.api import batches  # needs Shapely, checked by require_core
+        from ..incircu_plugin.core._many import batches  # needs Shapely, checked by require_core
 
         self.progress_step = 100.0 / total if total > 0 else 0.0
         done = 0
         for batch in batches(tasks, lambda task: task.vertices):
             if self.feedback.isCanceled():
                 return
-            outcomes = self._computed(getattr(self.core, STEP_FUNCTIONS[kind]), batch, done)
+            module, name = STEP_FUNCTIONS[kind]
+            outcomes = self._computed(getattr(getattr(self.core, module), name), batch, done)
             if outcomes is None:
                 return
             for task, outcome in zip(batch, outcomes):
@@ -291,7 +292,7 @@ class FeatureRun:
         span = len(batch) * self.progress_step
         try:
             computed = iter(
-                self.core.centerlines_together(
+                self.core._many.run_many_steps(
                     [
                         steps(*task.inputs, progress=self.keep_going, **task.keywords)
                         for task in batch

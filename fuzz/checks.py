@@ -5,15 +5,11 @@ checked against the exact medial axis (``--oracle``), within the tolerance of it
 Tolerances are relative to the input's extent (the inputs span many orders of magnitude).
 """
 
-import math
-import re
+import dataclasses
 
 import numpy as np
 import shapely
 from shapely.geometry import Polygon
-
-from incircu_plugin.core.engine import DEFAULT_TOLERANCE_PER_WIDTH
-from incircu_plugin.core.polyline import coordinate_rounding, typical_width
 
 #: Relative tolerance (of the input's extent) of the containment and end checks.
 RELATIVE_TOLERANCE = 1e-7
@@ -143,77 +139,52 @@ def _parts_problems(case, outcomes):
     return found
 
 
-#: Relative difference (of the input's extent) allowed between a line's ends traced together and alone.
-BATCH_ROUNDING = 1e-9
-
-
 def together_problems(case, together, alone):
     """Return a list of how ``together`` (the case's outcome in a batch of ``centerlines_together``) differs from
     ``alone`` (the plain function's result or exception), and of what is wrong with it (:func:`problems`).
 
-    The two must be the same exception (type, and message up to its numbers), or results whose lines lie within
-    the case's sampling tolerance of each other (a shared frame rounds differently, which can tip the
-    simplification between equally good axis vertices), whose ends and end radii agree to rounding, with every foot at its
-    vertex's radius and the same notes and ends; a multipart case part by part.
+    A feature's outcome does not depend on its batch: the two must be the same bytes (:func:`outcome_key`: the
+    same exception and message, or lines, radii and feet of identical float64 values, the same notes and ends).
     """
-    if case.function == "multipolygon_centerlines" and isinstance(together, list) and isinstance(alone, list):
-        if [outcome.part_index for outcome in together] != [outcome.part_index for outcome in alone]:
-            return ["together and alone give different parts"]
-        parts = list(getattr(case.args[0], "geoms", [case.args[0]]))
-        found = []
-        for one, other in zip(together, alone):
-            differences = _differences(
-                one.error or one.result, other.error or other.result, parts[one.part_index], case.kwargs
-            )
-            found += [f"part {one.part_index}: {difference}" for difference in differences]
-        return found + problems(case, together)
-    region = case.polygon if case.polygon is not None else case.args[0]
-    found = _differences(together, alone, region, case.kwargs)
-    return found if found or isinstance(together, Exception) else problems(case, together)
+    key_together, key_alone = outcome_key(together), outcome_key(alone)
+    if key_together != key_alone:
+        return [
+            f"together {_outcome_name(together)}, alone {_outcome_name(alone)}: {_first_difference(key_together, key_alone)}"
+        ]
+    return [] if isinstance(together, Exception) else problems(case, together)
 
 
-def _without_numbers(error):
-    """An error's message with every number as ``#``: where the line leaves a polygon, or by how much, is found
-    to rounding, which the batch's frame changes."""
-    return re.sub(r"-?\d+(\.\d+)?(e[-+]?\d+)?", "#", str(error))
+def outcome_key(outcome):
+    """What must be identical in a feature's outcome wherever it is computed (alone, in any batch, in any order):
+    an exception's type and message; every field of a result (geometries as WKB, arrays as float64 bytes,
+    anything else as its repr), in the order of :func:`_first_difference`; a list of part outcomes part by part."""
+    if isinstance(outcome, Exception):
+        return ("error", type(outcome).__name__, str(outcome))
+    if isinstance(outcome, list):
+        return tuple((part.part_index, outcome_key(part.error or part.result)) for part in outcome)
+    values = {field.name: getattr(outcome, field.name) for field in dataclasses.fields(outcome)}
+    geometries = tuple(value.wkb for value in values.values() if isinstance(value, shapely.Geometry))
+    arrays = tuple(value.tobytes() for value in values.values() if isinstance(value, np.ndarray))
+    others = repr(tuple(value for value in values.values() if not isinstance(value, (shapely.Geometry, np.ndarray))))
+    return ("result", type(outcome).__name__, geometries, arrays, others)
+
+
+def _first_difference(one, other):
+    """Where two :func:`outcome_key` values first differ, in words."""
+    if one[0] != other[0] or len(one) != len(other):
+        return "different kinds of outcome"
+    # The result's geometries (its line), its arrays (radii and feet), its other fields (notes and ends).
+    names = ("kind", "type", "line", "radii and feet", "notes and ends")
+    for name, first, second in zip(names, one, other):
+        if first != second:
+            return f"{name} differ"
+    return "parts differ"
 
 
 def _outcome_name(outcome):
     if isinstance(outcome, Exception):
         return f"{type(outcome).__name__}: {outcome}"
     return type(outcome).__name__
-
-
-def _differences(together, alone, region, options):
-    """How one outcome traced together differs from it alone (see :func:`together_problems`); ``region``: the
-    polygon or bank line the case gave, ``options``: its keywords."""
-    if isinstance(together, Exception) or isinstance(alone, Exception) or type(together) is not type(alone):
-        if type(together) is not type(alone) or _without_numbers(together) != _without_numbers(alone):
-            return [f"together {_outcome_name(together)}, alone {_outcome_name(alone)}"]
-        return []
-    coordinates = shapely.get_coordinates(alone.line)
-    extent = max(float(np.max(coordinates.max(axis=0) - coordinates.min(axis=0))), _extent(region))
-    rounding = BATCH_ROUNDING * extent + coordinate_rounding(coordinates)
-    found = []
-    apart, tolerance = together.line.hausdorff_distance(alone.line), _axis_tolerance(region, options, alone.line)
-    if apart > tolerance + rounding and not ends_in_concave_corner(region, alone.line, rounding):
-        found.append(f"lines {apart:.3g} apart (tolerance {tolerance:.3g})")
-    for index, name in ((0, "start"), (-1, "end")):
-        gap = float(np.hypot(*np.subtract(together.line.coords[index], alone.line.coords[index])))
-        if gap > rounding or abs(together.radii[index] - alone.radii[index]) > rounding:
-            found.append(f"{name} {gap:.3g} apart, radii {together.radii[index]:.17g} and {alone.radii[index]:.17g}")
-    # A foot found through a vertex contact near a tangency keeps half the digits of its radius; a foot of a small
-    # shape far from the origin is placed to a few roundings of its coordinates (16 spacings each).
-    slack = 4.0 * rounding + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(together.radii, initial=0.0))
-    centres = shapely.get_coordinates(together.line)
-    for foot in (together.foot_a, together.foot_b):
-        off = float(np.max(np.abs(np.hypot(*(foot - centres).T) - together.radii), initial=0.0))
-        if off > slack:
-            found.append(f"a foot {off:.3g} off its disk")
-    for field in ("ends_found", "notes", "ends_from"):
-        if getattr(together, field, None) != getattr(alone, field, None):
-            found.append(f"{field} differ: {getattr(together, field, None)!r}, {getattr(alone, field, None)!r}")
-    return found
 
 
 def ends_in_concave_corner(region, line, rounding):
@@ -238,25 +209,6 @@ def ends_in_concave_corner(region, line, rounding):
         if len(concave) and np.min(np.hypot(*(concave[:, None] - ends[None]).T)) <= rounding:
             return True
     return False
-
-
-def _extent(geometry):
-    if geometry is None or not isinstance(geometry, shapely.Geometry) or geometry.is_empty:
-        return 0.0
-    bounds = np.asarray(geometry.bounds, dtype=float)
-    return float(np.max(bounds[2:] - bounds[:2]))
-
-
-def _axis_tolerance(region, options, line):
-    """Upper bound of the engine's tolerance on ``region`` with ``options``, CRS units: the tolerance given, else
-    the default of the region's outer ring (islands bridged into the chains only lengthen them, so only narrow
-    their typical width); a region that is no polygon is taken as the convex hull of ``line``."""
-    given = options.get("tolerance")
-    if isinstance(given, (int, float)) and math.isfinite(given) and given > 0:
-        return float(given)
-    outer = Polygon(region.exterior) if isinstance(region, Polygon) else shapely.convex_hull(line)
-    width = typical_width(outer.area, 0.5 * outer.length)
-    return DEFAULT_TOLERANCE_PER_WIDTH * (width if width > 0 else 1e-3 * _extent(region))
 
 
 #: Most samples per line the oracle check takes (it samples the line at a tenth of the tolerance): a thin box

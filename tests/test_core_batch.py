@@ -1,14 +1,12 @@
 """Many features traced together (``centerlines_together`` over the ``*_steps`` generators) equal each one alone.
 
-The joint tracing shifts the features into one coordinate space, so a feature's result may differ from the
-plain function's by float64 rounding, which can only tip the final simplification between equally good axis
-vertices (see ``tests/test_core_joint.py``): lines agree within the feature's axis tolerance, their ends and
-end radii within ``ROUNDING`` of the feature's extent, every foot lies at its vertex's radius, and errors
-agree in type and message, in input order.
+Each feature is computed in its own frame whatever its batch (the joint tracing places features side by side
+in its spatial index only), so a feature's outcome is the same bytes alone, in any batch, in any order:
+errors agree in type and message, results in every float64 of their lines, radii and feet
+(:func:`fuzz.checks.outcome_key`).
 """
 
 import gc
-import math
 from dataclasses import dataclass
 from typing import Callable
 
@@ -18,39 +16,32 @@ import shapely
 from shapely.geometry import LineString, MultiPolygon, Polygon, box
 
 from benchmarks.rivers import river_layer
+from fuzz.checks import outcome_key
+from fuzz.inputs import STEPS, call, make_case, steps
 from incircu_plugin.core import (
     Cancelled,
     CenterlineError,
     CenterlineResult,
     InvalidGeometryError,
     OptionError,
-    PartOutcome,
     SplitPointError,
-    adaptive,
-    api,
-    centerlines_together,
+    _many,
     contacts,
-    default_tolerance,
-    lines_centerline_steps,
-    multipolygon_centerline_steps,
     polygon_centerline,
-    polygon_centerline_steps,
-    split_polygon,
 )
-from incircu_plugin.core import steps as steps_module
-from incircu_plugin.core.lines import LineRequest
-from incircu_plugin.core.steps import (
+from incircu_plugin.core import _steps as steps_module
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core._steps import (
     _huge_page_advice_setter,
     answer_alone,
     run_alone,
     run_settings_paused,
     trace_alone,
 )
+from incircu_plugin.core.api import _lines_centerline_steps, _multipolygon_centerline_steps, _polygon_centerline_steps
+from incircu_plugin.core.lines import LineRequest
+from incircu_plugin.core.tracing import joint
 from tests.support import geometry_cases
-
-#: Largest difference allowed between a feature traced together and alone at the line's ends, as a fraction
-#: of the feature's extent.
-ROUNDING = 1e-9
 
 #: A self-crossing ring: an invalid polygon.
 BOW_TIE = Polygon([(0, 0), (10, 10), (10, 0), (0, 10)])
@@ -58,105 +49,59 @@ BOW_TIE = Polygon([(0, 0), (10, 10), (10, 0), (0, 10)])
 
 @dataclass
 class Feature:
-    """One input of the mix: ``make()`` returns a fresh step generator.
-
-    ``rounding`` is the coordinate tolerance of rounding, ``axis_tolerance`` the sampling tolerance (the
-    largest default tolerance of its parts; 0 for the fixed sampling, which is not traced), CRS units.
-    """
+    """One input of the mix: ``make()`` returns a fresh step generator."""
 
     name: str
     make: Callable
-    rounding: float
-    axis_tolerance: float = 0.0
-
-
-def rounding_of(geometry):
-    """``ROUNDING`` of a geometry's extent plus 16 float64 steps of its coordinates, CRS units."""
-    coordinates = shapely.get_coordinates(geometry)
-    extent = float(np.max(coordinates.max(axis=0) - coordinates.min(axis=0)))
-    return ROUNDING * extent + 16 * float(np.spacing(np.max(np.abs(coordinates))))
-
-
-def case_tolerance(*cases):
-    """The largest default tolerance of the cases' chains, CRS units."""
-    return max(default_tolerance(case.chain_a, case.chain_b) for case in cases)
-
-
-def island_channel():
-    """A 200 x 20 channel with an island nearer its upper bank; split points on the short sides; the default
-    tolerance of its outline's chains (the island only narrows it, so this bounds the true one from above)."""
-    outline, ends = box(0, 0, 200, 20), [(0, 10), (200, 10)]
-    return outline.difference(box(80, 11, 120, 15)), ends, default_tolerance(*split_polygon(outline, ends))
 
 
 def mixed_features():
     """A mix of inputs, good and bad, as :class:`Feature` objects."""
     features = [
-        Feature(
-            case.name,
-            lambda c=case: polygon_centerline_steps(c.polygon, c.split_points),
-            rounding_of(case.polygon),
-            case_tolerance(case),
-        )
+        Feature(case.name, lambda c=case: _polygon_centerline_steps(c.polygon, c.split_points))
         for case in geometry_cases.analytic_cases(("unit", "projected"))
     ]
     rectangle = geometry_cases.rectangle(length=300.0, width=12.0, n=9)
     tapered = geometry_cases.tapered_channel()
     meander = geometry_cases.meander(length=800.0, width=20.0, amplitude=40.0, wavelength=400.0, n=(301, 287))
     two_parts = MultiPolygon([rectangle.polygon, shapely.affinity.translate(tapered.polygon, 0, 200)])
-    islands, island_ends, island_tolerance = island_channel()
+    islands = box(0, 0, 200, 20).difference(box(80, 11, 120, 15))
+    island_ends = [(0, 10), (200, 10)]
     far = (rectangle.split_points[0], (1e3, 1e3))
-    both = case_tolerance(rectangle, tapered)
     features += [
         Feature(
             "automatic ends",
-            lambda: polygon_centerline_steps(meander.polygon),
-            rounding_of(meander.polygon),
-            case_tolerance(meander),
+            lambda: _polygon_centerline_steps(meander.polygon),
         ),
-        Feature(
-            "multipart, automatic ends", lambda: multipolygon_centerline_steps(two_parts), rounding_of(two_parts), both
-        ),
+        Feature("multipart, automatic ends", lambda: _multipolygon_centerline_steps(two_parts)),
         Feature(
             "multipart, one part with split points",
-            lambda: multipolygon_centerline_steps(two_parts, list(rectangle.split_points)),
-            rounding_of(two_parts),
-            both,
+            lambda: _multipolygon_centerline_steps(two_parts, list(rectangle.split_points)),
         ),
         Feature(
             "multipart, bad part",
-            lambda: multipolygon_centerline_steps(MultiPolygon([BOW_TIE, box(20, 0, 80, 6)])),
-            rounding_of(box(20, 0, 80, 6)),
-            6.0 / 200.0,
+            lambda: _multipolygon_centerline_steps(MultiPolygon([BOW_TIE, box(20, 0, 80, 6)])),
         ),
-        Feature(
-            "islands", lambda: polygon_centerline_steps(islands, island_ends), rounding_of(islands), island_tolerance
-        ),
+        Feature("islands", lambda: _polygon_centerline_steps(islands, island_ends)),
         Feature(
             "islands ignored",
-            lambda: polygon_centerline_steps(islands, island_ends, islands="ignore"),
-            rounding_of(islands),
-            island_tolerance,
+            lambda: _polygon_centerline_steps(islands, island_ends, islands="ignore"),
         ),
         Feature(
             "lines",
-            lambda: lines_centerline_steps(*geometry_cases.bank_pair(meander, reverse_b=True)),
-            rounding_of(meander.polygon),
-            default_tolerance(meander.bank_a, meander.bank_b),
+            lambda: _lines_centerline_steps(*geometry_cases.bank_pair(meander, reverse_b=True)),
         ),
         Feature(
             "fixed spacing",
-            lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, spacing=2.0),
-            rounding_of(rectangle.polygon),
+            lambda: _polygon_centerline_steps(rectangle.polygon, rectangle.split_points, spacing=2.0),
         ),
-        Feature("invalid polygon", lambda: polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)]), 0.0),
-        Feature("split point off the ring", lambda: polygon_centerline_steps(rectangle.polygon, far), 0.0),
+        Feature("invalid polygon", lambda: _polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)])),
+        Feature("split point off the ring", lambda: _polygon_centerline_steps(rectangle.polygon, far)),
         Feature(
             "negative tolerance",
-            lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, tolerance=-1.0),
-            0.0,
+            lambda: _polygon_centerline_steps(rectangle.polygon, rectangle.split_points, tolerance=-1.0),
         ),
-        Feature("bad island mode", lambda: multipolygon_centerline_steps(two_parts, islands="swim"), 0.0),
+        Feature("bad island mode", lambda: _multipolygon_centerline_steps(two_parts, islands="swim")),
     ]
     return features
 
@@ -169,32 +114,11 @@ def alone(make_steps):
         return error
 
 
-def assert_same_outcome(together, expected, feature):
-    if isinstance(expected, Exception):
-        assert type(together) is type(expected) and str(together) == str(expected), feature.name
-        assert together.__traceback__ is None, feature.name
-    elif isinstance(expected, list):
-        assert [type(o) for o in together] == [PartOutcome] * len(expected), feature.name
-        for one, other in zip(together, expected, strict=True):
-            assert one.part_index == other.part_index, feature.name
-            assert_same_outcome(one.error if one.error else one.result, other.error or other.result, feature)
-    else:
-        assert type(together) is type(expected), (feature.name, together)
-        assert_same_result(together, expected, feature.rounding, feature.axis_tolerance, feature.name)
-
-
-def assert_same_result(together, expected, rounding, axis_tolerance, name):
-    """Lines within ``axis_tolerance`` (plus rounding), ends and end radii within ``rounding``, every foot at its
-    vertex's radius, the same notes and ends."""
-    assert together.line.hausdorff_distance(expected.line) <= axis_tolerance + rounding, name
-    for index in (0, -1):
-        assert np.hypot(*np.subtract(together.line.coords[index], expected.line.coords[index])) <= rounding, name
-        assert abs(together.radii[index] - expected.radii[index]) <= rounding, name
-    centres = shapely.get_coordinates(together.line)
-    for foot in (together.foot_a, together.foot_b):
-        assert np.max(np.abs(np.hypot(*(foot - centres).T) - together.radii)) <= rounding, name
-    for field in ("ends_found", "notes", "ends_from"):
-        assert getattr(together, field, None) == getattr(expected, field, None), (name, field)
+def assert_identical(together, expected, name):
+    """``together`` and ``expected`` are the same outcome, to the last bit; a kept error has no traceback."""
+    assert outcome_key(together) == outcome_key(expected), name
+    if isinstance(together, Exception):
+        assert together.__traceback__ is None, name
 
 
 def test_a_mix_of_features_traced_together_equals_each_alone():
@@ -207,10 +131,10 @@ def test_a_mix_of_features_traced_together_equals_each_alone():
     assert any(isinstance(o, list) and any(p.error for p in o) and any(p.result for p in o) for o in expected)
     # In input order and reversed: a feature's outcome does not depend on its neighbours.
     for order in (list(range(len(features))), list(range(len(features)))[::-1]):
-        together = centerlines_together([features[i].make() for i in order])
+        together = run_many_steps([features[i].make() for i in order])
         assert len(together) == len(order)
         for i, outcome in zip(order, together):
-            assert_same_outcome(outcome, expected[i], features[i])
+            assert_identical(outcome, expected[i], features[i].name)
 
 
 def test_features_of_different_sizes_and_places_together_equal_each_alone():
@@ -218,10 +142,10 @@ def test_features_of_different_sizes_and_places_together_equal_each_alone():
     far = geometry_cases.tapered_channel(placement=geometry_cases.PLACEMENTS["projected"])
     tiny = geometry_cases.rectangle(n=(7, 13), jitter=0.4, seed=3, placement=geometry_cases.PLACEMENTS["tiny"])
     cases = [small, far, tiny]
-    together = centerlines_together([polygon_centerline_steps(c.polygon, c.split_points) for c in cases])
+    together = run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases])
     for case, outcome in zip(cases, together):
         expected = polygon_centerline(case.polygon, case.split_points)
-        assert_same_result(outcome, expected, rounding_of(case.polygon), case_tolerance(case), case.name)
+        assert_identical(outcome, expected, case.name)
 
 
 def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
@@ -230,22 +154,15 @@ def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
     # events are sought a hair from it, and in the batch's shared frame the other chain's copy of the start was
     # touched through rounding at radii along the stub, out of order. Every river must come out as it does alone.
     rivers = river_layer(256, seed=7, first=19_712)
-    together = centerlines_together([polygon_centerline_steps(river.polygon) for river in rivers])
+    together = run_many_steps([_polygon_centerline_steps(river.polygon) for river in rivers])
     for river, outcome in zip(rivers, together, strict=True):
-        expected = polygon_centerline(river.polygon)
-        assert type(outcome) is type(expected), (river.index, outcome)
-        ends = [expected.line.coords[0], expected.line.coords[-1]]
-        tolerance = default_tolerance(*split_polygon(river.polygon, ends))
-        # A foot found through a vertex contact near a tangency (a double root) keeps half the digits of its
-        # radius, alone as together (river 19,822: 1.6e-8 of the radius both ways).
-        rounding = rounding_of(river.polygon) + 2.0 * math.sqrt(np.finfo(float).eps) * float(np.max(expected.radii))
-        assert_same_result(outcome, expected, rounding, tolerance, river.index)
+        assert_identical(outcome, polygon_centerline(river.polygon), river.index)
 
 
 def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
     # What run_together does when a part's tracing fails: the part gets the error, the next part goes on.
     # Split points given, so the first request is the first part's tracing (not its automatic ends).
-    generator = multipolygon_centerline_steps(
+    generator = _multipolygon_centerline_steps(
         MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)]), [(0, 2), (50, 2), (0, 12), (50, 12)]
     )
     next(generator)
@@ -262,7 +179,7 @@ def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
 
 def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
     # run_alone, like run_together, raises a failed tracing inside the generator: the part gets the error.
-    from incircu_plugin.core import steps
+    from incircu_plugin.core import _steps as steps
 
     calls = []
 
@@ -273,7 +190,7 @@ def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
         return trace_alone(request)
 
     monkeypatch.setattr(steps, "trace_alone", failing_first)
-    outcomes = run_alone(multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])))
+    outcomes = run_alone(_multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])))
     assert len(calls) == 2
     assert (outcomes[0].result, str(outcomes[0].error)) == (None, "the tracing failed")
     assert outcomes[1].error is None and outcomes[1].result.line.length == pytest.approx(50.0, rel=1e-9)
@@ -282,9 +199,7 @@ def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
 def test_batch_progress_rises_from_0_to_1():
     cases = [geometry_cases.rectangle(), geometry_cases.tapered_channel(), geometry_cases.annulus_sector()]
     fractions = []
-    centerlines_together(
-        [polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: fractions.append(f)
-    )
+    run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: fractions.append(f))
     assert fractions == sorted(fractions) and fractions[-1] == 1.0 and 0.0 <= fractions[0]
     assert len(set(fractions)) > 2
 
@@ -292,44 +207,42 @@ def test_batch_progress_rises_from_0_to_1():
 def test_cancel_through_the_batch_progress_raises_cancelled():
     cases = [geometry_cases.rectangle(), geometry_cases.meander()]
     with pytest.raises(Cancelled):
-        centerlines_together([polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: f < 0.5)
+        run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: f < 0.5)
 
 
 def test_cancel_through_one_features_progress_stops_the_batch():
     # The automatic ends report progress from inside the generator, before the tracing.
     case = geometry_cases.meander()
     steps = [
-        polygon_centerline_steps(case.polygon, case.split_points),
-        polygon_centerline_steps(case.polygon, progress=lambda fraction: False),
+        _polygon_centerline_steps(case.polygon, case.split_points),
+        _polygon_centerline_steps(case.polygon, progress=lambda fraction: False),
     ]
     with pytest.raises(Cancelled):
-        centerlines_together(steps)
+        run_many_steps(steps)
 
 
 def test_batches_are_bounded_by_features_and_vertices(monkeypatch):
-    monkeypatch.setattr(api, "BATCH_FEATURES", 3)
-    monkeypatch.setattr(api, "BATCH_VERTICES", 10)
+    monkeypatch.setattr(_many, "BATCH_FEATURES", 3)
+    monkeypatch.setattr(_many, "BATCH_VERTICES", 10)
     sizes = [1, 2, 3, 4, 1, 1, 1, 25, 2]
-    batches = list(api.batches(range(len(sizes)), sizes.__getitem__))
+    batches = list(_many.batches(range(len(sizes)), sizes.__getitem__))
     assert [index for batch in batches for index in batch] == list(range(len(sizes)))
     for batch in batches:
         assert len(batch) <= 3 and (len(batch) == 1 or sum(sizes[i] for i in batch) <= 10)
     # Full batches: no two neighbouring batches could have been one.
     for first, second in zip(batches, batches[1:]):
         assert len(first) + len(second) > 3 or sum(sizes[i] for i in first + second) > 10
-    assert list(api.batches([], len)) == []
+    assert list(_many.batches([], len)) == []
 
 
 def test_lines_with_an_error_together_with_good_ones():
     crossing = (LineString([(0, 0), (100, 0)]), LineString([(0, 10), (100, -10)]))
     good = geometry_cases.bank_pair(geometry_cases.rectangle())
-    together = centerlines_together([lines_centerline_steps(*crossing), lines_centerline_steps(*good)])
-    expected = alone(lambda: lines_centerline_steps(*crossing))
+    together = run_many_steps([_lines_centerline_steps(*crossing), _lines_centerline_steps(*good)])
+    expected = alone(lambda: _lines_centerline_steps(*crossing))
     assert isinstance(expected, Exception)
     assert type(together[0]) is type(expected) and str(together[0]) == str(expected)
-    expected = run_alone(lines_centerline_steps(*good))
-    tolerance = default_tolerance(*(np.asarray(line.coords) for line in good))
-    assert_same_result(together[1], expected, rounding_of(good[0].union(good[1])), tolerance, "good")
+    assert_identical(together[1], run_alone(_lines_centerline_steps(*good)), "good")
 
 
 def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeypatch):
@@ -341,11 +254,11 @@ def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeyp
     for enabled in (True, False):
         (gc.enable if enabled else gc.disable)()
         try:
-            centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)])
+            run_many_steps([_polygon_centerline_steps(case.polygon, case.split_points)])
             polygon_centerline(case.polygon, case.split_points)
             assert gc.isenabled() is enabled
             with pytest.raises(Cancelled):
-                centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)], lambda f: False)
+                run_many_steps([_polygon_centerline_steps(case.polygon, case.split_points)], lambda f: False)
             assert gc.isenabled() is enabled
         finally:
             gc.enable()
@@ -407,8 +320,28 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
         for (name, polygon, ends), bits in zip(cases, expected, strict=True):
             assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, index_run)
     monkeypatch.undo()
-    monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
+    monkeypatch.setattr(joint, "JOINT_CELL", 0.0)
     order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)
-    together = centerlines_together([polygon_centerline_steps(*cases[i][1:]) for i in order])
+    together = run_many_steps([_polygon_centerline_steps(*cases[i][1:]) for i in order])
     for i, outcome in zip(order, together, strict=True):
         assert exactly(outcome) == expected[i], cases[i][0]
+
+
+@pytest.mark.parametrize("seed", [3, 29])
+def test_fuzzed_inputs_are_the_same_bytes_alone_in_a_batch_reversed_and_in_slices(seed):
+    # The fuzz generator's inputs (channels with and without split points, bank lines, islands, rings, spikes,
+    # compact shapes, bad inputs) that have a step form: each outcome alone, then in one batch, in the reverse
+    # order and in four slices, as a dask frame's partitions or a selection in QGIS would split a layer.
+    cases = [make_case(seed, index, small=True) for index in range(120)]
+    cases = [case for case in cases if case.function in STEPS]
+    expected = []
+    for case in cases:
+        try:
+            expected.append(call(case))
+        except Exception as error:  # noqa: BLE001 - the error is the expected outcome
+            expected.append(error)
+    order = list(range(len(cases)))
+    for batch in (order, order[::-1], *np.array_split(order, 4)):
+        together = run_many_steps([steps(cases[index]) for index in batch])
+        for index, outcome in zip(batch, together, strict=True):
+            assert_identical(outcome, expected[index], (seed, index, cases[index].category))

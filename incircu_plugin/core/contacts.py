@@ -19,7 +19,7 @@ from functools import cache, partial
 import numpy as np
 
 from .errors import InvalidGeometryError, Message
-from .polyline import coordinate_rounding, cumulative_lengths
+from .polyline import ROUNDING_SPACINGS, coordinate_rounding, cumulative_lengths
 
 #: Relative slack (of a segment's length) with which a tangency at a segment's end still counts as inside.
 ALONG_TOLERANCE = 1e-9
@@ -152,15 +152,22 @@ class Boundary:
     ``input_rounding`` (per chain, CRS units; None: none) is the rounding of each chain's coordinates where they
     come from (:func:`.polyline.coordinate_rounding` before the shift into this frame): a split point inserted
     far from the origin is placed to that, not to this frame's rounding.
+
+    ``index_shift`` (per chain, shape (chains, 2), CRS units; None: none) moves each chain's segments in the
+    spatial index only: a joint tracing of several features, each in its own frame about the origin, places
+    their segments side by side in the index (a feature's candidate search then meets its own segments only)
+    while every computed value uses the unshifted coordinates, so a feature's result does not depend on the
+    other features traced with it. Adding the same shift to two numbers keeps their order (rounding is
+    monotone), so a shifted box meets every box it met unshifted.
     """
 
-    def __init__(self, chains, input_rounding=None):
+    def __init__(self, chains, input_rounding=None, index_shift=None):
         sizes = np.array([len(chain) - 1 for chain in chains])
         count = int(sizes.sum())
         if count + len(chains) > MAX_SEGMENTS:
             raise InvalidGeometryError(Message("too_many_segments", count=count))
         self.segment_count = count
-        #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
+        #: More than one pair of chains (a joint tracing of several features, see :mod:`._steps`): chains
         #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.
         self.several_pairs = len(chains) > 2
         self.offset = list(np.cumsum(sizes) - sizes)
@@ -196,15 +203,27 @@ class Boundary:
         #: (:func:`.polyline.coordinate_rounding`), CRS units. Such a vertex is touched only through rounding, at
         #: any ``t``: the other chain's copy of a split point, seen from the own chain's end segment (which ends
         #: there), in a joint tracing's frame far from the origin.
-        self.rounding = coordinate_rounding(self.vertex)
-        #: Per chain, the larger of ``rounding`` and the chain's ``input_rounding``, CRS units.
-        self.chain_rounding = np.full(len(chains), self.rounding)
+        #: Per segment, the rounding of its pair of chains (a float for one pair): what the pair's result may
+        #: depend on, whichever other pairs share the boundary.
+        self.rounding = (
+            _pair_rounding(self.vertex, sizes + 1) if self.several_pairs else coordinate_rounding(self.vertex)
+        )
+        #: Per chain, the larger of its pair's rounding and the chain's ``input_rounding``, CRS units.
+        self.chain_rounding = (
+            self.rounding[self.offset] if self.several_pairs and count else np.full(len(chains), self.rounding)
+        )
         if input_rounding is not None:
             np.maximum(self.chain_rounding, input_rounding, out=self.chain_rounding)
         del end
         # Coordinate columns as views (no copies).
         self.start_x, self.start_y = self.start[:, 0], self.start[:, 1]
         self.unit_x, self.unit_y = self.unit[:, 0], self.unit[:, 1]
+        #: Per chain, the shift of its segments' boxes in the spatial index (None: none), CRS units.
+        self.index_shift = None if index_shift is None else np.asarray(index_shift, dtype=float)
+        if self.index_shift is not None:
+            # The boxes serve the candidate search only: shifted in place, per segment by its chain's shift.
+            for column, axis in ((self.low_x, 0), (self.high_x, 0), (self.low_y, 1), (self.high_y, 1)):
+                column += self.index_shift[:, axis].take(self.chain_id)
         # The index holds runs of INDEX_RUN consecutive segments: INDEX_RUN times fewer boxes to grid.
         run_start = np.arange(0, count, INDEX_RUN)
         self.run_low = np.stack([np.minimum.reduceat(column, run_start) for column in (self.low_x, self.low_y)], 1)
@@ -231,9 +250,10 @@ class Boundary:
         """Free the spatial index (it is built again on the next use)."""
         self._index = None
 
-    def candidates(self, low, high):
+    def candidates(self, low, high, chain=None):
         """Pairs (box index, segment index), each box's pairs consecutive, of segments whose bounding box meets
-        a box.
+        a box (``low``, ``high``: its corners, CRS units, shifted here by the ``index_shift`` of its ``chain``, which
+        is needed only with an ``index_shift``).
 
         With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once
@@ -245,6 +265,9 @@ class Boundary:
         takes minima per box and breaks ties by site).
         """
         count = len(low)
+        if self.index_shift is not None:
+            shift = rows(self.index_shift, chain)
+            low, high = low + shift, high + shift
         if count * self.segment_count <= ALL_PAIRS:
             meets = (self.low_x <= high[:, 0, None]) & (self.high_x >= low[:, 0, None])
             meets &= (self.low_y <= high[:, 1, None]) & (self.high_y >= low[:, 1, None])
@@ -325,6 +348,16 @@ class Boundary:
         keep &= self.low_y.take(segment) <= high[:, 1][box]
         keep &= self.high_y.take(segment) >= low[:, 1][box]
         return keep
+
+
+def _pair_rounding(vertex, sizes):
+    """Per segment, :func:`.polyline.coordinate_rounding` of its pair of chains (chains ``2k`` and ``2k + 1``,
+    their vertices one chain after the other in ``vertex``, ``sizes`` vertices each), CRS units."""
+    largest = np.abs(vertex).max(axis=1)
+    pair_sizes = np.add.reduceat(sizes, np.arange(0, len(sizes), 2))
+    pair_largest = np.maximum.reduceat(largest, np.cumsum(pair_sizes) - pair_sizes)
+    pair_rounding = ROUNDING_SPACINGS * np.spacing(pair_largest)
+    return np.repeat(pair_rounding, np.add.reduceat(sizes - 1, np.arange(0, len(sizes), 2)))
 
 
 def _per_segment(values, first, sizes):
@@ -543,7 +576,8 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=T
     b_along = bx * ux + by * uy
     b_across = by * ux - bx * uy
 
-    t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide, boundary.rounding)
+    rounding = boundary.rounding.take(segment) if boundary.several_pairs else boundary.rounding
+    t_start = vertex_contact(-along_p, height, b_along, b_across, scale, slide, rounding)
     t_end = np.full(len(segment), np.inf)
     last = boundary.last_of_chain.take(segment).nonzero()[0]
     if len(last):
@@ -554,7 +588,7 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=T
             b_across[last],
             scale[last],
             slide[last],
-            boundary.rounding,
+            rounding[last] if boundary.several_pairs else rounding,
         )
 
     # With side = sign(height) (+1 at 0): distance = side * height, and bx + side * uy, by - side * ux.
@@ -718,7 +752,9 @@ def _solve_round(samples, sample, boundary, radius, min_t, row, solution):
     # trial centre (its centre moves by dt while its radius grows by scale*dt <= dt).
     reach = radius * (1.0 + 1e-9)
     query, segment = boundary.candidates(
-        np.stack([centre_x - reach, centre_y - reach], axis=1), np.stack([centre_x + reach, centre_y + reach], axis=1)
+        np.stack([centre_x - reach, centre_y - reach], axis=1),
+        np.stack([centre_x + reach, centre_y + reach], axis=1),
+        chain,
     )
     pairs = len(query)
     near = boundary.within(segment, query, centre_x, centre_y, reach)

@@ -72,9 +72,6 @@ MESSAGES = {
     ),
     "label_range_share_of_width": QT_TRANSLATE_NOOP("IncirCuCore", "a share of the local width, at least 0"),
     "label_range_ratio": QT_TRANSLATE_NOOP("IncirCuCore", "a ratio, at least 0"),
-    "label_split_points_single": QT_TRANSLATE_NOOP(
-        "IncirCuCore", "Give split points with a single geometry, not with an array of them."
-    ),
     "samples_not_whole": QT_TRANSLATE_NOOP("IncirCuCore", "samples_per_chain must be a whole number, got {value!r}."),
     "samples_too_few": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The number of samples per chain must be at least 1, got {value!r}."
@@ -82,6 +79,9 @@ MESSAGES = {
     "spacing_too_small": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "A spacing of {spacing:.6g} would need about {planned:.3g} samples (at most {limit:.3g}); use a larger spacing."
+    ),
+    "values_per_geometry": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "{name} has {given} values for {count} geometries; give one value or one per geometry."
     ),
     "tolerance_and_spacing": QT_TRANSLATE_NOOP(
         "IncirCuCore", "Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling)."
