@@ -1,5 +1,7 @@
 """Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between the ends of a polygon's arms."""
 
+from functools import partial
+
 from qgis.core import (
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
@@ -19,6 +21,7 @@ from .options import (
     read_sampling,
     read_source,
 )
+from .running import FeatureTask, no_geometry
 from .split_points import SplitPoints
 from .styles import CENTERLINE
 
@@ -221,36 +224,46 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         return NetworkWriter(self, parameters, context, options)
 
     def process_features(self, run, options):
-        from ..incircu_plugin.core.touching import bounding_diagonal  # needs Shapely, checked by require_core
-
         source = options.source
         run.warn_dropped_z(source)
         gates = run.layer_gates(source) if options.connect_touching else None
         split_points = SplitPoints(options.split_points, source.sourceCrs(), run.context, options.id_field)
-        for feature in run.features(source):
-            geometry = feature.geometry()
-            frame = run.frame.around(geometry)
-            snap_tolerance = options.snap_tolerance(feature)
-            candidates, ids = split_points.near(geometry, snap_tolerance, frame)
-            core_geometry, core_gates, layer_gates, extent = None, [], [], 0.0
-            if gates is not None:
-                core_geometry, core_gates, layer_gates = gates.of(feature.id(), frame)
-                extent = bounding_diagonal(gates.layer_geometry(feature.id()))
-            outcomes = run.network(
-                feature.id(),
-                frame.to_core(geometry) if core_geometry is None else core_geometry,
-                candidates,
-                gates=core_gates,
-                snap_tolerance=snap_tolerance or None,
-                **options.sampling.of(feature),
-                islands=options.islands,
-                end_cap=options.end_cap,
-                min_arm_ratio=options.min_arm_ratio,
-                min_arm_length=options.min_arm_length,
-            )
-            parts = [
-                (outcome.part_index, outcome.result, ids, layer_gates, extent)
-                for outcome, _ in run.successful_parts(feature.id(), outcomes or ())
-            ]
-            run.write(feature, parts, frame)
+        task = partial(self._task, run, options, gates, split_points)
+        run.run_batches("network", map(task, run.source_features(source)), source.featureCount())
         return run.finish()
+
+    def _task(self, run, options, gates, split_points, feature):
+        """The :class:`.running.FeatureTask` of one polygon feature: its geometry and split points in its frame,
+        its gates (``CONNECT_TOUCHING``), the network options."""
+        from ..incircu_plugin.core.touching import bounding_diagonal  # needs Shapely, checked by require_core
+
+        if not run.has_geometry(feature):
+            return run.skip_task(feature, no_geometry())
+        geometry = feature.geometry()
+        frame = run.frame.around(geometry)
+        snap_tolerance = options.snap_tolerance(feature)
+        candidates, ids = split_points.near(geometry, snap_tolerance, frame)
+        core_geometry, core_gates, layer_gates, extent = None, [], [], 0.0
+        if gates is not None:
+            core_geometry, core_gates, layer_gates = gates.of(feature.id(), frame)
+            extent = bounding_diagonal(gates.layer_geometry(feature.id()))
+        keywords = dict(
+            options.sampling.of(feature),
+            gates=core_gates,
+            snap_tolerance=snap_tolerance or None,
+            islands=options.islands,
+            end_cap=options.end_cap,
+            min_arm_ratio=options.min_arm_ratio,
+            min_arm_length=options.min_arm_length,
+        )
+        inputs = (frame.to_core(geometry) if core_geometry is None else core_geometry, candidates)
+        parts = partial(self._parts, run, feature.id(), ids, layer_gates, extent)
+        return FeatureTask(feature, frame, inputs, keywords, parts, geometry.constGet().nCoordinates())
+
+    @staticmethod
+    def _parts(run, feature_id, ids, layer_gates, extent, outcomes):
+        """The networks of a feature's successful parts, with what the writer numbers their nodes by."""
+        return [
+            (outcome.part_index, outcome.result, ids, layer_gates, extent)
+            for outcome, _ in run.successful_parts(feature_id, outcomes)
+        ]

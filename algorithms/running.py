@@ -4,7 +4,7 @@ the algorithms call the core's computations.
 The centerline algorithms describe each feature as a :class:`FeatureTask` (the core function's inputs, in the
 feature's working frame) and compute them in batches (:meth:`FeatureRun.run_batches`: one call of the core's
 public function on the arrays of a batch's inputs, traced together, the same call a Python user makes); the
-network algorithm computes one feature at a time (:meth:`FeatureRun.features` and :meth:`FeatureRun.network`).
+network algorithm too (each network traces its own runs).
 """
 
 from dataclasses import dataclass, field
@@ -22,6 +22,7 @@ ARRAY_FUNCTIONS = {
     "polygon": "multipolygon_centerlines",
     "label": "label_lines",
     "lines": "lines_centerline",
+    "network": "multipolygon_networks",
 }
 
 
@@ -121,22 +122,6 @@ class FeatureRun:
         self.writer = writer
         self.frame = WorkingFrame.of_layer(crs)
 
-    def features(self, source, request=None):
-        """Yield the features of ``source`` with progress, stopping when the user cancels.
-
-        Features without geometry are skipped with a warning. Processing's invalid-geometry filter is
-        bypassed: the core checks validity itself and the warning then says what is wrong and where.
-        """
-        total = source.featureCount()
-        self.progress_step = 100.0 / total if total > 0 else 0.0
-        for current, feature in enumerate(self.source_features(source, request)):
-            self.progress_base = current * self.progress_step
-            self.feedback.setProgress(self.progress_base)
-            if not self.has_geometry(feature):
-                self.skip(feature.id(), no_geometry())
-                continue
-            yield feature
-
     def source_features(self, source, request=None):
         """Yield every feature of ``source`` (also those without geometry), stopping when the user cancels.
 
@@ -154,11 +139,6 @@ class FeatureRun:
     def has_geometry(feature):
         """True when ``feature`` has a non-empty geometry."""
         return feature.hasGeometry() and not feature.geometry().isEmpty()
-
-    def report_progress(self, fraction):
-        """Progress callback for the core: ``fraction`` of the current feature done; False cancels."""
-        self.feedback.setProgress(self.progress_base + fraction * self.progress_step)
-        return not self.feedback.isCanceled()
 
     def skip(self, feature_id, reason, part_index=None):
         """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's
@@ -208,17 +188,6 @@ class FeatureRun:
             # The feature is still computed, without the gates GEOS could not find.
             self.warn_feature(ids[index], error)
         return LayerGates(ids, with_gates, gates)
-
-    def network(self, feature_id, *inputs, **keywords):
-        """Return the core's ``multipolygon_networks(*inputs, **keywords)`` of one feature; a core error
-        becomes a skip warning (then None, as when the user cancelled)."""
-        try:
-            return self.core.multipolygon_networks(*inputs, progress=self.report_progress, **keywords)
-        except self.core.Cancelled:
-            return None
-        except Exception as error:  # noqa: BLE001 - one bad feature must not abort a run of thousands
-            self.skip_failed(feature_id, error)
-        return None
 
     def successful_parts(self, feature_id, outcomes):
         """Return ``(outcome, part_index)`` for every successful part of a feature (``outcomes``: the core's

@@ -74,6 +74,10 @@ from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
 from .rings import seam_chains
 
+#: Most networks in one batch of an array (:func:`multipolygon_networks`): a network traces its own runs, so a
+#: batch shares no tracing, and progress and cancel come between batches.
+NETWORK_BATCH_FEATURES = 8
+
 #: Island modes of a network: those of a centerline, and ``"channels"`` (channels on both sides of the large
 #: islands, see :func:`polygon_network`).
 NETWORK_ISLAND_MODES = ("main_channel", "ignore", "channels")
@@ -441,7 +445,9 @@ def multipolygon_networks(geometry, split_points=None, *, snap_tolerance=None, g
     """
     progress = options.pop("progress", None)
     options.update(snap_tolerance=snap_tolerance, gates=gates)
-    return one_or_many(_multipolygon_network_steps, geometry, split_points, options, progress, ("gates",))
+    return one_or_many(
+        _multipolygon_network_steps, geometry, split_points, options, progress, ("gates",), NETWORK_BATCH_FEATURES
+    )
 
 
 def _multipolygon_network_steps(geometry, split_points=None, *, snap_tolerance=None, gates=None, **options):
