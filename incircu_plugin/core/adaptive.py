@@ -87,22 +87,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .contacts import (
-    CHUNK,
-    CLEAR,
-    SKIPPED,
-    TIED,
-    ArrayRecord,
-    AxisPoints,
-    Boundary,
-    Samples,
-    left_normal,
-    put_rows,
-    ranges,
-    rows,
-    solve,
-    solve_in_chunks,
-)
+from ._arrays import ArrayRecord, left_normal, put_rows, ranges, rows
+from .contacts import CHUNK, CLEAR, SKIPPED, TIED, AxisPoints, Boundary, Samples, solve, solve_in_chunks
 from .polyline import turns_between
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).

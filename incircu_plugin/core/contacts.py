@@ -13,11 +13,12 @@ otherwise the trial parameter at most doubles, up to the best contact found so f
 """
 
 import math
-from dataclasses import dataclass, fields
-from functools import cache, partial
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
+from ._arrays import ArrayRecord, group_minima, put_rows, ranges, rows
 from .errors import InvalidGeometryError, Message
 from .polyline import ROUNDING_SPACINGS, coordinate_rounding, cumulative_lengths
 
@@ -60,9 +61,6 @@ COARSE_LEVELS = 2
 #: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
 SMALLEST_TRIAL = 1.0 / 16.0
 
-#: Largest integer :func:`stable_order` packs a value and its index into (below ``2**63``).
-PACKED_LIMIT = 2**62
-
 #: Most consecutive samples whose candidate boxes share one spatial-index query (the grouping changes no
 #: pair). 4 instead of 2, and no box grouped with one it does not meet, cut the time of the queries at 10^6
 #: vertices by about 30 %; 8 instead of 4 (with blocks of 4096 samples) cut the candidate search by another
@@ -87,36 +85,6 @@ MAX_SEGMENTS = 2**30 - 1
 
 #: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
 ALL_PAIRS = 1 << 15
-
-
-class ArrayRecord:
-    """Mixin for a dataclass whose fields are arrays with one row per item (samples, points, intervals)."""
-
-    def subset(self, index):
-        """The items ``index`` (an index array, a mask or a slice)."""
-        columns = (getattr(self, name) for name in _field_names(type(self)))
-        if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
-            return type(self)(*(rows(column, index) for column in columns))
-        if isinstance(index, np.ndarray) and index.dtype == bool:
-            # compress: numpy's indexing of a two-column array by a mask is several times slower (and it takes a
-            # short mask, which indexing refuses).
-            columns = list(columns)
-            if len(index) != len(columns[0]):
-                raise IndexError(f"a mask of {len(index)} items for {len(columns[0])} rows")
-            return type(self)(*(column.compress(index, axis=0) for column in columns))
-        return type(self)(*(column[index] for column in columns))
-
-    @classmethod
-    def concatenate(cls, parts):
-        """All items of ``parts``, one after the other."""
-        return cls(*(np.concatenate([getattr(part, name) for part in parts]) for name in _field_names(cls)))
-
-
-@cache
-def _field_names(record_type):
-    """The names of the fields of a dataclass, in their order (looked up once per class: the tracer's rounds
-    take subsets of small records thousands of times)."""
-    return tuple(field.name for field in fields(record_type))
 
 
 @dataclass(frozen=True)
@@ -205,7 +173,9 @@ class Boundary:
         #: there), in a joint tracing's frame far from the origin.
         #: Per segment, the rounding of its pair of chains (a float for one pair): what the pair's result may
         #: depend on, whichever other pairs share the boundary.
-        self.rounding = _pair_rounding(self.vertex, sizes + 1) if self.several_pairs else coordinate_rounding(self.vertex)
+        self.rounding = (
+            _pair_rounding(self.vertex, sizes + 1) if self.several_pairs else coordinate_rounding(self.vertex)
+        )
         #: Per chain, the larger of its pair's rounding and the chain's ``input_rounding``, CRS units.
         self.chain_rounding = (
             self.rounding[self.offset] if self.several_pairs and count else np.full(len(chains), self.rounding)
@@ -453,75 +423,6 @@ def _group_starts(low, high):
     return np.flatnonzero((box - run_start) % QUERY_GROUP == 0)
 
 
-def rows(array, index):
-    """``array[index]`` for an integer array ``index``, gathered with :meth:`numpy.ndarray.take` (numpy's
-    indexing copies the rows of a two-column array several times slower; the method skips the Python layers
-    of :func:`numpy.take`, which small inputs, gathering a few rows thousands of times, feel)."""
-    return array.take(index, axis=0)
-
-
-def put_rows(array, index, values):
-    """``array[index] = values`` for an array ``array`` of shape (n, 2), an index array or mask ``index`` and
-    ``values`` of shape (m, 2): into a C-contiguous float64 ``array`` each row is written as one complex number
-    (numpy's indexed assignment of a two-column array's rows is about ten times slower; the bytes written are
-    the same), otherwise (or for one row to repeat) by numpy's assignment."""
-    values = np.asarray(values)
-    if array.dtype != np.float64 or not array.flags.c_contiguous or values.ndim != 2:
-        array[index] = values
-        return
-    array.view(np.complex128)[:, 0][index] = np.ascontiguousarray(values, dtype=float).view(np.complex128)[:, 0]
-
-
-def ranges(counts):
-    """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
-    owner = np.repeat(np.arange(len(counts)), counts)
-    # Each item's index less its owner's first item's, subtracted in place.
-    rank = np.arange(len(owner))
-    rank -= np.repeat(np.cumsum(counts) - counts, counts)
-    return owner, rank
-
-
-def stable_order(values, bound):
-    """Return ``np.argsort(values, kind="stable")`` of non-negative integers below ``bound``.
-
-    Each value is packed with its index into one integer (``value * n + index``, all distinct) and those are
-    sorted, several times faster than a stable argsort; when the packed integers could overflow 63 bits, the
-    stable argsort itself.
-
-    Parameters
-    ----------
-    values : ndarray of shape (n,) of int
-        Non-negative, below ``bound``.
-    bound : int
-        An upper bound of the values (exclusive).
-
-    Returns
-    -------
-    ndarray of shape (n,) of int
-    """
-    count = len(values)
-    if int(bound) * max(count, 1) > PACKED_LIMIT:
-        return np.argsort(values, kind="stable")
-    packed = values.astype(np.int64) * count + np.arange(count, dtype=np.int64)
-    packed.sort()
-    return packed % count
-
-
-def left_normal(vectors):
-    """The vectors turned a quarter turn counter-clockwise."""
-    # Filled column by column: the same values as stacking the two columns, with fewer Python layers.
-    turned = np.empty(vectors.shape)
-    np.negative(vectors[:, 1], out=turned[:, 0])
-    turned[:, 1] = vectors[:, 0]
-    return turned
-
-
-def rotate(vectors, angles):
-    """The vectors turned counter-clockwise by ``angles`` (radians)."""
-    cos, sin = np.cos(angles), np.sin(angles)
-    return np.stack([cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1)
-
-
 def vertex_contact(offset, height, b_along, b_across, scale, slide, on_line=0.0):
     """First contact ``t`` with a segment's vertex, inf when none.
 
@@ -628,17 +529,6 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=T
 def per_sample(value, chain):
     """``value`` for samples of the chains ``chain``: a scalar as is, an array per chain indexed by chain."""
     return np.full(len(chain), value, dtype=float) if np.ndim(value) == 0 else np.asarray(value)[chain]
-
-
-def group_minima(group, size, *values):
-    """Minimum of each of ``values`` per group id (each group's rows consecutive, ids below ``size``); inf for
-    empty groups. One array of ``size`` per array of ``values``."""
-    results = [np.full(size, np.inf) for _ in values]
-    if len(group):
-        starts = np.concatenate([[True], group[1:] != group[:-1]]).nonzero()[0]
-        for result, value in zip(results, values):
-            result[group[starts]] = np.minimum.reduceat(value, starts)
-    return results
 
 
 def _lowest_site_of_groups(picked, group, site):

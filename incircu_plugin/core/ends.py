@@ -90,8 +90,8 @@ import shapely
 from shapely.geometry import LineString, Point
 from shapely.ops import polylabel
 
+from ._arrays import ranges
 from .chains import extent_of, validate_polygon
-from .contacts import ranges
 from .errors import Cancelled, IncirCuError, InvalidGeometryError, Message
 from .paths import heaviest_paths
 from .polyline import counterclockwise, turns_between, typical_width

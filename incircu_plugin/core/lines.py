@@ -17,7 +17,8 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
-from .contacts import AxisPoints, rows
+from ._arrays import rows
+from .contacts import AxisPoints
 from .errors import IncirCuError, Message
 
 #: Relative distance (of the extent) under which two consecutive centres are one point.

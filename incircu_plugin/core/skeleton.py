@@ -28,7 +28,7 @@ from typing import NamedTuple
 import numpy as np
 import shapely
 
-from .contacts import put_rows, ranges, rows, stable_order
+from ._arrays import put_rows, ranges, rows, stable_order
 from .errors import InvalidGeometryError, Message
 from .polyline import counterclockwise, typical_width
 
