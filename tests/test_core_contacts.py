@@ -141,13 +141,13 @@ def test_grouped_candidates_are_exactly_the_segments_whose_boxes_meet_each_box()
     centre = np.stack([centre, rng.uniform(0.0, 9.0, len(centre))], axis=1)
     reach = rng.uniform(2.0, 8.0, len(centre))[:, None]
     low, high = centre - reach, centre + reach
-    box, segment = boundary.candidates(low, high)
+    box, segment = boundary.candidates(low, high, None)
     # Each box's pairs consecutive: as many runs of equal boxes as boxes.
     assert np.count_nonzero(np.diff(box)) + 1 == len(np.unique(box))
     for index in range(len(centre)):
         meets = (boundary.low_x <= high[index, 0]) & (boundary.high_x >= low[index, 0])
         meets &= (boundary.low_y <= high[index, 1]) & (boundary.high_y >= low[index, 1])
-        alone = boundary.candidates(low[index : index + 1], high[index : index + 1])[1]
+        alone = boundary.candidates(low[index : index + 1], high[index : index + 1], None)[1]
         assert np.array_equal(np.sort(alone), np.flatnonzero(meets))
         assert np.array_equal(np.sort(segment[box == index]), np.flatnonzero(meets))
 
@@ -436,8 +436,8 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
     assert np.array_equal(site, 79 - np.floor(along).astype(int))
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high):
-        box, segment = listed(boundary, low, high)
+    def reversed_candidates(boundary, low, high, chain):
+        box, segment = listed(boundary, low, high, chain)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]
 
@@ -539,8 +539,8 @@ def test_a_disk_touching_its_own_chain_twice_at_once_reports_the_lower_site(monk
     # at t = 5: the sample is skipped and its own-chain site is the lower one, whatever the listing order.
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high):
-        box, segment = listed(boundary, low, high)
+    def reversed_candidates(boundary, low, high, chain):
+        box, segment = listed(boundary, low, high, chain)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]
 
