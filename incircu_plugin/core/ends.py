@@ -326,7 +326,7 @@ def _cancel_check(progress):
 
 
 @dataclass
-class _Frame:
+class _LocalPolygon:
     """A polygon moved to its local frame (origin at its box centre, unit bounding-box diagonal).
 
     Attributes
@@ -351,7 +351,7 @@ class _Frame:
 
 
 def _local_box(polygon, guide):
-    """Return the origin and scale of a polygon's local frame (see :class:`_Frame`) after validating it and its
+    """Return the origin and scale of a polygon's local frame (see :class:`_LocalPolygon`) after validating it and its
     guide; raise as :func:`find_ends`."""
     validate_polygon(polygon)
     _validate_guide(guide)
@@ -389,7 +389,7 @@ def _moved(geometries, origin, scale):
 
 
 def _frames(polygons, guides, boxes):
-    """Return the :class:`_Frame` of each polygon with a local box (None for the others); the polygons are moved
+    """Return the :class:`_LocalPolygon` of each polygon with a local box (None for the others); the polygons are moved
     all at once, the guides one by one.
 
     Parameters
@@ -414,7 +414,7 @@ def _frames(polygons, guides, boxes):
         origin, scale = boxes[index]
         guide = guides[index]
         local_guide = None if guide is None else _moved(guide, origin, scale)
-        frames[index] = _Frame(polygons[index], origin, scale, local[number], local_guide)
+        frames[index] = _LocalPolygon(polygons[index], origin, scale, local[number], local_guide)
     return frames
 
 
@@ -532,7 +532,7 @@ def _guide_weights(frame, skeleton, weights, own_nodes, own_edges):
 
     Parameters
     ----------
-    frame : _Frame
+    frame : _LocalPolygon
         The polygon and its guide, in its local frame.
     skeleton : Skeletons
         The batch's skeletons.
@@ -607,7 +607,7 @@ def _ends_of_trunks(frames, trunks):
 
     Parameters
     ----------
-    frames : list of _Frame or None
+    frames : list of _LocalPolygon or None
     trunks : list of tuple or None
         Per frame, ``(points, radii, junction, step, guided)`` in its local frame (see :func:`_joint_trunks`).
 

@@ -468,7 +468,7 @@ def _delaunay_all(samples, owner, local, steps, count):
             break
         moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
         turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
-        polygons, sizes = _runs(owner[mask])
+        polygons, sizes = _distinct_runs(owner[mask])
         found = _each_delaunay(_point_runs(turned, np.flatnonzero(mask), sizes))
         success = np.zeros(count, dtype=bool)
         success[polygons] = [item is not None for item in found]
@@ -483,7 +483,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     return moved_all, corner_ids, triangle_owner, waiting
 
 
-def _runs(values):
+def _distinct_runs(values):
     """Return the distinct values of a sorted array and the length of each one's run."""
     starts = np.flatnonzero(np.insert(values[1:] != values[:-1], 0, True)) if len(values) else np.zeros(0, int)
     return values[starts], np.diff(np.append(starts, len(values)))
