@@ -42,14 +42,11 @@ TIE_TOLERANCE = 1e-10
 #: bound that of the candidate pairs).
 CHUNK = 16_384
 
-#: Most samples in one round of :func:`solve` (a block: the samples still pending, then fresh ones): the arrays
-#: of a block's (sample, segment) pairs stay in the processor's cache, which makes a solve about a fifth faster
-#: than one pass over a whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy call (10^6
-#: vertices: the rounds about 4 % faster). A block also holds at most about ``SOLVE_PAIRS`` pairs, judged from
-#: the pairs per sample of the round before that took fresh samples: a boundary with many vertices per width has
-#: hundreds of pairs per sample, and 4096 such samples would take hundreds of MiB (the first block's from the
-#: boundary's mean segment length). Each sample is solved from its own candidate pairs, so the blocks change no
-#: result.
+#: Most samples in one round of :func:`solve` (a block: the samples still pending, then fresh ones), so that a
+#: block's (sample, segment) pairs stay in the processor's cache; and most (sample, segment) pairs of a block,
+#: judged from the pairs per sample of the round before that took fresh samples (a boundary with many vertices
+#: per width has hundreds of pairs per sample). Each sample is solved from its own candidate pairs, so the blocks
+#: change no result. The measurements behind both: docs/core-notes.md.
 SOLVE_BLOCK = 4096
 SOLVE_PAIRS = 1 << 16
 
@@ -61,23 +58,19 @@ COARSE_LEVELS = 2
 #: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
 SMALLEST_TRIAL = 1.0 / 16.0
 
-#: Most consecutive samples whose candidate boxes share one spatial-index query (the grouping changes no
-#: pair). 4 instead of 2, and no box grouped with one it does not meet, cut the time of the queries at 10^6
-#: vertices by about 30 %; 8 instead of 4 (with blocks of 4096 samples) cut the candidate search by another
-#: 10 % at the same peak memory (with an ``STRtree``; with :class:`BoxGrid`, 4 and 16 are about 5 % slower).
+#: Most consecutive samples whose candidate boxes share one spatial-index query: consecutive boxes overlap along
+#: a chain, so one query serves several (the grouping changes no pair; measured in docs/core-notes.md).
 QUERY_GROUP = 8
 
-#: Consecutive segments that share one entry of the spatial index: a run's hits are filtered segment by
-#: segment. With :class:`BoxGrid`, runs of 8 made the candidate search at 10^6 vertices about 10 % faster
-#: than runs of 4 or 16.
+#: Consecutive segments that share one entry of the spatial index (a smaller index; a run's hits are filtered
+#: segment by segment).
 INDEX_RUN = 8
 
-#: Most cells of a :class:`BoxGrid`, and most (box, cell) entries, per box indexed (16 and 4 are about as fast
-#: at 10^6 vertices; more cells keep them fine where a boundary is sparse in a large extent).
+#: Most cells of a :class:`BoxGrid`, and most (box, cell) entries, per box indexed (more cells keep them fine
+#: where a boundary is sparse in a large extent).
 GRID_CELLS = 16
 
-#: Side of a :class:`BoxGrid`'s cells, in mean extents of its boxes (2 made the candidate search at 10^6
-#: vertices about 5 % faster than 1 or 4, and the layer's no slower).
+#: Side of a :class:`BoxGrid`'s cells, in mean extents of its boxes.
 GRID_CELL_SIDE = 2.0
 
 #: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
@@ -737,8 +730,7 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     # Levels by the samples per feature (pair of chains; sorted by chain, each feature's samples are a run):
     # a joint tracing's chunk holds many small features, whose coarse levels would hold a few samples each,
     # cost rounds and interpolate across features. A feature of a few hundred samples is solved in one level:
-    # its trials from the typical width take fewer rounds than a coarse level costs (the layer of 400 rivers
-    # about 3 % faster than with one coarse level of stride COARSE_STRIDE, the rivers one by one about 4 %).
+    # its trials from the typical width take fewer rounds than a coarse level costs.
     feature = samples.chain[index] >> 1
     per_feature = count / (np.count_nonzero(feature[1:] != feature[:-1]) + 1) if count else 0
     stride = COARSE_STRIDE**COARSE_LEVELS if per_feature > COARSE_STRIDE ** (COARSE_LEVELS + 1) else 1

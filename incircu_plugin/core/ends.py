@@ -75,11 +75,7 @@ on where the ring starts or which way it turns.
 :func:`find_ends` on each (which runs the same code on a batch of one): the triangulations (one GEOS call per
 refinement round for all), the skeletons, the chain contraction, the double sweeps (see :mod:`.paths`) and
 the cap centring work on flat arrays of all polygons, each polygon numbered and summed on its own; only the
-results are Python per polygon. About 0.16 ms of CPU per 24-vertex rectangle in a batch of 1,000 (1.6 ms
-alone), 1.0 ms per 290-vertex river (2.7 ms alone), about 3.4 us per boundary vertex; GEOS takes about
-2.0 us of it (the Delaunay triangulation, reading and freeing its triangles about 1.6 us; simplifying the
-outline, moving it to its frame and the ring look-ups of the cap centring the rest). The triangles outside a
-river (about half of them) are dropped as soon as they are read.
+results are Python per polygon (costs: docs/core-notes.md).
 """
 
 from dataclasses import dataclass
