@@ -144,6 +144,7 @@ def test_default_spacing_keeps_the_mean_deviation_below_a_thousandth_of_the_widt
     assert mean_deviation <= 1e-3 * case.width, f"mean deviation {mean_deviation:.3g}, width {case.width:.3g}"
 
 
+@pytest.mark.slow
 def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
     # The paper's Fig. 4: average distance to the medial axis against the number of points per chain.
     case = WAVY[0]
@@ -160,6 +161,7 @@ def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
     assert means[-1] <= 1e-3 * case.width, report
 
 
+@pytest.mark.slow
 def test_the_fan_at_a_reflex_corner_traces_the_parabolic_arcs():
     # An L-shaped channel of width 10: around the inner corner (50, 10), a reflex vertex with a 90 degree
     # turn, the medial axis is two parabolic arcs (focus (50, 10), directrices y = 0 and x = 60) meeting at

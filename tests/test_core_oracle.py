@@ -66,7 +66,9 @@ def test_oracle_target_is_the_analytic_axis(case):
     assert oracle.distance(axis).max() <= tolerance
 
 
-@pytest.mark.parametrize("case", ANALYTIC, ids=[c.name for c in ANALYTIC])
+@pytest.mark.parametrize(
+    "case", [pytest.param(c, id=c.name, marks=[pytest.mark.slow] if c.vertex_count > 300 else []) for c in ANALYTIC]
+)
 def test_oracle_target_points_are_equidistant_from_both_chains(case):
     oracle = MedialOracle(case.chain_a, case.chain_b)
     points = oracle.segments.reshape(-1, 2)

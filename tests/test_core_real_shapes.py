@@ -138,7 +138,7 @@ RINGS = {
 }
 
 
-@pytest.mark.parametrize("spacing", [None, 0.3], ids=["adaptive", "fixed"])
+@pytest.mark.parametrize("spacing", [None, pytest.param(0.3, marks=pytest.mark.slow)], ids=["adaptive", "fixed"])
 @pytest.mark.parametrize("name", sorted(RINGS))
 def test_a_ring_gets_its_closed_loop(name, spacing):
     """A polygon around one hole gets the closed medial loop between its exterior ring and the hole: one closed
