@@ -82,12 +82,9 @@ class MeasuredStretch:
 
     Attributes
     ----------
-    vertices : ndarray of shape (n, 2)
-        Centerline vertices, CRS units.
-    radii, chainages : ndarray of shape (n,)
-        Incircle radius and chainage of each vertex, CRS units.
-    foot_a, foot_b : ndarray of shape (n, 2)
-        Where each incircle touches the two sides, CRS units.
+    vertices, radii, chainages, foot_a, foot_b : ndarray
+        Copies of the arguments of :func:`measured_stretch` (vertices, incircle radii, chainages and the feet on
+        the two sides, CRS units), the stretch's first and last vertices moved as it says.
     low, high : float
         Chainages bounding the measured stretch (both included), CRS units; ``low > high`` when it is empty.
     """
