@@ -172,4 +172,6 @@ class LabelLinesAlgorithm(PolygonCenterlineAlgorithm):
             "smoothing": self.parameterAsDouble(parameters, self.SMOOTHING, context),
             "min_elongation": self.parameterAsDouble(parameters, self.MIN_ELONGATION, context),
         }
-        return self.run_polygons(run, source, parameters, context, partial(run.core.label_line_steps, **options))
+        return self.run_polygons(
+            run, source, parameters, context, partial(run.core.labels._label_line_steps, **options)
+        )

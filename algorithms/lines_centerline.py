@@ -188,7 +188,7 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
             return run.skip_task(first, self.not_joined(self.LINES_B))
         run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
-        steps = run.core.lines_centerline_steps(
+        steps = run.core.api._lines_centerline_steps(
             run.frame.to_core(line_a),
             run.frame.to_core(line_b),
             progress=run.keep_going,

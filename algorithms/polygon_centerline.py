@@ -162,7 +162,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
         multi = not separate and QgsWkbTypes.isMultiType(source.wkbType())
         run.open_outputs(source.fields(), source.sourceCrs(), multi=multi)
-        return self.run_polygons(run, source, parameters, context, run.core.multipolygon_centerline_steps)
+        return self.run_polygons(run, source, parameters, context, run.core.api._multipolygon_centerline_steps)
 
     def run_polygons(self, run, source, parameters, context, steps_function):
         """Compute every polygon of ``source`` in batches and write it through ``run``'s writer (open already).

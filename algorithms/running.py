@@ -301,7 +301,7 @@ class FeatureRun:
         total : int
             Number of tasks, for the progress.
         """
-        from ..incircu_plugin.core.api import batches  # needs Shapely, checked by require_core
+        from ..incircu_plugin.core._many import batches  # needs Shapely, checked by require_core
 
         self.progress_step = 100.0 / total if total > 0 else 0.0
         done = 0
@@ -321,7 +321,7 @@ class FeatureRun:
         span = len(batch) * self.progress_step
         try:
             computed = iter(
-                self.core.centerlines_together(
+                self.core._many.run_many_steps(
                     [task.steps for task in batch if task.steps is not None],
                     lambda fraction: self._batch_progress(fraction, span),
                 )

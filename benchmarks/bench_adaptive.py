@@ -10,7 +10,7 @@ ratio holds even on a loaded machine; absolute times do not. Rows, all at each e
 
 - the 100 x 10 rectangle with 24 boundary vertices: ``polygon_centerline`` per call (median of
   ``--repeats``), the per-call overhead small features pay; and per feature when 1,000 of them are traced
-  together (``centerlines_together``, as the plugin runs a layer; trees without it report an error);
+  together (``polygon_centerline`` of an array, as the plugin runs a layer);
 - the constant-width meander (2 km, width 20, 2,333 boundary vertices), from the chains, median;
 - synthetic rivers (``tests/support/geometry_cases.synthetic_river``, a vertex every quarter width) with
   10^4 .. 10^N boundary vertices, from the chains, end to end: time and peak resident memory of the child
@@ -49,11 +49,8 @@ def _child(root, row, size, repeats):
         case = geometry_cases.rectangle(n=11)
         run = lambda: polygon_centerline(case.polygon, case.split_points)
     elif row == "rectangles together":
-        from incircu_plugin.core import centerlines_together, polygon_centerline_steps
-
         case = geometry_cases.rectangle(n=11)
-        steps = lambda: [polygon_centerline_steps(case.polygon, case.split_points) for _ in range(TOGETHER)]
-        run = lambda: centerlines_together(steps())[0]
+        run = lambda: polygon_centerline([case.polygon] * TOGETHER, [case.split_points] * TOGETHER)[0]
     elif row == "meander":
         case = geometry_cases.meander_with_vertex_count(2333)
         run = lambda: centerline_from_chains(case.chain_a, case.chain_b)

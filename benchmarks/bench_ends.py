@@ -12,7 +12,7 @@ core on a shared machine), and CPU microseconds per input vertex and per sample.
 Target (issue 14): thin boxes well under a second; <= 3 us per boundary vertex on large real-like outlines.
 
 A second table compares many small features one by one (``find_ends`` per polygon) with the same features
-together (``find_ends_together``, what a batch of ``centerlines_together`` uses): 1,000 rectangles
+together (``find_ends_together``, what a batch of an array of polygons uses): 1,000 rectangles
 ``100 x (10 + i / 100)`` segmentized every 10 (24 vertices each) and the 400 rivers of
 ``rivers.river_layer(count=400)`` (about 290 vertices each, some with islands). Columns: CPU microseconds per
 boundary vertex and per polygon, median of ``--repeats`` runs. Target (issue 9): <= 3 us per boundary vertex

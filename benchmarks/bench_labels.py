@@ -233,10 +233,10 @@ def incircu_labels(polygons):
 
 
 def main_stems(polygons):
-    from incircu_plugin.core import centerlines_together, polygon_centerline_steps
+    from incircu_plugin.core import polygon_centerline
 
     started = time.perf_counter()
-    results = centerlines_together([polygon_centerline_steps(p) for p in polygons])
+    results = polygon_centerline(list(polygons))
     seconds = (time.perf_counter() - started) / len(polygons)
     return [None if isinstance(r, Exception) else r for r in results], seconds
 

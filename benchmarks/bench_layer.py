@@ -6,8 +6,8 @@ places). Tools:
 
 - in a clean child process, polygon after polygon (:func:`harness.run_layer`, killed past the time limit):
   IncirCu's core with split points, without them (automatic ends) and, when the core has the ``tolerance``
-  keyword, at a fine tolerance; and, when the core has ``centerlines_together``, the whole layer traced
-  together in one call (as the plugin runs a layer; each polygon is given an equal share of the time);
+  keyword, at a fine tolerance; and the whole layer as one array (``polygon_centerline`` of the array, traced
+  together in batches) (as the plugin runs a layer; each polygon is given an equal share of the time);
   pygeoops, label_centerlines, centerline, SFCGAL (as ``bench_compare.py`` runs them). Time = sum of the
   tool calls.
 - one ``qgis_process run`` on the whole layer in a GeoPackage, as a QGIS user would: IncirCu
@@ -47,7 +47,6 @@ from peers import (
     QgisProcess,
     Tool,
     core_accepts,
-    core_provides,
     mean_width,
     peer_tools,
     run_incircu,
@@ -70,9 +69,8 @@ def core_tools():
         Tool("IncirCu (core)", run_incircu, True, "polygon_centerline(polygon, ends), defaults"),
         Tool("IncirCu (core, automatic ends)", run_incircu_automatic_ends, True, "polygon_centerline(polygon)"),
     ]
-    if core_provides("centerlines_together"):
-        note = "centerlines_together(polygon_centerline_steps(polygon, ends)), the layer in batches"
-        tools.insert(1, Tool("IncirCu (core, layer together)", run_incircu, True, note, run_all=run_incircu_together))
+    note = "polygon_centerline(array of polygons, ends of each), the layer in batches"
+    tools.insert(1, Tool("IncirCu (core, layer together)", run_incircu, True, note, run_all=run_incircu_together))
     if core_accepts("tolerance"):
         note = f"polygon_centerline(polygon, ends, tolerance={FINE_TOLERANCE:g} × width)"
         tools.append(Tool(f"IncirCu (core, tolerance {FINE_TOLERANCE:g} w)", run_incircu_fine, True, note))

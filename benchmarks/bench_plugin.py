@@ -12,7 +12,7 @@ Layers, both in EPSG:32633 with two split points per polygon:
 
 Columns:
 
-- **core**: ``centerlines_together`` over ``polygon_centerline_steps`` of every feature in this process, how the
+- **core**: ``polygon_centerline`` of the array of every feature in this process, how the
   plugin computes a batch; best of ``--repeats``, per feature;
 - **plugin**: ``incircu:polygoncenterline`` through ``qgis_process`` (this checkout) from GeoJSON to a
   GeoPackage, net of QGIS's start-up and of reading and writing a small layer: (time on the layer - time on
@@ -40,7 +40,7 @@ import shapely
 from peers import QgisProcess
 from rivers import river_layer
 
-from incircu_plugin.core import centerlines_together, polygon_centerline_steps
+from incircu_plugin.core import polygon_centerline
 from tests.support import geometry_cases
 
 #: Features of the small layer whose qgis_process time is taken as start-up and fixed costs.
@@ -73,7 +73,7 @@ def core_seconds(layer, repeats):
     best = float("inf")
     for _ in range(repeats):
         started = time.perf_counter()
-        outcomes = centerlines_together([polygon_centerline_steps(polygon, ends) for polygon, ends in layer])
+        outcomes = polygon_centerline([polygon for polygon, _ in layer], [ends for _, ends in layer])
         best = min(best, time.perf_counter() - started)
     failed = [outcome for outcome in outcomes if isinstance(outcome, Exception)]
     if failed:

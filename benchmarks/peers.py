@@ -85,13 +85,6 @@ def core_accepts(keyword):
     return keyword in inspect.signature(polygon_centerline).parameters
 
 
-def core_provides(name):
-    """Whether the checked-out core exports ``name`` (``centerlines_together`` after issue 9's batching)."""
-    import incircu_plugin.core
-
-    return hasattr(incircu_plugin.core, name)
-
-
 def incircu_options(case, tolerance=None):
     """Keyword arguments of the core for ``case``: its spacing, and ``tolerance`` (CRS units) when the core has
     that keyword (before issue 9's engine it has not, and the call runs at the default)."""
@@ -129,21 +122,18 @@ def run_incircu_automatic_ends(case):
 
 
 def run_incircu_together(cases):
-    """IncirCu through the geometry core, the whole layer traced together (``centerlines_together`` on
-    ``batches`` of ``polygon_centerline_steps``, as the plugin runs a layer): one line or exception per case."""
-    from incircu_plugin.core import centerlines_together, polygon_centerline_steps
-    from incircu_plugin.core.api import batches
+    """IncirCu through the geometry core, the whole layer in one call (``polygon_centerline`` of the array of
+    polygons, computed in batches traced together, as the plugin runs a layer): one line or exception per case."""
+    from incircu_plugin.core import polygon_centerline
 
-    results = []
-    for batch in batches(cases, lambda case: case.vertex_count):
-        steps = [
-            polygon_centerline_steps(case.polygon, [case.ends[0], case.ends[1]], **incircu_options(case))
-            for case in batch
-        ]
-        results.extend(
-            outcome if isinstance(outcome, Exception) else outcome.line for outcome in centerlines_together(steps)
-        )
-    return results
+    options = [incircu_options(case) for case in cases]
+    columns = {
+        name: [option.get(name) for option in options] for name in {name for option in options for name in option}
+    }
+    outcomes = polygon_centerline(
+        [case.polygon for case in cases], [[case.ends[0], case.ends[1]] for case in cases], **columns
+    )
+    return [outcome if isinstance(outcome, Exception) else outcome.line for outcome in outcomes]
 
 
 def run_pygeoops(case):

@@ -475,7 +475,7 @@ outline as a layer of one polygon. IncirCu `{layer_results["incircu_version"]}`;
 
 - **polygons/s**: polygons attempted / time. Core and peers: the sum of the tool calls, polygon after polygon in
   one clean child process (forked from a fork server that only imported the tools; stopped past its time limit); `IncirCu (core, layer together)`: one call on the whole
-  layer (`centerlines_together` on `batches`, how the plugin runs a layer). `qgis_process` rows: the wall
+  layer (`polygon_centerline` of the array, in batches, as the plugin runs a layer). `qgis_process` rows: the wall
   time of one `qgis_process run` on the whole GeoPackage layer, QGIS start-up ({_seconds(startup)} alone)
   and output writing included. **IncirCu × faster** compares each tool used its fastest way on the layer:
   core rows and peers with `IncirCu (core, layer together)` (else `IncirCu (core)`), `qgis_process` rows

@@ -5,6 +5,8 @@ checked against the exact medial axis (``--oracle``), within the tolerance of it
 Tolerances are relative to the input's extent (the inputs span many orders of magnitude).
 """
 
+import dataclasses
+
 import numpy as np
 import shapely
 from shapely.geometry import Polygon
@@ -154,23 +156,24 @@ def together_problems(case, together, alone):
 
 def outcome_key(outcome):
     """What must be identical in a feature's outcome wherever it is computed (alone, in any batch, in any order):
-    an exception's type and message; a result's line (WKB), radii and feet (float64 bytes), notes and ends; a
-    list of part outcomes part by part."""
+    an exception's type and message; every field of a result (geometries as WKB, arrays as float64 bytes,
+    anything else as its repr), in the order of :func:`_first_difference`; a list of part outcomes part by part."""
     if isinstance(outcome, Exception):
         return ("error", type(outcome).__name__, str(outcome))
     if isinstance(outcome, list):
         return tuple((part.part_index, outcome_key(part.error or part.result)) for part in outcome)
-    arrays = tuple(
-        np.ascontiguousarray(getattr(outcome, name), dtype=float).tobytes() for name in ("radii", "foot_a", "foot_b")
-    )
-    ends = tuple(getattr(outcome, name, None) for name in ("ends_found", "notes", "ends_from"))
-    return ("result", type(outcome).__name__, outcome.line.wkb, arrays, repr(ends))
+    values = {field.name: getattr(outcome, field.name) for field in dataclasses.fields(outcome)}
+    geometries = tuple(value.wkb for value in values.values() if isinstance(value, shapely.Geometry))
+    arrays = tuple(value.tobytes() for value in values.values() if isinstance(value, np.ndarray))
+    others = repr(tuple(value for value in values.values() if not isinstance(value, (shapely.Geometry, np.ndarray))))
+    return ("result", type(outcome).__name__, geometries, arrays, others)
 
 
 def _first_difference(one, other):
     """Where two :func:`outcome_key` values first differ, in words."""
     if one[0] != other[0] or len(one) != len(other):
         return "different kinds of outcome"
+    # The result's geometries (its line), its arrays (radii and feet), its other fields (notes and ends).
     names = ("kind", "type", "line", "radii and feet", "notes and ends")
     for name, first, second in zip(names, one, other):
         if first != second:

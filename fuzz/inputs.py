@@ -497,16 +497,17 @@ def call(case):
     return getattr(core, case.function)(*case.args, **case.kwargs)
 
 
-#: The step-generator form of each function that has one (what a layer runs, traced together in batches).
+#: The step-generator form (private, :mod:`incircu_plugin.core._steps`) of each public function that computes
+#: arrays of geometries in batches traced together: what an array, or a layer, runs.
 STEPS = {
-    "polygon_centerline": "polygon_centerline_steps",
-    "multipolygon_centerlines": "multipolygon_centerline_steps",
-    "lines_centerline": "lines_centerline_steps",
+    "polygon_centerline": "_polygon_centerline_steps",
+    "multipolygon_centerlines": "_multipolygon_centerline_steps",
+    "lines_centerline": "_lines_centerline_steps",
 }
 
 
 def steps(case):
-    """The case's call as a step generator for :func:`incircu_plugin.core.centerlines_together` (arguments are
+    """The case's call as a step generator for :func:`incircu_plugin.core._many.run_many_steps` (arguments are
     bound here, so a misused keyword raises here as the plain call does), or None when its function has none."""
     name = STEPS.get(case.function)
-    return None if name is None else getattr(core, name)(*case.args, **case.kwargs)
+    return None if name is None else getattr(core.api, name)(*case.args, **case.kwargs)

@@ -5,7 +5,7 @@ Outcomes: ``ok`` (a result that passes :mod:`fuzz.checks`), ``typed`` (an ``Inci
 worker is killed and replaced), ``invalid`` (a result that fails the checks) and ``crash`` (the worker died).
 
 With ``--together K`` the inputs are also run as a layer is: each run of ``K`` consecutive inputs traced together
-in one batch (``centerlines_together`` on their step generators). An input whose outcome alone is ``ok``, ``typed``
+in one batch (``run_many_steps`` on their step generators, what an array of geometries runs). An input whose outcome alone is ``ok``, ``typed``
 or ``type error`` but differs in the batch (:func:`fuzz.checks.together_problems`) is ``batch differs``.
 """
 
@@ -70,7 +70,7 @@ def run_batch(seed, first, size, small, oracle=False):
     Returns ``[(index, (category, outcome, detail, seconds)), ...]``: each input's outcome alone, or ``batch
     differs`` where it was ``ok``, ``typed`` or ``type error`` alone and the batch gives something else.
     """
-    from incircu_plugin.core import centerlines_together
+    from incircu_plugin.core._many import run_many_steps
 
     from .checks import together_problems
     from .inputs import make_case, steps
@@ -90,7 +90,7 @@ def run_batch(seed, first, size, small, oracle=False):
             generators.append(generator)
             members.append((position, None))
     started = time.perf_counter()
-    together = iter(_quietly(centerlines_together, generators))
+    together = iter(_quietly(run_many_steps, generators))
     seconds = time.perf_counter() - started
     for position, bound_error in members:
         category, kind, _, _ = outcomes[position]

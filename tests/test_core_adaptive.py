@@ -28,15 +28,23 @@ from shapely.geometry import LineString, Polygon, box
 from incircu_plugin.core import (
     IncirCuError,
     centerline_from_chains,
-    centerlines_together,
     default_tolerance,
     lines,
     lines_centerline,
     polygon_centerline,
-    polygon_centerline_steps,
     split_polygon,
 )
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core._steps import TraceRequest
+from incircu_plugin.core.api import _polygon_centerline_steps
+from incircu_plugin.core.contacts import Boundary
 from incircu_plugin.core.errors import OptionError
+from incircu_plugin.core.tracing import SETTLED_CHORD, TraceOptions, Tracer, TraceStats, observed
+from incircu_plugin.core.tracing.initial import initial_samples, intervals_between
+from incircu_plugin.core.tracing.intervals import Intervals, split_at_nodes
+from incircu_plugin.core.tracing.settling import sag_bound
+from incircu_plugin.core.tracing.sites import radius_at
+from incircu_plugin.core.tracing.spans import FAN
 from tests.support import geometry_cases
 from tests.support.oracle import MedialOracle, assert_within_tolerance, check_centerline
 
@@ -335,38 +343,30 @@ def toothed_channel(length, width, bottom_step, tooth, depth, spike=None):
 
 
 @pytest.fixture
-def predicted_events(monkeypatch):
-    """Counts the events predicted between consecutive sites of a walk (the cases below must exercise them)."""
-    from incircu_plugin.core import adaptive
-
-    counted = {"events": 0}
-    original = adaptive._Tracer._pair_events
-
-    def counting(self, intervals, terms0, terms1):
-        counted["events"] += len(intervals.span)
-        return original(self, intervals, terms0, terms1)
-
-    monkeypatch.setattr(adaptive._Tracer, "_pair_events", counting)
-    return counted
+def trace_stats():
+    """What the tracings of a test did (:class:`TraceStats`), every rule on (the cases below must exercise the
+    rule they test)."""
+    with observed() as stats:
+        yield stats
 
 
-def test_a_walk_over_reflex_teeth_of_the_other_bank_stays_on_the_axis(predicted_events):
+def test_a_walk_over_reflex_teeth_of_the_other_bank_stays_on_the_axis(trace_stats):
     # Each long bottom edge faces several teeth: its contact walks segment, reflex tip, segment, ... (the
     # convex valleys are no sites), and the events between them are predicted in one round.
     polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4)
     assert_adaptive_properties(polygon, split_points)
-    assert predicted_events["events"] > 0
+    assert trace_stats.predicted_events > 0
 
 
-def test_a_walk_interrupted_by_a_spike_of_the_own_bank_stays_on_the_axis(predicted_events):
+def test_a_walk_interrupted_by_a_spike_of_the_own_bank_stays_on_the_axis(trace_stats):
     # A thin spike of the bottom bank reaches to 2 of the top teeth: between two top sites the disks of the
     # bottom edges beside it touch its tip first, so predicted events between top sites there are wrong.
     polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4, spike=(21.0, 7.6))
     assert_adaptive_properties(polygon, split_points)
-    assert predicted_events["events"] > 0
+    assert trace_stats.predicted_events > 0
 
 
-def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(predicted_events):
+def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(trace_stats):
     # A bay of the top bank behind a narrow mouth: its sites lie between the mouth's in the top bank's order,
     # but no disk of the bottom bank reaches them (the contact jumps across the mouth).
     polygon, split_points = toothed_channel(40.0, 10.0, 4.0, 1.0, 0.4)
@@ -378,29 +378,12 @@ def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(predicted_
     polygon = Polygon(ring[:mouth] + bay + ring[mouth + 1 :])
     assert polygon.is_valid
     assert_adaptive_properties(polygon, split_points)
-    assert predicted_events["events"] > 0
-
-
-@pytest.fixture
-def approach_sites(monkeypatch):
-    """Counts the sites of the walks predicted into intervals whose two sites lie on different chains."""
-    from incircu_plugin.core import adaptive
-
-    counted = {"sites": 0}
-    original = adaptive._Tracer._approaches
-
-    def counting(self, intervals, found):
-        owner, site = original(self, intervals, found)
-        counted["sites"] += len(site)
-        return owner, site
-
-    monkeypatch.setattr(adaptive._Tracer, "_approaches", counting)
-    return counted
+    assert trace_stats.predicted_events > 0
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("widths", [None, 1.0 / 2000.0], ids=["default", "tight"])
-def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays_on_the_axis(approach_sites, widths):
+def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays_on_the_axis(trace_stats, widths):
     # Near the meander's split points an interval's disks first touch the other chain at one end and the own
     # chain's bank at the other; its two sites' radii do not cross inside it: the own contact walks on along
     # the bank first (predicted and probed in one round).
@@ -410,38 +393,19 @@ def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
     tolerance = default_tolerance(case.chain_a, case.chain_b) if tolerance is None else tolerance
     assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
-    assert approach_sites["sites"] > 0
+    assert trace_stats.approach_sites > 0
 
 
-@pytest.fixture
-def probe_rounds(monkeypatch):
-    """Counts the tracer's rounds of probes (its calls of the contact solver on them)."""
-    from incircu_plugin.core import adaptive
-
-    rounds = {"count": 0}
-    solve_probes = adaptive._Tracer._solve_probes
-
-    def counting(self, *arguments):
-        rounds["count"] += 1
-        return solve_probes(self, *arguments)
-
-    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", counting)
-    return rounds
-
-
-def test_predicted_walks_save_the_meanders_rounds(monkeypatch, probe_rounds):
+def test_predicted_walks_save_the_meanders_rounds():
     # On the meander, intervals at the chain starts see the own contact walk across several own sites before
     # the other bank takes over: predicted, the walk is probed in one round; halved, one site per round.
-    from incircu_plugin.core import adaptive
-
     case = geometry_cases.meander_with_vertex_count(2333)
-    rounds = probe_rounds
-    predicted = polygon_centerline(case.polygon, case.split_points)
-    with_walks = rounds["count"]
-    rounds["count"] = 0
-    monkeypatch.setattr(adaptive._Tracer, "_approaches", lambda self, intervals, found: (np.empty(0, int),) * 2)
-    halved = polygon_centerline(case.polygon, case.split_points)
-    assert with_walks < rounds["count"]
+    with observed() as walking:
+        predicted = polygon_centerline(case.polygon, case.split_points)
+    with observed(TraceStats(predict_approaches=False)) as halving:
+        halved = polygon_centerline(case.polygon, case.split_points)
+    assert walking.approach_sites > 0 and halving.approach_sites == 0
+    assert walking.rounds < halving.rounds
     tolerance = default_tolerance(case.chain_a, case.chain_b)
     assert predicted.line.hausdorff_distance(halved.line) <= 2.0 * tolerance
     check_centerline(predicted, case.chain_a, case.chain_b, case.polygon, case.split_points)
@@ -462,94 +426,89 @@ NOTCHED_CHANNEL = Polygon([(0.0, 0.0), (2.0, 0.0), (4.0, -2.0), (100.0, -2.0), (
     ],
     ids=["bent low", "bent high", "notched fan", "notched fan, other end"],
 )
-def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(
-    monkeypatch, probe_rounds, polygon, split_points
-):
+def test_the_contact_crossing_a_straight_split_point_is_found_in_closed_form(polygon, split_points):
     # Split off the middle of its straight caps, a channel's disks near a cap touch the cap on the own chain's
     # side of the split point, then on the other's: one line, so the two sites' radii never cross. The contact
     # passes where the disk is tangent at the split point, in closed form (on an edge, and on a reflex corner's
     # fan); halving the interval instead takes a round per halving, down to the chord that settles it.
-    from incircu_plugin.core import adaptive
-
-    rounds = probe_rounds
-    closed_form = assert_adaptive_properties(polygon, split_points)
-    in_closed_form = rounds["count"]
-    rounds["count"] = 0
-    monkeypatch.setattr(adaptive._Tracer, "_across_split_points", lambda self, *arguments: None)
-    halved = polygon_centerline(polygon, split_points)
+    with observed() as in_closed_form:
+        closed_form = assert_adaptive_properties(polygon, split_points)
+    with observed(TraceStats(cross_split_points=False)) as halving:
+        halved = polygon_centerline(polygon, split_points)
     chain_a, chain_b = split_polygon(polygon, split_points)
     tolerance = default_tolerance(chain_a, chain_b)
     # The halvings of an interval half the width (10) long down to the chord that settles it.
-    halvings = math.log2(5.0 / (adaptive.SETTLED_CHORD * tolerance))
-    assert in_closed_form < halvings / 2.0 < rounds["count"]
+    halvings = math.log2(5.0 / (SETTLED_CHORD * tolerance))
+    assert in_closed_form.rounds < halvings / 2.0 < halving.rounds
     assert closed_form.line.hausdorff_distance(halved.line) <= 2.0 * tolerance
 
 
-def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(monkeypatch):
+def test_convex_corners_whose_junction_lies_beyond_an_edge_stay_on_the_axis(trace_stats):
     # A bottom bank bulging out of the region (convex corners), its edges alternately long and very short: a
     # corner's bisector disk touches the short edge beyond its end (left to the rounds), a long one inside it.
-    from incircu_plugin.core import adaptive
-
-    corners = {"count": 0}
-    original = adaptive._Tracer._corner_samples
-
-    def counting(self, edge):
-        corners["count"] += len(edge)
-        return original(self, edge)
-
-    monkeypatch.setattr(adaptive._Tracer, "_corner_samples", counting)
     steps = np.cumsum(np.tile([3.0, 0.05], 10))
     xs = np.concatenate([[0.0], 40.0 * steps / steps[-1]])
     bottom = [(x, -3.0 * np.sin(np.pi * x / 40.0)) for x in xs]
     polygon = Polygon(bottom + [(40.0, 10.0), (0.0, 10.0)])
     assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
-    assert corners["count"] > 0
+    assert trace_stats.corner_samples > 0
 
 
-def test_the_ends_middles_and_corners_of_the_edges_are_solved_in_one_pass_along_the_chains(monkeypatch):
+def test_the_ends_middles_and_corners_of_the_edges_are_solved_in_one_pass_along_the_chains():
     # The bulging bank of convex corners: every edge between two corners also has its middle solved first, and
     # every corner its bisector's sample; both go into the one coarse-to-fine solution of the edges' ends, in
     # the order of their points, and nothing else is solved before the rounds.
-    from incircu_plugin.core import adaptive
-
-    calls, solved_alone = [], []
-    original = adaptive.solve_in_chunks
-
-    def recording(samples, index, *arguments):
-        calls.append((samples.chain[index], samples.position[index], len(samples.chain) - 1 in index))
-        calls[-1] += (np.count_nonzero(samples.slide[index] > 0.0),)
-        return original(samples, index, *arguments)
-
-    monkeypatch.setattr(adaptive, "solve_in_chunks", recording)
-    original_solve = adaptive.solve
-
-    def solving(samples, *arguments):
-        solved_alone.append(np.count_nonzero(samples.slide > 0.0))
-        return original_solve(samples, *arguments)
-
-    monkeypatch.setattr(adaptive, "solve", solving)
     xs = np.linspace(0.0, 40.0, 21)
     polygon = Polygon([(x, -3.0 * np.sin(np.pi * x / 40.0)) for x in xs] + [(40.0, 10.0), (0.0, 10.0)])
-    assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
-    chain, position, with_last_sample, corners = calls[0]
-    # Every one of the 19 corners, and none solved alone (the rounds' probes never are corners).
-    assert len(calls) == 1 and with_last_sample and corners == 19 and not any(solved_alone)
+    with observed(TraceStats(record_solutions=True)) as stats:
+        assert_adaptive_properties(polygon, [(0.0, 5.0), (40.0, 5.0)])
+    initial = [solution for solution in stats.solutions if solution.stage == "initial"]
+    probes = [solution for solution in stats.solutions if solution.stage == "probes"]
+    # One tracing; every one of the 19 corners in its one initial solution, none among the rounds' probes.
+    assert stats.tracings == 1 and len(initial) == 1 and initial[0].corners == 19
+    assert len(probes) == stats.rounds and not any(solution.corners for solution in probes)
+    chain, position = initial[0].chain, initial[0].position
     assert np.all((chain[1:] > chain[:-1]) | ((chain[1:] == chain[:-1]) & (position[1:] >= position[:-1])))
 
 
-def test_the_initial_intervals_run_between_the_initial_samples_along_every_span():
-    from incircu_plugin.core.adaptive import FAN, _initial_samples, _Tracer
-    from incircu_plugin.core.contacts import Boundary
+def test_trace_options_hold_each_requests_values_for_both_its_chains_and_stats_only_count_inside_the_block():
+    chains = [np.array([(0.0, 0.0), (10.0, 0.0)]), np.array([(10.0, 2.0), (0.0, 2.0)])]
+    values = [(True, 0.01, 2.0, 50.0, 0.0, (1.0, -1.0)), (False, 0.5, 3.0, 60.0, 1e-9, (-1.0, 1.0))]
+    requests = [
+        TraceRequest(chains, sides, closed, tolerance, width, max_t, min_t, None)
+        for closed, tolerance, width, max_t, min_t, sides in values
+    ]
+    options = TraceOptions.from_requests(requests)
+    assert options.sides.tolist() == [1.0, -1.0, -1.0, 1.0]
+    assert options.closed.tolist() == [True, True, False, False]
+    assert options.tolerance.tolist() == [0.01, 0.01, 0.5, 0.5]
+    assert options.min_t.tolist() == [0.0, 0.0, 1e-9, 1e-9]
+    alone = TraceOptions.from_request(requests[1])
+    assert alone.width.tolist() == [3.0, 3.0] and alone.max_t.tolist() == [60.0, 60.0]
+    polygon = box(0.0, 0.0, 10.0, 2.0)
+    with observed() as stats:
+        polygon_centerline(polygon, [(0.0, 1.0), (10.0, 1.0)])
+        inside = (stats.tracings, stats.rounds)
+    polygon_centerline(polygon, [(0.0, 1.0), (10.0, 1.0)])
+    assert inside[0] == 1 and (stats.tracings, stats.rounds) == inside
 
+
+def make_tracer(bank_a, bank_b, sides, closed):
+    """A :class:`Tracer` of two banks (tolerance 0.01, width 6, largest disk 50, smallest contact 0)."""
+    options = TraceOptions(np.asarray(sides, dtype=float), *(np.full(2, value) for value in (closed, 0.01, 6, 50, 0)))
+    return Tracer(Boundary([bank_a, bank_b]), options)
+
+
+def test_the_initial_intervals_run_between_the_initial_samples_along_every_span():
     # A zigzag bank (reflex vertices: fans; convex ones: edges between two corners have a middle sample).
     bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (7.0, 0.5), (9.0, 0.0)])
     bank_b = np.array([(9.0, 6.0), (0.0, 6.5)])
-    tracer = _Tracer([1, -1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (True, 0.01, 6, 50, 0)))
+    tracer = make_tracer(bank_a, bank_b, [1, -1], True)
     spans = tracer.spans
-    edge, given_site, _, _ = _initial_samples(spans, tracer.sites, tracer.closed, tracer.traced, tracer.boundary)
+    edge, given_site, _, _ = initial_samples(spans, tracer.sites, tracer.options.closed, tracer.traced, tracer.boundary)
     between_corners = (given_site[0::2] >= 0) & (given_site[1::2] >= 0)
     assert between_corners.any() and np.any(spans.kind == FAN)
-    intervals = tracer._initial_intervals(edge, between_corners)
+    intervals = intervals_between(spans, edge, between_corners)
     # The samples: both ends of every edge, then the middles.
     middle = np.flatnonzero(between_corners)
     sample_span = np.concatenate([np.repeat(np.arange(len(edge)), 2), middle])
@@ -574,10 +533,8 @@ def test_the_initial_intervals_run_between_the_initial_samples_along_every_span(
 
 
 def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
-    from incircu_plugin.core.adaptive import _Intervals, _split_at_nodes
-
     # Three intervals; the third gets two nodes given out of order, the second none.
-    intervals = _Intervals(
+    intervals = Intervals(
         span=[0, 1, 2],
         u0=np.zeros(3),
         u1=np.array([1.0, 2.0, 3.0]),
@@ -588,7 +545,7 @@ def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
         verified=np.zeros(3, dtype=bool),
     )
     owner, u, index = np.array([2, 0, 2]), np.array([2.0, 0.5, 1.0]), np.array([6, 7, 8])
-    pieces = _split_at_nodes(intervals, owner, u, index, np.array([30, 31, 32]), np.array([40, 41, 42]), True)
+    pieces = split_at_nodes(intervals, owner, u, index, np.array([30, 31, 32]), np.array([40, 41, 42]), True)
     assert pieces.span.tolist() == [0, 0, 1, 2, 2, 2]
     assert pieces.u0.tolist() == [0.0, 0.5, 0.0, 0.0, 1.0, 2.0]
     assert pieces.u1.tolist() == [0.5, 1.0, 2.0, 1.0, 2.0, 3.0]
@@ -604,23 +561,20 @@ def test_intervals_are_cut_at_their_nodes_in_order_of_parameter():
 def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     """Disks of the closed-form radii touch their site, with the upper bank running either way: running like
     the lower one (as chains do), the samples lie on the negative side of its segments' lines."""
-    from incircu_plugin.core.adaptive import _radius_at, _Tracer
-    from incircu_plugin.core.contacts import Boundary
-
     # A zigzag bank (its reflex vertices are fans) under a bank with vertices and segments of every slope.
     bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
     bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
     sides = [1, 1]
     if same_direction:
         bank_b, sides = bank_b[::-1], [1, -1]
-    tracer = _Tracer(sides, Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    tracer = make_tracer(bank_a, bank_b, sides, False)
     spans, boundary = tracer.spans, tracer.boundary
     other = np.arange(4, 8)
     site = np.concatenate([other, boundary.segment_count + 5 + np.arange(5)])
     span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
     u = 0.37 * spans.length[span]
     assert np.any(spans.kind == 1) and np.any(spans.kind == 0)
-    radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), u)
+    radius = radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), u)
     point, _ = spans.points(span, u)
     centre = point + radius[:, None] * spans.directions(span, u)
     on_segment = site < boundary.segment_count
@@ -638,57 +592,20 @@ def test_radius_terms_give_disks_that_touch_their_site(same_direction):
     assert np.all(np.isfinite(radius[on_segment]) & (radius[on_segment] > 0.0))
 
 
-def test_intervals_touching_the_own_chain_on_one_side_of_their_span_are_settled_without_changing_the_line(
-    monkeypatch,
-):
+def test_intervals_touching_the_own_chain_on_one_side_of_their_span_are_settled_without_changing_the_line():
     # Ragged banks (a real outline, random-walk rivers) put many samples on side branches: an interval whose two
     # ends touch the own bank on the same side of its span holds no point of the axis, so settling it without
     # probes must give the very same line as probing it.
     from benchmarks.rivers import river_layer
-    from incircu_plugin.core import adaptive
-
-    original = adaptive._Tracer._off_the_axis
-    settled = {"count": 0}
-
-    def counting(self, intervals, row):
-        off = original(self, intervals, row)
-        settled["count"] += np.count_nonzero(off)
-        return off
 
     shapes = [(GAMBIA.polygon, GAMBIA.split_points)] + [(river.polygon, river.ends) for river in river_layer(6, 7)]
     for polygon, split_points in shapes:
-        settled["count"] = 0
-        monkeypatch.setattr(adaptive._Tracer, "_off_the_axis", counting)
-        line = np.asarray(polygon_centerline(polygon, split_points).line.coords)
-        monkeypatch.setattr(adaptive._Tracer, "_off_the_axis", lambda self, intervals, row: np.zeros(len(row), bool))
-        probed = np.asarray(polygon_centerline(polygon, split_points).line.coords)
-        assert settled["count"] > 0
+        with observed() as settling:
+            line = np.asarray(polygon_centerline(polygon, split_points).line.coords)
+        with observed(TraceStats(settle_off_axis=False)) as probing:
+            probed = np.asarray(polygon_centerline(polygon, split_points).line.coords)
+        assert settling.off_the_axis > 0 and probing.off_the_axis == 0
         np.testing.assert_array_equal(line, probed)
-
-
-@pytest.fixture
-def settled_at_event(monkeypatch):
-    """Counts the open intervals judged at their event and those settled there (the cases below must exercise
-    it)."""
-    from incircu_plugin.core import adaptive
-
-    counted = {"judged": 0, "settled": 0}
-    original = adaptive._Tracer._settled_at_event
-    beside_each_other = adaptive._Tracer._beside_each_other
-
-    def judging(self, intervals, judged):
-        row = beside_each_other(self, intervals, judged)
-        counted["judged"] += len(row)
-        return row
-
-    def settling(self, intervals, u, radius, found):
-        settled = original(self, intervals, u, radius, found)
-        counted["settled"] += int(np.sum(settled))
-        return settled
-
-    monkeypatch.setattr(adaptive._Tracer, "_beside_each_other", judging)
-    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", settling)
-    return counted
 
 
 @pytest.mark.parametrize(
@@ -809,69 +726,36 @@ def test_two_bank_lines_keep_the_line_between_them_at_a_wide_tolerance(tolerance
     assert_within_tolerance(result, inner, outer, between, tolerance, near_ends=(inner[[0, -1]], 20.0))
 
 
-def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it(monkeypatch, settled_at_event):
+def test_a_gentle_convex_corner_opposite_one_long_edge_needs_no_probe_along_it():
     # The top bank turns by 0.1 degrees over the long bottom edge: the axis there bends by less than the
     # tolerance, which the event proves: no probe along the edge's middle (without it, the event is probed).
-    from incircu_plugin.core import adaptive
-
     polygon = Polygon([(0.0, 0.0), (100.0, 0.0), (100.0, 10.0), (30.0, 10.03), (0.0, 10.0)])
-    probed = []
-    solve_probes = adaptive._Tracer._solve_probes
-
-    def recording(self, span, u, trial):
-        # The probes along the middle of the long edge (the only span 100 long).
-        probed.append(np.sum((self.spans.length[span] > 99.0) & (u > 10.0) & (u < 90.0)))
-        return solve_probes(self, span, u, trial)
-
-    monkeypatch.setattr(adaptive._Tracer, "_solve_probes", recording)
-    middle = []
+    middle, settled = [], []
     for settling in (True, False):
-        if not settling:
-            monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", lambda self, i, *_: np.zeros(len(i.span), bool))
-        probed.clear()
-        assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
-        middle.append(int(sum(probed)))
-    assert settled_at_event["settled"] > 0
+        with observed(TraceStats(settle_at_event=settling, record_solutions=True)) as stats:
+            assert_adaptive_properties(polygon, [(0.0, 5.0), (100.0, 5.0)])
+        # The probes along the middle of the long edge (the only span 100 long).
+        probes = [solution for solution in stats.solutions if solution.stage == "probes"]
+        middle.append(sum(int(np.sum((p.length > 99.0) & (p.u > 10.0) & (p.u < 90.0))) for p in probes))
+        settled.append(stats.settled_at_event)
+    assert settled[0] > 0 and settled[1] == 0
     assert middle[0] == 0 and middle[1] >= 1
 
 
 @pytest.fixture
-def settled_intervals_checked(monkeypatch):
-    """Probes every interval settled at its event at 15 places inside; records how many were settled and the
-    worst excess of a probe's disk centre over the tracer's tolerance from the chord of the interval's end
-    centres (-inf when none)."""
-    from incircu_plugin.core import adaptive
-
-    original = adaptive._Tracer._settled_at_event
-    settled = {"intervals": 0, "worst": -np.inf}
-
-    def checking(self, intervals, u, radius, found):
-        mask = original(self, intervals, u, radius, found)
-        inside = intervals.subset(mask.nonzero()[0])
-        owner = np.repeat(np.arange(len(inside.span)), 15)
-        share = np.tile(np.arange(1, 16) / 16.0, len(inside.span))
-        at = inside.u0[owner] + share * (inside.u1 - inside.u0)[owner]
-        trial = 1.25 * np.maximum(self.t[inside.left], self.t[inside.right])[owner]
-        t, _, _, centre = self._solve_probes(inside.span[owner], at, trial)
-        start, end = self.centres(inside.left)[owner], self.centres(inside.right)[owner]
-        chord = end - start
-        along = np.clip(np.einsum("ij,ij->i", centre - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
-        distance = np.hypot(*(centre - start - along[:, None] * chord).T)
-        tolerance = self.of(self.tolerance, inside.span[owner])
-        excess = np.where(np.isfinite(t), distance - tolerance * (1.0 + 1e-9), -np.inf)
-        settled["intervals"] += len(inside.span)
-        settled["worst"] = max(settled["worst"], float(excess.max(initial=-np.inf)))
-        return mask
-
-    monkeypatch.setattr(adaptive._Tracer, "_settled_at_event", checking)
-    return settled
+def settled_intervals_checked():
+    """Probes every interval settled at its event at 15 places inside (:attr:`TraceStats.check_settled`): the
+    stats count the intervals checked and keep the worst excess of a probe's disk centre over the tracer's
+    tolerance from the chord of the interval's end centres (-inf when none)."""
+    with observed(TraceStats(check_settled=True)) as stats:
+        yield stats
 
 
 @pytest.mark.parametrize("case", WAVY + [GAMBIA], ids=lambda case: case.name)
 def test_intervals_settled_at_their_event_hold_the_axis(settled_intervals_checked, case):
     polygon_centerline(case.polygon, case.split_points)
-    assert settled_intervals_checked["intervals"] > 0
-    assert settled_intervals_checked["worst"] <= 0.0
+    assert settled_intervals_checked.settled_checked > 0
+    assert settled_intervals_checked.settled_worst <= 0.0
 
 
 def test_two_bank_lines_settle_no_interval_next_to_a_free_end(settled_intervals_checked):
@@ -886,19 +770,16 @@ def test_two_bank_lines_settle_no_interval_next_to_a_free_end(settled_intervals_
         lines_centerline(bank_a, bank_b, tolerance=0.05)
     except IncirCuError:
         pass
-    assert settled_intervals_checked["worst"] <= 0.0
+    assert settled_intervals_checked.settled_worst <= 0.0
 
 
 def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
     """The axis touching one site between two parameters of a span (a parabola for an edge and a vertex or a
     fan and a segment, else straight) lies within the sag of its chord, and the sag is not far above it (away
     from the parabola's apex the bound's curvature 1 / h is several times the actual one)."""
-    from incircu_plugin.core.adaptive import _radius_at, _Tracer
-    from incircu_plugin.core.contacts import Boundary
-
     bank_a = np.array([(0.0, 0.0), (2.0, 1.0), (4.0, -0.5), (6.0, 1.5), (9.0, 0.0)])
     bank_b = np.array([(9.0, 6.0), (7.0, 5.0), (5.0, 7.5), (3.0, 5.5), (0.0, 6.5)])
-    tracer = _Tracer([1, 1], Boundary([bank_a, bank_b]), *(np.full(2, value) for value in (False, 0.01, 6, 50, 0)))
+    tracer = make_tracer(bank_a, bank_b, [1, 1], False)
     spans, boundary = tracer.spans, tracer.boundary
     site = np.concatenate([np.arange(4, 8), boundary.segment_count + 5 + np.arange(1, 4)])
     span, site = (grid.ravel() for grid in np.meshgrid(np.arange(len(spans.kind)), site, indexing="ij"))
@@ -906,14 +787,14 @@ def test_the_sag_bounds_the_arcs_of_the_axis_beside_an_event():
     u = share[:, None] * spans.length[span]
     centres = []
     for row in u:
-        radius = _radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), row)
+        radius = radius_at(spans, span, tracer.sites.radius_terms(spans, span, site), row)
         centres.append(spans.points(span, row)[0] + radius[:, None] * spans.directions(span, row))
     centres = np.array(centres)
     start, end = centres[0], centres[-1]
     chord = end - start
     along = np.clip(np.einsum("kij,ij->ki", centres - start, chord) / np.einsum("ij,ij->i", chord, chord), 0, 1)
     deviation = np.hypot(*(centres - start - along[..., None] * chord).transpose(2, 0, 1)).max(axis=0)
-    sag = tracer._sag(span, site, start, end)
+    sag = sag_bound(tracer, span, site, start, end)
     touched = np.all(np.isfinite(centres), axis=(0, 2))
     curved = (spans.kind[span] == 1) != (site >= boundary.segment_count)
     assert touched[curved].sum() > 5 and touched[~curved].sum() > 5
@@ -978,8 +859,8 @@ def test_a_split_point_a_hair_from_a_vertex_keeps_every_foot_on_its_disk(vertex,
     split_points = [ring[vertex] + 7.3e-8 * toward, 0.5 * (corners[other_end[0]] + corners[other_end[1]])]
     alone = polygon_centerline(square, split_points)
     slab = box(30_000.0, 0.0, 30_040.0, 3.0)
-    steps = [polygon_centerline_steps(slab, [(30_000.0, 1.5), (30_040.0, 1.5)])]
-    batch = centerlines_together([*steps, polygon_centerline_steps(square, split_points)])[1]
+    steps = [_polygon_centerline_steps(slab, [(30_000.0, 1.5), (30_040.0, 1.5)])]
+    batch = run_many_steps([*steps, _polygon_centerline_steps(square, split_points)])[1]
     chain_a, chain_b = split_polygon(square, split_points)
     for result in (alone, batch):
         check_centerline(result, chain_a, chain_b, square, [chain_a[0], chain_a[-1]])

@@ -17,14 +17,14 @@ from incircu_plugin.core import (
     OptionError,
     SplitPointError,
     centerline_from_chains,
-    centerlines_together,
     default_spacing,
     default_tolerance,
     multipolygon_centerlines,
     polygon_centerline,
-    polygon_centerline_steps,
     split_polygon,
 )
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core.api import _polygon_centerline_steps
 from incircu_plugin.core.chains import split_checked_polygon
 from tests.support import geometry_cases
 from tests.support.oracle import check_centerline
@@ -222,8 +222,8 @@ def test_a_split_point_a_hair_from_an_acute_tip_gives_the_line_of_the_tip(turn):
     offset = corners[1] + 3000.0
     slab = Polygon(np.array([[0.0, 0.0], [4000.0, 0.0], [4000.0, 300.0], [0.0, 300.0]]) + offset)
     slab_ends = [offset + (0.0, 150.0), offset + (4000.0, 150.0)]
-    together = centerlines_together(
-        [polygon_centerline_steps(slab, slab_ends), polygon_centerline_steps(kite, [hair, far])]
+    together = run_many_steps(
+        [_polygon_centerline_steps(slab, slab_ends), _polygon_centerline_steps(kite, [hair, far])]
     )[1]
     for result in (polygon_centerline(kite, [hair, far]), together):
         assert not isinstance(result, Exception), result
@@ -249,8 +249,8 @@ def test_a_split_point_a_few_spacings_from_a_tip_is_that_tip(spacings):
     tolerance = default_tolerance(*split_polygon(kite, [far, tip]))
     offset = tip + 30.0
     slab = Polygon(np.array([[0.0, 0.0], [40.0, 0.0], [40.0, 3.0], [0.0, 3.0]]) + offset)
-    steps = [polygon_centerline_steps(slab, [offset + (0.0, 1.5), offset + (40.0, 1.5)])]
-    together = centerlines_together([*steps, polygon_centerline_steps(kite, [far, near_tip])])[1]
+    steps = [_polygon_centerline_steps(slab, [offset + (0.0, 1.5), offset + (40.0, 1.5)])]
+    together = run_many_steps([*steps, _polygon_centerline_steps(kite, [far, near_tip])])[1]
     for result in (polygon_centerline(kite, [far, near_tip]), together):
         assert not isinstance(result, Exception), result
         assert result.line.hausdorff_distance(at_tip.line) <= tolerance

@@ -25,24 +25,22 @@ from incircu_plugin.core import (
     InvalidGeometryError,
     OptionError,
     SplitPointError,
-    adaptive,
-    api,
-    centerlines_together,
+    _many,
     contacts,
-    lines_centerline_steps,
-    multipolygon_centerline_steps,
     polygon_centerline,
-    polygon_centerline_steps,
 )
-from incircu_plugin.core import steps as steps_module
-from incircu_plugin.core.lines import LineRequest
-from incircu_plugin.core.steps import (
+from incircu_plugin.core import _steps as steps_module
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core._steps import (
     _huge_page_advice_setter,
     answer_alone,
     run_alone,
     run_settings_paused,
     trace_alone,
 )
+from incircu_plugin.core.api import _lines_centerline_steps, _multipolygon_centerline_steps, _polygon_centerline_steps
+from incircu_plugin.core.lines import LineRequest
+from incircu_plugin.core.tracing import joint
 from tests.support import geometry_cases
 
 #: A self-crossing ring: an invalid polygon.
@@ -60,7 +58,7 @@ class Feature:
 def mixed_features():
     """A mix of inputs, good and bad, as :class:`Feature` objects."""
     features = [
-        Feature(case.name, lambda c=case: polygon_centerline_steps(c.polygon, c.split_points))
+        Feature(case.name, lambda c=case: _polygon_centerline_steps(c.polygon, c.split_points))
         for case in geometry_cases.analytic_cases(("unit", "projected"))
     ]
     rectangle = geometry_cases.rectangle(length=300.0, width=12.0, n=9)
@@ -73,37 +71,37 @@ def mixed_features():
     features += [
         Feature(
             "automatic ends",
-            lambda: polygon_centerline_steps(meander.polygon),
+            lambda: _polygon_centerline_steps(meander.polygon),
         ),
-        Feature("multipart, automatic ends", lambda: multipolygon_centerline_steps(two_parts)),
+        Feature("multipart, automatic ends", lambda: _multipolygon_centerline_steps(two_parts)),
         Feature(
             "multipart, one part with split points",
-            lambda: multipolygon_centerline_steps(two_parts, list(rectangle.split_points)),
+            lambda: _multipolygon_centerline_steps(two_parts, list(rectangle.split_points)),
         ),
         Feature(
             "multipart, bad part",
-            lambda: multipolygon_centerline_steps(MultiPolygon([BOW_TIE, box(20, 0, 80, 6)])),
+            lambda: _multipolygon_centerline_steps(MultiPolygon([BOW_TIE, box(20, 0, 80, 6)])),
         ),
-        Feature("islands", lambda: polygon_centerline_steps(islands, island_ends)),
+        Feature("islands", lambda: _polygon_centerline_steps(islands, island_ends)),
         Feature(
             "islands ignored",
-            lambda: polygon_centerline_steps(islands, island_ends, islands="ignore"),
+            lambda: _polygon_centerline_steps(islands, island_ends, islands="ignore"),
         ),
         Feature(
             "lines",
-            lambda: lines_centerline_steps(*geometry_cases.bank_pair(meander, reverse_b=True)),
+            lambda: _lines_centerline_steps(*geometry_cases.bank_pair(meander, reverse_b=True)),
         ),
         Feature(
             "fixed spacing",
-            lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, spacing=2.0),
+            lambda: _polygon_centerline_steps(rectangle.polygon, rectangle.split_points, spacing=2.0),
         ),
-        Feature("invalid polygon", lambda: polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)])),
-        Feature("split point off the ring", lambda: polygon_centerline_steps(rectangle.polygon, far)),
+        Feature("invalid polygon", lambda: _polygon_centerline_steps(BOW_TIE, [(0, 5), (10, 5)])),
+        Feature("split point off the ring", lambda: _polygon_centerline_steps(rectangle.polygon, far)),
         Feature(
             "negative tolerance",
-            lambda: polygon_centerline_steps(rectangle.polygon, rectangle.split_points, tolerance=-1.0),
+            lambda: _polygon_centerline_steps(rectangle.polygon, rectangle.split_points, tolerance=-1.0),
         ),
-        Feature("bad island mode", lambda: multipolygon_centerline_steps(two_parts, islands="swim")),
+        Feature("bad island mode", lambda: _multipolygon_centerline_steps(two_parts, islands="swim")),
     ]
     return features
 
@@ -133,7 +131,7 @@ def test_a_mix_of_features_traced_together_equals_each_alone():
     assert any(isinstance(o, list) and any(p.error for p in o) and any(p.result for p in o) for o in expected)
     # In input order and reversed: a feature's outcome does not depend on its neighbours.
     for order in (list(range(len(features))), list(range(len(features)))[::-1]):
-        together = centerlines_together([features[i].make() for i in order])
+        together = run_many_steps([features[i].make() for i in order])
         assert len(together) == len(order)
         for i, outcome in zip(order, together):
             assert_identical(outcome, expected[i], features[i].name)
@@ -144,7 +142,7 @@ def test_features_of_different_sizes_and_places_together_equal_each_alone():
     far = geometry_cases.tapered_channel(placement=geometry_cases.PLACEMENTS["projected"])
     tiny = geometry_cases.rectangle(n=(7, 13), jitter=0.4, seed=3, placement=geometry_cases.PLACEMENTS["tiny"])
     cases = [small, far, tiny]
-    together = centerlines_together([polygon_centerline_steps(c.polygon, c.split_points) for c in cases])
+    together = run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases])
     for case, outcome in zip(cases, together):
         expected = polygon_centerline(case.polygon, case.split_points)
         assert_identical(outcome, expected, case.name)
@@ -157,7 +155,7 @@ def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
     # events are sought a hair from it, and in the batch's shared frame the other chain's copy of the start was
     # touched through rounding at radii along the stub, out of order. Every river must come out as it does alone.
     rivers = river_layer(256, seed=7, first=19_712)
-    together = centerlines_together([polygon_centerline_steps(river.polygon) for river in rivers])
+    together = run_many_steps([_polygon_centerline_steps(river.polygon) for river in rivers])
     for river, outcome in zip(rivers, together, strict=True):
         assert_identical(outcome, polygon_centerline(river.polygon), river.index)
 
@@ -165,7 +163,7 @@ def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
 def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
     # What run_together does when a part's tracing fails: the part gets the error, the next part goes on.
     # Split points given, so the first request is the first part's tracing (not its automatic ends).
-    generator = multipolygon_centerline_steps(
+    generator = _multipolygon_centerline_steps(
         MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)]), [(0, 2), (50, 2), (0, 12), (50, 12)]
     )
     next(generator)
@@ -182,7 +180,7 @@ def test_an_error_thrown_at_a_parts_request_fails_that_part_only():
 
 def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
     # run_alone, like run_together, raises a failed tracing inside the generator: the part gets the error.
-    from incircu_plugin.core import steps
+    from incircu_plugin.core import _steps as steps
 
     calls = []
 
@@ -193,7 +191,7 @@ def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
         return trace_alone(request)
 
     monkeypatch.setattr(steps, "trace_alone", failing_first)
-    outcomes = run_alone(multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])))
+    outcomes = run_alone(_multipolygon_centerline_steps(MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])))
     assert len(calls) == 2
     assert (outcomes[0].result, str(outcomes[0].error)) == (None, "the tracing failed")
     assert outcomes[1].error is None and outcomes[1].result.line.length == pytest.approx(50.0, rel=1e-9)
@@ -202,9 +200,7 @@ def test_a_part_whose_tracing_fails_alone_fails_that_part_only(monkeypatch):
 def test_batch_progress_rises_from_0_to_1():
     cases = [geometry_cases.rectangle(), geometry_cases.tapered_channel(), geometry_cases.annulus_sector()]
     fractions = []
-    centerlines_together(
-        [polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: fractions.append(f)
-    )
+    run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: fractions.append(f))
     assert fractions == sorted(fractions) and fractions[-1] == 1.0 and 0.0 <= fractions[0]
     assert len(set(fractions)) > 2
 
@@ -212,42 +208,42 @@ def test_batch_progress_rises_from_0_to_1():
 def test_cancel_through_the_batch_progress_raises_cancelled():
     cases = [geometry_cases.rectangle(), geometry_cases.meander()]
     with pytest.raises(Cancelled):
-        centerlines_together([polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: f < 0.5)
+        run_many_steps([_polygon_centerline_steps(c.polygon, c.split_points) for c in cases], lambda f: f < 0.5)
 
 
 def test_cancel_through_one_features_progress_stops_the_batch():
     # The automatic ends report progress from inside the generator, before the tracing.
     case = geometry_cases.meander()
     steps = [
-        polygon_centerline_steps(case.polygon, case.split_points),
-        polygon_centerline_steps(case.polygon, progress=lambda fraction: False),
+        _polygon_centerline_steps(case.polygon, case.split_points),
+        _polygon_centerline_steps(case.polygon, progress=lambda fraction: False),
     ]
     with pytest.raises(Cancelled):
-        centerlines_together(steps)
+        run_many_steps(steps)
 
 
 def test_batches_are_bounded_by_features_and_vertices(monkeypatch):
-    monkeypatch.setattr(api, "BATCH_FEATURES", 3)
-    monkeypatch.setattr(api, "BATCH_VERTICES", 10)
+    monkeypatch.setattr(_many, "BATCH_FEATURES", 3)
+    monkeypatch.setattr(_many, "BATCH_VERTICES", 10)
     sizes = [1, 2, 3, 4, 1, 1, 1, 25, 2]
-    batches = list(api.batches(range(len(sizes)), sizes.__getitem__))
+    batches = list(_many.batches(range(len(sizes)), sizes.__getitem__))
     assert [index for batch in batches for index in batch] == list(range(len(sizes)))
     for batch in batches:
         assert len(batch) <= 3 and (len(batch) == 1 or sum(sizes[i] for i in batch) <= 10)
     # Full batches: no two neighbouring batches could have been one.
     for first, second in zip(batches, batches[1:]):
         assert len(first) + len(second) > 3 or sum(sizes[i] for i in first + second) > 10
-    assert list(api.batches([], len)) == []
+    assert list(_many.batches([], len)) == []
 
 
 def test_lines_with_an_error_together_with_good_ones():
     crossing = (LineString([(0, 0), (100, 0)]), LineString([(0, 10), (100, -10)]))
     good = geometry_cases.bank_pair(geometry_cases.rectangle())
-    together = centerlines_together([lines_centerline_steps(*crossing), lines_centerline_steps(*good)])
-    expected = alone(lambda: lines_centerline_steps(*crossing))
+    together = run_many_steps([_lines_centerline_steps(*crossing), _lines_centerline_steps(*good)])
+    expected = alone(lambda: _lines_centerline_steps(*crossing))
     assert isinstance(expected, Exception)
     assert type(together[0]) is type(expected) and str(together[0]) == str(expected)
-    assert_identical(together[1], run_alone(lines_centerline_steps(*good)), "good")
+    assert_identical(together[1], run_alone(_lines_centerline_steps(*good)), "good")
 
 
 def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeypatch):
@@ -259,11 +255,11 @@ def test_the_garbage_collector_is_paused_during_a_run_and_restored_after(monkeyp
     for enabled in (True, False):
         (gc.enable if enabled else gc.disable)()
         try:
-            centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)])
+            run_many_steps([_polygon_centerline_steps(case.polygon, case.split_points)])
             polygon_centerline(case.polygon, case.split_points)
             assert gc.isenabled() is enabled
             with pytest.raises(Cancelled):
-                centerlines_together([polygon_centerline_steps(case.polygon, case.split_points)], lambda f: False)
+                run_many_steps([_polygon_centerline_steps(case.polygon, case.split_points)], lambda f: False)
             assert gc.isenabled() is enabled
         finally:
             gc.enable()
@@ -326,9 +322,9 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
         for (name, polygon, ends), bits in zip(cases, expected, strict=True):
             assert exactly(polygon_centerline(polygon, ends)) == bits, (name, all_pairs, index_run)
     monkeypatch.undo()
-    monkeypatch.setattr(adaptive, "JOINT_CELL", 0.0)
+    monkeypatch.setattr(joint, "JOINT_CELL", 0.0)
     order = np.random.default_rng(5).permutation(2 * len(cases)) % len(cases)
-    together = centerlines_together([polygon_centerline_steps(*cases[i][1:]) for i in order])
+    together = run_many_steps([_polygon_centerline_steps(*cases[i][1:]) for i in order])
     for i, outcome in zip(order, together, strict=True):
         assert exactly(outcome) == expected[i], cases[i][0]
 
@@ -349,6 +345,6 @@ def test_fuzzed_inputs_are_the_same_bytes_alone_in_a_batch_reversed_and_in_slice
             expected.append(error)
     order = list(range(len(cases)))
     for batch in (order, order[::-1], *np.array_split(order, 4)):
-        together = centerlines_together([steps(cases[index]) for index in batch])
+        together = run_many_steps([steps(cases[index]) for index in batch])
         for index, outcome in zip(batch, together, strict=True):
             assert_identical(outcome, expected[index], (seed, index, cases[index].category))

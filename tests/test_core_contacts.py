@@ -12,7 +12,6 @@ import numpy as np
 import pytest
 
 from incircu_plugin.core import contacts
-from incircu_plugin.core.adaptive import EDGE, FAN, _crossing, _parabola_stations
 from incircu_plugin.core.contacts import (
     CLEAR,
     QUERY_GROUP,
@@ -27,6 +26,8 @@ from incircu_plugin.core.contacts import (
     vertex_contact,
 )
 from incircu_plugin.core.lines import ORDER_RESOLUTION, _Blocks, _distinct, _first_of_each_centre, _ordered, _with_ends
+from incircu_plugin.core.tracing import closed_form
+from incircu_plugin.core.tracing.spans import EDGE, FAN
 
 
 def contacts_of(sample, direction, segments, scale=1.0, slide=0.0):
@@ -216,7 +217,7 @@ def crossing(kind, u0, u1, terms0, terms1):
     spans = SimpleNamespace(kind=np.array([kind]))
     intervals = SimpleNamespace(span=np.array([0]), u0=np.array([u0]), u1=np.array([u1]))
     as_arrays = [tuple(np.array([value], dtype=float) for value in terms) for terms in (terms0, terms1)]
-    u, found, at_end = _crossing(spans, intervals, *as_arrays)
+    u, found, at_end = closed_form.crossing(spans, intervals, *as_arrays)
     return u[0], found[0], at_end[0]
 
 
@@ -249,7 +250,7 @@ def test_parabola_stations_lie_on_the_parabola_with_chords_within_the_tolerance(
     # Focus (0, 1), directrix the x axis: y = (x**2 + 1) / 2. From x = -3 to x = 4, apex x = 0 included.
     tolerance = 1e-3
     ends = np.array([[[-3.0, 5.0], [4.0, 8.5]]])
-    owner, centre, radius = _parabola_stations(
+    owner, centre, radius = closed_form.parabola_stations(
         np.array([[0.0, 1.0]]), np.array([[0.0, 0.0]]), np.array([[1.0, 0.0]]), ends, tolerance
     )
     assert np.all(owner == 0)
@@ -436,8 +437,8 @@ def test_ties_go_to_the_lowest_site_whatever_the_order_of_the_candidates(monkeyp
     assert np.array_equal(site, 79 - np.floor(along).astype(int))
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high, chain):
-        box, segment = listed(boundary, low, high, chain)
+    def reversed_candidates(boundary, low, high, chain=None):
+        box, segment = listed(boundary, low, high)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]
 
@@ -539,8 +540,8 @@ def test_a_disk_touching_its_own_chain_twice_at_once_reports_the_lower_site(monk
     # at t = 5: the sample is skipped and its own-chain site is the lower one, whatever the listing order.
     listed = Boundary.candidates
 
-    def reversed_candidates(boundary, low, high, chain):
-        box, segment = listed(boundary, low, high, chain)
+    def reversed_candidates(boundary, low, high, chain=None):
+        box, segment = listed(boundary, low, high)
         order = np.lexsort((-np.arange(len(box)), box))
         return box[order], segment[order]
 

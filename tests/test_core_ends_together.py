@@ -14,8 +14,10 @@ import shapely.affinity
 from shapely.geometry import LineString, Polygon, box
 
 from benchmarks.rivers import river_layer
-from incircu_plugin.core import Cancelled, centerlines_together, find_ends, polygon_centerline, polygon_centerline_steps
+from incircu_plugin.core import Cancelled, find_ends, polygon_centerline
 from incircu_plugin.core import ends as ends_module
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core.api import _polygon_centerline_steps
 from incircu_plugin.core.ends import find_ends_together
 from incircu_plugin.core.errors import IncirCuError, InvalidGeometryError
 from incircu_plugin.core.polyline import typical_width
@@ -176,7 +178,7 @@ def test_progress_rises_and_cancel_stops_the_batch():
 
 
 def test_a_batch_of_centerlines_finds_its_automatic_ends_together(monkeypatch):
-    from incircu_plugin.core import steps
+    from incircu_plugin.core import _steps as steps
 
     polygons = [box(0.0, 0.0, 100.0, 10.0 + index) for index in range(5)] + [box(0.0, 0.0, 10.0, 10.0)]
     expected = [polygon_centerline(polygon) for polygon in polygons]
@@ -186,7 +188,7 @@ def test_a_batch_of_centerlines_finds_its_automatic_ends_together(monkeypatch):
         steps, "find_ends_together", lambda polygons, **options: batches.append(polygons) or joint(polygons, **options)
     )
     monkeypatch.setattr(steps, "find_ends", None)
-    together = centerlines_together([polygon_centerline_steps(polygon) for polygon in polygons])
+    together = run_many_steps([_polygon_centerline_steps(polygon) for polygon in polygons])
     assert [len(batch) for batch in batches] == [len(polygons)]
     for polygon, outcome, alone in zip(polygons, together, expected):
         assert outcome.notes == alone.notes and outcome.ends_from == alone.ends_from == "automatic"
@@ -197,15 +199,15 @@ def test_a_batch_of_centerlines_finds_its_automatic_ends_together(monkeypatch):
 
 
 def test_a_features_own_progress_can_cancel_the_ends_round(monkeypatch):
-    from incircu_plugin.core import steps
+    from incircu_plugin.core import _steps as steps
 
     monkeypatch.setattr(steps, "_traced", None)  # cancelled before any tracing
     generators = [
-        polygon_centerline_steps(box(0.0, 0.0, 100.0, 10.0)),
-        polygon_centerline_steps(box(0.0, 0.0, 100.0, 12.0), progress=lambda fraction: fraction < 0.05),
+        _polygon_centerline_steps(box(0.0, 0.0, 100.0, 10.0)),
+        _polygon_centerline_steps(box(0.0, 0.0, 100.0, 12.0), progress=lambda fraction: fraction < 0.05),
     ]
     with pytest.raises(Cancelled):
-        centerlines_together(generators)
+        run_many_steps(generators)
 
 
 @pytest.mark.parametrize("index", [178, 840])

@@ -21,10 +21,10 @@ from incircu_plugin.core import (
     feature_label,
     frame_labels,
     label_lines,
-    multipolygon_centerline_steps,
     multipolygon_centerlines,
     width_statistics,
 )
+from incircu_plugin.core.api import _multipolygon_centerline_steps
 from tests.support.frame_cases import channels_lonlat
 from tests.support.project import DATA, REPOSITORY
 from tests.support.real_rivers import DATA as RESERVOIRS
@@ -177,15 +177,15 @@ def test_split_points_in_another_crs_are_reprojected():
 
 
 def test_core_keywords_are_forwarded_only_when_given(monkeypatch):
-    from incircu_plugin.core import frames
+    from incircu_plugin.core import api
 
     seen = []
 
-    def record(shape, points, **options):
+    def record(shape, split_points=None, **options):
         seen.append(options)
-        return (yield from multipolygon_centerline_steps(shape, points, **options))
+        return (yield from _multipolygon_centerline_steps(shape, split_points, **options))
 
-    monkeypatch.setattr(frames, "multipolygon_centerline_steps", record)
+    monkeypatch.setattr(api, "_multipolygon_centerline_steps", record)
     frame = geopandas.GeoSeries([box(0, 0, 100, 10)], crs="EPSG:2180")
     centerlines(frame, guide=geopandas.GeoSeries([LineString([(0, 5), (100, 5)])], crs="EPSG:2180"))
     assert "tolerance" not in seen[-1] and "end_rule" not in seen[-1]
@@ -194,7 +194,7 @@ def test_core_keywords_are_forwarded_only_when_given(monkeypatch):
     centerlines(frame, guide=geopandas.GeoSeries([LineString([(120, 5), (200, 5)])], crs="EPSG:2180"))
     assert seen[-1]["guide"].equals(MultiLineString([[(120, 5), (200, 5)]]))
     centerlines(frame, guide=geopandas.GeoSeries([LineString([(130, 5), (200, 5)])], crs="EPSG:2180"))
-    assert "guide" not in seen[-1]
+    assert seen[-1]["guide"] is None
     result = centerlines(frame, tolerance=0.5, end_rule="longest_path")  # a core without them: an error per row
     assert seen[-1]["tolerance"] == 0.5 and seen[-1]["end_rule"] == "longest_path"
     assert len(result) == 1
@@ -211,14 +211,14 @@ def test_guide_lines_choose_the_ends_in_any_crs():
 
 
 def test_an_unexpected_exception_in_one_row_is_reported_there(monkeypatch):
-    from incircu_plugin.core import frames
+    from incircu_plugin.core import api
 
-    def fail_on_the_wide_one(shape, points, **options):
+    def fail_on_the_wide_one(shape, split_points=None, **options):
         if shape.bounds[3] > 10:
             raise RuntimeError("boom")
-        return (yield from multipolygon_centerline_steps(shape, points, **options))
+        return (yield from _multipolygon_centerline_steps(shape, split_points, **options))
 
-    monkeypatch.setattr(frames, "multipolygon_centerline_steps", fail_on_the_wide_one)
+    monkeypatch.setattr(api, "_multipolygon_centerline_steps", fail_on_the_wide_one)
     result = centerlines(geopandas.GeoSeries([box(0, 0, 100, 10), box(0, 0, 100, 20)], crs="EPSG:2180"))
     assert pandas.isna(result["error"].iloc[0]) and result["length"].iloc[0] > 0
     assert result["error"].iloc[1] == "unexpected RuntimeError: boom" and result.geometry.iloc[1] is None

@@ -1,4 +1,4 @@
-"""Joint tracing (``adaptive.trace_together``): many features in one vectorised tracing, each still exact.
+"""Joint tracing (``tracing.trace_together``): many features in one vectorised tracing, each still exact.
 
 The features of a joint tracing share one set of rounds, each in its own frame (they are placed side by side
 in the spatial index only); contacts are only sought within a feature's own pair of chains. Checked against
@@ -18,17 +18,17 @@ import pytest
 import shapely
 
 from incircu_plugin.core import default_tolerance, split_polygon
-from incircu_plugin.core.adaptive import (
+from incircu_plugin.core._steps import run_alone, run_together
+from incircu_plugin.core.chains import orient_bank_lines
+from incircu_plugin.core.engine import centerline_steps
+from incircu_plugin.core.tracing.joint import (
     JOINT_BATCH_RATIO,
     JOINT_EXTENT_RATIO,
     JOINT_SEGMENTS,
-    _joint_batches,
-    _joint_groups,
-    _trace_batch,
+    joint_batches,
+    joint_groups,
+    trace_batch,
 )
-from incircu_plugin.core.chains import orient_bank_lines
-from incircu_plugin.core.engine import centerline_steps
-from incircu_plugin.core.steps import run_alone, run_together
 from tests.support import geometry_cases
 from tests.support.oracle import assert_within_tolerance, check_centerline
 
@@ -124,7 +124,7 @@ def test_joint_groups_keep_extents_within_the_ratio_and_segments_within_the_budg
 
     extents = [1.0, 3.9, 4.1, 1000.0, 2.0, 30.0, 100.0, 1e-3]
     requests = [Request(extent, 10) for extent in extents] + [Request(2.0, JOINT_SEGMENTS - 15)] * 3
-    groups = _joint_groups(requests)
+    groups = joint_groups(requests)
     assert sorted(index for group in groups for index in group) == list(range(len(requests)))
     for group in groups:
         sizes = [requests[i].extent for i in group]
@@ -141,7 +141,7 @@ def test_joint_batches_pack_consecutive_groups_within_the_segment_budget_and_ext
     sizes = [10, JOINT_SEGMENTS // 2, JOINT_SEGMENTS // 2, 5, JOINT_SEGMENTS + 1, 7, 8]
     requests = [Request(size) for size in sizes]
     groups = [[0, 1], [2], [3], [4], [5], [6]]
-    batches = _joint_batches(requests, groups)
+    batches = joint_batches(requests, groups)
     assert [group for batch in batches for group in batch] == groups
     assert batches == [[[0, 1]], [[2], [3]], [[4]], [[5], [6]]]
     for batch in batches:
@@ -151,7 +151,7 @@ def test_joint_batches_pack_consecutive_groups_within_the_segment_budget_and_ext
     extents = [1.0, 4.0, JOINT_BATCH_RATIO, 1.01 * JOINT_BATCH_RATIO, 10.0 * JOINT_BATCH_RATIO]
     requests = [Request(10, extent) for extent in extents]
     groups = [[index] for index in range(len(extents))]
-    assert _joint_batches(requests, groups) == [[[0], [1], [2]], [[3], [4]]]
+    assert joint_batches(requests, groups) == [[[0], [1], [2]], [[3], [4]]]
 
 
 def test_groups_traced_together_give_each_feature_the_points_of_its_group_alone():
@@ -160,11 +160,11 @@ def test_groups_traced_together_give_each_feature_the_points_of_its_group_alone(
     # the pair only half a cell). Traced in one batch, every feature's axis points are bit for bit those of
     # its group traced on its own.
     requests = [next(centerline_steps(*chains)) for _, chains, _, _, _ in closed_jobs()[:4]]
-    groups = _joint_groups(requests)
+    groups = joint_groups(requests)
     assert sorted(len(group) for group in groups) == [1, 1, 2]
     order = [index for group in groups for index in group]
-    together = dict(zip(order, _trace_batch(requests, groups, lambda fraction: None)))
+    together = dict(zip(order, trace_batch(requests, groups, lambda fraction: None)))
     for group in groups:
-        for index, alone in zip(group, _trace_batch(requests, [group], lambda fraction: None)):
+        for index, alone in zip(group, trace_batch(requests, [group], lambda fraction: None)):
             for name in ("centre", "radius", "foot_a", "foot_b", "position_a", "position_b"):
                 np.testing.assert_array_equal(getattr(together[index], name), getattr(alone, name))

@@ -17,16 +17,12 @@ import pytest
 import shapely
 
 from benchmarks.rivers import river_layer
-from incircu_plugin.core import (
-    centerlines_together,
-    lines,
-    lines_centerline_steps,
-    polygon_centerline,
-    polygon_centerline_steps,
-)
-from incircu_plugin.core import steps as steps_module
+from incircu_plugin.core import _steps as steps_module
+from incircu_plugin.core import lines, polygon_centerline
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core._steps import answer_alone
+from incircu_plugin.core.api import _lines_centerline_steps, _polygon_centerline_steps
 from incircu_plugin.core.lines import LineRequest, _Blocks, _fewest_of_features, _fewest_vertices, lines_together
-from incircu_plugin.core.steps import answer_alone
 from tests.support import geometry_cases
 
 #: A line (integer coordinates) that the plain Douglas-Peucker simplification at ``CROSSING_TOLERANCE`` makes
@@ -53,17 +49,17 @@ def wavy_banks(seed):
 @pytest.fixture(scope="module")
 def requests():
     """The line requests of the mix, and the index of the one whose simplified chords leave its polygon."""
-    steps = [polygon_centerline_steps(case.polygon, case.split_points) for case in geometry_cases.analytic_cases()]
+    steps = [_polygon_centerline_steps(case.polygon, case.split_points) for case in geometry_cases.analytic_cases()]
     # The first 40 rivers of the layer, and river 292 (each river is drawn from its own index).
     rivers = river_layer(count=40)
-    steps += [polygon_centerline_steps(river.polygon, list(river.ends)) for river in rivers]
-    steps += [lines_centerline_steps(*wavy_banks(seed)) for seed in range(4)]
+    steps += [_polygon_centerline_steps(river.polygon, list(river.ends)) for river in rivers]
+    steps += [_lines_centerline_steps(*wavy_banks(seed)) for seed in range(4)]
     case = geometry_cases.meander()
-    steps.append(polygon_centerline_steps(case.polygon, case.split_points, spacing=case.width / 10.0))
+    steps.append(_polygon_centerline_steps(case.polygon, case.split_points, spacing=case.width / 10.0))
     # River 292 at a tolerance of 2 m: a chord of its simplified line cuts a bend (found by a search of the
     # layer at that tolerance; asserted below).
     river = river_layer(count=1, first=292)[0]
-    steps.append(polygon_centerline_steps(river.polygon, list(river.ends), tolerance=2.0))
+    steps.append(_polygon_centerline_steps(river.polygon, list(river.ends), tolerance=2.0))
     made = [line_request(step) for step in steps]
     empty = dataclasses.replace(made[0], points=made[0].points.subset(np.zeros(len(made[0].points.radius), bool)))
     # The first request again at the end: its centres are those of the first, in the same local frame.
@@ -153,7 +149,7 @@ def test_a_batch_whose_lines_fail_together_makes_each_alone(monkeypatch):
         return joint(requests)
 
     monkeypatch.setattr(steps_module, "lines_together", failing_together)
-    outcomes = centerlines_together([polygon_centerline_steps(case.polygon, case.split_points) for case in cases])
+    outcomes = run_many_steps([_polygon_centerline_steps(case.polygon, case.split_points) for case in cases])
     assert calls == [3, 1, 1, 1]
     for case, outcome in zip(cases, outcomes):
         alone = polygon_centerline(case.polygon, case.split_points)

@@ -15,14 +15,9 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import substring
 
-from incircu_plugin.core import (
-    centerline_from_chains,
-    centerlines_together,
-    lines_centerline,
-    multipolygon_centerlines,
-    polygon_centerline,
-    polygon_centerline_steps,
-)
+from incircu_plugin.core import centerline_from_chains, lines_centerline, multipolygon_centerlines, polygon_centerline
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core.api import _polygon_centerline_steps
 from incircu_plugin.core.chains import _spikes_note
 from incircu_plugin.core.ends import find_ends, find_ends_together
 from incircu_plugin.core.errors import (
@@ -163,7 +158,7 @@ def test_rings_traced_together_are_their_loops_alone():
     """A batch of rings (as a layer is traced) gives each its loop alone, to the default tolerance: the seam's
     feet, a rounding off the rings' ends in the batch's frame, are not across the seam."""
     names = sorted(RINGS)
-    together = centerlines_together([polygon_centerline_steps(RINGS[name]) for name in names * 2])
+    together = run_many_steps([_polygon_centerline_steps(RINGS[name]) for name in names * 2])
     for name, result in zip(names * 2, together):
         alone = polygon_centerline(RINGS[name])
         polygon = RINGS[name]

@@ -14,13 +14,9 @@ import pytest
 import shapely
 from shapely.geometry import Point, Polygon
 
-from incircu_plugin.core import (
-    LocalProjection,
-    centerlines_together,
-    find_ends,
-    multipolygon_centerline_steps,
-    polygon_centerline,
-)
+from incircu_plugin.core import LocalProjection, find_ends, polygon_centerline
+from incircu_plugin.core._many import run_many_steps
+from incircu_plugin.core.api import _multipolygon_centerline_steps
 from tests.support.project import DATA
 
 
@@ -50,7 +46,7 @@ LAYERS = polygon_layers()
 def test_no_warning_on_a_polygon_layer_of_the_test_data(name):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        outcomes = list(centerlines_together([multipolygon_centerline_steps(shape) for shape in LAYERS[name]]))
+        outcomes = list(run_many_steps([_multipolygon_centerline_steps(shape) for shape in LAYERS[name]]))
     raised = [outcome for outcome in outcomes if isinstance(outcome, Warning)]
     assert not raised, raised
     assert len(outcomes) == len(LAYERS[name])

@@ -47,8 +47,8 @@ class RecordingFeedback(QgsProcessingFeedback):
 @pytest.fixture
 def small_batches(provider, monkeypatch):
     """The plugin's batches made ``BATCH`` features long."""
-    api = importlib.import_module("incircu.incircu_plugin.core.api")
-    monkeypatch.setattr(api, "BATCH_FEATURES", BATCH)
+    _many = importlib.import_module("incircu.incircu_plugin.core._many")
+    monkeypatch.setattr(_many, "BATCH_FEATURES", BATCH)
 
 
 def memory_layer(kind, crs, geometries, numbers=None):

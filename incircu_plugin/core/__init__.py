@@ -15,13 +15,9 @@ from .api import (
     ISLAND_MODES,
     PartOutcome,
     PolygonCenterlineResult,
-    centerlines_together,
     lines_centerline,
-    lines_centerline_steps,
-    multipolygon_centerline_steps,
     multipolygon_centerlines,
     polygon_centerline,
-    polygon_centerline_steps,
 )
 from .arms import ArmEnds, find_arm_ends
 from .caps import END_CAPS
@@ -40,7 +36,7 @@ from .errors import (
 )
 from .frames import centerlines, frame_labels, networks
 from .geodesy import LocalProjection
-from .labels import LabelResult, curvature_radii, feature_label, label_line_steps, label_lines
+from .labels import LabelResult, curvature_radii, feature_label, label_lines
 from .layers import LayerNetworks, layer_networks
 from .network import NETWORK_ISLAND_MODES, NetworkBranch, NetworkResult, multipolygon_networks, polygon_network
 from .touching import touching_gates
@@ -73,7 +69,6 @@ __all__ = [
     "Transect",
     "centerline_from_chains",
     "centerlines",
-    "centerlines_together",
     "curvature_radii",
     "default_spacing",
     "default_tolerance",
@@ -83,18 +78,14 @@ __all__ = [
     "find_ends_together",
     "frame_labels",
     "incircle_polygons",
-    "label_line_steps",
     "label_lines",
     "layer_networks",
     "lines_centerline",
-    "lines_centerline_steps",
-    "multipolygon_centerline_steps",
     "multipolygon_centerlines",
     "multipolygon_networks",
     "networks",
     "orient_bank_lines",
     "polygon_centerline",
-    "polygon_centerline_steps",
     "polygon_network",
     "split_polygon",
     "touching_gates",
@@ -102,3 +93,37 @@ __all__ = [
     "vertex_chainages",
     "width_statistics",
 ]
+
+#: Names of IncirCu 0.2 that are no longer public, and what replaces each: the step-generator protocol is
+#: private (``_steps``); the public functions take an array of geometries instead.
+_DEPRECATED = {
+    "centerlines_together": "polygon_centerline(array)",
+    "polygon_centerline_steps": "polygon_centerline(array)",
+    "multipolygon_centerline_steps": "multipolygon_centerlines(array)",
+    "lines_centerline_steps": "lines_centerline(arrays)",
+    "label_line_steps": "label_lines(array)",
+}
+
+
+def __getattr__(name):
+    """The 0.2 names of :data:`_DEPRECATED`, with a :class:`DeprecationWarning` naming what replaces them."""
+    if name not in _DEPRECATED:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import warnings
+
+    from . import _many, api, labels
+
+    warnings.warn(
+        f"incircu_plugin.core.{name} is deprecated since IncirCu 0.3 and will be removed; use {_DEPRECATED[name]}, "
+        "which computes an array of geometries in batches traced together.",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    private = {
+        "centerlines_together": _many.run_many_steps,
+        "polygon_centerline_steps": api._polygon_centerline_steps,
+        "multipolygon_centerline_steps": api._multipolygon_centerline_steps,
+        "lines_centerline_steps": api._lines_centerline_steps,
+        "label_line_steps": labels._label_line_steps,
+    }
+    return private[name]

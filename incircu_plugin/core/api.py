@@ -8,6 +8,8 @@ import numpy as np
 import shapely
 from shapely.geometry import MultiPolygon, Polygon
 
+from ._many import compute, detached, is_many, one_or_many, per_geometry
+from ._steps import EndsRequest, run_alone
 from .caps import check_end_cap, run_out_ends
 from .chains import (
     COINCIDENCE_TOLERANCE,
@@ -24,7 +26,6 @@ from .errors import CenterlineError, IncirCuError, InvalidGeometryError, Message
 from .islands import bridge_islands
 from .polyline import cumulative_lengths, typical_width
 from .rings import RING_NOTE, loop_is_main_feature, ring_centerline_steps
-from .steps import EndsRequest, run_alone, run_together
 from .validation import check_coordinates, split_point_coordinates, tolerance_length
 
 #: Largest distance of a returned line's vertex outside its polygon, relative to the polygon's extent.
@@ -50,12 +51,6 @@ BANK_LENGTH_RATIO = 2.0
 #: apart).
 ENDS_MIN_WIDTH = 1e-9
 
-#: Most features in one batch of :func:`batches` (traced together by :func:`centerlines_together`).
-BATCH_FEATURES = 256
-
-#: Most boundary vertices in one batch of :func:`batches`: bounds the memory a batch holds at once.
-BATCH_VERTICES = 100_000
-
 #: The fields a :class:`PolygonCenterlineResult` takes over from its :class:`CenterlineResult`.
 _RESULT_FIELDS = tuple(field.name for field in fields(CenterlineResult) if field.init)
 
@@ -80,11 +75,16 @@ def polygon_centerline(
     end_cap="axis",
     progress=None,
 ):
-    """Centerline of a polygon between two points of its boundary.
+    """Centerline of a polygon between two points of its boundary; of each polygon of an array.
+
+    Given an array-like of polygons (a list, a numpy array, a GeoSeries), every other argument is one value for
+    all or a sequence of one per polygon (``split_points``: None, or one sequence of points, or None, per
+    polygon); the polygons are computed in batches that share their tracing, and a polygon's result is the same,
+    to the last bit, as when it is computed alone.
 
     Parameters
     ----------
-    polygon : Polygon
+    polygon : Polygon or array_like of Polygon
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of two Point or (x, y), optional
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`.ends.find_ends`.
@@ -120,17 +120,19 @@ def polygon_centerline(
         point where the axis continued straight meets the outline (see :func:`.caps.run_out_ends`; the
         run-out is not on the medial axis).
     progress : callable, optional
-        See :func:`centerline_from_chains`.
+        See :func:`centerline_from_chains`; for an array, called with the fraction of all polygons done.
 
     Returns
     -------
-    PolygonCenterlineResult
+    PolygonCenterlineResult, or a list
         ``foot_a`` lies on the boundary counter-clockwise from the first split point; ``ends_from`` says
-        where the ends came from.
+        where the ends came from. For an array, per polygon in input order its result or the exception it
+        raised (without traceback).
 
     Raises
     ------
     InvalidGeometryError, SplitPointError, OptionError, ChainError, CenterlineError, IncirCuError
+        For one polygon. :class:`Cancelled` when ``progress`` returned False.
 
     Examples
     --------
@@ -138,25 +140,24 @@ def polygon_centerline(
     >>> result = polygon_centerline(box(0, 0, 100, 10), [(0, 5), (100, 5)], spacing=1.0)
     >>> result.line.coords[0], result.line.coords[-1], float(result.widths.max())
     ((0.0, 5.0), (100.0, 5.0), 10.0)
+    >>> many = polygon_centerline([box(0, 0, 100, 10), box(0, 0, 1, 1).buffer(-1)], [[(0, 5), (100, 5)], None])
+    >>> round(many[0].line.length, 6), type(many[1]).__name__
+    (100.0, 'InvalidGeometryError')
     """
-    return run_alone(
-        polygon_centerline_steps(
-            polygon,
-            split_points,
-            spacing=spacing,
-            samples_per_chain=samples_per_chain,
-            tolerance=tolerance,
-            snap_tolerance=snap_tolerance,
-            islands=islands,
-            end_rule=end_rule,
-            guide=guide,
-            end_cap=end_cap,
-            progress=progress,
-        )
-    )
+    options = {
+        "spacing": spacing,
+        "samples_per_chain": samples_per_chain,
+        "tolerance": tolerance,
+        "snap_tolerance": snap_tolerance,
+        "islands": islands,
+        "end_rule": end_rule,
+        "guide": guide,
+        "end_cap": end_cap,
+    }
+    return one_or_many(_polygon_centerline_steps, polygon, split_points, options, progress)
 
 
-def polygon_centerline_steps(
+def _polygon_centerline_steps(
     polygon,
     split_points=None,
     *,
@@ -170,10 +171,10 @@ def polygon_centerline_steps(
     end_cap="axis",
     progress=None,
 ):
-    """:func:`polygon_centerline` as steps (see :mod:`.steps`): a generator yielding an
-    :class:`.steps.EndsRequest` when it has no split points, then the adaptive tracing's
-    :class:`.steps.TraceRequest`, and returning the :class:`PolygonCenterlineResult`; raises as
-    :func:`polygon_centerline` does. Run it with :func:`centerlines_together` or :func:`.steps.run_alone`.
+    """:func:`polygon_centerline` as steps (see :mod:`._steps`): a generator yielding an
+    :class:`._steps.EndsRequest` when it has no split points, then the adaptive tracing's
+    :class:`._steps.TraceRequest`, and returning the :class:`PolygonCenterlineResult`; raises as
+    :func:`polygon_centerline` does. Run it with :func:`centerlines_together` or :func:`._steps.run_alone`.
     """
     validate_polygon(polygon)
     check_island_mode(islands)
@@ -238,7 +239,7 @@ def _check_ends_width(polygon):
 
 
 def _automatic_ends(polygon, end_rule, guide, progress, notes):
-    """Find a polygon's ends (a step yielding an :class:`.steps.EndsRequest`, answered by :func:`.ends.find_ends`
+    """Find a polygon's ends (a step yielding an :class:`._steps.EndsRequest`, answered by :func:`.ends.find_ends`
     or, in a batch, by :func:`.ends.find_ends_together`); append what the user should know to ``notes``.
 
     Returns None when the polygon is a ring whose centerline is the loop around its hole (see :mod:`.rings`).
@@ -288,8 +289,10 @@ def lines_centerline(
 
     Parameters
     ----------
-    line_a, line_b : LineString or array_like of shape (n, 2)
-        The two lines, CRS units; they must not cross or touch.
+    line_a, line_b : LineString or array_like of shape (n, 2), or array_like of LineString
+        The two lines, CRS units; they must not cross or touch. Arrays of lines give one centerline per
+        pair (a single line on one side is paired with each line of the other), as :func:`polygon_centerline`
+        does for an array of polygons.
     spacing, samples_per_chain, tolerance, progress
         See :func:`polygon_centerline`.
     end_cap : {"axis", "runout"}
@@ -299,8 +302,9 @@ def lines_centerline(
 
     Returns
     -------
-    CenterlineResult
-        ``foot_a`` lies on ``line_a``, ``foot_b`` on ``line_b``.
+    CenterlineResult, or a list
+        ``foot_a`` lies on ``line_a``, ``foot_b`` on ``line_b``. For arrays, per pair its result or the
+        exception it raised.
 
     Raises
     ------
@@ -312,23 +316,32 @@ def lines_centerline(
     >>> result.line.coords[0], float(result.radii.max())
     ((0.0, 4.0), 4.0)
     """
-    return run_alone(
-        lines_centerline_steps(
-            line_a,
-            line_b,
-            spacing=spacing,
-            samples_per_chain=samples_per_chain,
-            tolerance=tolerance,
-            end_cap=end_cap,
-            progress=progress,
-        )
-    )
+    options = {"spacing": spacing, "samples_per_chain": samples_per_chain, "tolerance": tolerance, "end_cap": end_cap}
+    if not (_nonempty_many(line_a) or _nonempty_many(line_b)):
+        return run_alone(_lines_centerline_steps(line_a, line_b, **options, progress=progress))
+    lines_a, lines_b = _lines_per_pair(line_a, line_b)
+    per_element = {name: per_geometry(value, len(lines_a), name) for name, value in options.items()}
+    return compute(_lines_centerline_steps, list(zip(lines_a, lines_b)), per_element, {}, progress)
 
 
-def lines_centerline_steps(
+def _nonempty_many(line):
+    """Whether ``line`` is an array of lines: an empty list is an empty line (no coordinates)."""
+    return is_many(line) and len(list(line)) > 0
+
+
+def _lines_per_pair(line_a, line_b):
+    """Both arguments of :func:`lines_centerline` as lists of one line per pair (a single line repeated)."""
+    count = len(list(line_a if _nonempty_many(line_a) else line_b))
+    return [
+        per_geometry(list(line) if _nonempty_many(line) else [line] * count, count, name)
+        for line, name in ((line_a, "line_a"), (line_b, "line_b"))
+    ]
+
+
+def _lines_centerline_steps(
     line_a, line_b, *, spacing=None, samples_per_chain=None, tolerance=None, end_cap="axis", progress=None
 ):
-    """:func:`lines_centerline` as steps (see :func:`polygon_centerline_steps`); returns the
+    """:func:`lines_centerline` as steps (see :func:`_polygon_centerline_steps`); returns the
     :class:`CenterlineResult`, whose ``notes`` say when one line is more than :data:`BANK_LENGTH_RATIO` times
     as long as the other (see :func:`bank_length_note`).
     """
@@ -545,10 +558,11 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
 
     Parameters
     ----------
-    geometry : Polygon or MultiPolygon
-        CRS units.
+    geometry : Polygon or MultiPolygon, or array_like of them
+        CRS units. An array is computed as :func:`polygon_centerline` computes one.
     split_points : sequence of Point or (x, y), optional
-        Candidate split points for all parts; None: every part finds its ends.
+        Candidate split points for all parts; None: every part finds its ends. For an array: None, or one
+        sequence (or None) per geometry.
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
     **options
@@ -556,8 +570,8 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
 
     Returns
     -------
-    list of PartOutcome
-        One per part, in input order.
+    list of PartOutcome, or a list of them
+        One per part, in input order. For an array, per geometry that list or the exception it raised.
 
     Raises
     ------
@@ -572,15 +586,17 @@ def multipolygon_centerlines(geometry, split_points=None, *, snap_tolerance=None
     >>> [round(o.result.length, 6) for o in outcomes]
     [50.0, 50.0]
     """
-    return run_alone(multipolygon_centerline_steps(geometry, split_points, snap_tolerance=snap_tolerance, **options))
+    progress = options.pop("progress", None)
+    options["snap_tolerance"] = snap_tolerance
+    return one_or_many(_multipolygon_centerline_steps, geometry, split_points, options, progress)
 
 
-def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance=None, **options):
-    """:func:`multipolygon_centerlines` as steps (see :func:`polygon_centerline_steps`): the parts are traced
+def _multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance=None, **options):
+    """:func:`multipolygon_centerlines` as steps (see :func:`_polygon_centerline_steps`): the parts are traced
     one after the other; returns the list of :class:`PartOutcome`.
 
     A part's error is caught wherever it arises, also when a driver throws it into the generator at the part's
-    request (as :func:`.steps.run_together` does with a failed tracing).
+    request (as :func:`._steps.run_together` does with a failed tracing).
     """
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     coordinates = shapely.get_coordinates(points).reshape(-1, 2)
@@ -592,7 +608,7 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
             mine = coordinates[near]
             if len(mine) > 2:
                 raise split_point_count_error(len(mine), snap_tolerance, len(parts) > 1, "needs_two_or_fewer")
-            result = yield from polygon_centerline_steps(
+            result = yield from _polygon_centerline_steps(
                 part,
                 mine if len(mine) else None,
                 snap_tolerance=snap_tolerance,
@@ -601,103 +617,5 @@ def multipolygon_centerline_steps(geometry, split_points=None, *, snap_tolerance
             )
             outcomes.append(PartOutcome(index, result, None))
         except IncirCuError as error:
-            outcomes.append(PartOutcome(index, None, _detached(error)))
+            outcomes.append(PartOutcome(index, None, detached(error)))
     return outcomes
-
-
-def _detached(error):
-    """Return ``error`` without its traceback (nor those of its causes), so a kept error holds no frame.
-
-    A traceback holds the frames it passed through and their locals (here the outcome list, and the caller's
-    ``progress`` callback with everything it refers to); an error stored in a result would tie them into a
-    reference cycle that keeps them alive until the garbage collector runs, possibly never.
-    """
-    seen, current = set(), error
-    while current is not None and id(current) not in seen:
-        seen.add(id(current))
-        current.__traceback__ = None
-        current = current.__cause__ or current.__context__
-    return error
-
-
-def centerlines_together(step_generators, progress=None):
-    """Run many ``*_steps`` generators with one joint adaptive tracing: a layer of small features at once.
-
-    The results are those of the plain functions (:func:`polygon_centerline` and the others) up to
-    floating-point rounding (where an incircle touches a chain at two places equally, rounding may make the
-    other true contact its foot); tracing small features together pays the tracer's per-round overhead once
-    per batch instead of once per feature. Give batches of bounded size (see :func:`batches`).
-
-    Parameters
-    ----------
-    step_generators : iterable of generator
-        From :func:`polygon_centerline_steps`, :func:`multipolygon_centerline_steps` or
-        :func:`lines_centerline_steps`, in any mix. Each generator's own ``progress`` is still called (it
-        may cancel); the batch's progress goes to ``progress``.
-    progress : callable, optional
-        Called with the fraction of the batch done (0 to 1); when it returns False, :class:`Cancelled` is raised.
-
-    Returns
-    -------
-    list
-        Per generator, in order: what the plain function would return, or the exception it would raise (an
-        ``Exception`` instance, without traceback).
-
-    Raises
-    ------
-    Cancelled
-        If a progress callback returned False.
-
-    Examples
-    --------
-    >>> from shapely.geometry import Polygon, box
-    >>> outcomes = centerlines_together(
-    ...     [
-    ...         polygon_centerline_steps(box(0, 0, 100, 10), [(0, 5), (100, 5)]),
-    ...         polygon_centerline_steps(Polygon([(0, 0), (2, 2), (2, 0), (0, 2)]), [(0, 1), (2, 1)]),
-    ...         lines_centerline_steps([(0, 0), (50, 0)], [(0, 8), (50, 8)]),
-    ...     ]
-    ... )
-    >>> outcomes[0].line.length, type(outcomes[1]).__name__, outcomes[2].line.coords[0]
-    (100.0, 'InvalidGeometryError', (0.0, 4.0))
-    """
-    return [
-        _detached(outcome) if isinstance(outcome, Exception) else outcome
-        for outcome in run_together(step_generators, progress)
-    ]
-
-
-def batches(items, vertex_count):
-    """Split ``items`` into consecutive lists of at most :data:`BATCH_FEATURES` items and
-    :data:`BATCH_VERTICES` vertices (a larger item alone), for :func:`centerlines_together`.
-
-    Parameters
-    ----------
-    items : iterable
-        Read lazily: a batch is yielded as soon as it is full.
-    vertex_count : callable
-        ``vertex_count(item)`` -> the item's number of boundary vertices.
-
-    Yields
-    ------
-    list
-        The next batch, in input order.
-
-    Examples
-    --------
-    >>> [len(batch) for batch in batches(range(600), lambda item: 1)]
-    [256, 256, 88]
-    """
-    batch, vertices = [], 0
-    for item in items:
-        count = vertex_count(item)
-        if batch and vertices + count > BATCH_VERTICES:
-            yield batch
-            batch, vertices = [], 0
-        batch.append(item)
-        vertices += count
-        if len(batch) >= BATCH_FEATURES or vertices >= BATCH_VERTICES:
-            yield batch
-            batch, vertices = [], 0
-    if batch:
-        yield batch

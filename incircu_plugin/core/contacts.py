@@ -128,7 +128,7 @@ class Boundary:
         if count + len(chains) > MAX_SEGMENTS:
             raise InvalidGeometryError(Message("too_many_segments", count=count))
         self.segment_count = count
-        #: More than one pair of chains (a joint tracing of several features, see :mod:`.steps`): chains
+        #: More than one pair of chains (a joint tracing of several features, see :mod:`._steps`): chains
         #: ``2k`` and ``2k + 1`` belong together and never touch another pair's.
         self.several_pairs = len(chains) > 2
         self.offset = list(np.cumsum(sizes) - sizes)
@@ -211,9 +211,10 @@ class Boundary:
         """Free the spatial index (it is built again on the next use)."""
         self._index = None
 
-    def candidates(self, low, high, chain):
+    def candidates(self, low, high, chain=None):
         """Pairs (box index, segment index), each box's pairs consecutive, of segments whose bounding box meets
-        a box (``low``, ``high``: its corners, CRS units, shifted here by the ``index_shift`` of its ``chain``).
+        a box (``low``, ``high``: its corners, CRS units, shifted here by the ``index_shift`` of its ``chain``, which
+        is needed only with an ``index_shift``).
 
         With at most ``ALL_PAIRS`` (box, segment) pairs every pair is tested at once (no index to build or
         query: what small inputs and late rounds with a few boxes need). Otherwise the index is queried once

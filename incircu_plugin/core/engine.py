@@ -6,7 +6,7 @@ the chains, and ordered by where they touch the chains they form one unbranched 
 orchestrator: it checks the options, works in a local frame, gets the axis points from one of two samplers
 and has them ordered into the line (:mod:`.lines`).
 
-- **Adaptive** (default, :mod:`.adaptive`): samples start at the boundary's vertices and are refined only
+- **Adaptive** (default, :mod:`.tracing`): samples start at the boundary's vertices and are refined only
   where the axis can leave the chord between two of them; events of the axis are located exactly (or,
   where the axis bends there by less than the tolerance, proven to need no vertex) and parabolic pieces get
   vertices placed in closed form, so the line stays within ``tolerance`` of the exact medial axis with about
@@ -26,13 +26,13 @@ from typing import Callable, Optional
 import numpy as np
 from shapely.geometry import LineString
 
+from ._steps import TraceRequest, reporter, run_alone
 from .chains import COINCIDENCE_TOLERANCE, clean_chain, ensure_bounding_chains, extent_of, signed_area
 from .contacts import Boundary
 from .errors import ChainError, Message, OptionError
 from .fixed_sampling import DEFAULT_SPACING_PER_WIDTH, MAX_SAMPLES, fixed_axis_points
 from .lines import LineRequest
 from .polyline import as_coordinates, coordinate_rounding, cumulative_lengths, local_origin, typical_width
-from .steps import TraceRequest, reporter, run_alone
 
 #: Default tolerance as a fraction of the chains' typical width (see :func:`default_tolerance`).
 DEFAULT_TOLERANCE_PER_WIDTH = 1.0 / 200.0
@@ -318,8 +318,8 @@ def centerline_from_chains(
 
 
 def centerline_steps(c1, c2, spacing=None, *, samples_per_chain=None, tolerance=None, progress=None, region=None):
-    """:func:`centerline_from_chains` as steps (see :mod:`.steps`): a generator that yields one
-    :class:`.steps.TraceRequest` (adaptive sampling; none with fixed sampling), receives its axis points and
+    """:func:`centerline_from_chains` as steps (see :mod:`._steps`): a generator that yields one
+    :class:`._steps.TraceRequest` (adaptive sampling; none with fixed sampling), receives its axis points and
     returns the :class:`CenterlineResult`. Raises as :func:`centerline_from_chains` does.
 
     ``region`` (a polygon, CRS units; None: the region between the chains) is where the adaptive line's

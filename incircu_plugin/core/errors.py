@@ -66,6 +66,9 @@ MESSAGES = {
         "IncirCuCore",
         "A spacing of {spacing:.6g} would need about {planned:.3g} samples (at most {limit:.3g}); use a larger spacing."
     ),
+    "values_per_geometry": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "{name} has {given} values for {count} geometries; give one value or one per geometry."
+    ),
     "tolerance_and_spacing": QT_TRANSLATE_NOOP(
         "IncirCuCore", "Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling)."
     ),

@@ -17,11 +17,11 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, MultiLineString, MultiPolygon
 
-from .api import batches, centerlines_together, multipolygon_centerline_steps
+from .api import multipolygon_centerlines
 from .ends import GUIDE_SEARCH_SHARE
 from .errors import IncirCuError
 from .geodesy import LocalProjection, degrees_covering
-from .labels import BEND, CLEARANCE, MIN_ELONGATION, SMOOTHING, TRIM, feature_label, label_line_steps
+from .labels import BEND, CLEARANCE, MIN_ELONGATION, SMOOTHING, TRIM, feature_label, label_lines
 from .widths import width_statistics
 
 #: Columns of the result besides the geometry, with their pandas dtypes (widths and lengths in metres for
@@ -252,17 +252,23 @@ def _frame_centerlines(data, points, guides, snap_tolerance, options, label_opti
     nearby_guides = _nearby(shapes, _guide_margins(shapes), guides)
     crs_name = crs.srs if geographic else None
     result_columns, row_of = (RESULT_COLUMNS, _row) if label_options is None else (LABEL_COLUMNS, _label_row)
+    starts = [_row_start(shapes[i], nearby_points[i], nearby_guides[i], crs_name) for i in range(len(shapes))]
+    ready = [i for i, start in enumerate(starts) if not isinstance(start, Exception)]
+    compute = multipolygon_centerlines if label_options is None else label_lines
+    computed = compute(
+        [starts[i][1] for i in ready],
+        [starts[i][2] for i in ready],
+        guide=[starts[i][3] for i in ready],
+        snap_tolerance=snap_tolerance or None,
+        **options,
+        **(label_options or {}),
+    )
+    outcomes = dict(zip(ready, computed))
     rows = []
-    for batch in batches(range(len(shapes)), lambda i: int(shapely.get_num_coordinates(shapes[i]))):
-        starts = [
-            _row_start(shapes[i], nearby_points[i], nearby_guides[i], crs_name, snap_tolerance, options, label_options)
-            for i in batch
-        ]
-        traced = iter(centerlines_together([start[1] for start in starts if not isinstance(start, Exception)]))
-        for i, start in zip(batch, starts):
-            outcome = start if isinstance(start, Exception) else next(traced)
-            failed = isinstance(outcome, Exception)
-            rows.append(_failed(outcome, result_columns) if failed else row_of(shapes[i], start[0], outcome))
+    for i, start in enumerate(starts):
+        outcome = outcomes.get(i, start)
+        failed = isinstance(outcome, Exception)
+        rows.append(_failed(outcome, result_columns) if failed else row_of(shapes[i], start[0], outcome))
     columns = {
         name: pandas.Series([row[1][name] for row in rows], dtype=dtype, index=geometry.index)
         for name, dtype in result_columns.items()
@@ -300,32 +306,21 @@ def _nearby(shapes, margins, candidates):
     return found
 
 
-def _row_start(shape, points, guides, crs_name, snap_tolerance, options, label_options=None):
-    """The work of one row: ``(projection or None, multipolygon_centerline_steps)`` (``label_line_steps`` with
-    ``label_options``), or the exception raised."""
+def _row_start(shape, points, guides, crs_name):
+    """What one row's computation needs: ``(projection or None, shape, split points or None, guide or None)``,
+    the last three in the frame computed in (the local projection of a geographic frame); or the exception
+    raised."""
     try:
         geographic = crs_name is not None and shape is not None and not shape.is_empty
         projection = LocalProjection.around(shape, crs_name) if geographic else None
         local = shape if projection is None else projection.to_local(shape)
         candidates = [np.asarray(point.coords[0]) for point in points]
-        extra = {}
         guide_lines = [part for guide in guides for part in shapely.get_parts(guide) if part.geom_type == "LineString"]
-        guide_lines = [line for line in guide_lines if not line.is_empty]
-        if guide_lines:
-            extra["guide"] = MultiLineString(guide_lines)
+        guide = MultiLineString([line for line in guide_lines if not line.is_empty]) or None
         if projection is not None:
             candidates = [projection.to_local(point) for point in candidates]
-            extra = {name: projection.to_local(value) for name, value in extra.items()}
-        steps_of = multipolygon_centerline_steps if label_options is None else label_line_steps
-        steps = steps_of(
-            local,
-            candidates or None,
-            snap_tolerance=snap_tolerance or None,
-            **options,
-            **extra,
-            **(label_options or {}),
-        )
-        return projection, steps
+            guide = None if guide is None else projection.to_local(guide)
+        return projection, local, candidates or None, guide
     except Exception as error:  # noqa: BLE001 - one bad row must not stop a frame of millions
         return error
 

@@ -42,10 +42,10 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point
 
-from .api import PartOutcome, batches, centerlines_together, multipolygon_centerline_steps
+from ._many import one_or_many
+from .api import PartOutcome, _multipolygon_centerline_steps
 from .errors import IncirCuError, OptionError
 from .polyline import cumulative_lengths, points_at
-from .steps import run_alone
 
 #: Default ``trim``: the label stretch keeps the main stem where the polygon is at least half its widest width.
 #: Lettering sized to the stretch's narrowest width is then at least half as tall as the widest point allows,
@@ -158,7 +158,7 @@ def check_label_options(trim, clearance, bend, smoothing, min_elongation):
             raise OptionError(f"The label option {name} is {value!r}; it must be {what}.")
 
 
-def label_line_steps(
+def _label_line_steps(
     geometry,
     split_points=None,
     *,
@@ -169,7 +169,7 @@ def label_line_steps(
     min_elongation=MIN_ELONGATION,
     **options,
 ):
-    """:func:`label_lines` of one geometry as steps (see :func:`.api.multipolygon_centerline_steps`).
+    """:func:`label_lines` of one geometry as steps (see :mod:`._steps`).
 
     Returns
     -------
@@ -177,7 +177,7 @@ def label_line_steps(
         One per part, ``result`` a :class:`LabelResult`.
     """
     check_label_options(trim, clearance, bend, smoothing, min_elongation)
-    outcomes = yield from multipolygon_centerline_steps(geometry, split_points, **options)
+    outcomes = yield from _multipolygon_centerline_steps(geometry, split_points, **options)
     parts = shapely.get_parts(geometry)
     labelled = []
     for outcome in outcomes:
@@ -203,7 +203,7 @@ def label_lines(geometry, split_points=None, **options):
         CRS units (project a layer in degrees with :class:`.geodesy.LocalProjection`: lengths are then
         metres).
     split_points : sequence of Point or (x, y), optional
-        As for :func:`.api.multipolygon_centerlines`; only with a single geometry.
+        As for :func:`.api.multipolygon_centerlines` (for an array: None, or one sequence per geometry).
     trim : float
         Share of the widest width where the label stretch ends (default :data:`TRIM`).
     clearance : float
@@ -221,24 +221,16 @@ def label_lines(geometry, split_points=None, **options):
     -------
     list of PartOutcome, or a list of them per geometry
         For one geometry, one :class:`.api.PartOutcome` per part whose ``result`` is a :class:`LabelResult`;
-        for an array, per geometry that list, or the exception the geometry raised (computed together,
-        as :func:`.api.centerlines_together` does).
+        for an array, per geometry that list, or the exception the geometry raised (computed in batches, as
+        :func:`.api.polygon_centerline` computes an array).
 
     Raises
     ------
     InvalidGeometryError, OptionError
         For a single geometry that is not a (multi)polygon, or a bad option.
     """
-    if isinstance(geometry, shapely.Geometry) or geometry is None:
-        return run_alone(label_line_steps(geometry, split_points, **options))
-    if split_points is not None:
-        raise OptionError("Give split points with a single geometry, not with an array of them.")
-    geometries = list(geometry)
-    results = []
-    vertices = [0 if g is None else len(shapely.get_coordinates(g)) for g in geometries]
-    for batch in batches(range(len(geometries)), vertices.__getitem__):
-        results.extend(centerlines_together([label_line_steps(geometries[i], **options) for i in batch]))
-    return results
+    progress = options.pop("progress", None)
+    return one_or_many(_label_line_steps, geometry, split_points, options, progress)
 
 
 def feature_label(outcomes, geometry):

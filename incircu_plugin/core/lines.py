@@ -1,7 +1,7 @@
 """From axis points to lines: order the incircle centres along the axis, drop repeats, simplify.
 
-The samplers (:mod:`.adaptive`, :mod:`.fixed_sampling`) return the axis points of a pair of chains in no
-particular order. :func:`lines_together` turns those of many pairs (a batch of features, see :mod:`.steps`)
+The samplers (:mod:`.tracing`, :mod:`.fixed_sampling`) return the axis points of a pair of chains in no
+particular order. :func:`lines_together` turns those of many pairs (a batch of features, see :mod:`._steps`)
 into their lines at once: one sort by feature and by where each disk touches the chains, one pass dropping
 repeated centres, one Douglas-Peucker simplification call, one test that each simplified line stays inside
 its region. Each feature's line is what it would be alone, vertex for vertex: every step treats a feature's

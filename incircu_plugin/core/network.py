@@ -14,7 +14,7 @@ Method (only the engine's public :func:`centerline_from_chains` and step generat
    C_{i+1}`` run backwards). The centerline between ``C_i`` and ``D_i`` (run ``i``) runs from ``p_i`` to
    ``p_{i+1}`` through every branch touching ``C_i``; each vertex is labelled with the chain its foot on
    ``D_i`` lies on (its arc length on the ring, one index query per run). Labels follow ``D_i``'s order
-   along the line. The runs are traced together in one adaptive tracing (:func:`.steps.run_together`), so
+   along the line. The runs are traced together in one adaptive tracing (:func:`._steps.run_together`), so
    the cost grows with the outline far less than ``k - 1`` separate runs would (``benchmarks/bench_network.py``).
 2. Where the label changes from ``C_j`` to ``C_j'`` the incircle touches ``C_i``, ``C_j`` and ``C_j'``: a
    junction. It is located exactly by Newton's method on the exact distances to the three chains (equal
@@ -46,6 +46,7 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, Point, Polygon
 
+from ._steps import run_together
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .arms import MIN_ARM_RATIO, find_arm_ends
 from .caps import check_end_cap, run_out_ends
@@ -62,7 +63,6 @@ from .engine import CenterlineResult, centerline_from_chains, centerline_steps
 from .errors import IncirCuError, Message, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
-from .steps import run_together
 
 #: Island modes of a network: those of a centerline, and ``"channels"`` (channels on both sides of the large
 #: islands, see :func:`polygon_network`).
@@ -430,7 +430,7 @@ def _runs(chains, spacing, progress, engine_options, channel_islands=()):
     channel islands), traced together.
 
     One run (two chains) is traced alone, exactly as :func:`polygon_centerline` traces it; more runs are
-    traced side by side in one adaptive tracing (:func:`.steps.run_together`), the same lines up to float64
+    traced side by side in one adaptive tracing (:func:`._steps.run_together`), the same lines up to float64
     rounding at a fraction of the cost of tracing them one by one.
 
     Raises

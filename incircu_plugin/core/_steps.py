@@ -7,7 +7,7 @@ where they need the axis points of a pair of chains; the driver sends the :class
 back, and then a :class:`.lines.LineRequest` to have those points made into its line. :func:`run_alone`
 answers each request at once (what ``polygon_centerline`` and the other plain
 functions do); :func:`run_together` advances many generators side by side and answers all their pending
-requests with one tracing (:func:`.adaptive.trace_together`), and makes all their lines at once
+requests with one tracing (:func:`.tracing.trace_together`), and makes all their lines at once
 (:func:`.lines.lines_together`), so a layer of small features pays the rounds' overhead once per batch
 instead of once per feature. A polygon without split points first yields
 an :class:`EndsRequest` (its automatic ends, :func:`.ends.find_ends`); :func:`run_together` answers all
@@ -26,10 +26,10 @@ from typing import Callable
 
 import numpy as np
 
-from .adaptive import trace_one, trace_together
 from .ends import find_ends, find_ends_together
 from .errors import Cancelled
 from .lines import LineRequest, lines_together
+from .tracing import trace_one, trace_together
 
 #: Share of a batch's progress taken by its round of automatic ends (the tracing takes the rest).
 ENDS_SHARE = 0.2
@@ -37,7 +37,7 @@ ENDS_SHARE = 0.2
 
 @dataclass
 class TraceRequest:
-    """What one pair of chains asks of the adaptive tracer (see :func:`.adaptive.adaptive_axis_points`).
+    """What one pair of chains asks of the adaptive tracer (see :func:`.tracing.adaptive_axis_points`).
 
     Attributes
     ----------
