@@ -46,6 +46,7 @@ from incircu_plugin.core.tracing.settling import sag_bound
 from incircu_plugin.core.tracing.sites import radius_at
 from incircu_plugin.core.tracing.spans import FAN
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle, assert_within_tolerance, check_centerline
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -65,21 +66,11 @@ GAMBIA = geometry_cases.gambia()
 CASES = ANALYTIC + WAVY + [GAMBIA]
 
 
-def marked(cases):
-    """The cases as pytest parameters; slow: those with many boundary vertices (seconds of oracle work) and those
-    placed elsewhere than in the unit frame (the same check of a shape again, in another frame)."""
-    unit = geometry_cases.PLACEMENTS["unit"]
-    return [
-        pytest.param(c, id=c.name, marks=[pytest.mark.slow] if c.vertex_count > 300 or c.placement != unit else [])
-        for c in cases
-    ]
-
-
 #: Largest ratio of output vertices to the vertices of both chains at the default tolerance.
 VERTEX_RATIO = 1.5
 
 
-@pytest.mark.parametrize("case", marked(CASES))
+@pytest.mark.parametrize("case", case_params(CASES, other_placements=True))
 def test_default_tolerance_bounds_the_distance_to_the_medial_axis(case):
     result = polygon_centerline(case.polygon, case.split_points)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
@@ -185,7 +176,7 @@ def test_an_event_between_two_nearly_collinear_segments_at_a_split_point_is_on_t
 OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + WAVY[:2]
 
 
-@pytest.mark.parametrize("case", marked(OPEN))
+@pytest.mark.parametrize("case", case_params(OPEN, other_placements=True))
 def test_open_mode_is_within_the_tolerance_away_from_the_end_gaps(case):
     line_a, line_b = geometry_cases.bank_pair(case, False, True)
     region = geometry_cases.channel_case("region", case.bank_a, case.bank_b, case.width).polygon

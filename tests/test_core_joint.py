@@ -30,6 +30,7 @@ from incircu_plugin.core.tracing.joint import (
     trace_batch,
 )
 from tests.support import geometry_cases
+from tests.support.marks import is_slow_case
 from tests.support.oracle import assert_within_tolerance, check_centerline
 
 CLOSED = geometry_cases.analytic_cases() + [
@@ -71,11 +72,10 @@ JOBS = closed_jobs() + open_jobs()
 
 
 def oracle_params():
-    """The jobs as parameters of the oracle check; slow: the 1/30 and 30 times scales, the cases of more than 300
-    boundary vertices (a second or more of oracle work each) and those placed elsewhere than in the unit frame."""
-    unit = geometry_cases.PLACEMENTS["unit"]
+    """The jobs as parameters of the oracle check; slow: the 1/30 and 30 times scales, and at scale 1 the cases
+    :func:`~tests.support.marks.is_slow_case` counts slow in any placement but the unit frame."""
     slow = {f"{case.name} x{factor:g}" for case in CLOSED for factor in (1.0 / 30.0, 30.0)}
-    slow |= {f"{case.name} x1" for case in CLOSED if case.vertex_count > 300 or case.placement != unit}
+    slow |= {f"{case.name} x1" for case in CLOSED if is_slow_case(case, other_placements=True)}
     return [
         pytest.param(i, id=job[0], marks=[pytest.mark.slow] if job[0] in slow else []) for i, job in enumerate(JOBS)
     ]

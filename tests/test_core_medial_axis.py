@@ -15,6 +15,7 @@ import shapely
 
 from incircu_plugin.core import polygon_centerline
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -32,6 +33,7 @@ WAVY = [
 ]
 GAMBIA = geometry_cases.gambia()
 CASES = ANALYTIC + WAVY + [GAMBIA]
+
 
 _ORACLES = {}
 
@@ -61,7 +63,7 @@ def position_tolerance(case, radii):
 
 
 @pytest.mark.parametrize("fraction", [0.5, 0.1, 0.02], ids=["w/2", "w/10", "w/50"])
-@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+@pytest.mark.parametrize("case", case_params(CASES))
 def test_every_vertex_lies_on_the_medial_axis_between_the_chains(case, fraction):
     oracle = oracle_for(case)
     result = polygon_centerline(case.polygon, case.split_points, spacing=fraction * case.width)
