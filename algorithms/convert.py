@@ -1,5 +1,8 @@
 """Geometry hand-over between QGIS and the core: WKB conversion and the local metric frame of geographic layers."""
 
+from dataclasses import dataclass, replace
+from typing import Optional
+
 import numpy as np
 import shapely
 from qgis.core import (
@@ -89,29 +92,37 @@ def collect_lines(lines):
     return QgsGeometry(multi)
 
 
+@dataclass(frozen=True)
 class WorkingFrame:
-    """The coordinate frame the core computes in, and the way back to the layer's CRS.
+    """The coordinate frame the core computes in, and the way back to the layer's CRS; a value.
 
     Projected layers are used as they are. A geographic layer (degrees) is computed in the core's
     :class:`LocalProjection`, an azimuthal equidistant projection centred on each feature, so lengths,
-    widths, ``SPACING`` and ``SNAP_TOLERANCE`` are in metres.
+    widths, ``SPACING`` and ``SNAP_TOLERANCE`` are in metres: :meth:`around` returns the frame of one feature
+    (the layer's frame is never changed).
 
-    Parameters
+    Attributes
     ----------
-    crs : QgsCoordinateReferenceSystem
-        CRS of the layer.
+    unit : str
+        Abbreviation of the unit of the frame's lengths, for messages (:func:`length_unit`).
+    geographic_crs : str or None
+        The layer's CRS (an EPSG code or WKT) when it is in degrees.
+    projection : LocalProjection or None
+        The feature's local projection (None for a projected layer, or the layer's frame).
     """
 
-    def __init__(self, crs):
-        #: Abbreviation of the unit of the frame's lengths, for messages (:func:`length_unit`).
-        self.unit = length_unit(crs)
-        self.geographic_crs = None
+    unit: str
+    geographic_crs: Optional[str] = None
+    projection: Optional[LocalProjection] = None
+
+    @classmethod
+    def of_layer(cls, crs):
+        """The frame of a layer in ``crs`` (a ``QgsCoordinateReferenceSystem``), before any feature."""
+        geographic_crs = None
         if crs.isGeographic():
             authority = crs.authid()
-            self.geographic_crs = (
-                authority if authority.upper().startswith("EPSG:") else crs.toWkt(CrsWktVariant.Wkt2_2019)
-            )
-        self.projection = None
+            geographic_crs = authority if authority.upper().startswith("EPSG:") else crs.toWkt(CrsWktVariant.Wkt2_2019)
+        return cls(length_unit(crs), geographic_crs)
 
     def named_lengths(self, message):
         """Return a core message with its lengths' unit named as the frame's (the core says "CRS units": of the
@@ -123,17 +134,13 @@ class WorkingFrame:
         """True when the layer is in degrees and results are computed in metres."""
         return self.geographic_crs is not None
 
-    def centre_on(self, geometry):
-        """Centre the local projection on a geometry of the layer (no effect for projected layers).
-
-        Parameters
-        ----------
-        geometry : QgsGeometry
-            Geometry in the layer's CRS (degrees for geographic layers).
-        """
-        if self.is_geographic:
-            # Not the bounding box's centre: a shape across the antimeridian may be stored wrapped (-180..180).
-            self.projection = LocalProjection.around(to_shapely(geometry), self.geographic_crs)
+    def around(self, geometry):
+        """Return the frame of one feature: centred on ``geometry`` (a ``QgsGeometry`` of the layer, degrees for
+        a geographic layer); the layer's frame itself for a projected layer."""
+        if not self.is_geographic:
+            return self
+        # Not the bounding box's centre: a shape across the antimeridian may be stored wrapped (-180..180).
+        return replace(self, projection=LocalProjection.around(to_shapely(geometry), self.geographic_crs))
 
     def to_core(self, geometry):
         """Return a QGIS geometry of the layer as a Shapely geometry in the working frame."""

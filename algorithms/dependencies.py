@@ -51,6 +51,7 @@ SHAPELY2_API = (
     "is_empty",
     "is_missing",
     "is_simple",
+    "is_valid",
     "is_valid_reason",
     "length",
     "line_interpolate_point",

@@ -24,6 +24,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .compat import GeometryType
 from .dependencies import require_core
+from .messages import core_text
 
 #: The group of the expression builder the functions are listed in.
 GROUP = "IncirCu"
@@ -194,7 +195,9 @@ def _ellipsoid(crs):
 
 
 def cached(name, compute, geometry, crs, options):
-    """``compute(geometry, crs, options)`` through :data:`CACHE`; errors of the core give None (cached too).
+    """``compute(geometry, crs, options)`` through :data:`CACHE`; the core's errors about the geometry give None
+    (cached too); an invalid option (the core's ``OptionError``) is raised, never cached, so the expression
+    reports it.
 
     A ``points`` option is applied after the cache (False: a point result gives None), so a style asking for
     the line and for the point of the same feature computes it once.
@@ -207,6 +210,8 @@ def cached(name, compute, geometry, crs, options):
         core = require_core()
         try:
             value = compute(geometry, crs, dict(options))
+        except core.OptionError:
+            raise
         except core.IncirCuError:
             value = None
         CACHE.put(key, value)
@@ -263,7 +268,8 @@ class IncirCuFunction(QgsExpressionFunction):
             options = self.options(values[1:])
             return cached(self.name(), self.compute, geometry, layer_crs(context), options)
         except Exception as error:  # noqa: BLE001 - any failure becomes the expression's error, not a crash
-            parent.setEvalErrorString(f"{self.name()}: {error}")
+            # QGIS shows the evaluation error (the expression builder, the message log) and returns NULL.
+            parent.setEvalErrorString(f"{self.name()}: {core_text(error)}")
             return None
 
     def usesGeometry(self, node):

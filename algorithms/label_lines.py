@@ -1,12 +1,11 @@
 """Processing algorithm ``incircu:labellines``: the line a curved lake or river name follows, or a label point."""
 
-from functools import partial
-
 from qgis.core import QgsProcessingParameterFeatureSink, QgsProcessingParameterNumber
 
-from .compat import GeometryType, ProcessingNumberParameterType, ProcessingSourceType
+from .compat import ProcessingNumberParameterType, ProcessingSourceType
 from .dependencies import shapely_problem
 from .polygon_centerline import PolygonCenterlineAlgorithm
+from .styles import CENTERLINE, LABEL_POINTS
 
 #: Just under the middle of the polygon: the largest clearance a label line can keep (half the width).
 LARGEST_CLEARANCE = 0.49
@@ -158,20 +157,25 @@ class LabelLinesAlgorithm(PolygonCenterlineAlgorithm):
         )
         self.add_count_outputs(self.tr("Number of labels"), self.tr("Number of label lines and points written."))
 
-    def process_features(self, run, parameters, context, feedback):
+    #: The core function the features are computed with (a key of ``running.ARRAY_FUNCTIONS``).
+    CORE_FUNCTION = "label"
+
+    def label_options(self, parameters, context):
+        """Return the core's label keywords (``trim``...) as ``(name, value)`` pairs."""
+        names = (
+            ("trim", self.TRIM),
+            ("clearance", self.CLEARANCE),
+            ("bend", self.BEND),
+            ("smoothing", self.SMOOTHING),
+            ("min_elongation", self.MIN_ELONGATION),
+        )
+        return tuple((keyword, self.parameterAsDouble(parameters, name, context)) for keyword, name in names)
+
+    def output_layer_words(self):
+        """The label lines and the label points, as their loaded layers' names say them."""
+        return {CENTERLINE: self.tr("label lines"), LABEL_POINTS: self.tr("label points")}
+
+    def open_writer(self, parameters, context, options):
         from .label_outputs import LabelWriter  # needs Shapely, checked by require_core
 
-        source = run.source(self.INPUT, GeometryType.Polygon)
-        run.warn_dropped_z(source)
-        crs = source.sourceCrs()
-        run.use_writer(LabelWriter(self, parameters, context, source.fields(), crs), crs)
-        options = {
-            "trim": self.parameterAsDouble(parameters, self.TRIM, context),
-            "clearance": self.parameterAsDouble(parameters, self.CLEARANCE, context),
-            "bend": self.parameterAsDouble(parameters, self.BEND, context),
-            "smoothing": self.parameterAsDouble(parameters, self.SMOOTHING, context),
-            "min_elongation": self.parameterAsDouble(parameters, self.MIN_ELONGATION, context),
-        }
-        return self.run_polygons(
-            run, source, parameters, context, partial(run.core.labels._label_line_steps, **options)
-        )
+        return LabelWriter(self, parameters, context, options)

@@ -6,7 +6,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 from .compat import WkbType
 from .convert import from_shapely
 from .outputs import DOUBLE, FEATURE_ID, INTEGER, STRING, make_fields, primary_key_sink, release_sinks
-from .styles import CENTERLINE, style_outputs_on_load
+from .styles import CENTERLINE, LABEL_POINTS, style_outputs_on_load
 
 #: Fields added to the input attributes on both outputs (lengths in layer units, metres when geographic):
 #: ``source_fid`` (the input feature's id), ``part`` (the polygon part, from 0), ``length`` (of the label line;
@@ -31,20 +31,23 @@ class LabelWriter:
     algorithm : IncirCuAlgorithm
         With ``OUTPUT`` (lines) and ``OUTPUT_POINTS``.
     parameters, context : dict, QgsProcessingContext
-    input_fields : QgsFields
-        Attributes copied from the input features.
-    crs : QgsCoordinateReferenceSystem
+        For the sinks.
+    options : PolygonOptions
+        The run's options (``source``: the polygon layer, ``outputs``: the loaded layers' names).
     """
 
-    def __init__(self, algorithm, parameters, context, input_fields, crs):
+    def __init__(self, algorithm, parameters, context, options):
+        input_fields, crs = options.source.fields(), options.source.sourceCrs()
         self.algorithm = algorithm
+        self.crs = crs
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(LABEL_FIELDS))
         self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, WkbType.LineString, crs)
         self.points, self.points_id = algorithm.parameterAsSink(
             parameters, algorithm.OUTPUT_POINTS, context, self.fields, WkbType.Point, crs
         )
         self.centerline_count = 0
-        style_outputs_on_load(context, {CENTERLINE: self.sink_id})
+        destinations = {CENTERLINE: self.sink_id, LABEL_POINTS: self.points_id}
+        style_outputs_on_load(context, destinations, options.outputs.layer_names, options.outputs.group)
 
     def close(self):
         """Flush and release both sinks, which closes (commits) their files; safe to call twice."""
@@ -54,27 +57,27 @@ class LabelWriter:
         """Return the output ids keyed by parameter name."""
         return {self.algorithm.OUTPUT: self.sink_id, self.algorithm.OUTPUT_POINTS: self.points_id}
 
-    def write(self, attributes, source_fid, parts, frame):
+    def write(self, feature, parts, frame):
         """Write the label of every successful part of one input feature.
 
         Parameters
         ----------
-        attributes : list
-            Attribute values of the input feature.
-        source_fid : int
+        feature : QgsFeature
+            The input feature (its attributes are copied, its id is ``source_fid``).
         parts : sequence of (int, LabelResult)
         frame : WorkingFrame
             Frame the labels are expressed in.
         """
+        attributes, source_fid = feature.attributes(), feature.id()
         for part_index, label in parts:
             sink = self.sink if label.kind == "line" else self.points
             if sink is None:
                 continue
-            feature = QgsFeature(self.fields)
-            feature.setGeometry(from_shapely(frame.to_layer(label.geometry)))
+            written = QgsFeature(self.fields)
+            written.setGeometry(from_shapely(frame.to_layer(label.geometry)))
             added = [source_fid, part_index, label.length, label.width_min, label.elongation, label.kind]
-            feature.setAttributes([*attributes, *added])
-            if not sink.addFeature(feature, QgsFeatureSink.Flag.FastInsert):
+            written.setAttributes([*attributes, *added])
+            if not sink.addFeature(written, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(
                     QCoreApplication.translate("IncirCuAlgorithm", "Could not write a label: {}").format(
                         sink.lastError()

@@ -5,7 +5,7 @@ length given in another unit is converted to the layer's) and, for the parameter
 data-defined override button (a value per feature, from a field or an expression of the input layer). QGIS's
 own widget reads a length in degrees when the layer is geographic, but IncirCu computes such layers in a local
 metric projection, so its lengths are metres there (:func:`.units.reading_unit`). The parameters name this
-wrapper in their metadata (:func:`.base.length_parameter`); Processing imports it only when it builds a dialog,
+wrapper in their metadata (:func:`.parameters.length_parameter`); Processing imports it only when it builds a dialog,
 so ``qgis_process`` never loads this module. The batch dialog and the modeler keep QGIS's own widgets. The
 label is QGIS's own (translated "[optional]", help text as tooltip), so it reads like every other one.
 """

@@ -13,6 +13,8 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingFeatureSourceFlag, ProcessingSourceType
+from .options import LinesOptions, read_choice, read_field, read_outputs, read_sampling, read_source
+from .running import FeatureTask
 
 
 class LinesCenterlineAlgorithm(IncirCuAlgorithm):
@@ -106,65 +108,59 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
         self.add_end_cap_parameter(self.tr("the middle of the gap between the two lines' ends"))
         self.add_result_parameters()
 
-    def input_layer_name(self, parameters, context):
-        """Return the names of both line layers, "banks_a / banks_b", as the output layers' names start."""
-        names = [self.parameterAsSource(parameters, name, context) for name in (self.LINES_A, self.LINES_B)]
-        return " / ".join(source.sourceName() for source in names if source is not None)
-
-    def process_features(self, run, parameters, context, feedback):
-        line_type = GeometryType.Line
-        source_a = run.source(self.LINES_A, line_type)
-        source_b = run.source(self.LINES_B, line_type)
-        run.warn_dropped_z(source_a)
-        run.warn_dropped_z(source_b)
-        field_a = self.field_parameter(parameters, self.PAIR_FIELD_A, source_a, context)
-        field_b = self.field_parameter(parameters, self.PAIR_FIELD_B, source_b, context)
-        if not field_a and not field_b:
+    def read_options(self, parameters, context, core):
+        """Return the run's :class:`.options.LinesOptions`."""
+        source_a = read_source(self, parameters, self.LINES_A, GeometryType.Line, context)
+        source_b = read_source(self, parameters, self.LINES_B, GeometryType.Line, context)
+        field_a = read_field(self, parameters, self.PAIR_FIELD_A, source_a, context)
+        field_b = read_field(self, parameters, self.PAIR_FIELD_B, source_b, context)
+        guessed = not field_a and not field_b
+        if guessed:
             field_a = field_b = self.guessed_pair_field(source_a, source_b)
-            if field_a:
-                feedback.pushInfo(
-                    self.tr(
-                        "No pairing fields given: both layers have the field '{}', so lines are paired by its "
-                        "values (give {} and {} to pair them otherwise)."
-                    ).format(field_a, self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B))
-                )
         if bool(field_a) != bool(field_b):
             raise QgsProcessingException(
                 self.tr("Give both {} and {}, or neither (then each layer holds one line).").format(
                     self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B)
                 )
             )
-        sampling = self.feature_sampling(parameters, context)
-        end_cap = self.end_cap_option(run, parameters, context)
-        crs = source_a.sourceCrs()
-        run.open_outputs(source_a.fields(), crs, multi=False)
+        return LinesOptions(
+            source_a,
+            source_b,
+            field_a,
+            field_b,
+            guessed and bool(field_a),
+            read_sampling(self, parameters, context),
+            read_choice(self, parameters, self.END_CAP, core.END_CAPS, context),
+            # The output layers' names start with both line layers' names, "banks_a / banks_b".
+            read_outputs(self, parameters, context, f"{source_a.sourceName()} / {source_b.sourceName()}"),
+        )
 
+    def open_writer(self, parameters, context, options):
+        from .outputs import CenterlineWriter  # needs Shapely, checked by require_core
+
+        fields, crs = options.source_a.fields(), options.source_a.sourceCrs()
+        return CenterlineWriter(self, parameters, context, fields, crs, False, options.outputs)
+
+    def process_features(self, run, options):
+        source_a, source_b, field_a, field_b = options.source_a, options.source_b, options.field_a, options.field_b
+        run.warn_dropped_z(source_a)
+        run.warn_dropped_z(source_b)
+        if options.guessed_field:
+            run.feedback.pushInfo(
+                self.tr(
+                    "No pairing fields given: both layers have the field '{}', so lines are paired by its "
+                    "values (give {} and {} to pair them otherwise)."
+                ).format(field_a, self.parameter_label(self.PAIR_FIELD_A), self.parameter_label(self.PAIR_FIELD_B))
+            )
         groups_a = self.group_features(source_a, field_a, QgsFeatureRequest())
-        request_b = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
+        request_b = QgsFeatureRequest().setDestinationCrs(source_a.sourceCrs(), run.context.transformContext())
         groups_b = self.group_features(source_b, field_b, request_b)
         if not field_a:
-            for name, groups in ((self.LINES_A, groups_a), (self.LINES_B, groups_b)):
-                if not groups:
-                    raise QgsProcessingException(self.tr("{} holds no line.").format(self.parameter_label(name)))
-                merged = self.merged_line(groups[None][1])
-                if merged.isMultipart() and len(merged.asGeometryCollection()) > 1:
-                    raise QgsProcessingException(
-                        self.tr(
-                            "{} holds {} separate lines that do not join into one; give {} and {} to pair them, "
-                            "or merge them into one line."
-                        ).format(
-                            self.parameter_label(name),
-                            len(merged.asGeometryCollection()),
-                            self.parameter_label(self.PAIR_FIELD_A),
-                            self.parameter_label(self.PAIR_FIELD_B),
-                        )
-                    )
-
+            self.check_single_lines(groups_a, groups_b)
         tasks = (
-            self._task(run, key, first, geometries, groups_b, field_b, sampling, end_cap)
-            for key, (first, geometries) in groups_a.items()
+            self._task(run, options, key, first, geometries, groups_b) for key, (first, geometries) in groups_a.items()
         )
-        run.run_batches(tasks, len(groups_a))
+        run.run_batches("lines", tasks, len(groups_a))
         for key, (first, _) in groups_b.items():
             if key not in groups_a:
                 run.warn(
@@ -174,12 +170,31 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
                 )
         return run.finish()
 
-    def _task(self, run, key, first, geometries, groups_b, field_b, sampling, end_cap):
-        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines;
-        ``sampling(feature)`` gives the sampling options of a feature of LINES_A."""
+    def check_single_lines(self, groups_a, groups_b):
+        """Raise ``QgsProcessingException`` unless each layer (grouped without a pairing field) holds one line."""
+        for name, groups in ((self.LINES_A, groups_a), (self.LINES_B, groups_b)):
+            if not groups:
+                raise QgsProcessingException(self.tr("{} holds no line.").format(self.parameter_label(name)))
+            merged = self.merged_line(groups[None][1])
+            if merged.isMultipart() and len(merged.asGeometryCollection()) > 1:
+                raise QgsProcessingException(
+                    self.tr(
+                        "{} holds {} separate lines that do not join into one; give {} and {} to pair them, "
+                        "or merge them into one line."
+                    ).format(
+                        self.parameter_label(name),
+                        len(merged.asGeometryCollection()),
+                        self.parameter_label(self.PAIR_FIELD_A),
+                        self.parameter_label(self.PAIR_FIELD_B),
+                    )
+                )
+
+    def _task(self, run, options, key, first, geometries, groups_b):
+        """The :class:`.running.FeatureTask` of one pair of lines: ``first`` feature of LINES_A, its lines."""
         if key not in groups_b:
             return run.skip_task(
-                first, self.tr("no line in {} has {} = {!r}").format(self.parameter_label(self.LINES_B), field_b, key)
+                first,
+                self.tr("no line in {} has {} = {!r}").format(self.parameter_label(self.LINES_B), options.field_b, key),
             )
         line_a = self.merged_line(geometries)
         line_b = self.merged_line(groups_b[key][1])
@@ -187,16 +202,11 @@ class LinesCenterlineAlgorithm(IncirCuAlgorithm):
             return run.skip_task(first, self.not_joined(self.LINES_A))
         if line_b.isMultipart() and len(line_b.asGeometryCollection()) > 1:
             return run.skip_task(first, self.not_joined(self.LINES_B))
-        run.frame.centre_on(QgsGeometry.collectGeometry([line_a, line_b]))
-        steps = run.core.api._lines_centerline_steps(
-            run.frame.to_core(line_a),
-            run.frame.to_core(line_b),
-            progress=run.keep_going,
-            end_cap=end_cap,
-            **sampling(first),
-        )
+        frame = run.frame.around(QgsGeometry.collectGeometry([line_a, line_b]))
+        keywords = dict(options.sampling.of(first), end_cap=options.end_cap)
         vertices = line_a.constGet().nCoordinates() + line_b.constGet().nCoordinates()
-        return run.task(first, steps, partial(self._parts, run, first.id()), vertices)
+        inputs = (frame.to_core(line_a), frame.to_core(line_b))
+        return FeatureTask(first, frame, inputs, keywords, partial(self._parts, run, first.id()), vertices)
 
     def not_joined(self, name):
         """Why a pair is skipped when its lines of layer parameter ``name`` do not join into one (translated)."""

@@ -12,6 +12,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QCoreApplication
 
+from ..incircu_plugin.core.layers import number_nodes
 from .compat import WkbType
 from .convert import line_with_m
 from .outputs import (
@@ -64,9 +65,6 @@ AUTOMATIC = "auto"
 #: Value of ``from_point``/``to_point`` at a gate (``CONNECT_TOUCHING``).
 GATE = "gate"
 
-#: An end this close to a gate, as a fraction of its network's extent, is the gate (see ``core.layers``).
-GATE_SNAP = 1e-9
-
 
 class NetworkWriter:
     """Creates the branch layer of the network algorithm and writes networks into it.
@@ -75,15 +73,15 @@ class NetworkWriter:
     ----------
     algorithm : IncirCuAlgorithm
     parameters, context : dict, QgsProcessingContext
-    input_fields : QgsFields
-        Attributes copied from the input features.
-    crs : QgsCoordinateReferenceSystem
-    add_m : bool
-        Store the local width as M value.
+        For the sinks (``OUTPUT``, ``OUTPUT_NODES``).
+    options : NetworkOptions
+        The run's options (``source``: the input layer, ``outputs``: M values and layer names).
     """
 
-    def __init__(self, algorithm, parameters, context, input_fields, crs, add_m):
-        self.add_m = add_m
+    def __init__(self, algorithm, parameters, context, options):
+        input_fields, crs = options.source.fields(), options.source.sourceCrs()
+        self.crs = crs
+        self.add_m = add_m = options.outputs.add_m
         line_type = QgsWkbTypes.addM(WkbType.LineString) if add_m else WkbType.LineString
         self.fields = QgsProcessingUtils.combineFields(input_fields, make_fields(BRANCH_FIELDS))
         self.sink, self.sink_id = primary_key_sink(algorithm, parameters, context, self.fields, line_type, crs)
@@ -94,13 +92,14 @@ class NetworkWriter:
         self.centerline_count = 0
         self.output_name = algorithm.OUTPUT
         self.nodes_name = algorithm.OUTPUT_NODES
-        # Node id -> [layer (x, y), degree, radius, kind]; ends keyed by their exact layer coordinates too.
-        self.node_table = {}
+        # The layer's nodes by id (as the core's ``LayerNetworks.nodes``) and the ids of the ends by coordinates.
+        self.node_table = []
         self.end_ids = {}
         style_outputs_on_load(
             context,
             {CENTERLINE: self.sink_id},
-            *algorithm.output_layer_names(parameters, context),
+            options.outputs.layer_names,
+            options.outputs.group,
             metres_per_unit=metres_per_unit(crs),
         )
 
@@ -108,56 +107,31 @@ class NetworkWriter:
         """Write the node layer, then flush and release the sinks, which closes (commits) their files; safe to
         call twice."""
         if self.nodes is not None:
-            for node, (xy, degree, radius, kind) in sorted(self.node_table.items()):
+            for node, row in enumerate(self.node_table):
                 feature = QgsFeature(make_fields(NODE_FIELDS))
-                feature.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(*xy)))
-                feature.setAttributes([node, degree, rounded(radius, self.decimals), kind])
+                feature.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(row["geometry"].x, row["geometry"].y)))
+                feature.setAttributes([node, row["degree"], rounded(row["radius"], self.decimals), row["kind"]])
                 self.nodes.addFeature(feature, QgsFeatureSink.Flag.FastInsert)
-            self.node_table = {}
+            self.node_table = []
         release_sinks(self, ("sink", "nodes"))
 
     def destinations(self):
         """Return the output ids keyed by parameter name."""
         return {self.output_name: self.sink_id, self.nodes_name: self.nodes_id}
 
-    def _node_ids(self, network, coordinates, gates):
-        """Return the layer-wide id of each node of a network (its ``nodes`` rows in layer coordinates, its ends
-        moved onto the gates within ``GATE_SNAP`` of its extent, in place): an end takes the id of an earlier
-        end at exactly the same place, a junction a new id; degrees are added up."""
-        count = len(network.split_points)
-        if len(gates):
-            extent = float(np.hypot(*np.ptp(coordinates, axis=0)))
-            for row in range(count):
-                distance = np.hypot(*(gates - coordinates[row]).T)
-                if distance.min() <= GATE_SNAP * extent:
-                    coordinates[row] = gates[int(np.argmin(distance))]
-        ids = []
-        degrees = network.node_degrees
-        radii = network.node_radii
-        for row, xy in enumerate(map(tuple, coordinates.tolist())):
-            if row < count and xy in self.end_ids:
-                node = self.end_ids[xy]
-            else:
-                node = len(self.node_table)
-                kind = "end" if row < count else "junction"
-                self.node_table[node] = [xy, 0, float(radii[row]), kind]
-                if row < count:
-                    self.end_ids[xy] = node
-            self.node_table[node][1] += int(degrees[row])
-            ids.append(node)
-        return ids
-
-    def write(self, attributes, source_fid, parts, frame):
+    def write(self, feature, parts, frame):
         """Write one feature per branch of the networks of one input feature.
 
-        Every branch carries ``attributes`` (the input feature's values), ``source_fid`` (the input feature's
-        id) and its own statistics. ``parts`` holds, per successful part, its index, its ``NetworkResult`` and
-        the ids of the split points the network's indices refer to; ``frame`` is the working frame the
-        networks are expressed in.
+        Every branch carries the input ``feature``'s attributes, its id (``source_fid``) and its own statistics.
+        ``parts`` holds, per successful part, its index, its ``NetworkResult``, the ids of the split points the
+        network's indices refer to, the feature's gates (layer CRS) and its extent (the core's
+        ``bounding_diagonal``, layer units); ``frame`` is the working frame the networks are expressed in.
         """
-        for _, network, ids, gates in parts:
+        attributes, source_fid = feature.attributes(), feature.id()
+        for _, network, ids, gates, extent in parts:
             nodes = np.array(frame.to_layer(network.nodes), dtype=float)
-            node_ids = self._node_ids(network, nodes, np.asarray(gates, dtype=float).reshape(-1, 2))
+            gates = np.asarray(gates, dtype=float).reshape(-1, 2)
+            node_ids = number_nodes(self.node_table, self.end_ids, network, nodes, gates, extent)
             names = [
                 str(ids[index]) if index is not None else f"{network.end_sources[row][:4]}:{node_ids[row]}"
                 for row, index in enumerate(network.point_indices)

@@ -16,7 +16,6 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QCoreApplication
 
 from ..incircu_plugin.core.widths import (
-    TRANSECT_STYLES,
     incircle_polygons,
     transects,
     vertex_chainages,
@@ -107,13 +106,15 @@ def release_sinks(writer, names):
 def primary_key_sink(algorithm, parameters, context, fields, wkb_type, crs):
     """Create the ``OUTPUT`` sink of ``algorithm`` with a primary key of its own; return (sink, destination id).
 
+    Raises ``QgsProcessingException`` when the sink cannot be created.
+
     The output copies the input attributes, but one input feature can give several output features (parts
     written separately, branches), and an input's ``fid`` need not be unique. A GeoPackage takes a field named
     ``fid`` as its primary key and would refuse a repeated value, so the sink numbers the features afresh
     (``RegeneratePrimaryKey``, as QGIS's own algorithms that split features do); ``source_fid`` keeps the link
     to the input.
     """
-    return algorithm.parameterAsSink(
+    sink, destination = algorithm.parameterAsSink(
         parameters,
         algorithm.OUTPUT,
         context,
@@ -122,6 +123,9 @@ def primary_key_sink(algorithm, parameters, context, fields, wkb_type, crs):
         crs,
         QgsFeatureSink.SinkFlag.RegeneratePrimaryKey,
     )
+    if sink is None:
+        raise QgsProcessingException(algorithm.invalidSinkError(parameters, algorithm.OUTPUT))
+    return sink, destination
 
 
 class CenterlineWriter:
@@ -132,26 +136,25 @@ class CenterlineWriter:
     algorithm : IncirCuAlgorithm
         The running algorithm (parameter lookup).
     parameters, context : dict, QgsProcessingContext
-        As passed to ``processAlgorithm``.
+        As passed to ``processAlgorithm`` (for the sinks).
     input_fields : QgsFields
         Attributes copied from the input features.
     crs : QgsCoordinateReferenceSystem
         CRS of every output.
     multi : bool
         Write MultiLineString centerlines (one feature per input feature).
-    add_m : bool
-        Store the local width as M value.
-    transect_interval : float
-        Spacing of the transects, working-frame units; 0 = the mean width of each centerline.
+    options : OutputOptions
+        M values, the transects' interval (per feature, working-frame units; 0 = the mean width of each
+        centerline) and style, the loaded layers' names.
     """
 
-    def __init__(self, algorithm, parameters, context, input_fields, crs, multi, add_m, transect_interval):
+    def __init__(self, algorithm, parameters, context, input_fields, crs, multi, options):
         self.algorithm = algorithm
-        self.add_m = add_m
+        self.crs = crs
+        self.add_m = add_m = options.add_m
         self.multi = multi
-        self.transect_interval = transect_interval
-        # The enum's choices are in the order of the core's TRANSECT_STYLES.
-        self.transect_style = TRANSECT_STYLES[algorithm.parameterAsEnum(parameters, algorithm.TRANSECT_STYLE, context)]
+        self.transect_interval = options.transect_interval
+        self.transect_style = options.transect_style
         self.decimals = length_decimals(crs)
         line_type = WkbType.MultiLineString if multi else WkbType.LineString
         if add_m:
@@ -184,7 +187,8 @@ class CenterlineWriter:
                 TRANSECTS: self.transects_id,
                 INCIRCLES: self.circles_id,
             },
-            *algorithm.output_layer_names(parameters, context),
+            options.layer_names,
+            options.group,
             metres_per_unit=self.metres_per_unit,
         )
 
@@ -214,15 +218,14 @@ class CenterlineWriter:
             algorithm.OUTPUT_TRANSECTS: self.transects_id,
         }
 
-    def write(self, attributes, source_fid, parts, frame):
+    def write(self, feature, parts, frame):
         """Write the centerline(s) of one input feature and its optional outputs.
 
         Parameters
         ----------
-        attributes : list
-            Attribute values of the input feature.
-        source_fid : int
-            Id of the input feature, written in every output's ``source_fid``.
+        feature : QgsFeature
+            The input feature: its attributes are copied, its id written in every output's ``source_fid``, its
+            transects spaced at its own interval (where data-defined).
         parts : sequence of (int, CenterlineResult)
             Part index and result of every successful part.
         frame : WorkingFrame
@@ -230,6 +233,7 @@ class CenterlineWriter:
         """
         if not parts:
             return
+        attributes, source_fid = feature.attributes(), feature.id()
         groups = [parts] if self.multi else [[part] for part in parts]
         for group in groups:
             lines = []
@@ -249,10 +253,11 @@ class CenterlineWriter:
                     )
                 )
             self.centerline_count += 1
+        interval = self.transect_interval(feature)
         for part_index, result in parts:
-            self._write_extras(source_fid, part_index, result, frame)
+            self._write_extras(source_fid, part_index, result, frame, interval)
 
-    def _write_extras(self, source_fid, part_index, result, frame):
+    def _write_extras(self, source_fid, part_index, result, frame, interval):
         part, decimals = part_number(part_index), self.decimals
         if VERTICES in self.stylers or INCIRCLES in self.stylers:
             spacings = np.diff(vertex_chainages(result))
@@ -287,7 +292,7 @@ class CenterlineWriter:
                 )
                 self.circles.addFeature(disc, QgsFeatureSink.Flag.FastInsert)
         if self.transects is not None:
-            interval = self.transect_interval or width_statistics([result])["width_mean"] or 0.0
+            interval = interval or width_statistics([result])["width_mean"] or 0.0
             if interval <= 0:
                 return
             for transect in transects(result, interval, style=self.transect_style):

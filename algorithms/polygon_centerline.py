@@ -13,7 +13,16 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingSourceType
-from .running import no_geometry
+from .options import (
+    PolygonOptions,
+    read_choice,
+    read_optional_source,
+    read_outputs,
+    read_per_feature,
+    read_sampling,
+    read_source,
+)
+from .running import FeatureTask, no_geometry
 from .split_points import SplitPoints
 
 
@@ -147,107 +156,100 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ),
         )
 
-    def rule_name(self, parameters, context):
-        """Return where the ends of this run come from: "split points", "guide lines", or the automatic rule."""
-        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
-            return self.tr("split points")
-        if parameters.get(self.GUIDE_LINES) not in (None, ""):
-            return self.tr("guide lines")
-        rules = (self.tr("main stem"), self.tr("longest path"))
-        return rules[self.parameterAsEnum(parameters, self.END_RULE, context)]
-
-    def process_features(self, run, parameters, context, feedback):
-        source = run.source(self.INPUT, GeometryType.Polygon)
-        run.warn_dropped_z(source)
-        separate = self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context)
-        multi = not separate and QgsWkbTypes.isMultiType(source.wkbType())
-        run.open_outputs(source.fields(), source.sourceCrs(), multi=multi)
-        return self.run_polygons(run, source, parameters, context, run.core.api._multipolygon_centerline_steps)
-
-    def run_polygons(self, run, source, parameters, context, steps_function):
-        """Compute every polygon of ``source`` in batches and write it through ``run``'s writer (open already).
-
-        Parameters
-        ----------
-        run : FeatureRun
-        source : QgsProcessingFeatureSource
-            The polygon layer.
-        parameters, context : dict, QgsProcessingContext
-        steps_function : callable
-            The core's ``multipolygon_centerline_steps`` or a function taking the same arguments whose
-            outcomes are :class:`PartOutcome` lists too (the label lines').
-
-        Returns
-        -------
-        dict
-            The algorithm's result map.
-        """
-        crs = source.sourceCrs()
-        split_source = None
-        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
-            split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
-        sampling_of = self.feature_sampling(parameters, context)
-        # The enum's choices are in the order of the core's ISLAND_MODES.
-        islands = run.core.ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
-        end_rule = run.core.END_RULES[self.parameterAsEnum(parameters, self.END_RULE, context)]
-
-        split_points = SplitPoints(split_source, crs, context)
-
-        guides, guide_index = [], QgsSpatialIndex()
-        if parameters.get(self.GUIDE_LINES) not in (None, ""):
-            guide_source = run.source(self.GUIDE_LINES, GeometryType.Line)
-            request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
-            for guide_feature in guide_source.getFeatures(request):
-                if guide_feature.hasGeometry():
-                    guide_index.addFeature(len(guides), guide_feature.geometry().boundingBox())
-                    guides.append(guide_feature.geometry())
-
-        # The label algorithm shares these inputs but has neither an end cap choice (its line is trimmed) nor gates.
+    def read_options(self, parameters, context, core):
+        """Return the run's :class:`.options.PolygonOptions`."""
+        source = read_source(self, parameters, self.INPUT, GeometryType.Polygon, context)
         has = self.parameterDefinition
-        end_cap = self.end_cap_option(run, parameters, context) if has(self.END_CAP) else "axis"
-        gates = None
-        if has(self.CONNECT_TOUCHING) and self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
-            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
+        options = {
+            "source": source,
+            "split_points": read_optional_source(self, parameters, self.SPLIT_POINTS, GeometryType.Point, context),
+            "guide_lines": read_optional_source(self, parameters, self.GUIDE_LINES, GeometryType.Line, context),
+            "snap_tolerance": read_per_feature(self, parameters, self.SNAP_TOLERANCE, context),
+            "sampling": read_sampling(self, parameters, context),
+            # The enums' choices are in the order of the core's ISLAND_MODES, END_RULES and END_CAPS.
+            "islands": read_choice(self, parameters, self.ISLANDS, core.ISLAND_MODES, context),
+            "end_rule": read_choice(self, parameters, self.END_RULE, core.END_RULES, context),
+            # The label algorithm has neither an end cap choice (its line is trimmed) nor parts nor gates.
+            "end_cap": read_choice(self, parameters, self.END_CAP, core.END_CAPS, context)
+            if has(self.END_CAP)
+            else "axis",
+            "separate_parts": bool(has(self.SEPARATE_PARTS))
+            and self.parameterAsBoolean(parameters, self.SEPARATE_PARTS, context),
+            "connect_touching": bool(has(self.CONNECT_TOUCHING))
+            and self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context),
+        }
+        rule = self.rule_name(options["split_points"], options["guide_lines"], options["end_rule"], core)
+        outputs = read_outputs(self, parameters, context, source.sourceName(), rule)
+        return PolygonOptions(**options, outputs=outputs, label=self.label_options(parameters, context))
 
-            gates = LayerGates(run, source)
+    def label_options(self, parameters, context):
+        """Return the core's label keywords as ``(name, value)`` pairs: none for centerlines."""
+        return ()
 
-        def task(feature):
-            if not run.has_geometry(feature):
-                return run.skip_task(feature, no_geometry())
-            snap_tolerance = snap_tolerance_of(feature)
-            options = dict(
-                sampling_of(feature),
-                islands=islands,
-                end_rule=end_rule,
-                end_cap=end_cap,
-                snap_tolerance=snap_tolerance or None,
-            )
-            geometry = feature.geometry()
-            run.frame.centre_on(geometry)
-            candidates, _ = split_points.near(geometry, snap_tolerance, run.frame)
-            core_geometry = None
-            if gates is not None:
-                # The gates are split points; the geometry carries them as vertices, so the line ends there.
-                core_geometry, core_gates, _ = gates.of(feature.id(), run.frame)
-                candidates = [*candidates, *core_gates]
-            if core_geometry is None:
-                core_geometry = run.frame.to_core(geometry)
-            steps = steps_function(
-                core_geometry,
-                candidates if len(candidates) else None,
-                guide=_guide_near(run.frame, geometry, guides, guide_index),
-                progress=run.keep_going,
-                **options,
-            )
-            given = split_points if split_source is not None else None
-            parts = partial(self._parts, run, feature.id(), given, snap_tolerance, core_geometry)
-            return run.task(feature, steps, parts, geometry.constGet().nCoordinates())
+    def rule_name(self, split_points, guide_lines, end_rule, core):
+        """Return where the ends of this run come from, for the output layers' names: "split points", "guide
+        lines", or the automatic rule (``end_rule``, one of ``core.END_RULES``)."""
+        if split_points is not None:
+            return self.tr("split points")
+        if guide_lines is not None:
+            return self.tr("guide lines")
+        return dict(zip(core.END_RULES, (self.tr("main stem"), self.tr("longest path"))))[end_rule]
 
-        run.run_batches(map(task, run.source_features(source)), source.featureCount())
+    def open_writer(self, parameters, context, options):
+        from .outputs import CenterlineWriter  # needs Shapely, checked by require_core
+
+        source = options.source
+        multi = not options.separate_parts and QgsWkbTypes.isMultiType(source.wkbType())
+        fields, crs = source.fields(), source.sourceCrs()
+        return CenterlineWriter(self, parameters, context, fields, crs, multi, options.outputs)
+
+    #: The core function the features are computed with (a key of ``running.ARRAY_FUNCTIONS``).
+    CORE_FUNCTION = "polygon"
+
+    def process_features(self, run, options):
+        """Compute every polygon in batches and write it through ``run``'s writer."""
+        source = options.source
+        run.warn_dropped_z(source)
+        crs, context = source.sourceCrs(), run.context
+        split_points = SplitPoints(options.split_points, crs, context)
+        guides = GuideLines(options.guide_lines, crs, context)
+        gates = run.layer_gates(source) if options.connect_touching else None
+        tasks = (
+            self._task(run, options, feature, split_points, guides, gates) for feature in run.source_features(source)
+        )
+        run.run_batches(self.CORE_FUNCTION, tasks, source.featureCount())
         return run.finish()
 
-    def _parts(self, run, feature_id, split_points, snap_tolerance, geometry, outcomes):
+    def _task(self, run, options, feature, split_points, guides, gates):
+        """The :class:`.running.FeatureTask` of one polygon feature, in its own working frame."""
+        if not run.has_geometry(feature):
+            return run.skip_task(feature, no_geometry())
+        geometry = feature.geometry()
+        frame = run.frame.around(geometry)
+        snap_tolerance = options.snap_tolerance(feature)
+        candidates, _ = split_points.near(geometry, snap_tolerance, frame)
+        core_geometry = None
+        if gates is not None:
+            # The gates are split points; the geometry carries them as vertices, so the line ends there.
+            core_geometry, core_gates, _ = gates.of(feature.id(), frame)
+            candidates = [*candidates, *core_gates]
+        if core_geometry is None:
+            core_geometry = frame.to_core(geometry)
+        keywords = dict(
+            options.sampling.of(feature),
+            islands=options.islands,
+            end_rule=options.end_rule,
+            end_cap=options.end_cap,
+            snap_tolerance=snap_tolerance or None,
+            guide=guides.near(geometry, frame),
+            **dict(options.label),
+        )
+        given = split_points if options.split_points is not None else None
+        parts = partial(self._parts, run, feature.id(), given, snap_tolerance, core_geometry, frame)
+        inputs = (core_geometry, candidates if len(candidates) else None)
+        return FeatureTask(feature, frame, inputs, keywords, parts, geometry.constGet().nCoordinates())
+
+    def _parts(self, run, feature_id, split_points, snap_tolerance, geometry, frame, outcomes):
         """The successful parts of a polygon to write; warn about the others and about automatic ends.
 
         Parameters
@@ -260,23 +262,18 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
             ``SNAP_TOLERANCE`` as given, layer units (metres for a layer in degrees); 0: the core's default.
         geometry : Polygon or MultiPolygon
             The feature's geometry in the working frame it was computed in.
+        frame : WorkingFrame
+            That frame.
         outcomes : list of PartOutcome
         """
         import shapely  # after require_core, like the core: a missing Shapely gets its install message
 
-        several = len(outcomes) > 1
         parts = []
-        for outcome in outcomes:
-            part_index = outcome.part_index if several else None
-            if outcome.error is not None:
-                run.skip(feature_id, outcome.error, part_index)
-                continue
-            for note in getattr(outcome.result, "notes", ()):
-                run.warn_feature(feature_id, note, part_index)
+        for outcome, part_index in run.successful_parts(feature_id, outcomes):
             if outcome.result.ends_found and split_points is not None:
                 part = shapely.get_parts(geometry)[outcome.part_index]
-                nearest = split_points.nearest_distance(part.exterior, run.frame)
-                message = self._no_split_point(nearest, snap_tolerance, run.frame.unit)
+                nearest = split_points.nearest_distance(part.exterior, frame)
+                message = self._no_split_point(nearest, snap_tolerance, frame.unit)
                 run.warn_feature(
                     feature_id, self.tr("{} Its ends were found automatically.").format(message), part_index
                 )
@@ -306,22 +303,40 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         )
 
 
-def _guide_near(frame, geometry, guides, index):
-    """Return the guide lines whose box meets the polygon's grown box, as one core MultiLineString.
+class GuideLines:
+    """The lines of ``GUIDE_LINES`` (``source``, None without), reprojected to the polygon layer's ``crs`` with
+    the transformations of ``context``, read once and found per polygon by a spatial index."""
 
-    The box grows by the core's ``GUIDE_SEARCH_SHARE`` of its larger side. Returns None without guide lines there; the core keeps only the guide lying near the polygon.
-    """
-    # Imported here, like the core (see ``running.FeatureRun``), so a missing Shapely gets its install message.
-    import shapely
+    def __init__(self, source, crs, context):
+        self.lines, self.index = [], QgsSpatialIndex()
+        if source is None:
+            return
+        request = QgsFeatureRequest().setDestinationCrs(crs, context.transformContext())
+        for feature in source.getFeatures(request):
+            if feature.hasGeometry():
+                self.index.addFeature(len(self.lines), feature.geometry().boundingBox())
+                self.lines.append(feature.geometry())
 
-    from ..incircu_plugin.core.ends import GUIDE_SEARCH_SHARE
+    def near(self, geometry, frame):
+        """Return the guide lines whose box meets the polygon's grown box, as one MultiLineString of the
+        working frame ``frame`` (the polygon's); None without guide lines there.
 
-    box = geometry.boundingBox()
-    nearby = [guides[i] for i in index.intersects(box.buffered(GUIDE_SEARCH_SHARE * max(box.width(), box.height())))]
-    parts = [
-        part
-        for guide in nearby
-        for part in shapely.get_parts(frame.to_core(guide))
-        if part.geom_type == "LineString" and not part.is_empty
-    ]
-    return shapely.MultiLineString(parts) if parts else None
+        The box grows by the core's ``GUIDE_SEARCH_SHARE`` of its larger side; the core keeps only the guide
+        lying near the polygon.
+        """
+        if not self.lines:
+            return None
+        # Imported here, like the core (see ``running.FeatureRun``), so a missing Shapely gets its install message.
+        import shapely
+
+        from ..incircu_plugin.core.ends import GUIDE_SEARCH_SHARE
+
+        box = geometry.boundingBox()
+        grown = box.buffered(GUIDE_SEARCH_SHARE * max(box.width(), box.height()))
+        parts = [
+            part
+            for found in self.index.intersects(grown)
+            for part in shapely.get_parts(frame.to_core(self.lines[found]))
+            if part.geom_type == "LineString" and not part.is_empty
+        ]
+        return shapely.MultiLineString(parts) if parts else None

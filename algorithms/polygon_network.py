@@ -1,5 +1,7 @@
 """Processing algorithm ``incircu:polygonnetwork``: the medial-axis tree between the ends of a polygon's arms."""
 
+from functools import partial
+
 from qgis.core import (
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
@@ -9,7 +11,19 @@ from qgis.core import (
 
 from .base import IncirCuAlgorithm
 from .compat import GeometryType, ProcessingNumberParameterType, ProcessingSourceType
+from .options import (
+    NetworkOptions,
+    read_choice,
+    read_field,
+    read_optional_source,
+    read_outputs,
+    read_per_feature,
+    read_sampling,
+    read_source,
+)
+from .running import FeatureTask, no_geometry
 from .split_points import SplitPoints
+from .styles import CENTERLINE
 
 
 class PolygonNetworkAlgorithm(IncirCuAlgorithm):
@@ -37,9 +51,6 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
     def shortDescription(self):
         return self.tr("The medial-axis tree between the arm ends of a confluence, a delta or a road junction.")
-
-    def centerline_layer_word(self):
-        return self.tr("centerline network")
 
     def centerline_output_name(self):
         """Return the label of the branch output."""
@@ -148,6 +159,10 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
             advanced=True,
         )
         self.add_connect_touching_parameter()
+        self.add_network_outputs()
+
+    def add_network_outputs(self):
+        """Add ``ADD_M``, the branch and node layers and the two counts."""
         self.add_m_parameter()
         self.add_parameter(
             QgsProcessingParameterFeatureSink(
@@ -178,64 +193,77 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
         )
         self.add_count_outputs(self.tr("Number of branches"), self.tr("Number of branch features written."))
 
-    def process_features(self, run, parameters, context, feedback):
-        from .network_outputs import NetworkWriter  # after FeatureRun: it needs Shapely, checked there
+    def output_layer_words(self):
+        return {**super().output_layer_words(), CENTERLINE: self.tr("centerline network")}
 
-        source = run.source(self.INPUT, GeometryType.Polygon)
-        crs = source.sourceCrs()
+    def read_options(self, parameters, context, core):
+        """Return the run's :class:`.options.NetworkOptions`."""
+        source = read_source(self, parameters, self.INPUT, GeometryType.Polygon, context)
+        split_points = read_optional_source(self, parameters, self.SPLIT_POINTS, GeometryType.Point, context)
+        id_field = (
+            "" if split_points is None else read_field(self, parameters, self.SPLIT_ID_FIELD, split_points, context)
+        )
+        return NetworkOptions(
+            source=source,
+            split_points=split_points,
+            id_field=id_field,
+            snap_tolerance=read_per_feature(self, parameters, self.SNAP_TOLERANCE, context),
+            sampling=read_sampling(self, parameters, context),
+            # The enums' choices are in the order of the core's NETWORK_ISLAND_MODES and END_CAPS.
+            islands=read_choice(self, parameters, self.ISLANDS, core.NETWORK_ISLAND_MODES, context),
+            end_cap=read_choice(self, parameters, self.END_CAP, core.END_CAPS, context),
+            min_arm_ratio=self.parameterAsDouble(parameters, self.MIN_ARM_RATIO, context),
+            min_arm_length=self.parameterAsDouble(parameters, self.MIN_ARM_LENGTH, context) or None,
+            connect_touching=self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context),
+            outputs=read_outputs(self, parameters, context, source.sourceName()),
+        )
+
+    def open_writer(self, parameters, context, options):
+        from .network_outputs import NetworkWriter  # needs Shapely, checked by require_core
+
+        return NetworkWriter(self, parameters, context, options)
+
+    def process_features(self, run, options):
+        source = options.source
         run.warn_dropped_z(source)
-        split_source = None
-        if parameters.get(self.SPLIT_POINTS) not in (None, ""):
-            split_source = run.source(self.SPLIT_POINTS, GeometryType.Point)
-        id_field = None
-        if split_source is not None:
-            id_field = self.field_parameter(parameters, self.SPLIT_ID_FIELD, split_source, context)
-        min_arm_ratio = self.parameterAsDouble(parameters, self.MIN_ARM_RATIO, context)
-        min_arm_length = self.parameterAsDouble(parameters, self.MIN_ARM_LENGTH, context) or None
-        snap_tolerance_of = self.length_of_feature(parameters, self.SNAP_TOLERANCE, context)
-        sampling_of = self.feature_sampling(parameters, context)
-        # The enum's choices are in the order of the core's NETWORK_ISLAND_MODES.
-        islands = run.core.NETWORK_ISLAND_MODES[self.parameterAsEnum(parameters, self.ISLANDS, context)]
-        end_cap = self.end_cap_option(run, parameters, context)
-        add_m = self.parameterAsBoolean(parameters, self.ADD_M, context)
-        gates = None
-        if self.parameterAsBoolean(parameters, self.CONNECT_TOUCHING, context):
-            from .touching import LayerGates  # after FeatureRun: it needs Shapely, checked there
-
-            gates = LayerGates(run, source)
-        run.use_writer(NetworkWriter(self, parameters, context, source.fields(), crs, add_m), crs)
-        split_points = SplitPoints(split_source, crs, context, id_field)
-
-        for feature in run.features(source):
-            snap_tolerance = snap_tolerance_of(feature)
-            geometry = feature.geometry()
-            run.frame.centre_on(geometry)
-            candidates, ids = split_points.near(geometry, snap_tolerance, run.frame)
-            core_geometry, core_gates, layer_gates = None, [], []
-            if gates is not None:
-                core_geometry, core_gates, layer_gates = gates.of(feature.id(), run.frame)
-            outcomes = run.compute(
-                feature.id(),
-                None,
-                run.core.multipolygon_networks,
-                run.frame.to_core(geometry) if core_geometry is None else core_geometry,
-                candidates,
-                gates=core_gates,
-                snap_tolerance=snap_tolerance or None,
-                **sampling_of(feature),
-                islands=islands,
-                end_cap=end_cap,
-                min_arm_ratio=min_arm_ratio,
-                min_arm_length=min_arm_length,
-            )
-            several = len(outcomes or ()) > 1
-            parts = []
-            for outcome in outcomes or ():
-                if outcome.error is not None:
-                    run.skip(feature.id(), outcome.error, outcome.part_index if several else None)
-                    continue
-                for note in outcome.result.notes:
-                    run.warn_feature(feature.id(), note, outcome.part_index if several else None)
-                parts.append((outcome.part_index, outcome.result, ids, layer_gates))
-            run.write(feature, parts)
+        gates = run.layer_gates(source) if options.connect_touching else None
+        split_points = SplitPoints(options.split_points, source.sourceCrs(), run.context, options.id_field)
+        task = partial(self._task, run, options, gates, split_points)
+        run.run_batches("network", map(task, run.source_features(source)), source.featureCount())
         return run.finish()
+
+    def _task(self, run, options, gates, split_points, feature):
+        """The :class:`.running.FeatureTask` of one polygon feature: its geometry and split points in its frame,
+        its gates (``CONNECT_TOUCHING``), the network options."""
+        from ..incircu_plugin.core.touching import bounding_diagonal  # needs Shapely, checked by require_core
+
+        if not run.has_geometry(feature):
+            return run.skip_task(feature, no_geometry())
+        geometry = feature.geometry()
+        frame = run.frame.around(geometry)
+        snap_tolerance = options.snap_tolerance(feature)
+        candidates, ids = split_points.near(geometry, snap_tolerance, frame)
+        core_geometry, core_gates, layer_gates, extent = None, [], [], 0.0
+        if gates is not None:
+            core_geometry, core_gates, layer_gates = gates.of(feature.id(), frame)
+            extent = bounding_diagonal(gates.layer_geometry(feature.id()))
+        keywords = dict(
+            options.sampling.of(feature),
+            gates=core_gates,
+            snap_tolerance=snap_tolerance or None,
+            islands=options.islands,
+            end_cap=options.end_cap,
+            min_arm_ratio=options.min_arm_ratio,
+            min_arm_length=options.min_arm_length,
+        )
+        inputs = (frame.to_core(geometry) if core_geometry is None else core_geometry, candidates)
+        parts = partial(self._parts, run, feature.id(), ids, layer_gates, extent)
+        return FeatureTask(feature, frame, inputs, keywords, parts, geometry.constGet().nCoordinates())
+
+    @staticmethod
+    def _parts(run, feature_id, ids, layer_gates, extent, outcomes):
+        """The networks of a feature's successful parts, with what the writer numbers their nodes by."""
+        return [
+            (outcome.part_index, outcome.result, ids, layer_gates, extent)
+            for outcome, _ in run.successful_parts(feature_id, outcomes)
+        ]

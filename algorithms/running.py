@@ -1,24 +1,28 @@
-"""Feature driver shared by the algorithms: inputs, progress, cancel, warnings, outputs and counts.
+"""Feature driver shared by the algorithms: progress, cancel, warnings, outputs and counts, and the one place
+the algorithms call the core's computations.
 
-The centerline algorithms compute their features in batches traced together (:meth:`FeatureRun.run_batches`,
-the core's ``centerlines_together``); the network algorithm computes one feature at a time
-(:meth:`FeatureRun.features` and :meth:`FeatureRun.compute`).
+The centerline algorithms describe each feature as a :class:`FeatureTask` (the core function's inputs, in the
+feature's working frame) and compute them in batches (:meth:`FeatureRun.run_batches`: one call of the core's
+public function on the arrays of a batch's inputs, traced together, the same call a Python user makes); the
+network algorithm too (each network traces its own runs).
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Optional
 
-from qgis.core import QgsFeatureRequest, QgsProcessingException, QgsWkbTypes
+from qgis.core import QgsFeatureRequest, QgsWkbTypes
 from qgis.PyQt.QtCore import QCoreApplication
 
-from .compat import GeometryType, ProcessingFeatureSourceFlag
+from .compat import ProcessingFeatureSourceFlag
 from .dependencies import require_core
 from .messages import core_text
 
-GEOMETRY_TYPE_NAMES = {
-    GeometryType.Point: "point",
-    GeometryType.Line: "line",
-    GeometryType.Polygon: "polygon",
+#: The core's public functions a :class:`FeatureTask` may name (its ``kind``); each takes arrays of inputs.
+ARRAY_FUNCTIONS = {
+    "polygon": "multipolygon_centerlines",
+    "label": "label_lines",
+    "lines": "lines_centerline",
+    "network": "multipolygon_networks",
 }
 
 
@@ -30,24 +34,27 @@ class FeatureTask:
     ----------
     feature : QgsFeature
         The feature written with the result (its attributes and id).
-    steps : generator or None
-        The core's step generator (``*_centerline_steps``); None when the feature is skipped.
+    frame : WorkingFrame or None
+        The feature's working frame: its inputs and results are in it.
+    inputs : tuple
+        The core function's positional arguments (geometries in ``frame``).
+    keywords : dict
+        The core function's keywords (its options for this feature).
     parts : callable or None
-        ``parts(result)`` -> list of ``(part_index, CenterlineResult)`` to write, from what the generator
+        ``parts(result)`` -> list of ``(part_index, CenterlineResult)`` to write, from what the core
         returned; it may warn about the feature (through the run, in input order).
     vertices : int
         The feature's boundary vertices, for the batch bounds.
-    projection : LocalProjection or None
-        The working frame's projection the feature is computed in (None for a projected layer).
     skip_reason : str or None
         Why the feature is skipped without computing.
     """
 
     feature: Any
-    steps: Any = None
+    frame: Any = None
+    inputs: tuple = ()
+    keywords: dict = field(default_factory=dict)
     parts: Optional[Callable[[Any], list]] = None
     vertices: int = 0
-    projection: Any = None
     skip_reason: Optional[str] = None
 
 
@@ -72,50 +79,22 @@ class FeatureRun:
     Parameters
     ----------
     algorithm : IncirCuAlgorithm
-    parameters : dict
     context : QgsProcessingContext
     feedback : QgsProcessingFeedback
     """
 
-    def __init__(self, algorithm, parameters, context, feedback):
+    def __init__(self, algorithm, context, feedback):
         self.core = require_core()
         self.algorithm = algorithm
-        self.parameters = parameters
         self.context = context
         self.feedback = feedback
+        #: The layer's working frame (a feature's is ``frame.around(geometry)``), once the outputs are open.
         self.frame = None
         self.writer = None
         self.skipped = 0
         self.z_warned = False
-        #: ``value(feature)`` of ``TRANSECT_INTERVAL`` once the centerline outputs are open (None before).
-        self.transect_interval_of = None
         self.progress_base = 0.0
         self.progress_step = 100.0
-
-    def source(self, name, geometry_type):
-        """Return the feature source of parameter ``name`` after checking its geometry type.
-
-        Raises
-        ------
-        QgsProcessingException
-            When the layer cannot be opened or holds another geometry type.
-        """
-        source = self.algorithm.parameterAsSource(self.parameters, name, self.context)
-        if source is None:
-            raise QgsProcessingException(self.algorithm.invalidSourceError(self.parameters, name))
-        actual = QgsWkbTypes.geometryType(source.wkbType())
-        if actual != geometry_type:
-            raise QgsProcessingException(
-                QCoreApplication.translate(
-                    "IncirCuAlgorithm", "{} must be a {} layer, but '{}' holds {} geometries."
-                ).format(
-                    self.algorithm.parameter_label(name),
-                    GEOMETRY_TYPE_NAMES[geometry_type],
-                    source.sourceName(),
-                    GEOMETRY_TYPE_NAMES.get(actual, "no"),
-                )
-            )
-        return source
 
     def warn_dropped_z(self, source):
         """Warn, once per run, when ``source`` has Z values: the core computes in the plane and drops them."""
@@ -132,45 +111,16 @@ class FeatureRun:
         # fmt: on
         self.warn(message.format(source.sourceName()))
 
-    def open_outputs(self, fields, crs, multi):
-        """Create the output sinks and the working frame of the layer's CRS."""
-        # Imported only now: it needs Shapely, whose presence require_core has checked.
-        from .outputs import CenterlineWriter
-
-        algorithm, parameters, context = self.algorithm, self.parameters, self.context
-        self.transect_interval_of = algorithm.length_of_feature(parameters, algorithm.TRANSECT_INTERVAL, context)
-        interval = algorithm.parameterAsDouble(parameters, algorithm.TRANSECT_INTERVAL, context)
-        add_m = algorithm.parameterAsBoolean(parameters, algorithm.ADD_M, context)
-        self.use_writer(CenterlineWriter(algorithm, parameters, context, fields, crs, multi, add_m, interval), crs)
-
     def use_writer(self, writer, crs):
         """Write results through ``writer`` and compute in the working frame of ``crs``.
 
-        ``writer`` has ``sink`` (None when it could not be created), ``write(attributes, source_fid, parts,
-        frame)``, ``destinations()`` and ``centerline_count``, like :class:`CenterlineWriter`.
+        ``writer`` has ``write(feature, parts, frame)``, ``destinations()``, ``close()`` and
+        ``centerline_count``, like :class:`.outputs.CenterlineWriter`.
         """
         from .convert import WorkingFrame  # needs Shapely, checked by require_core
 
-        if writer.sink is None:
-            raise QgsProcessingException(self.algorithm.invalidSinkError(self.parameters, self.algorithm.OUTPUT))
         self.writer = writer
-        self.frame = WorkingFrame(crs)
-
-    def features(self, source, request=None):
-        """Yield the features of ``source`` with progress, stopping when the user cancels.
-
-        Features without geometry are skipped with a warning. Processing's invalid-geometry filter is
-        bypassed: the core checks validity itself and the warning then says what is wrong and where.
-        """
-        total = source.featureCount()
-        self.progress_step = 100.0 / total if total > 0 else 0.0
-        for current, feature in enumerate(self.source_features(source, request)):
-            self.progress_base = current * self.progress_step
-            self.feedback.setProgress(self.progress_base)
-            if not self.has_geometry(feature):
-                self.skip(feature.id(), no_geometry())
-                continue
-            yield feature
+        self.frame = WorkingFrame.of_layer(crs)
 
     def source_features(self, source, request=None):
         """Yield every feature of ``source`` (also those without geometry), stopping when the user cancels.
@@ -189,11 +139,6 @@ class FeatureRun:
     def has_geometry(feature):
         """True when ``feature`` has a non-empty geometry."""
         return feature.hasGeometry() and not feature.geometry().isEmpty()
-
-    def report_progress(self, fraction):
-        """Progress callback for the core: ``fraction`` of the current feature done; False cancels."""
-        self.feedback.setProgress(self.progress_base + fraction * self.progress_step)
-        return not self.feedback.isCanceled()
 
     def skip(self, feature_id, reason, part_index=None):
         """Warn that a feature (or one of its parts) is skipped, and count it; ``reason`` may be the core's
@@ -232,21 +177,33 @@ class FeatureRun:
             feature_id, part_number(part_index)
         )
 
-    def compute(self, feature_id, part_index, function, *args, **kwargs):
-        """Call a core function for one feature (part); a core error becomes a skip warning.
+    def layer_gates(self, source):
+        """Return the :class:`.touching.LayerGates` of a polygon source (``CONNECT_TOUCHING``), read once."""
+        from .touching import LayerGates  # needs Shapely, checked by require_core
 
-        Returns
-        -------
-        object or None
-            What ``function`` returns; ``None`` when the feature (part) was skipped or the user cancelled.
-        """
-        try:
-            return function(*args, progress=self.report_progress, **kwargs)
-        except self.core.Cancelled:
-            return None
-        except Exception as error:  # noqa: BLE001 - one bad feature must not abort a run of thousands
-            self.skip_failed(feature_id, error, part_index)
-        return None
+        ids, shapes = LayerGates.read(self, source)
+        failed = []
+        with_gates, gates = self.core.touching_gates(shapes, errors=failed)
+        for index, error in failed:
+            # The feature is still computed, without the gates GEOS could not find.
+            self.warn_feature(ids[index], error)
+        return LayerGates(ids, with_gates, gates)
+
+    def successful_parts(self, feature_id, outcomes):
+        """Return ``(outcome, part_index)`` for every successful part of a feature (``outcomes``: the core's
+        ``PartOutcome`` list), ``part_index`` None for a single part (how messages name it); skip the others
+        with their error and warn about the core's notes."""
+        several = len(outcomes) > 1
+        successful = []
+        for outcome in outcomes:
+            part_index = outcome.part_index if several else None
+            if outcome.error is not None:
+                self.skip(feature_id, outcome.error, part_index)
+                continue
+            for note in getattr(outcome.result, "notes", ()):
+                self.warn_feature(feature_id, note, part_index)
+            successful.append((outcome, part_index))
+        return successful
 
     def skip_failed(self, feature_id, error, part_index=None):
         """Skip a feature (part) whose computation raised ``error``: a core error says why; another exception
@@ -262,32 +219,12 @@ class FeatureRun:
             part_index,
         )
 
-    def task(self, feature, steps, parts, vertices):
-        """A :class:`FeatureTask` computed in the working frame as it is now (centred on the feature).
-
-        Parameters
-        ----------
-        feature : QgsFeature
-            Written with the result.
-        steps : generator
-            The core's step generator; give it ``progress=run.keep_going`` so a cancel stops it.
-        parts : callable
-            See :class:`FeatureTask`.
-        vertices : int
-            The feature's boundary vertices.
-        """
-        return FeatureTask(feature, steps, parts, vertices, self.frame.projection)
-
     @staticmethod
     def skip_task(feature, reason):
         """A :class:`FeatureTask` skipping ``feature`` for ``reason`` (warned in input order)."""
         return FeatureTask(feature, skip_reason=reason)
 
-    def keep_going(self, fraction):
-        """Progress callback of one feature's steps in a batch: only says whether to go on (False cancels)."""
-        return not self.feedback.isCanceled()
-
-    def run_batches(self, tasks, total):
+    def run_batches(self, kind, tasks, total):
         """Compute ``tasks`` in batches traced together; write each feature's outcome in input order.
 
         A feature whose computation fails is skipped with a warning (see :meth:`skip_failed`); the others go
@@ -296,6 +233,8 @@ class FeatureRun:
 
         Parameters
         ----------
+        kind : str
+            The core function every task's inputs are for: a key of :data:`ARRAY_FUNCTIONS`.
         tasks : iterable of FeatureTask
             In input order, read lazily (one batch at a time, see the core's ``batches``).
         total : int
@@ -308,27 +247,31 @@ class FeatureRun:
         for batch in batches(tasks, lambda task: task.vertices):
             if self.feedback.isCanceled():
                 return
-            outcomes = self._computed(batch, done)
+            outcomes = self._computed(getattr(self.core, ARRAY_FUNCTIONS[kind]), batch, done)
             if outcomes is None:
                 return
             for task, outcome in zip(batch, outcomes):
                 self._finish(task, outcome)
             done += len(batch)
 
-    def _computed(self, batch, done):
-        """The outcome of every task of ``batch`` (None for a skipped one); None when the user cancelled."""
+    def _computed(self, function, batch, done):
+        """The outcome of every task of ``batch`` (None for a skipped one) by one call of the core's array
+        ``function`` on the computed tasks' inputs and keywords (every task of a run has the same keywords);
+        None when the user cancelled."""
         self.progress_base = done * self.progress_step
         span = len(batch) * self.progress_step
+        tasks = [task for task in batch if task.skip_reason is None]
+        if not tasks:
+            return [None] * len(batch)
+        inputs = [list(column) for column in zip(*(task.inputs for task in tasks))]
+        keywords = {name: [task.keywords[name] for task in tasks] for name in tasks[0].keywords}
         try:
             computed = iter(
-                self.core._many.run_many_steps(
-                    [task.steps for task in batch if task.steps is not None],
-                    lambda fraction: self._batch_progress(fraction, span),
-                )
+                function(*inputs, **keywords, progress=lambda fraction: self._batch_progress(fraction, span))
             )
         except self.core.Cancelled:
             return None
-        return [None if task.steps is None else next(computed) for task in batch]
+        return [None if task.skip_reason is not None else next(computed) for task in batch]
 
     def _batch_progress(self, fraction, span):
         """Progress callback of a batch starting at ``progress_base`` and ``span`` percent long."""
@@ -343,15 +286,11 @@ class FeatureRun:
         elif isinstance(outcome, Exception):
             self.skip_failed(feature_id, outcome)
         else:
-            # The results are in the frame the feature was computed in; the frame has moved on since.
-            self.frame.projection = task.projection
-            self.write(task.feature, task.parts(outcome))
+            self.write(task.feature, task.parts(outcome), task.frame)
 
-    def write(self, feature, parts):
-        """Write the results of one input feature (its transects at its own interval where it is data-defined)."""
-        if self.transect_interval_of is not None:
-            self.writer.transect_interval = self.transect_interval_of(feature)
-        self.writer.write(feature.attributes(), feature.id(), parts, self.frame)
+    def write(self, feature, parts, frame):
+        """Write the results of one input feature, expressed in its working frame ``frame``."""
+        self.writer.write(feature, parts, frame)
 
     def close(self):
         """Close every output now, whatever happened in the run (see ``CenterlineWriter.close``)."""

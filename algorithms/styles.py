@@ -33,7 +33,8 @@ RANK_PROPERTY = "incircu/rank"
 LIVE_STYLERS = []
 
 #: Place of each output in the layer tree, top first: the vertices sit on the centerline, so they go above it.
-VERTICES, CENTERLINE, TRANSECTS, INCIRCLES = range(4)
+#: The label algorithm's outputs are its lines (``CENTERLINE``) and its points (``LABEL_POINTS``).
+VERTICES, CENTERLINE, TRANSECTS, INCIRCLES, LABEL_POINTS = range(5)
 
 CENTERLINE_COLOUR = "215,25,40,255"
 CASING_COLOUR = "255,255,255,230"
@@ -155,19 +156,29 @@ def transect_symbol():
     return symbol
 
 
-def vertex_symbol():
-    """Small dark red dots with a white rim, standing out of the centerline they lie on."""
+def dot_symbol(colour, size_mm, rim_colour, rim_mm):
+    """A round dot of ``colour``, ``size_mm`` across, with a rim of ``rim_colour``, ``rim_mm`` wide."""
     return QgsMarkerSymbol.createSimple(
         {
             "name": "circle",
-            "color": VERTEX_COLOUR,
-            "size": str(VERTEX_SIZE_MM),
+            "color": colour,
+            "size": str(size_mm),
             "size_unit": "MM",
-            "outline_color": "255,255,255,255",
-            "outline_width": "0.2",
+            "outline_color": rim_colour,
+            "outline_width": str(rim_mm),
             "outline_width_unit": "MM",
         }
     )
+
+
+def vertex_symbol():
+    """Small dark red dots with a white rim, standing out of the centerline they lie on."""
+    return dot_symbol(VERTEX_COLOUR, VERTEX_SIZE_MM, "255,255,255,255", 0.2)
+
+
+def label_point_symbol():
+    """A label point: a dot of the centerline's colour with a white rim, a little larger than a vertex."""
+    return dot_symbol(CENTERLINE_COLOUR, 1.5 * VERTEX_SIZE_MM, CASING_COLOUR, 0.4)
 
 
 def readable_scale(typical_length, metres_per_unit):
@@ -184,7 +195,13 @@ def output_renderer(rank, metres_per_unit=None):
     if rank == CENTERLINE:
         symbol = centerline_symbol(metres_per_unit)
     else:
-        symbol = {VERTICES: vertex_symbol, TRANSECTS: transect_symbol, INCIRCLES: incircle_symbol}[rank]()
+        symbols = {
+            VERTICES: vertex_symbol,
+            TRANSECTS: transect_symbol,
+            INCIRCLES: incircle_symbol,
+            LABEL_POINTS: label_point_symbol,
+        }
+        symbol = symbols[rank]()
     renderer = QgsSingleSymbolRenderer(symbol)
     renderer.setUsingSymbolLevels(rank == CENTERLINE)
     return renderer
@@ -198,7 +215,7 @@ class OutputStyler(QgsProcessingLayerPostProcessorInterface):
     run_id : str
         Identifies the outputs of one run.
     rank : int
-        :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS` or :data:`INCIRCLES`.
+        :data:`CENTERLINE`, :data:`VERTICES`, :data:`TRANSECTS`, :data:`INCIRCLES` or :data:`LABEL_POINTS`.
     """
 
     def __init__(self, run_id, rank, name=None, group=None):

@@ -280,6 +280,28 @@ def test_a_braided_reach_with_three_islands_has_a_loop_around_each():
     check_loops(polygon, network, [shapely.get_coordinates(island.exterior) for island in islands])
 
 
+@pytest.mark.parametrize(("columns", "rows"), [(1, 1), (2, 1), (2, 2), (4, 2), (5, 5)])
+def test_a_road_grid_with_blocks_as_holes_gives_its_street_network(columns, rows):
+    # Streets 10 wide around 40 x 40 blocks (holes), each street leaving by a stub: one branch per street
+    # segment between two crossings (including those between two blocks) and one per stub; every crossing a
+    # junction of degree four at its closed-form centre, found with automatic ends as with the given ones.
+    polygon, caps, crossings, radius = cases.road_grid(columns, rows)
+    tolerance = RELATIVE * extent_of(polygon)
+    segments = columns * (rows + 1) + rows * (columns + 1)
+    for network in (polygon_network(polygon, islands="channels"), polygon_network(polygon, caps, islands="channels")):
+        assert same_points(network.split_points, caps, tolerance)
+        assert same_points(network.junctions, crossings, tolerance)
+        assert np.allclose(network.junction_radii, radius, rtol=0.0, atol=tolerance)
+        assert len(network.branches) == len(caps) + segments
+        assert list(network.node_degrees[len(caps) :]) == [4] * len(crossings)
+        between_blocks = [b for b in network.branches if min(b.right_chain, b.left_chain) >= len(caps)]
+        assert len(between_blocks) == (columns - 1) * rows + (rows - 1) * columns
+        for branch in network.branches:  # each street segment is straight, from crossing to crossing or cap
+            ends = network.nodes[[branch.start_node, branch.end_node]]
+            assert branch.result.length == pytest.approx(float(np.hypot(*(ends[1] - ends[0]))), abs=tolerance)
+        check_loops(polygon, network, [shapely.get_coordinates(ring) for ring in polygon.interiors])
+
+
 def test_small_islands_keep_the_main_channel_rule_among_channels():
     polygon, _ = braided_reach()
     pebble = box(40.0, 10.0, 42.0, 12.0)

@@ -1,67 +1,76 @@
-"""No function of the geometry core is longer than ``MAX_LINES``, so each can be read on one screen.
+"""No function or method of the plugin's packages is longer than :data:`LONGEST` lines (issue 39).
 
-A function's length is counted from its ``def`` line to its last line, docstring and comments included (a nested
-function counts within its parent and on its own). The whole core is measured, the ``tracing`` package included.
+A long function does several jobs; a newcomer should be able to read each one on a screen. The packages are
+parsed with ``ast`` (nothing is imported, so the test needs neither QGIS nor Shapely); a function's length runs
+from its ``def`` line (decorators left out) to its last line, docstring and comments included. A function
+nested in another counts inside its parent and on its own.
 """
 
 import ast
-from pathlib import Path
 
-CORE = Path(__file__).resolve().parent.parent / "incircu_plugin" / "core"
+import pytest
 
-MAX_LINES = 80
+from tests.support.project import REPOSITORY
 
-#: Functions still longer than ``MAX_LINES``, as ``"module.py:qualified name"``. Each is in a module another
-#: change is reshaping (the public API: api.py, frames.py; the networks: network.py); remove the entry once the
-#: function is shortened (the test then says so).
+#: Most lines a function may have.
+LONGEST = 80
+
+#: The packages checked: the Processing layer, the plugin glue and the geometry core.
+PACKAGES = ("algorithms", "incircu_plugin")
+
+#: Functions still longer, as ``"path from the package:name"``, each in a module another change of issue 39 is
+#: reshaping (the public API: api.py, frames.py; the networks: network.py). Remove an entry once its function is
+#: shortened: :func:`test_the_allowed_long_functions_are_still_long` says when.
 ALLOWED = {
-    "api.py:polygon_centerline",
-    "frames.py:networks",
-    "network.py:polygon_network",
+    "core/api.py:polygon_centerline",
+    "core/frames.py:networks",
+    "core/network.py:polygon_network",
 }
 
 
-def _functions(tree, prefix=""):
-    """``(qualified name, first line, last line)`` of every function and method in ``tree``, nested ones too."""
-    for node in ast.iter_child_nodes(tree):
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            name = f"{prefix}{node.name}"
-            if not isinstance(node, ast.ClassDef):
-                yield name, node.lineno, node.end_lineno
-            yield from _functions(node, f"{name}.")
-        else:
-            yield from _functions(node, prefix)
+def function_lengths(folder):
+    """Return ``{"path:line name": lines}`` (path from ``folder``) of every function of the ``.py`` files below
+    ``folder``."""
+    found = {}
+    for path in sorted(folder.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), filename=str(path))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                found[f"{path.relative_to(folder).as_posix()}:{node.lineno} {node.name}"] = (
+                    node.end_lineno - node.lineno + 1
+                )
+    return found
 
 
-def _core_modules():
-    for path in sorted(CORE.rglob("*.py")):
-        yield path.relative_to(CORE).as_posix(), path
+def long_functions(folder):
+    """Return ``"path:line name (n lines)"`` for every function below ``folder`` longer than :data:`LONGEST` lines
+    and not in :data:`ALLOWED`."""
+    return [
+        f"{place} ({lines} lines)"
+        for place, lines in function_lengths(folder).items()
+        if lines > LONGEST and _allowed_name(place) not in ALLOWED
+    ]
 
 
-def function_lengths():
-    """``{"module.py:qualified name": lines}`` of every function of the core (``tracing/module.py:...`` in the
-    package)."""
-    lengths = {}
-    for module, path in _core_modules():
-        for name, first, last in _functions(ast.parse(path.read_text(encoding="utf-8"))):
-            lengths[f"{module}:{name}"] = last - first + 1
-    return lengths
+def _allowed_name(place):
+    """``"path:name"`` of ``"path:line name"``."""
+    path, line_and_name = place.split(":", 1)
+    return f"{path}:{line_and_name.split(' ', 1)[1]}"
 
 
-def test_the_counting_sees_nested_functions_and_methods():
-    source = "def outer():\n    def inner():\n        pass\n    return inner\n\n\nclass A:\n    def method(self):\n        pass\n"
-    found = {name: (first, last) for name, first, last in _functions(ast.parse(source))}
-    assert found == {"outer": (1, 4), "outer.inner": (2, 3), "A.method": (8, 9)}
+def test_the_check_finds_a_long_function_and_passes_one_of_80_lines(tmp_path):
+    body = "".join(f"    x{i} = {i}\n" for i in range(LONGEST))
+    (tmp_path / "long.py").write_text(f"def short():\n    pass\n\n\ndef long():\n{body}", encoding="utf-8")
+    shorter = "".join(f"    x{i} = {i}\n" for i in range(LONGEST - 1))
+    (tmp_path / "edge.py").write_text(f"def edge():\n{shorter}", encoding="utf-8")
+    assert long_functions(tmp_path) == [f"long.py:5 long ({LONGEST + 1} lines)"]
 
 
-def test_no_core_function_is_longer_than_a_screen():
-    lengths = function_lengths()
-    assert len(lengths) > 300, "the core's modules were not found"
-    long = {name: lines for name, lines in lengths.items() if lines > MAX_LINES and name not in ALLOWED}
-    assert not long, f"functions over {MAX_LINES} lines (split them): {long}"
+@pytest.mark.parametrize("package", PACKAGES)
+def test_no_function_is_longer_than_80_lines(package):
+    assert long_functions(REPOSITORY / package) == []
 
 
 def test_the_allowed_long_functions_are_still_long():
-    lengths = function_lengths()
-    stale = sorted(name for name in ALLOWED if lengths.get(name, 0) <= MAX_LINES)
-    assert not stale, f"no longer over {MAX_LINES} lines (or gone): remove from ALLOWED: {stale}"
+    lengths = function_lengths(REPOSITORY / "incircu_plugin")
+    long = {_allowed_name(place) for place, lines in lengths.items() if lines > LONGEST}
+    assert ALLOWED <= long, f"no longer over {LONGEST} lines (or gone): remove from ALLOWED: {sorted(ALLOWED - long)}"

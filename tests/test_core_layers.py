@@ -8,9 +8,10 @@ node id per gate) and each river must be one connected network.
 import numpy as np
 import pytest
 import shapely
-from shapely.geometry import box
+from shapely.geometry import Polygon, box
 
 from incircu_plugin.core import polygon_network
+from incircu_plugin.core.errors import IncirCuError
 from incircu_plugin.core.layers import layer_networks
 from incircu_plugin.core.touching import touching_gates
 from tests.support import network_cases as cases
@@ -75,6 +76,78 @@ def test_a_gate_in_the_middle_of_a_bank_is_joined_by_an_exact_junction():
     check_network(polygon, network)
     # The junction's circle touches the gate and the far bank: centre 5 above the gate, radius 5.
     assert np.min(np.hypot(*(network.junctions - (20.0, 0.0)).T)) <= 1e-9 * 100.0
+
+
+def test_ends_from_names_the_gates_when_a_reach_has_no_split_point():
+    # A river cut into three reaches: the middle one ends at its two gates only, the outer ones at a gate and
+    # an automatic end; a given split point with a gate names both.
+    reaches = [box(0, 0, 50, 10), box(50, 0, 100, 10), box(100, 0, 150, 10)]
+    shapes, gates = touching_gates(reaches)
+    found = [polygon_network(shape, gates=points) for shape, points in zip(shapes, gates)]
+    assert [network.ends_from for network in found] == ["gates_and_automatic", "gates", "gates_and_automatic"]
+    assert found[1].end_sources == ("gate", "gate")
+    assert [sorted(network.end_sources) for network in found[::2]] == [["automatic", "gate"]] * 2
+    given = polygon_network(shapes[0], [(0.0, 5.0)], gates=gates[0])
+    assert given.ends_from == "split_points_and_gates" and given.end_sources == ("split_point", "gate")
+    assert polygon_network(shapes[0], [(0.0, 5.0), (50.0, 5.0)]).ends_from == "split_points"
+
+
+def test_a_feature_whose_gates_fail_is_warned_about_and_the_others_keep_theirs(monkeypatch):
+    # A NaN coordinate made GEOS raise in the spatial query (it aborted the whole layer): that feature now shares
+    # nothing and fails alone; its neighbours still meet each other.
+    with np.errstate(invalid="ignore"):
+        nan = Polygon([(100, 0), (np.nan, 0), (150, 10), (100, 10)])
+    layer = layer_networks([box(0, 0, 50, 10), box(50, 0, 100, 10), nan], connect_touching=True)
+    assert [error[0] for error in layer.errors] == [2] and not layer.warnings
+    assert {branch["feature"] for branch in layer.branches} == {0, 1}
+    assert sum(node["degree"] == 2 for node in layer.nodes) == 1  # the one gate joins reaches 0 and 1
+
+
+def test_geos_failing_on_one_pair_warns_about_its_features_and_keeps_the_other_gates(monkeypatch):
+    # GEOS raising on the shared boundary of reaches 0 and 1 (both valid): both are warned about and computed
+    # without that gate; reaches 1 and 2 keep theirs. Without a list for the errors, touching_gates raises.
+    from incircu_plugin.core import touching
+
+    def failing(a, b, **kwargs):
+        if all(a is not None and (50.0, 0.0) in map(tuple, shapely.get_coordinates(g)) for g in (a, b)):
+            raise shapely.errors.GEOSException("TopologyException: side location conflict")
+        return shapely.intersection(a, b, **kwargs)
+
+    geos = type(
+        "Geos", (), {"__getattr__": lambda self, name: getattr(shapely, name), "intersection": staticmethod(failing)}
+    )
+    monkeypatch.setattr(touching, "shapely", geos())
+    reaches = [box(0, 0, 50, 10), box(50, 0, 100, 10), box(100, 0, 150, 10)]
+    layer = layer_networks(reaches, connect_touching=True)
+    assert [warning[0] for warning in layer.warnings] == [0, 1] and not layer.errors
+    assert all("side location conflict" in warning[2] for warning in layer.warnings)
+    ends = {branch["feature"]: {branch["from_point"], branch["to_point"]} for branch in layer.branches}
+    assert ends == {0: {"auto"}, 1: {"auto", "gate"}, 2: {"auto", "gate"}}
+    with pytest.raises(IncirCuError, match="could not be computed"):
+        touching_gates(reaches)
+
+
+def test_a_confluence_reach_touching_three_neighbours_is_a_network_between_its_three_gates():
+    # The T of roads 10 and 6 wide cut into its junction reach and three arms: the junction reach's ends are its
+    # three gates only (no automatic end), its three branches meet at the T's exact junction, and each gate
+    # joins it to one arm.
+    polygon, _, (junction,), radius = cases.t_junction()
+    cut = 20.0
+    windows = [box(-cut, -10, cut, cut), box(-60, -10, -cut, 60), box(cut, -10, 60, 60), box(-cut, cut, cut, 60)]
+    reaches = [polygon.intersection(window) for window in windows]
+    shapes, gates = touching_gates(reaches)
+    assert len(gates[0]) == 3
+    network = polygon_network(shapes[0], gates=gates[0])
+    assert network.ends_from == "gates" and len(network.branches) == 3
+    check_network(shapes[0], network)
+    tolerance = 1e-9 * 2.0 * cut  # the reach's extent
+    assert np.hypot(*(network.junctions[0] - junction)) <= tolerance
+    assert abs(network.junction_radii[0] - radius) <= tolerance
+    layer = layer_networks(reaches, connect_touching=True)
+    check_layer(reaches, [0] * len(reaches), layer)
+    middle = [branch for branch in layer.branches if branch["feature"] == 0]
+    assert sorted(branch["from_point"] for branch in middle) == ["gate"] * 3
+    assert sorted(node["degree"] for node in layer.nodes) == [1, 1, 1, 2, 2, 2, 3]
 
 
 def test_reaches_of_generated_rivers_meet_their_neighbours_exactly():

@@ -21,6 +21,7 @@ from incircu_plugin.core import (
     label_lines,
     lines_centerline,
     multipolygon_centerlines,
+    multipolygon_networks,
     polygon_centerline,
 )
 from tests.support import geometry_cases
@@ -120,3 +121,20 @@ def test_the_step_protocol_of_0_2_still_answers_with_a_deprecation_warning():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert "centerlines_together" not in core.__all__ and not hasattr(core, "no_such_name")
+
+
+def test_an_array_of_networks_gives_what_each_gives_alone():
+    channels = MultiPolygon([box(0, 0, 50, 4), box(0, 10, 50, 14)])
+    corners = [(0, 0), (100, 0), (100, 10), (0, 10)]
+    geometries = [channels, box(0, 0, 100, 10), None]
+    points = [[(0, 12), (50, 2), (50, 12), (0, 2)], corners, None]
+    singles = [outcome_of(multipolygon_networks, g, p, spacing=1.0) for g, p in zip(geometries, points)]
+    many = multipolygon_networks(geometries, points, spacing=1.0)
+    assert [type(outcome) for outcome in many] == [type(outcome) for outcome in singles]
+    assert isinstance(many[2], InvalidGeometryError) and str(many[2]) == str(singles[2])
+    for mine, alone in zip(many[:2], singles[:2]):
+        assert [o.result.branches[0].result.line.wkb for o in mine] == [
+            o.result.branches[0].result.line.wkb for o in alone
+        ]
+        assert [len(o.result.branches) for o in mine] == [len(o.result.branches) for o in alone]
+    assert len(many[1][0].result.branches) == 5  # the rectangle's whole medial axis between its four corners

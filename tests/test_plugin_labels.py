@@ -10,6 +10,7 @@ import importlib.util
 import processing
 import pytest
 import shapely
+import shapely.affinity
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsExpression,
@@ -19,8 +20,7 @@ from qgis.core import (
 )
 from shapely.geometry import Point, box
 
-from incircu_plugin.core import LocalProjection, label_lines
-from incircu_plugin.core.engine import DEFAULT_TOLERANCE_PER_WIDTH
+from incircu_plugin.core import LocalProjection, feature_label, label_lines
 from tests.support.project import REPOSITORY
 
 SPEC = importlib.util.spec_from_file_location("label_style", REPOSITORY / "scripts" / "make_label_style.py")
@@ -106,18 +106,34 @@ def test_compact_lakes_get_label_points(provider):
     assert next(lines.getFeatures())["kind"] == "line"
 
 
-def test_expression_gives_the_algorithms_line(provider, reservoirs):
-    results = run_labels(reservoirs)
+def test_expression_gives_the_algorithms_line_to_the_last_bit_on_a_projected_layer(provider, reservoirs):
+    # The reservoirs, projected: the algorithm (its features in batches) and the expression (one feature alone)
+    # give the core the same coordinates, so the same label bytes (issue 39: no result depends on its batch).
+    projected = projected_layer(
+        [shapely.affinity.scale(as_shapely(f.geometry()), 9e4, 1.1e5, origin=(0, 0)) for f in reservoirs.getFeatures()]
+    )
+    results = run_labels(projected)
     written = {feature["source_fid"]: feature for feature in results["OUTPUT"].getFeatures()}
+    assert len(written) == projected.featureCount()
+    for feature in projected.getFeatures():
+        value = evaluate(projected, feature, "incircu_label_line($geometry)")
+        assert as_shapely(value).wkb == as_shapely(written[feature.id()].geometry()).wkb, feature.id()
+        assert evaluate(projected, feature, "incircu_label_line($geometry)").equals(value)
+
+
+def test_expression_in_degrees_is_the_cores_label_in_its_local_frame(provider, reservoirs):
+    # In degrees the expression projects with QGIS's own transformations (it runs in render threads, where pyproj
+    # is unsafe), the algorithm with the core's LocalProjection: the frames agree to about 1e-9 of the lake's
+    # size, and a label's trimmed ends may move a lot for that (the width profile crossing the trim share); so
+    # the expression is checked against the core's label of its own frame's coordinates, bit for bit.
+    from incircu.algorithms.expressions import ThreadFrame
+
     for feature in reservoirs.getFeatures():
         value = evaluate(reservoirs, feature, "incircu_label_line($geometry)")
-        line, expected = as_shapely(value), as_shapely(written[feature.id()].geometry())
-        # Computed alone rather than in a batch (issue 39: a batch may round an event the other way): both stem
-        # from centerlines within the automatic tolerance (width / 200) of the exact axis, so within two of it.
-        width_degrees = written[feature.id()]["width_min"] / 111_000
-        assert line.hausdorff_distance(expected) < 2 * DEFAULT_TOLERANCE_PER_WIDTH * width_degrees
-        again = evaluate(reservoirs, feature, "incircu_label_line($geometry)")
-        assert again.equals(value)
+        frame = ThreadFrame(feature.geometry(), reservoirs.crs())
+        shape = frame.to_core(feature.geometry())
+        expected = frame.to_layer(feature_label(label_lines(shape), shape).geometry)
+        assert as_shapely(value).wkb == as_shapely(expected).wkb, feature.id()
 
 
 def test_expression_options_and_points(provider):
@@ -135,6 +151,19 @@ def test_expression_options_and_points(provider):
     context.setFeature(long_lake)
     bad = QgsExpression("incircu_label_line($geometry, clearance:=0.7)")
     assert bad.evaluate(context) is None
+
+
+def test_an_invalid_option_is_the_expressions_error_every_time(provider):
+    """An option out of its range is reported through QGIS's evaluation error (the core's message, worded by
+    ``messages.core_text``), on every evaluation: it is not cached as a NULL result."""
+    lakes = projected_layer([box(2000, 0, 6000, 500)])
+    context = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(lakes))
+    context.setFeature(next(lakes.getFeatures()))
+    for _ in range(2):
+        bad = QgsExpression("incircu_label_line($geometry, clearance:=0.7)")
+        assert bad.evaluate(context) is None
+        assert bad.hasEvalError()
+        assert "clearance" in bad.evalErrorString() and "0.7" in bad.evalErrorString()
 
 
 def test_arguments_are_converted_once_and_cached_labels_equal_computed_ones(provider):

@@ -4,12 +4,23 @@ Expected values come from the shapes (``tests/support/network_cases.py``): the T
 in closed form, the k = 2 case from ``incircu:polygoncenterline`` on the same input.
 """
 
+import math
+
 import numpy as np
 import processing
 import pytest
 import shapely
 import shapely.affinity
-from qgis.core import QgsFeature, QgsGeometry, QgsProcessingFeedback, QgsVectorLayer, QgsWkbTypes
+from qgis.core import (
+    QgsFeature,
+    QgsGeometry,
+    QgsLineString,
+    QgsPoint,
+    QgsPolygon,
+    QgsProcessingFeedback,
+    QgsVectorLayer,
+    QgsWkbTypes,
+)
 from shapely.geometry import Point, Polygon, box
 
 from tests.support import network_cases as cases
@@ -292,3 +303,51 @@ def test_channels_on_both_sides_of_a_large_island_make_a_loop(provider):
     assert sorted((node.geometry().asPoint().x(), node["degree"]) for node in junctions) == [(100.0, 3), (200.0, 3)]
     for branch in branches:
         assert not as_shapely(branch.geometry()).intersects(island)
+
+
+def test_a_confluence_reach_with_three_gates_is_traced_as_a_network(provider):
+    # A T of rivers 10 and 6 wide cut into a confluence reach and three arms: the middle reach touches three
+    # neighbours, so its three gates are its ends and its lines meet at one junction.
+    t = shapely.union(box(-50.0, -5.0, 50.0, 5.0), box(-3.0, 0.0, 3.0, 50.0))
+    cuts = {"west": box(-60, -10, -20, 60), "east": box(20, -10, 60, 60), "north": box(-20, 20, 20, 60)}
+    middle = t.intersection(box(-20.0, -10.0, 20.0, 20.0))
+    rows = [(middle, "confluence")] + [(t.intersection(cut), name) for name, cut in cuts.items()]
+    layer = memory_layer("Polygon", "EPSG:2180", rows)
+    results, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True, "OUTPUT_NODES": "memory:"})
+    assert results["SKIPPED_COUNT"] == 0, feedback.warnings
+    branches = [feature for feature in results["OUTPUT"].getFeatures() if feature["name"] == "confluence"]
+    assert len(branches) == 3 and {feature["from_point"] for feature in branches} == {"gate"}
+
+
+@pytest.mark.filterwarnings("ignore:invalid value encountered in from_wkb:RuntimeWarning")
+def test_a_feature_whose_gates_cannot_be_found_does_not_stop_the_layer(provider):
+    # A NaN coordinate made GEOS raise while the layer's gates were found, which stopped the whole run.
+    layer = memory_layer("Polygon", "EPSG:2180", [(box(0, 0, 50, 10), "a"), (box(50, 0, 100, 10), "b")])
+    bad = QgsFeature(layer.fields())
+    ring = QgsLineString([QgsPoint(x, y) for x, y in [(100, 0), (math.nan, 0), (150, 10), (100, 10), (100, 0)]])
+    bad.setGeometry(QgsGeometry(QgsPolygon(ring)))
+    bad.setAttributes(["nan"])
+    assert layer.dataProvider().addFeatures([bad])
+    for algorithm in ("polygonnetwork", "polygoncenterline"):
+        results, feedback = run({"INPUT": layer, "CONNECT_TOUCHING": True}, algorithm)
+        assert (results["CENTERLINE_COUNT"], results["SKIPPED_COUNT"]) == (2, 1), feedback.warnings
+        lines = [as_shapely(feature.geometry()) for feature in results["OUTPUT"].getFeatures()]
+        assert len({lines[0].coords[0], lines[0].coords[-1]} & {lines[1].coords[0], lines[1].coords[-1]}) == 1
+
+
+def test_a_road_grid_with_blocks_as_holes_gives_one_branch_per_street_segment(provider):
+    # 2 x 2 blocks with streets around and between them, every street leaving by a stub: 12 stubs and 12
+    # street segments, 9 crossings of degree four at the streets' crossing points.
+    polygon, caps, crossings, radius = cases.road_grid(2, 2)
+    tolerance = 1e-9 * 200.0  # of the grid's extent
+    layer = memory_layer("Polygon", "EPSG:2180", [(polygon, "roads")])
+    results, feedback = run({"INPUT": layer, "ISLANDS": 2, "OUTPUT_NODES": "memory:"})
+    assert results["CENTERLINE_COUNT"] == 24 and results["SKIPPED_COUNT"] == 0, feedback.warnings
+    nodes = {
+        kind: [n for n in results["OUTPUT_NODES"].getFeatures() if n["kind"] == kind] for kind in ("end", "junction")
+    }
+    assert {n["degree"] for n in nodes["junction"]} == {4}
+    assert all(abs(n["radius"] - radius) <= 0.0005 for n in nodes["junction"])  # rounded to the millimetre
+    for kind, expected in (("junction", crossings), ("end", caps)):
+        found = sorted((n.geometry().asPoint().x(), n.geometry().asPoint().y()) for n in nodes[kind])
+        assert np.allclose(found, sorted(map(tuple, expected)), rtol=0.0, atol=tolerance)

@@ -58,8 +58,8 @@ CASES = {
 }
 
 
-def run_as_the_dialog_does(algorithm_id, parameters, project):
-    """Run an algorithm and load its results into ``project`` as the toolbox dialog does."""
+def run_as_the_dialog_does(algorithm_id, parameters, project, outputs=OUTPUTS):
+    """Run an algorithm and load its results (the ``outputs``) into ``project`` as the toolbox dialog does."""
     from processing.gui.Postprocessing import handleAlgorithmResults
     from processing.tools import dataobjects
 
@@ -67,7 +67,7 @@ def run_as_the_dialog_does(algorithm_id, parameters, project):
     feedback = QgsProcessingFeedback()
     context = dataobjects.createContext(feedback)
     context.setProject(project)
-    for name in OUTPUTS:
+    for name in outputs:
         parameters[name] = QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", project)
     results, ok = algorithm.run(parameters, context, feedback)
     assert ok, results
@@ -172,6 +172,26 @@ def test_a_new_run_comes_in_its_own_group_above_the_last(provider, layer_panel):
             f"reservoirs — {word} ({rule})" for word in ("vertices", "centerlines", "transects", "incircles")
         ]
     assert project.layerTreeRoot().children()[-1].name() == "reservoirs", "the input stays below the results"
+    project.clear()
+
+
+def test_label_outputs_are_named_and_grouped_per_run(provider, layer_panel):
+    project = QgsProject.instance()
+    project.clear()
+    river = QgsVectorLayer(str(DATA / "river_2180.geojson"), "reservoirs", "ogr")
+    project.addMapLayer(river)
+    results = run_as_the_dialog_does("incircu:labellines", {"INPUT": river}, project, ("OUTPUT", "OUTPUT_POINTS"))
+    assert results["CENTERLINE_COUNT"] >= 1
+    [group] = [node for node in project.layerTreeRoot().children() if node.nodeType() == 0]
+    assert group.name() == "reservoirs — label lines (main stem)"
+    assert [node.name() for node in group.children()] == [
+        "reservoirs — label lines (main stem)",
+        "reservoirs — label points (main stem)",
+    ]
+    from incircu.algorithms.styles import CENTERLINE_COLOUR
+
+    points = group.children()[1].layer()
+    assert points.renderer().symbol().color().name() == QColor(*map(int, CENTERLINE_COLOUR.split(","))).name()
     project.clear()
 
 

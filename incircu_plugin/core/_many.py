@@ -26,6 +26,7 @@ __all__ = [
     "is_many",
     "one_or_many",
     "per_geometry",
+    "point_sets_per_geometry",
     "run_many_steps",
 ]
 
@@ -74,7 +75,7 @@ def per_geometry(value, count, name):
     return values
 
 
-def compute(make_steps, geometries, per_element, shared, progress=None):
+def compute(make_steps, geometries, per_element, shared, progress=None, batch_features=None):
     """The outcome of ``make_steps(geometry, **options)`` run for each of ``geometries``, in batches.
 
     Parameters
@@ -90,6 +91,9 @@ def compute(make_steps, geometries, per_element, shared, progress=None):
         Keywords with one value for all.
     progress : callable, optional
         Called with the fraction done (0 to 1); when it returns False, :class:`.errors.Cancelled` is raised.
+    batch_features : int, optional
+        Most features in one batch (default :data:`BATCH_FEATURES`): fewer for heavy features that share no
+        tracing, so progress and cancel come between them.
 
     Returns
     -------
@@ -99,7 +103,7 @@ def compute(make_steps, geometries, per_element, shared, progress=None):
     report = reporter(progress)
     outcomes = [None] * len(geometries)
     done = 0
-    for batch in batches(range(len(geometries)), lambda index: _vertex_count(geometries[index])):
+    for batch in batches(range(len(geometries)), partial(_vertex_count_of, geometries), batch_features):
         generators, positions = [], []
         for index in batch:
             arguments = geometries[index] if isinstance(geometries[index], tuple) else (geometries[index],)
@@ -117,27 +121,36 @@ def compute(make_steps, geometries, per_element, shared, progress=None):
     return outcomes
 
 
-def one_or_many(make_steps, geometry, split_points, options, progress):
+def one_or_many(make_steps, geometry, split_points, options, progress, point_sets=(), batch_features=None):
     """``make_steps(geometry, split_points, **options)`` run alone for one geometry, else for each geometry of
     an array-like, in batches traced together (:func:`._many.compute`); ``split_points`` and every option are
-    then one value for all or one per geometry (split points: None, or one sequence of points per geometry)."""
+    then one value for all or one per geometry, except ``split_points`` and the options named in
+    ``point_sets`` (sequences of points): None, or one sequence (or None) per geometry; ``batch_features`` as
+    for :func:`compute`."""
     if not is_many(geometry):
         return run_alone(make_steps(geometry, split_points, **options, progress=progress))
     geometries = list(geometry)
     per_element = {name: per_geometry(value, len(geometries), name) for name, value in options.items()}
-    per_element["split_points"] = split_points_per_geometry(split_points, len(geometries))
-    return compute(make_steps, geometries, per_element, {}, progress)
+    for name, value in (("split_points", split_points), *((name, options.get(name)) for name in point_sets)):
+        per_element[name] = point_sets_per_geometry(value, len(geometries), name)
+    return compute(make_steps, geometries, per_element, {}, progress, batch_features)
 
 
-def split_points_per_geometry(split_points, count):
-    """The split points of each of ``count`` geometries: None for all, or one sequence (or None) per geometry."""
-    return [None] * count if split_points is None else per_geometry(split_points, count, "split_points")
+def point_sets_per_geometry(points, count, name="split_points"):
+    """The points (split points, gates) of each of ``count`` geometries: None for all, or one sequence (or None)
+    per geometry."""
+    return [None] * count if points is None else per_geometry(points, count, name)
 
 
 def _batch_report(report, begin, share, fraction):
     """``report`` of the whole run, given a batch's ``fraction`` done (the batch starts at ``begin`` of the run
     and is ``share`` of it)."""
     return report(begin + share * fraction)
+
+
+def _vertex_count_of(geometries, index):
+    """Number of vertices of ``geometries[index]`` (see :func:`_vertex_count`)."""
+    return _vertex_count(geometries[index])
 
 
 def _vertex_count(geometry):
@@ -170,7 +183,7 @@ def detached(error):
     return error
 
 
-def batches(items, vertex_count):
+def batches(items, vertex_count, features=None):
     """Split ``items`` into consecutive lists of at most :data:`BATCH_FEATURES` items and
     :data:`BATCH_VERTICES` vertices (a larger item alone).
 
@@ -180,6 +193,8 @@ def batches(items, vertex_count):
         Read lazily: a batch is yielded as soon as it is full.
     vertex_count : callable
         ``vertex_count(item)`` -> the item's number of boundary vertices.
+    features : int, optional
+        Most items in a batch instead of :data:`BATCH_FEATURES`.
 
     Yields
     ------
@@ -191,6 +206,7 @@ def batches(items, vertex_count):
     >>> [len(batch) for batch in batches(range(600), lambda item: 1)]
     [256, 256, 88]
     """
+    features = BATCH_FEATURES if features is None else features
     batch, vertices = [], 0
     for item in items:
         count = vertex_count(item)
@@ -199,7 +215,7 @@ def batches(items, vertex_count):
             batch, vertices = [], 0
         batch.append(item)
         vertices += count
-        if len(batch) >= BATCH_FEATURES or vertices >= BATCH_VERTICES:
+        if len(batch) >= features or vertices >= BATCH_VERTICES:
             yield batch
             batch, vertices = [], 0
     if batch:

@@ -37,20 +37,9 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from .ends import (
-    ON_RING,
-    _centred_ends,
-    _ends_of_trunks,
-    _frames,
-    _joint_trunks,
-    _local_box,
-    _on_ring,
-    _Rings,
-    _Tips,
-)
+from .ends import PolygonSkeleton
 from .errors import InvalidGeometryError, Message, OptionError
 from .polyline import typical_width
-from .skeleton import joint_skeletons
 
 #: Default ``min_arm_ratio``: an arm is kept when it reaches beyond its junction's incircle by at least this
 #: many junction widths (see the module docstring).
@@ -89,7 +78,7 @@ def check_arm_options(min_arm_ratio, min_arm_length):
     return ratio, length
 
 
-def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
+def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None, every_island=False):
     """Find one end per arm of a polygon: the leaves of its pruned skeleton, centred in their end caps.
 
     Parameters
@@ -101,6 +90,9 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
         Shortest reach of a kept arm beyond its junction's incircle, in widths of that junction.
     min_arm_length : float, optional
         Shortest reach of a kept arm beyond its junction's incircle, CRS units.
+    every_island : bool
+        Keep every hole in the skeleton, also those smaller than the typical width (the channel islands of a
+        network: a road grid's blocks).
 
     Returns
     -------
@@ -126,20 +118,15 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     [(-50.0, 0.0), (0.0, 50.0), (50.0, 0.0)]
     """
     ratio, length = check_arm_options(min_arm_ratio, min_arm_length)
-    origin, scale = _local_box(polygon, None)
-    (frame,) = _frames([polygon], [None], [(origin, scale)])
-    skeleton = joint_skeletons([frame.local])
-    if skeleton.errors[0] is not None:
-        raise skeleton.errors[0]
+    shape = PolygonSkeleton(polygon, every_island=every_island)
+    skeleton, scale = shape.skeleton, shape.scale
     if len(skeleton.edges) == 0:
         raise InvalidGeometryError(Message("arms_too_thin"))
-    main = _main_stem(frame, skeleton)
+    main = shape.main_stem()
     graph = _Graph(skeleton.nodes, skeleton.radii, skeleton.edges)
     graph.prune(ratio, length / scale)
     arms = graph.arms()
-    if not arms:
-        return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
-    exterior = frame.local.exterior
+    exterior = shape.local.exterior
     step = float(skeleton.steps[0])
     # An arm whose tip lies on an island's shore (a large bump of an island) is not an end of the network.
     arms = [
@@ -150,27 +137,13 @@ def find_arm_ends(polygon, *, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
     if not arms:
         return _with_main_stem(polygon, main, ArmEnds(np.empty((0, 2)), np.empty(0), np.empty(0)))
     degree = np.bincount(skeleton.edges.ravel(), minlength=len(skeleton.nodes))
-    trunks = [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step, False) for arm in arms]
-    tips = _Tips(trunks)
-    rings = _Rings(np.array([exterior] * len(arms), dtype=object))
-    local = _centred_ends(tips, rings)[::2]
-    points = local * scale + origin
-    if np.max(np.abs(origin)) * np.finfo(float).eps > ON_RING * scale:
-        points = np.array([_on_ring(polygon.exterior, xy, ON_RING * scale) for xy in points])
+    points = shape.trunk_ends(
+        [(graph.nodes[arm.trunk], graph.radii[arm.trunk], degree[arm.trunk] >= 3, step) for arm in arms]
+    )
     widths = np.array([arm.width for arm in arms]) * scale
     reaches = np.array([arm.reach for arm in arms])
     keep = _separate(points, widths, reaches)
     return _with_main_stem(polygon, main, ArmEnds(points[keep], widths[keep], reaches[keep]))
-
-
-def _main_stem(frame, skeleton):
-    """Return the :class:`.ends.EndsResult` :func:`.ends.find_ends` gives for the frame's polygon, from the
-    skeleton already built (its main-stem rule, the same cap centring)."""
-    outcomes = [None]
-    trunks = _joint_trunks([frame], "main_stem", outcomes, lambda fraction: None, skeleton=skeleton)
-    if outcomes[0] is not None:
-        raise outcomes[0]
-    return _ends_of_trunks([frame], trunks)[0]
 
 
 def _with_main_stem(polygon, main, arms):
@@ -196,9 +169,10 @@ def _separate(points, widths, reaches):
     farther beyond its junction is kept (the first one on a tie), the farthest-reaching ends first.
     """
     order = sorted(range(len(points)), key=lambda index: (-reaches[index], index))
+    apart = np.hypot(*(points[:, None, :] - points[None, :, :]).T).T > np.minimum(widths[:, None], widths[None, :])
     keep = []
     for index in order:
-        if all(np.hypot(*(points[index] - points[other])) > min(widths[index], widths[other]) for other in keep):
+        if np.all(apart[index, keep]):
             keep.append(index)
     return sorted(keep)
 
@@ -238,6 +212,7 @@ class _Graph:
         self.next_id = 0
         keys = [node for node, near in enumerate(neighbours) if len(near) not in (0, 2)]
         seen = set()
+        paths = []
         for key in keys:
             for first in neighbours[key]:
                 if (key, first) in seen:
@@ -247,14 +222,23 @@ class _Graph:
                     a, b = neighbours[path[-1]]
                     path.append(b if a == path[-2] else a)
                 seen.add((path[-1], path[-2]))
-                self._add(path)
+                paths.append(path)
+        if paths:
+            # The segments of all branches measured in one pass (summed per branch as :meth:`length` sums them).
+            flat = np.concatenate(paths)
+            steps = np.hypot(*(nodes[flat[1:]] - nodes[flat[:-1]]).T)
+            firsts = np.cumsum([0] + [len(path) for path in paths[:-1]]).tolist()
+            lengths = [float(np.sum(steps[first : first + len(path) - 1])) for first, path in zip(firsts, paths)]
+            for path, length in zip(paths, lengths):
+                self._add(path, length)
 
-    def _add(self, path):
-        """Add a branch along ``path`` (node indices); return its id."""
+    def _add(self, path, length=None):
+        """Add a branch along ``path`` (node indices) and of ``length`` (local units; measured when None);
+        return its id."""
         branch = self.next_id
         self.next_id += 1
         self.branches[branch] = np.asarray(path, dtype=np.int64)
-        self.lengths[branch] = self.length(self.branches[branch])
+        self.lengths[branch] = self.length(self.branches[branch]) if length is None else length
         for end in (path[0], path[-1]):
             self.incident.setdefault(end, set()).add(branch)
         return branch

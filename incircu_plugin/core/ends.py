@@ -384,7 +384,7 @@ def _moved(geometries, origin, scale):
     return shapely.transform(geometries, lambda xy: (xy - origin) / scale)
 
 
-def _frames(polygons, guides, boxes):
+def _frames(polygons, guides, boxes, every_island=False):
     """Return the :class:`_LocalPolygon` of each polygon with a local box (None for the others); the polygons are moved
     all at once, the guides one by one.
 
@@ -393,6 +393,8 @@ def _frames(polygons, guides, boxes):
     polygons, guides : list
     boxes : list of tuple or None
         Per polygon, the ``(origin, scale)`` of :func:`_local_box`, or None.
+    every_island : bool
+        Keep the islands smaller than the typical width too (see :func:`_without_small_islands`).
     """
     frames = [None] * len(polygons)
     chosen = [index for index, box in enumerate(boxes) if box is not None]
@@ -401,7 +403,7 @@ def _frames(polygons, guides, boxes):
     origins = np.array([boxes[index][0] for index in chosen])
     scales = np.array([boxes[index][1] for index in chosen])
     geometries = np.empty(len(chosen), dtype=object)
-    geometries[:] = [_without_small_islands(polygons[index]) for index in chosen]
+    geometries[:] = [polygons[index] if every_island else _without_small_islands(polygons[index]) for index in chosen]
     owner = np.repeat(np.arange(len(chosen)), shapely.get_num_coordinates(geometries))
     # Without repeated vertices: GEOS 3.11 locates a point on a zero-length segment by dividing 0 by 0, and
     # numpy then warns "invalid value encountered in line_locate_point" (the answer is right).
@@ -1143,3 +1145,74 @@ def _opposite_points(exteriors, perimeters, xy):
 def _nearest_boundary_points(exteriors, xy):
     """Return the point of each ring ``exteriors`` nearest to each of the points ``xy`` (shape (n, 2))."""
     return shapely.get_coordinates(shapely.shortest_line(shapely.points(xy), exteriors))[1::2]
+
+
+class PolygonSkeleton:
+    """A polygon's skeleton as :func:`find_ends` builds it, for a caller that walks it itself (:mod:`.arms`).
+
+    The polygon is moved to its local frame (origin at its box centre, unit bounding-box diagonal; islands
+    smaller than its typical width left out) and triangulated once; :meth:`main_stem` and :meth:`trunk_ends`
+    then apply :func:`find_ends`'s own rules to that skeleton.
+
+    Parameters
+    ----------
+    polygon : Polygon
+        A valid polygon, CRS units.
+    every_island : bool
+        Keep every island in the skeleton, also those smaller than the typical width (a road grid's blocks).
+
+    Attributes
+    ----------
+    origin : ndarray of shape (2,)
+        Centre of the polygon's bounding box, CRS units.
+    scale : float
+        Its bounding-box diagonal, CRS units (one local unit).
+    local : Polygon
+        The polygon in the local frame, counter-clockwise.
+    skeleton : Skeletons
+        Its :func:`.skeleton.joint_skeletons` (one polygon), local units.
+
+    Raises
+    ------
+    InvalidGeometryError
+        As :func:`find_ends` (an invalid, absurdly scaled or untriangulable polygon).
+    """
+
+    def __init__(self, polygon, *, every_island=False):
+        self.origin, self.scale = _local_box(polygon, None)
+        (self._frame,) = _frames([polygon], [None], [(self.origin, self.scale)], every_island)
+        self.local = self._frame.local
+        self.skeleton = joint_skeletons([self.local])
+        if self.skeleton.errors[0] is not None:
+            raise self.skeleton.errors[0]
+
+    def main_stem(self):
+        """Return the :class:`EndsResult` :func:`find_ends` gives for the polygon (rule ``"main_stem"``)."""
+        outcomes = [None]
+        trunks = _joint_trunks([self._frame], "main_stem", outcomes, _no_check, skeleton=self.skeleton)
+        if outcomes[0] is not None:
+            raise outcomes[0]
+        return _ends_of_trunks([self._frame], trunks)[0]
+
+    def trunk_ends(self, trunks):
+        """Return the first end of each trunk centred in its end cap (step 3 of the module docstring).
+
+        Parameters
+        ----------
+        trunks : list of tuple
+            Per end, ``(points, radii, junction, step)``: the skeleton path from the tip inward (local
+            units), each point's clearance (local units), whether it is a skeleton junction, and the
+            skeleton's densification step (local units).
+
+        Returns
+        -------
+        ndarray of shape (len(trunks), 2)
+            The ends on the exterior ring, CRS units.
+        """
+        tips = _Tips([(*trunk, False) for trunk in trunks])
+        rings = _Rings(np.array([self.local.exterior] * len(trunks), dtype=object))
+        points = _centred_ends(tips, rings)[::2] * self.scale + self.origin
+        if np.max(np.abs(self.origin)) * np.finfo(float).eps > ON_RING * self.scale:
+            exterior = self._frame.polygon.exterior
+            points = np.array([_on_ring(exterior, xy, ON_RING * self.scale) for xy in points])
+        return points.reshape(-1, 2)

@@ -58,6 +58,20 @@ MESSAGES = {
         "IncirCuCore", "{name} must be a non-negative, finite distance in {units} (or None), got {value!r}."
     ),
     "option_not_number": QT_TRANSLATE_NOOP("IncirCuCore", "{name} must be a number, got {kind} {value!r}."),
+    "label_option_not_number": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "The label option {name} must be a number ({what}), not {value!r}."
+    ),
+    "label_option_out_of_range": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "The label option {name} is {value!r}; it must be {what}."
+    ),
+    "label_range_share_of_widest": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "a share of the widest width, at least 0 and under 1"
+    ),
+    "label_range_clearance": QT_TRANSLATE_NOOP(
+        "IncirCuCore", "a share of the local width, at least 0 and under 0.5 (the middle)"
+    ),
+    "label_range_share_of_width": QT_TRANSLATE_NOOP("IncirCuCore", "a share of the local width, at least 0"),
+    "label_range_ratio": QT_TRANSLATE_NOOP("IncirCuCore", "a ratio, at least 0"),
     "samples_not_whole": QT_TRANSLATE_NOOP("IncirCuCore", "samples_per_chain must be a whole number, got {value!r}."),
     "samples_too_few": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The number of samples per chain must be at least 1, got {value!r}."
@@ -265,6 +279,11 @@ MESSAGES = {
     "arm_ends_too_few": QT_TRANSLATE_NOOP(
         "IncirCuCore",
         "Only {count} arm end was found automatically on this polygon; give its ends as split points."
+    ),
+    "gates_failed": QT_TRANSLATE_NOOP(
+        "IncirCuCore",
+        "The boundary this feature shares with the features it touches could not be computed ({reason}): it is "
+        "not connected to them. Repair it first (e.g. QGIS '{fix_geometries}')."
     ),
     "outline_not_triangulated": QT_TRANSLATE_NOOP(
         "IncirCuCore", "The polygon's outline could not be triangulated to find its ends automatically."

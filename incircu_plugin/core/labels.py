@@ -44,7 +44,7 @@ from shapely.geometry import LineString, Point
 
 from ._many import one_or_many
 from .api import PartOutcome, _multipolygon_centerline_steps
-from .errors import IncirCuError, OptionError
+from .errors import IncirCuError, Message, OptionError
 from .polyline import cumulative_lengths, points_at
 
 #: Default ``trim``: the label stretch keeps the main stem where the polygon is at least half its widest width.
@@ -145,17 +145,17 @@ class LabelResult:
 def check_label_options(trim, clearance, bend, smoothing, min_elongation):
     """Raise :class:`OptionError` unless the label options are numbers in their ranges."""
     ranges = (
-        ("trim", trim, 0.0, 1.0, "a share of the widest width, at least 0 and under 1"),
-        ("clearance", clearance, 0.0, 0.5, "a share of the local width, at least 0 and under 0.5 (the middle)"),
-        ("bend", bend, 0.0, math.inf, "a share of the local width, at least 0"),
-        ("smoothing", smoothing, 0.0, math.inf, "a share of the local width, at least 0"),
-        ("min_elongation", min_elongation, 0.0, math.inf, "a ratio, at least 0"),
+        ("trim", trim, 0.0, 1.0, "label_range_share_of_widest"),
+        ("clearance", clearance, 0.0, 0.5, "label_range_clearance"),
+        ("bend", bend, 0.0, math.inf, "label_range_share_of_width"),
+        ("smoothing", smoothing, 0.0, math.inf, "label_range_share_of_width"),
+        ("min_elongation", min_elongation, 0.0, math.inf, "label_range_ratio"),
     )
     for name, value, low, high, what in ranges:
         if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
-            raise OptionError(f"The label option {name} must be a number ({what}), not {value!r}.")
+            raise OptionError(Message("label_option_not_number", name=name, what=Message(what), value=value))
         if not (math.isfinite(value) or value == math.inf == high) or not low <= value < high:
-            raise OptionError(f"The label option {name} is {value!r}; it must be {what}.")
+            raise OptionError(Message("label_option_out_of_range", name=name, what=Message(what), value=value))
 
 
 def _label_line_steps(

@@ -4,7 +4,7 @@
 across the layer: a junction gets an id of its own, an end the id of any earlier end at exactly the same
 coordinates. With ``connect_touching`` the features first get their gates (:func:`.touching.touching_gates`):
 the middle of every stretch of boundary two features share is an end of both, so their lines meet there and
-share the node. In a geographic CRS each feature is computed in a :class:`.geodesy.LocalProjection` centred
+share the node (a feature whose gates GEOS cannot compute is still computed, alone, with a warning). In a geographic CRS each feature is computed in a :class:`.geodesy.LocalProjection` centred
 on it; an end within ``GATE_SNAP`` of the feature's extent from a gate is then given the gate's coordinates
 exactly (the projection's round trip moves it by about 1e-15 degrees).
 """
@@ -41,11 +41,15 @@ class LayerNetworks:
         ``kind`` (``"end"`` or ``"junction"``).
     errors : list of (int, int or None, str)
         Feature, part (None for a single polygon) and message of each failure.
+    warnings : list of (int, int or None, str)
+        Feature, part and message of what a computed feature's user should know: its gates could not be found
+        (``connect_touching``, see :func:`.touching.touching_gates`), so it is not connected to its neighbours.
     """
 
     branches: list = field(default_factory=list)
     nodes: list = field(default_factory=list)
     errors: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)
 
 
 def layer_networks(
@@ -85,10 +89,12 @@ def layer_networks(
     """
     geometries = list(geometries)
     gates = [np.empty((0, 2)) for _ in geometries]
-    if connect_touching:
-        geometries, gates = touching_gates(geometries)
-    candidates = np.empty((0, 2)) if split_points is None else np.asarray(split_points, dtype=float).reshape(-1, 2)
     layer = LayerNetworks()
+    if connect_touching:
+        failed = []
+        geometries, gates = touching_gates(geometries, errors=failed)
+        layer.warnings.extend((feature, None, str(error)) for feature, error in failed)
+    candidates = np.empty((0, 2)) if split_points is None else np.asarray(split_points, dtype=float).reshape(-1, 2)
     end_ids = {}
     for feature, geometry in enumerate(geometries):
         try:
@@ -110,35 +116,16 @@ def layer_networks(
             if outcome.error is not None:
                 layer.errors.append((feature, outcome.part_index if several else None, str(outcome.error)))
                 continue
-            _add_network(layer, end_ids, feature, outcome, projection, gates[feature], GATE_SNAP * extent)
+            _add_network(layer, end_ids, feature, outcome, projection, gates[feature], extent)
     return layer
 
 
-def _add_network(layer, end_ids, feature, outcome, projection, gates, snap):
+def _add_network(layer, end_ids, feature, outcome, projection, gates, extent):
     """Append one part's branches and nodes to ``layer``; ends at coordinates already seen share their id."""
     network = outcome.result
     nodes = network.nodes if projection is None else projection.to_geographic(network.nodes)
     nodes = np.array(nodes, dtype=float)
-    count = len(network.split_points)
-    for row in range(count):
-        if len(gates):
-            distance = np.hypot(*(gates - nodes[row]).T)
-            nearest = int(np.argmin(distance))
-            if distance[nearest] <= snap:
-                nodes[row] = gates[nearest]
-    ids = []
-    degrees, radii = network.node_degrees, network.node_radii
-    for row, xy in enumerate(map(tuple, nodes.tolist())):
-        if row < count and xy in end_ids:
-            node = end_ids[xy]
-        else:
-            node = len(layer.nodes)
-            kind = "end" if row < count else "junction"
-            layer.nodes.append({"geometry": Point(xy), "degree": 0, "radius": float(radii[row]), "kind": kind})
-            if row < count:
-                end_ids[xy] = node
-        layer.nodes[node]["degree"] += int(degrees[row])
-        ids.append(node)
+    ids = number_nodes(layer.nodes, end_ids, network, nodes, gates, extent)
     for branch in network.branches:
         result = branch.result
         coordinates = shapely.get_coordinates(result.line)
@@ -159,6 +146,52 @@ def _add_network(layer, end_ids, feature, outcome, projection, gates, snap):
                 **width_statistics([result]),
             }
         )
+
+
+def number_nodes(layer_nodes, end_ids, network, nodes, gates, extent):
+    """Number the nodes of one network across a layer: an end takes the id of an earlier end at exactly the same
+    coordinates, a junction a new id; an end within ``GATE_SNAP`` of ``extent`` from a gate is the gate.
+
+    Parameters
+    ----------
+    layer_nodes : list of dict
+        The layer's nodes so far, by id (see :class:`LayerNetworks`); the new ones are appended, degrees added.
+    end_ids : dict
+        ``(x, y)`` of every end so far -> its node id; updated.
+    network : NetworkResult
+    nodes : ndarray of shape (n, 2)
+        ``network.nodes`` in the layer's CRS; the ends snapped to a gate get its coordinates, in place.
+    gates : ndarray of shape (m, 2)
+        The feature's gates, layer CRS.
+    extent : float
+        The feature's :func:`.touching.bounding_diagonal`, layer CRS units.
+
+    Returns
+    -------
+    list of int
+        The node id of each row of ``nodes``.
+    """
+    count = len(network.split_points)
+    for row in range(count):
+        if len(gates):
+            distance = np.hypot(*(gates - nodes[row]).T)
+            nearest = int(np.argmin(distance))
+            if distance[nearest] <= GATE_SNAP * extent:
+                nodes[row] = gates[nearest]
+    ids = []
+    degrees, radii = network.node_degrees, network.node_radii
+    for row, xy in enumerate(map(tuple, nodes.tolist())):
+        if row < count and xy in end_ids:
+            node = end_ids[xy]
+        else:
+            node = len(layer_nodes)
+            kind = "end" if row < count else "junction"
+            layer_nodes.append({"geometry": Point(xy), "degree": 0, "radius": float(radii[row]), "kind": kind})
+            if row < count:
+                end_ids[xy] = node
+        layer_nodes[node]["degree"] += int(degrees[row])
+        ids.append(node)
+    return ids
 
 
 def _point_name(network, point, node):

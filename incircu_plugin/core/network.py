@@ -30,10 +30,17 @@ Method (only the engine's public :func:`centerline_from_chains` and step generat
 4. Islands are joined once, for all runs, to the chains of one split of the ring (``C_0`` and ``D_0``)
    with :func:`bridge_islands`: each island becomes part of the chain its slit starts from, so every run
    sees the same chains and the network passes each island on the side of the wider channel. With
-   ``islands="channels"`` each large island is instead a chain of its own (index ``k + j``), joined to every
-   run's ``D_i``: run ``i`` then traces the channel between ``C_i`` and the island, the labels change to the
-   island where the channel starts, and every run is traced (``k`` of them). The island's chains meet twice
-   (up- and downstream), so their junctions are also numbered by place.
+   ``islands="channels"`` each large island is instead a chain of its own (index ``k + j``) in every run's
+   ``D_i``: run ``i`` then traces the channel between ``C_i`` and the island, the labels change to the
+   island where the channel starts, and every run is traced (``k`` of them). ``D_i`` is the boundary of the
+   polygon clipped near ``C_i`` (:func:`_channel_complement`): the islands reaching into that region are
+   notches of its outline, not joined by slits (a slit across a channel would be a wall for its circles).
+   An island with another channel island near it also gets a *loop run* (:func:`_loop_chains`): the closed
+   axis between its ring and the rest of the boundary near it (both closed chains from their seam, as
+   :mod:`.rings` traces a ring), which gives the branches between two islands (a road grid's streets between
+   two blocks, no outline chain beside them). The island's chains meet twice (up- and downstream), so their
+   junctions are also numbered by place. The automatic ends are those of the polygon with its channel
+   islands (every one of them kept in the skeleton).
 
 The result is checked to be a tree (a connected graph with one cycle per channel island) with exactly ``k``
 leaves at the split points and junctions of degree three or more; otherwise :class:`IncirCuError` says so.
@@ -44,8 +51,10 @@ from typing import Optional
 
 import numpy as np
 import shapely
+from shapely.errors import GEOSException
 from shapely.geometry import LineString, Point, Polygon
 
+from ._many import one_or_many
 from ._steps import run_together
 from .api import PartOutcome, check_island_mode, part_progress, polygon_parts
 from .arms import MIN_ARM_RATIO, find_arm_ends
@@ -59,10 +68,15 @@ from .chains import (
     split_polygon,
     validate_polygon,
 )
-from .engine import CenterlineResult, centerline_from_chains, centerline_steps
+from .engine import CenterlineResult, centerline_from_chains, centerline_steps, clean_chains_steps
 from .errors import IncirCuError, Message, SplitPointError, format_point
 from .islands import bridge_islands
 from .polyline import IndexedPolyline, cumulative_lengths
+from .rings import seam_chains
+
+#: Most networks in one batch of an array (:func:`multipolygon_networks`): a network traces its own runs, so a
+#: batch shares no tracing, and progress and cancel come between batches.
+NETWORK_BATCH_FEATURES = 8
 
 #: Island modes of a network: those of a centerline, and ``"channels"`` (channels on both sides of the large
 #: islands, see :func:`polygon_network`).
@@ -71,6 +85,13 @@ NETWORK_ISLAND_MODES = ("main_channel", "ignore", "channels")
 #: An island is a channel island (``islands="channels"``) when its bounding-box diagonal is at least this
 #: many times the local width: its own typical width plus twice its distance to the nearest other ring.
 CHANNEL_ISLAND_RATIO = 1.0
+
+#: A channel island's loop run sees the polygon within this many times the island's widest channel of it (a
+#: circle at a right-angled crossing of two such channels reaches 1.42 times as far).
+LOOP_REACH = 2.0
+
+#: Samples along a chain or island measuring its widest channel (the distance to the rest of the boundary).
+LOOP_SAMPLES = 256
 
 #: Junctions closer than this fraction of the extent are one junction (degree four or more).
 JUNCTION_TOLERANCE = 1e-9
@@ -137,8 +158,9 @@ class NetworkResult:
     end_sources : tuple of str
         Per row of ``split_points``: ``"split_point"`` (given), ``"gate"`` (see ``gates`` of
         :func:`polygon_network`) or ``"automatic"`` (see :mod:`.arms`).
-    ends_from : {"split_points", "automatic", "split_points_and_automatic"}
-        Where the ends came from (gates count as split points).
+    ends_from : str
+        Where the ends came from: ``"split_points"``, ``"gates"``, ``"automatic"`` or those present joined
+        by ``"_and_"`` (``"gates_and_automatic"`` for a reach with one gate; see :func:`ends_from`).
     chain_nodes : tuple of (int, int)
         For each chain, the rows of ``split_points`` (node ids) at its start and end: ``chains`` before
         :func:`multipolygon_networks` renumbers it.
@@ -222,8 +244,9 @@ def polygon_network(
         least ``CHANNEL_ISLAND_RATIO`` times the local width (its own typical width plus twice its distance
         to the nearest other ring) is a chain of its own, so the network has a loop around it (a junction upstream and
         one downstream, exact; branches of kind ``"loop"`` along it); smaller islands are passed on the side
-        of the wider channel. Every run is traced (``k`` instead of ``k - 1``); a branch between two channel
-        islands (no outline chain) is not traced.
+        of the wider channel. Every run is traced (``k`` instead of ``k - 1``), and a loop run round every
+        channel island with another near it gives the branches between two islands: a road area whose city
+        blocks are holes gives its street network (one branch per street segment between two crossings).
     end_cap : {"axis", "runout"}
         How a branch crosses the end cap at an end on the outline, as in :func:`polygon_centerline` (the
         branches' junction ends are left as they are).
@@ -263,7 +286,11 @@ def polygon_network(
     split_points = split_points + gates
     if given < 2:
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
-        split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length)
+        every_island = bool(channel_islands)
+        if every_island:
+            # The arms of a polygon with channel islands go round them too (a road grid's streets).
+            region = Polygon(polygon.exterior, channel_islands)
+        split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length, every_island)
     sources += ["automatic"] * (len(split_points) - len(sources))
     order = _ring_order(polygon, split_points, snap_tolerance)
     points = [_as_xy(split_points[index]) for index in order]
@@ -274,16 +301,24 @@ def polygon_network(
     junctions = _Junctions(boundary)
     pieces = []
     runs = _runs(chains, spacing, progress, engine_options, channel_islands)
-    for i, (result, bridged) in enumerate(runs):
-        labels = _vertex_labels(result, i, boundary, bridged)
-        pieces.extend(_run_pieces(result, i, labels, junctions))
+    traced = [(i, run) for i, run in enumerate(runs) if run is not None]
+    feet = [np.asarray(result.foot_b, dtype=float) for _, (result, _) in traced]
+    on_ring = np.split(boundary.chain_at(np.concatenate(feet)), np.cumsum([len(f) for f in feet])[:-1])
+    labelled = [
+        (i, result, _vertex_labels(result, i, boundary, bridged, ring_labels, loop=i >= k))
+        for (i, (result, bridged)), ring_labels in zip(traced, on_ring)
+    ]
+    junctions.locate_ahead([request for run in labelled for request in _label_changes(*run)])
+    for i, result, labels in labelled:
+        pieces.extend(
+            _run_pieces(result, i, labels, junctions) if i < k else _loop_pieces(result, i, labels, junctions)
+        )
     branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
     if end_cap == "runout":
         region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
         branches = [replace(branch, result=run_out_ends(branch.result, region)) for branch in branches]
     snapped = np.empty((k, 2))
     snapped[order] = np.array([chain[0] for chain in chains])
-    automatic = "automatic" in sources
     return NetworkResult(
         branches=tuple(branches),
         split_points=snapped,
@@ -292,14 +327,36 @@ def polygon_network(
         junction_radii=radii,
         chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
         end_sources=tuple(sources),
-        ends_from=("split_points_and_automatic" if len(sources) > sources.count("automatic") else "automatic")
-        if automatic
-        else "split_points",
+        ends_from=ends_from(sources),
         notes=(spikes,) if spikes else (),
     )
 
 
-def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None):
+def ends_from(sources):
+    """Return :attr:`NetworkResult.ends_from` for the sources of the ends.
+
+    Parameters
+    ----------
+    sources : sequence of {"split_point", "gate", "automatic"}
+        Per end, where it came from.
+
+    Returns
+    -------
+    str
+        The sources present, in the order split points, gates, automatic ends, joined by ``"_and_"``:
+        ``"split_points"``, ``"gates"``, ``"automatic"``, ``"split_points_and_automatic"``,
+        ``"gates_and_automatic"``, ``"split_points_and_gates"`` or ``"split_points_and_gates_and_automatic"``.
+
+    Examples
+    --------
+    >>> ends_from(["gate", "gate", "gate"]), ends_from(["gate", "automatic"])
+    ('gates', 'gates_and_automatic')
+    """
+    names = {"split_point": "split_points", "gate": "gates", "automatic": "automatic"}
+    return "_and_".join(names[source] for source in names if source in sources)
+
+
+def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_arm_length=None, every_island=False):
     """Return the given points followed by the automatic arm ends they do not replace.
 
     A given point replaces the automatic end nearest to it when it lies within that arm's width of it (a
@@ -311,7 +368,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
         CRS units; its holes as the network sees them.
     split_points : sequence of Point or (x, y)
         CRS units (one split point and any gates).
-    min_arm_ratio, min_arm_length : float
+    min_arm_ratio, min_arm_length, every_island : float, float, bool
         See :func:`.arms.find_arm_ends`.
 
     Returns
@@ -325,7 +382,7 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
         When fewer than two ends are found (a shape without arms, such as a ring around an island).
     """
     given = [_as_xy(point) for point in split_points]
-    arms = find_arm_ends(polygon, min_arm_ratio=min_arm_ratio, min_arm_length=min_arm_length)
+    arms = find_arm_ends(polygon, min_arm_ratio=min_arm_ratio, min_arm_length=min_arm_length, every_island=every_island)
     automatic = list(zip(arms.points, arms.widths))
     for point in given:
         if automatic:
@@ -339,18 +396,22 @@ def with_automatic_ends(polygon, split_points, min_arm_ratio=MIN_ARM_RATIO, min_
     return points
 
 
-def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, gates=None, **options):
-    """Network of each part of a polygon or multipolygon between the split points on its exterior ring.
+def multipolygon_networks(geometry, split_points=None, *, snap_tolerance=None, gates=None, **options):
+    """Network of each part of a polygon or multipolygon between the split points on its exterior ring; of each
+    geometry of an array.
 
     A part takes the split points within ``snap_tolerance`` of its exterior ring; with fewer than two, the
     ends of its arms are found automatically (see :func:`polygon_network`). A part that fails does not stop
-    the others.
+    the others. An array-like of geometries gives a list, per geometry its list of outcomes or the exception
+    it raised, as :func:`.api.polygon_centerline` computes an array (``split_points`` and ``gates``: None, or
+    one sequence, or None, per geometry; each network traces its own runs together, one geometry after the
+    other).
 
     Parameters
     ----------
-    geometry : Polygon or MultiPolygon
+    geometry : Polygon or MultiPolygon, or array_like of them
         CRS units.
-    split_points : sequence of Point or (x, y)
+    split_points : sequence of Point or (x, y), optional
         Candidate split points for all parts.
     snap_tolerance : float, optional
         CRS units; default ``1e-6`` of the geometry's extent.
@@ -382,6 +443,22 @@ def multipolygon_networks(geometry, split_points, *, snap_tolerance=None, gates=
     >>> [[(b.start_point, b.end_point) for b in o.result.branches] for o in outcomes]
     [[(1, 3)], [(0, 2)]]
     """
+    progress = options.pop("progress", None)
+    options.update(snap_tolerance=snap_tolerance, gates=gates)
+    return one_or_many(
+        _multipolygon_network_steps, geometry, split_points, options, progress, ("gates",), NETWORK_BATCH_FEATURES
+    )
+
+
+def _multipolygon_network_steps(geometry, split_points=None, *, snap_tolerance=None, gates=None, **options):
+    """:func:`multipolygon_networks` of one geometry as a step generator (:mod:`._steps`) that needs no shared
+    tracing: it computes its networks when first advanced and returns their outcomes."""
+    return _networks_of_parts(geometry, split_points, snap_tolerance, gates, options)
+    yield  # a generator function: computed in an array's batch like the centerlines
+
+
+def _networks_of_parts(geometry, split_points, snap_tolerance, gates, options):
+    """The outcomes of :func:`multipolygon_networks` for one geometry."""
     parts, points, snap_tolerance = polygon_parts(geometry, split_points, snap_tolerance)
     gate_points = list(shapely.points(np.asarray(gates, dtype=float).reshape(-1, 2))) if gates is not None else []
     progress = options.pop("progress", None)
@@ -448,18 +525,103 @@ def _runs(chains, spacing, progress, engine_options, channel_islands=()):
     complements = [_complement(chains, i) for i in range(k if channel_islands else k - 1)]
     if channel_islands:
         # Each run sees every channel island as part of the rest of the ring, so it traces its own channel.
-        complements = [
-            bridge_islands(chains[i], complement, channel_islands, to_second=[True] * len(channel_islands))[1]
-            for i, complement in enumerate(complements)
-        ]
+        complements = [_channel_complement(chains, i, channel_islands) for i in range(len(complements))]
     steps = [
         centerline_steps(chains[i], complement, spacing, **engine_options) for i, complement in enumerate(complements)
     ]
+    loops = [_loop_chains(chains, channel_islands, j) for j in range(len(channel_islands))]
+    steps += [clean_chains_steps(*loop, spacing, **engine_options) for loop in loops if loop is not None]
     results = run_together(steps, progress=progress)
     for result in results:
         if isinstance(result, Exception):
             raise result
-    return [(result, complement if channel_islands else None) for result, complement in zip(results, complements)]
+    bridged = [complement if channel_islands else None for complement in complements]
+    traced = iter(results[len(complements) :])
+    return list(zip(results, bridged)) + [None if loop is None else (next(traced), loop[1]) for loop in loops]
+
+
+def _channel_complement(chains, i, islands):
+    """Return ``D_i`` with the channel islands for run ``i``: the boundary near ``C_i``, islands included.
+
+    The region within ``LOOP_REACH`` times ``C_i``'s widest channel of it (the polygon clipped there, beyond
+    every circle touching ``C_i``) has the islands reaching into it as notches of its outline, so ``D_i`` runs
+    round them without a slit (a slit across a channel would be a wall there); only the islands wholly
+    inside it are joined by slits (:func:`bridge_islands`). Where that region is not one polygon holding
+    ``C_i`` as it is, every island is joined by a slit.
+    """
+    complement = _complement(chains, i)
+    chain = chains[i]
+    rings = [Polygon(island) for island in islands]
+    rest = shapely.MultiLineString([complement, *islands])
+    samples = shapely.points(shapely.get_coordinates(shapely.segmentize(LineString(chain), _sampling(chain))))
+    reach = LOOP_REACH * float(np.max(shapely.distance(samples, rest)))
+    near = LineString(chain).buffer(reach, join_style="mitre")
+    whole = Polygon(np.concatenate([chain, complement[::-1][1:]]), list(islands))
+    try:
+        parts = [
+            part for part in shapely.get_parts(shapely.intersection(whole, near)) if part.intersects(LineString(chain))
+        ]
+    except GEOSException:  # the outline's chains carry the slits of its small islands: GEOS may refuse them
+        parts = []
+    if len(parts) == 1:
+        ring = shapely.get_coordinates(shapely.geometry.polygon.orient(parts[0], 1.0).exterior)[:-1]
+        first = np.flatnonzero(np.all(ring == chain[0], axis=1))
+        if len(first) == 1:
+            ring = np.roll(ring, -int(first[0]), axis=0)
+            if len(ring) > len(chain) and np.array_equal(ring[: len(chain)], chain):
+                local = np.concatenate([ring[len(chain) - 1 :], ring[:1]])[::-1]
+                outline = Polygon(parts[0].exterior)
+                inside = [island for island, polygon in zip(islands, rings) if outline.contains(polygon)]
+                if not inside:
+                    return local
+                return bridge_islands(chain, local, inside, to_second=[True] * len(inside))[1]
+    return bridge_islands(chain, complement, islands, to_second=[True] * len(islands))[1]
+
+
+def _loop_chains(chains, islands, j):
+    """Return the two closed chains of channel island ``j``'s loop run, or None when it needs none.
+
+    The run traces the axis around the island between its ring and the rest of the boundary *near* it: the
+    region within ``LOOP_REACH`` times the island's widest channel of it (the polygon clipped there; the clip
+    lies beyond every circle touching the island and its neighbours across those channels). That region has
+    the island as its one hole (other islands reaching into it become notches of its outline): both rings
+    counter-clockwise from the seam, the closest pair of points between them, as :func:`.rings.seam_chains`.
+    A loop is traced only for an island with another channel island within that reach (the branches between
+    two islands come from it; the others from the runs along the outline).
+    """
+    ring = np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]])
+    island = np.asarray(islands[j], dtype=float)
+    others = [other for m, other in enumerate(islands) if m != j]
+    if not others:
+        return None
+    rest = shapely.MultiLineString([ring, *others])
+    samples = shapely.points(shapely.get_coordinates(shapely.segmentize(LineString(island), _sampling(island))))
+    reach = LOOP_REACH * float(np.max(shapely.distance(samples, rest)))
+    near = Polygon(island).buffer(reach, join_style="mitre")
+    if not any(near.intersects(Polygon(other)) for other in others):
+        return None
+    inside = Polygon(island).representative_point()
+    try:
+        region = shapely.intersection(Polygon(ring, [island, *others]), near)
+    except GEOSException:  # the outline's chains carry the slits of its small islands: GEOS may refuse them
+        return None
+    for part in shapely.get_parts(region):
+        holes = [hole for hole in part.interiors if Polygon(hole).contains(inside)]
+        if len(holes) == 1 and Polygon(part.exterior).contains(inside):
+            outer, inner = seam_chains(shapely.geometry.polygon.orient(Polygon(part.exterior, holes), 1.0))
+            # Islands wholly within the reach (blocks narrower than their streets) are joined by slits.
+            others = [shapely.get_coordinates(hole) for hole in part.interiors if hole is not holes[0]]
+            others = [hole for hole in others if not np.array_equal(hole, shapely.get_coordinates(holes[0]))]
+            if others:
+                outer = bridge_islands(inner, outer, others, to_second=[True] * len(others))[1]
+            return inner, outer
+    return None
+
+
+def _sampling(line):
+    """Return the distance between the ``LOOP_SAMPLES`` samples of a chain or ring that measure its widest
+    channel (their largest distance to the rest of the boundary), CRS units."""
+    return float(cumulative_lengths(np.asarray(line, dtype=float))[-1]) / LOOP_SAMPLES
 
 
 def _channel_islands(polygon):
@@ -507,19 +669,35 @@ def _ring_order(polygon, split_points, tolerance):
     return order
 
 
-def _insert_vertex(chain, point, coincidence):
-    """Return ``chain`` with ``point`` projected onto it as a vertex, and that vertex's index."""
-    exact = np.flatnonzero(np.all(chain == point, axis=1))
-    if len(exact) == 1:
-        return chain, int(exact[0])
-    line = LineString(chain)
-    position = line.project(Point(point))
+def _insert_vertices(chain, points, coincidence):
+    """Return ``chain`` with each point projected onto it as a vertex, and each point's vertex index.
+
+    A point equal to exactly one vertex is that vertex; a point projecting within ``coincidence`` (CRS units,
+    along the chain) of a vertex is that vertex; the others are inserted where they project, all at once
+    (several on one segment in their order along it).
+    """
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
     cumulative = cumulative_lengths(chain)
-    nearest = int(np.argmin(np.abs(cumulative - position)))
-    if abs(cumulative[nearest] - position) <= coincidence:
-        return chain, nearest
-    index = int(np.searchsorted(cumulative, position, side="right"))
-    return np.insert(chain, index, np.asarray(line.interpolate(position).coords[0]), axis=0), index
+    positions = shapely.line_locate_point(LineString(chain), shapely.points(points))
+    vertex = np.full(len(points), -1, dtype=np.int64)
+    for row, point in enumerate(points):
+        exact = np.flatnonzero(np.all(chain == point, axis=1))
+        if len(exact) == 1:
+            vertex[row] = exact[0]
+            continue
+        nearest = int(np.argmin(np.abs(cumulative - positions[row])))
+        if abs(cumulative[nearest] - positions[row]) <= coincidence:
+            vertex[row] = nearest
+    new = np.flatnonzero(vertex < 0)
+    if not len(new):
+        return chain, vertex
+    new = new[np.argsort(positions[new], kind="stable")]
+    at = np.searchsorted(cumulative, positions[new], side="right")
+    xy = shapely.get_coordinates(shapely.line_interpolate_point(LineString(chain), positions[new]))
+    shift = np.searchsorted(at, vertex, side="right")  # inserted before (or at) each old vertex
+    index = np.where(vertex >= 0, vertex + shift, 0)
+    index[new] = at + np.arange(len(new))
+    return np.insert(chain, at, xy, axis=0), index
 
 
 def _bridged_chains(polygon, points, tolerance, islands):
@@ -531,15 +709,14 @@ def _bridged_chains(polygon, points, tolerance, islands):
     """
     c1, c2 = split_polygon(polygon, points[:2], tolerance)
     coincidence = COINCIDENCE_TOLERANCE * extent_of(c1, c2)
-    for point in points[2:]:
-        c2, _ = _insert_vertex(c2, point, coincidence)
+    if len(points) > 2:
+        c2, _ = _insert_vertices(c2, points[2:], coincidence)
     if islands == "main_channel" and polygon.interiors:
         c1, c2 = bridge_islands(c1, c2, [shapely.get_coordinates(ring) for ring in polygon.interiors])
     cuts = []
-    for point in points[:1:-1]:
-        before = len(c2)
-        c2, index = _insert_vertex(c2, point, coincidence)
-        cuts = [cut + (len(c2) - before if cut >= index else 0) for cut in cuts] + [index]
+    if len(points) > 2:
+        c2, index = _insert_vertices(c2, points[:1:-1], coincidence)
+        cuts = index.tolist()
     if cuts != sorted(cuts) or len(set(cuts)) != len(cuts) or (cuts and (cuts[0] == 0 or cuts[-1] == len(c2) - 1)):
         raise IncirCuError(Message("network_order"))
     bounds = [0, *cuts, len(c2) - 1]
@@ -553,17 +730,20 @@ def _complement(chains, i):
     return np.concatenate([chains[(i - step) % k][::-1][(step > 1) :] for step in range(1, k)])
 
 
-def _vertex_labels(result, i, boundary, bridged=None):
+def _vertex_labels(result, i, boundary, bridged=None, on_ring=None, loop=False):
     """Label each vertex of run ``i`` with the chain its foot on ``D_i`` lies on, in ``D_i``'s order.
 
     Each foot lies on the ring (the chains end to end, counter-clockwise): its arc length there names its
     chain (one index query for all the feet of the run). A foot at ``p_i`` or ``p_{i+1}`` itself, which the
     ring may place on ``C_i``, takes the neighbouring chain. Labels that go back against ``D_i``'s order (a
-    foot at the very junction) take the label before them.
+    foot at the very junction) take the label before them. ``on_ring``: the feet's chains on the ring, when
+    already found (:meth:`_Boundary.chain_at` of all runs' feet at once), changed in place.
     """
     k = boundary.exterior_count
     feet = np.asarray(result.foot_b, dtype=float)
-    labels = boundary.chain_at(feet)
+    labels = boundary.chain_at(feet) if on_ring is None else on_ring
+    if loop:
+        return _island_labels(feet, labels, boundary)
     if bridged is not None:
         return _channel_labels(feet, labels, i, boundary, bridged)
     _outline_ends(labels, feet, i, boundary)
@@ -582,6 +762,16 @@ def _outline_ends(labels, feet, i, boundary):
         nearer_start = np.hypot(*(feet[own] - chain[0]).T) <= np.hypot(*(feet[own] - chain[-1]).T)
         labels[own] = np.where(nearer_start, (i - 1) % k, (i + 1) % k)
     labels[0], labels[-1] = (i - 1) % k, (i + 1) % k
+
+
+def _island_labels(feet, labels, boundary):
+    """Labels of channel island ``j``'s loop run (``i = k + j``): the chain each foot lies on, ``k + m`` on
+    island ``m``."""
+    k = boundary.exterior_count
+    for m, ring in enumerate(boundary.chains[k:]):
+        on = IndexedPolyline(ring).nearest(feet)[0] <= JUNCTION_TOLERANCE * boundary.extent
+        labels[on] = k + m
+    return labels
 
 
 def _channel_labels(feet, labels, i, boundary, bridged):
@@ -608,6 +798,9 @@ class _Boundary:
         chains = [*chains, *islands]
         self.chains = chains
         self.indexed = [None] * len(chains)
+        #: :meth:`nearest`'s answers by (x, y, chain): a junction's feet are asked for again by its branches.
+        self.known = {}
+        self.segments = self.segment_counts = None
         self.extent = extent
         chains = chains[: self.exterior_count]
         self.ring = IndexedPolyline(np.concatenate([chains[0], *[chain[1:] for chain in chains[1:]]]))
@@ -627,6 +820,9 @@ class _Boundary:
         (a few microseconds; the junctions ask one point at a time), a longer one through its spatial index.
         """
         point = np.asarray(point, dtype=float)
+        memo = (float(point[0]), float(point[1]), int(chain))
+        if memo in self.known:
+            return self.known[memo]
         if self.indexed[chain] is None:
             xy = np.asarray(self.chains[chain], dtype=float)
             if len(xy) - 1 <= BRUTE_FORCE_SEGMENTS and len(xy) > 1:
@@ -637,14 +833,74 @@ class _Boundary:
         indexed = self.indexed[chain]
         if isinstance(indexed, IndexedPolyline):
             distance, _, foot = indexed.nearest(point[None])
-            return float(distance[0]), foot[0]
+            self.known[memo] = float(distance[0]), foot[0]
+            return self.known[memo]
         start, direction, squared = indexed
         offset = point - start
         along = np.clip(np.einsum("ij,ij->i", offset, direction) / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
         gap = offset - along[:, None] * direction
         distances = np.hypot(gap[:, 0], gap[:, 1])
         nearest = int(np.argmin(distances))
-        return float(distances[nearest]), start[nearest] + along[nearest] * direction[nearest]
+        self.known[memo] = float(distances[nearest]), start[nearest] + along[nearest] * direction[nearest]
+        return self.known[memo]
+
+    def nearest_many(self, points, chains):
+        """Return the distance from each point to its chain and the foot there, as :meth:`nearest` for each.
+
+        Parameters
+        ----------
+        points : ndarray of shape (n, 2)
+            CRS units.
+        chains : ndarray of shape (n,) of int
+
+        Returns
+        -------
+        distances : ndarray of shape (n,)
+        feet : ndarray of shape (n, 2)
+        """
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        chains = np.asarray(chains, dtype=np.int64)
+        distances, feet = np.empty(len(points)), np.empty((len(points), 2))
+        for chain in np.unique(chains):
+            if self.indexed[int(chain)] is None:
+                self.nearest(points[0], int(chain))  # builds the chain's arrays or index
+                self.segments = None
+        small = np.array([not isinstance(self.indexed[int(chain)], IndexedPolyline) for chain in chains], dtype=bool)
+        for chain in np.unique(chains[~small]):
+            rows = np.flatnonzero(chains == chain)
+            distance, _, foot = self.indexed[int(chain)].nearest(points[rows])
+            distances[rows], feet[rows] = distance, foot
+        rows = np.flatnonzero(small)
+        if len(rows):
+            distances[rows], feet[rows] = self._brute_force(points[rows], chains[rows])
+        return distances, feet
+
+    def _brute_force(self, points, chains):
+        """:meth:`nearest_many` for chains measured segment by segment: every (point, segment of its chain)
+        pair in one numpy pass, the first nearest segment of each point kept (as :meth:`nearest`)."""
+        if self.segments is None:
+            # Every chain's segments end to end (an indexed chain has none here), and where each chain's start.
+            arrays = [
+                item if isinstance(item, tuple) else (np.empty((0, 2)),) * 2 + (np.empty(0),) for item in self.indexed
+            ]
+            self.segments = tuple(np.concatenate([item[n] for item in arrays]) for n in range(3))
+            self.segment_counts = np.array([len(item[2]) for item in arrays], dtype=np.int64)
+        counts = self.segment_counts[chains]
+        owner = np.repeat(np.arange(len(points)), counts)
+        firsts = np.cumsum(counts) - counts
+        rows = np.arange(len(owner)) - np.repeat(firsts, counts)
+        rows += np.repeat((np.cumsum(self.segment_counts) - self.segment_counts)[chains], counts)
+        start, direction, squared = (values[rows] for values in self.segments)
+        offset = points[owner] - start
+        dot = offset[:, 0] * direction[:, 0] + offset[:, 1] * direction[:, 1]
+        along = np.clip(dot / np.where(squared > 0.0, squared, 1.0), 0.0, 1.0)
+        gap = offset - along[:, None] * direction
+        distances = np.hypot(gap[:, 0], gap[:, 1])
+        smallest = np.minimum.reduceat(distances, firsts)
+        at_min = np.flatnonzero(distances == smallest[owner])
+        _, first = np.unique(owner[at_min], return_index=True)
+        nearest = at_min[first]
+        return distances[nearest], start[nearest] + along[nearest, None] * direction[nearest]
 
     def distances_within(self, point, reach):
         """Return ``{chain: distance}`` for the chains nearer than ``reach`` to ``point`` (CRS units): one
@@ -664,6 +920,37 @@ class _Junctions:
     def __init__(self, boundary):
         self.boundary = boundary
         self.by_chains = {}
+        #: Centres located ahead by :meth:`locate_ahead`, by their three chains, taken by :meth:`between`.
+        self.located = {}
+
+    def locate_ahead(self, requests):
+        """Locate at once (:func:`_newton_many`) the junctions :meth:`between` will be asked for.
+
+        Parameters
+        ----------
+        requests : list of (int, int, int, ndarray, ndarray)
+            ``(i, a, b, start, end)`` of each label change, in the order :meth:`between` will see them: the
+            first request of each junction of three outline chains decides its start, as it would alone.
+        """
+        k = self.boundary.exterior_count
+        first = {}
+        for i, a, b, start, end in requests:
+            key = tuple(sorted((i, a, b)))
+            if max(key) < k and len(set(key)) == 3 and key not in self.by_chains and key not in first:
+                first[key] = 0.5 * (start + end)
+        if not first:
+            return
+        keys = list(first)
+        centres = _newton_many(self.boundary, np.array(keys), np.array([first[key] for key in keys]))
+        settled = np.flatnonzero(np.all(np.isfinite(centres), axis=1))
+        distances, feet = self.boundary.nearest_many(
+            np.repeat(centres[settled], 3, axis=0), np.array(keys)[settled].ravel()
+        )
+        for row, index in enumerate(settled):
+            self.located[keys[index]] = centres[index]
+            x, y = (float(value) for value in centres[index])
+            for column, chain in enumerate(keys[index]):
+                self.boundary.known[(x, y, int(chain))] = float(distances[3 * row + column]), feet[3 * row + column]
 
     def between(self, i, a, b, start, end, depth=0):
         """Return the junctions on run ``i`` between a vertex labelled ``a`` and the next labelled ``b``.
@@ -682,7 +969,9 @@ class _Junctions:
         """
         key = self._key(tuple(sorted((i, a, b))), start, end)
         if key not in self.by_chains:
-            centre = _newton_junction(self.boundary, key[:3], start, end)
+            centre = self.located.pop(key) if key in self.located else None
+            if centre is None:
+                centre = _newton_junction(self.boundary, key[:3], start, end)
             radius = float(np.mean([self.boundary.nearest(centre, chain)[0] for chain in key[:3]]))
             distances = self.boundary.distances_within(centre, radius * (1.0 - EMPTY_CIRCLE_TOLERANCE))
             inside = [m for m in sorted(distances, key=distances.get) if m not in key[:3]]
@@ -834,7 +1123,85 @@ def _newton_from(boundary, key, x):
     return x if np.max(np.abs(value)) <= JUNCTION_TOLERANCE * boundary.extent else None
 
 
-def _run_pieces(result, i, labels, junctions):
+def _newton_many(boundary, keys, starts):
+    """:func:`_newton_from` for many junctions at once: the same iteration, vectorised over the junctions.
+
+    Parameters
+    ----------
+    boundary : _Boundary
+    keys : ndarray of shape (m, 3) of int
+        Each junction's three chains.
+    starts : ndarray of shape (m, 2)
+        Where each iteration starts, CRS units.
+
+    Returns
+    -------
+    ndarray of shape (m, 2)
+        The junctions, NaN where the iteration did not settle (the caller tries :func:`_newton_junction`).
+    """
+    count = len(keys)
+    x = np.array(starts, dtype=float)
+    floor = 4.0 * np.spacing(np.max(np.abs(x), axis=1) + boundary.extent)
+    chains = keys.ravel()
+
+    def residual(points, rows):
+        distances, feet = boundary.nearest_many(np.repeat(points, 3, axis=0), chains.reshape(-1, 3)[rows].ravel())
+        distances, feet = distances.reshape(-1, 3), feet.reshape(-1, 3, 2)
+        return distances[:, :1] - distances[:, 1:], distances, feet
+
+    value, distances, feet = residual(x, np.arange(count))
+    found = np.full((count, 2), np.nan)
+    active = np.arange(count)
+    for _ in range(NEWTON_STEPS):
+        if not len(active):
+            break
+        here = x[active]
+        bad = np.any(distances <= 0.0, axis=1)
+        gradients = (here[:, None, :] - feet) / np.where(bad[:, None], 1.0, distances)[:, :, None]
+        rows = gradients[:, :1] - gradients[:, 1:]
+        a, b, c, d = rows[:, 0, 0], rows[:, 0, 1], rows[:, 1, 0], rows[:, 1, 1]
+        determinant = a * d - b * c
+        bad |= (determinant == 0.0) | ~np.isfinite(determinant)
+        safe = np.where(bad, 1.0, determinant)
+        step = np.stack([d * -value[:, 0] - b * -value[:, 1], a * -value[:, 1] - c * -value[:, 0]], axis=1)
+        step = step / safe[:, None]
+        step[bad] = 0.0
+        size = np.max(np.abs(value), axis=1)
+        trial = [value.copy(), distances.copy(), feet.copy()]
+        searching = np.flatnonzero(~bad)
+        for _ in range(40):
+            if not len(searching):
+                break
+            got = residual(here[searching] + step[searching], active[searching])
+            for store, new in zip(trial, got):
+                store[searching] = new
+            done = (np.max(np.abs(got[0]), axis=1) < size[searching]) | (
+                np.hypot(*step[searching].T) <= floor[active[searching]]
+            )
+            searching = searching[~done]
+            step[searching] = 0.5 * step[searching]
+        x[active] = here + step
+        value, distances, feet = trial
+        settled = ~bad & (np.hypot(*step.T) <= floor[active])
+        found[active[settled]] = x[active[settled]]
+        keep = ~bad & ~settled
+        active, value, distances, feet = active[keep], value[keep], distances[keep], feet[keep]
+    close = np.max(np.abs(value), axis=1) <= JUNCTION_TOLERANCE * boundary.extent if len(active) else []
+    found[active[close]] = x[active[close]]
+    return found
+
+
+def _label_changes(i, result, labels):
+    """Return ``(i, a, b, start, end)`` for each change of label ``a`` to ``b`` along run ``i``, between the
+    vertices ``start`` and ``end`` (what :func:`_run_pieces` asks :meth:`_Junctions.between`)."""
+    vertices = shapely.get_coordinates(result.line)
+    return [
+        (i, int(labels[c]), int(labels[c + 1]), vertices[c], vertices[c + 1])
+        for c in np.flatnonzero(labels[1:] != labels[:-1])
+    ]
+
+
+def _run_pieces(result, i, labels, junctions, start_node=None, end_node=None):
     """Cut run ``i`` where its labels change and keep the pieces ``(i, j)`` with ``i < j``.
 
     Returns
@@ -853,7 +1220,7 @@ def _run_pieces(result, i, labels, junctions):
     }
     change = np.flatnonzero(labels[1:] != labels[:-1])
     starts, stops = np.concatenate([[0], change + 1]), np.concatenate([change + 1, [len(labels)]])
-    node = ("leaf", i)
+    node = ("leaf", i) if start_node is None else start_node
     pieces = []
     for first, stop in zip(starts, stops):
         label = int(labels[first])
@@ -861,7 +1228,7 @@ def _run_pieces(result, i, labels, junctions):
         if stop < len(labels):
             vertices = arrays["vertices"]
             found = junctions.between(i, label, int(labels[stop]), vertices[stop - 1], vertices[stop])
-        end = ("junction", found[0][0]) if found else ("leaf", (i + 1) % k)
+        end = ("junction", found[0][0]) if found else (("leaf", (i + 1) % k) if end_node is None else end_node)
         piece = {name: values[first:stop] for name, values in arrays.items()}
         pieces.append({"chains": (i, label), "ends": (node, end), **piece})
         for before, after in zip(found[:-1], found[1:]):
@@ -874,22 +1241,47 @@ def _run_pieces(result, i, labels, junctions):
     return [piece for piece in pieces if piece["chains"][0] < piece["chains"][1]]
 
 
+def _loop_pieces(result, i, labels, junctions):
+    """:func:`_run_pieces` of a channel island's loop run (closed: from its seam round to it): the loop is
+    turned to start at its first label change, so every piece runs from a junction to a junction."""
+    changes = np.flatnonzero(labels[1:] != labels[:-1])
+    if not len(changes):
+        return []
+    start = int(changes[0]) + 1
+    order = np.concatenate([np.arange(start, len(labels) - 1), np.arange(0, start)])
+    turned = CenterlineResult(
+        line=LineString(shapely.get_coordinates(result.line)[order]),
+        radii=np.asarray(result.radii, dtype=float)[order],
+        foot_a=np.asarray(result.foot_a, dtype=float)[order],
+        foot_b=np.asarray(result.foot_b, dtype=float)[order],
+    )
+    vertices = shapely.get_coordinates(result.line)
+    found = junctions.between(i, int(labels[start - 1]), int(labels[start]), vertices[start - 1], vertices[start])
+    node = ("junction", found[-1][0])
+    return _run_pieces(turned, i, labels[order], junctions, start_node=node, end_node=("junction", found[0][0]))
+
+
 def _empty():
     """Arrays of a piece with no run vertex (a branch shorter than the sampling)."""
     return {"vertices": np.empty((0, 2)), "radii": np.empty(0), "foot_a": np.empty((0, 2)), "foot_b": np.empty((0, 2))}
 
 
 def _junction_clusters(junctions):
-    """Map each junction key to the key of its cluster (junctions within ``JUNCTION_TOLERANCE``)."""
+    """Map each junction key to the key of its cluster (junctions within ``JUNCTION_TOLERANCE``): that of the
+    first junction, in the keys' order, within the tolerance of it (itself when none is before it)."""
     keys = sorted(junctions.by_chains)
+    if not keys:
+        return {}
     tolerance = JUNCTION_TOLERANCE * junctions.boundary.extent
+    centres = np.array([junctions.by_chains[key][0] for key in keys])
+    near, other = shapely.STRtree(shapely.points(centres)).query(
+        shapely.points(centres), predicate="dwithin", distance=tolerance
+    )
+    first = np.arange(len(keys))
+    np.minimum.at(first, near, other)
     cluster = {}
-    for key in keys:
-        centre = junctions.by_chains[key][0]
-        cluster[key] = next(
-            (cluster[other] for other in cluster if np.hypot(*(junctions.by_chains[other][0] - centre)) <= tolerance),
-            key,
-        )
+    for index, key in enumerate(keys):
+        cluster[key] = cluster[keys[first[index]]] if first[index] < index else key
     return cluster
 
 

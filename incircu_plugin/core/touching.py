@@ -7,24 +7,33 @@ each network's end is that very vertex, not a projection of it rounded different
 
 Method: candidate pairs from a spatial index of the features' boxes; a pair's shared boundary is the line part
 of the intersection of their boundaries (touching at single points makes no gate), merged into stretches;
-each stretch's gate is the point halfway along it.
+each stretch's gate is the point halfway along it. A feature whose coordinates are not all finite shares
+nothing (its own network reports it); where GEOS fails on a pair (an invalid geometry it cannot read), that pair
+shares nothing and the feature at fault (the invalid one of the two, else both) gets the error, the others
+their gates.
 """
 
 import numpy as np
 import shapely
+from shapely.errors import GEOSException
+
+from .errors import InvalidGeometryError, Message
 
 #: Two rings share a stretch when their boundaries' intersection has line parts at least this long, as a
 #: fraction of the smaller feature's bounding-box diagonal (a crossing at a point, or rounding, makes none).
 SHARED_FRACTION = 1e-9
 
 
-def touching_gates(geometries):
+def touching_gates(geometries, *, errors=None):
     """Return the gates of every pair of touching features, and the features with the gates as vertices.
 
     Parameters
     ----------
     geometries : sequence of Polygon or MultiPolygon or None
-        CRS units; None and empty geometries share nothing.
+        CRS units; None and empty geometries, and those with a coordinate that is not finite, share nothing.
+    errors : list, optional
+        Where GEOS fails on a feature (see the module docstring), ``(index, InvalidGeometryError)`` is appended
+        here and the other features keep their gates; without it the first such error is raised.
 
     Returns
     -------
@@ -44,32 +53,95 @@ def touching_gates(geometries):
     [[[50.0, 5.0]], [[50.0, 5.0]]]
     """
     geometries = list(geometries)
+    failed = {}
     shapes = np.array([None if g is None or g.is_empty else g for g in geometries], dtype=object)
     gates = [[] for _ in geometries]
-    valid = np.flatnonzero([shape is not None for shape in shapes])
+    valid = np.flatnonzero([shape is not None and _finite(shape) for shape in shapes])
     if len(valid) < 2:
         return geometries, [np.empty((0, 2)) for _ in geometries]
     tree = shapely.STRtree(shapes[valid])
-    first, second = tree.query(shapes[valid], predicate="intersects")
-    pairs = [(int(valid[a]), int(valid[b])) for a, b in zip(first, second) if a < b]
-    boundaries = {index: shapely.boundary(shapes[index]) for index in {i for pair in pairs for i in pair}}
-    for a, b in pairs:
-        shared = shapely.intersection(boundaries[a], boundaries[b])
-        lines = [part for part in shapely.get_parts(shared) if part.geom_type in ("LineString", "MultiLineString")]
-        if not lines:
-            continue
-        merged = shapely.line_merge(shapely.union_all(lines))
-        scale = min(bounding_diagonal(shapes[a]), bounding_diagonal(shapes[b]))
-        for stretch in shapely.get_parts(merged):
-            if stretch.length <= SHARED_FRACTION * scale:
+    boundaries = {}
+    for a, b in _touching_pairs(tree, shapes, valid, failed):
+        try:
+            for index in (a, b):
+                if index not in boundaries:
+                    boundaries[index] = _boundary(shapes[index], failed, index)
+            if boundaries[a] is None or boundaries[b] is None:
                 continue
-            gate = np.asarray(stretch.interpolate(0.5, normalized=True).coords[0], dtype=float)
+            found = _shared_gates(boundaries[a], boundaries[b], shapes[a], shapes[b])
+        except GEOSException as error:
+            for index in [index for index in (a, b) if not shapely.is_valid(shapes[index])] or [a, b]:
+                failed.setdefault(index, error)
+            continue
+        for gate in found:
             gates[a].append(gate)
             gates[b].append(gate)
-    with_gates = [
-        geometry if not points else _with_vertices(geometry, points) for geometry, points in zip(geometries, gates)
-    ]
+    with_gates = list(geometries)
+    for index, points in enumerate(gates):
+        if points:
+            try:
+                with_gates[index] = _with_vertices(geometries[index], points)
+            except GEOSException as error:
+                failed.setdefault(index, error)
+                gates[index] = []
+    for index in sorted(failed):
+        error = InvalidGeometryError(Message("gates_failed", reason=str(failed[index])))
+        if errors is None:
+            raise error
+        errors.append((index, error))
     return with_gates, [np.array(points, dtype=float).reshape(-1, 2) for points in gates]
+
+
+def _finite(shape):
+    """Whether every coordinate of a geometry is finite."""
+    return bool(np.all(np.isfinite(shapely.get_coordinates(shape))))
+
+
+def _touching_pairs(tree, shapes, valid, failed):
+    """Return the pairs ``(a, b)``, ``a < b``, of features whose geometries intersect; a feature GEOS cannot
+    query goes into ``failed`` (index to the exception) and into no pair."""
+    try:
+        first, second = tree.query(shapes[valid], predicate="intersects")
+    except GEOSException:
+        first, second = [], []
+        for position, index in enumerate(valid):
+            try:
+                found = tree.query(shapes[index], predicate="intersects")
+            except GEOSException as error:
+                failed[int(index)] = error
+                continue
+            first.extend([position] * len(found))
+            second.extend(found.tolist())
+    return [
+        (int(valid[a]), int(valid[b]))
+        for a, b in zip(first, second)
+        if a < b and int(valid[a]) not in failed and int(valid[b]) not in failed
+    ]
+
+
+def _boundary(shape, failed, index):
+    """Return a geometry's boundary; None, with the exception in ``failed[index]``, where GEOS fails on it."""
+    try:
+        return shapely.boundary(shape)
+    except GEOSException as error:
+        failed[index] = error
+        return None
+
+
+def _shared_gates(boundary, other_boundary, first, second):
+    """Return the gates of two touching geometries (and their boundaries): the middle of each stretch of
+    boundary they share."""
+    shared = shapely.intersection(boundary, other_boundary)
+    lines = [part for part in shapely.get_parts(shared) if part.geom_type in ("LineString", "MultiLineString")]
+    if not lines:
+        return []
+    merged = shapely.line_merge(shapely.union_all(lines))
+    scale = min(bounding_diagonal(first), bounding_diagonal(second))
+    return [
+        np.asarray(stretch.interpolate(0.5, normalized=True).coords[0], dtype=float)
+        for stretch in shapely.get_parts(merged)
+        if stretch.length > SHARED_FRACTION * scale
+    ]
 
 
 def bounding_diagonal(geometry):

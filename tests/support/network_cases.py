@@ -183,3 +183,43 @@ def noisy(polygon, width, seed):
     far = shapely.distance(shapely.points(samples), sharp) > width
     moved = samples + (amplitude * far)[:, None] * normal
     return Polygon(moved)
+
+
+def road_grid(columns=2, rows=2, block=40.0, street=10.0, stub=30.0):
+    """A road area: a grid of ``columns x rows`` square city blocks (holes) with streets ``street`` wide
+    between and around them, every street leaving the grid by a stub ``stub`` long (flat ends).
+
+    Street centre lines run at ``x = street / 2 + m (block + street)`` (and the same in ``y``); they cross at
+    the junctions, whose circles touch the four block (or outline) corners around them: radius
+    ``street / sqrt(2)``. The network has one branch per street segment between two crossings and one per stub.
+
+    Returns
+    -------
+    polygon : Polygon
+    caps : list of (x, y)
+        The stubs' cut-off ends' middles.
+    junctions : list of ndarray of shape (2,)
+    radius : float
+    """
+    pitch = block + street
+    width, height = columns * pitch + street, rows * pitch + street
+    lines_x = [street / 2.0 + m * pitch for m in range(columns + 1)]
+    lines_y = [street / 2.0 + m * pitch for m in range(rows + 1)]
+    half = street / 2.0
+    pieces = [box(0.0, 0.0, width, height)]
+    caps = []
+    for x in lines_x:
+        pieces += [box(x - half, -stub, x + half, 0.0), box(x - half, height, x + half, height + stub)]
+        caps += [(x, -stub), (x, height + stub)]
+    for y in lines_y:
+        pieces += [box(-stub, y - half, 0.0, y + half), box(width, y - half, width + stub, y + half)]
+        caps += [(-stub, y), (width + stub, y)]
+    outline = shapely.set_precision(unary_union(pieces), 0.0)
+    blocks = [
+        box(street + i * pitch, street + j * pitch, street + i * pitch + block, street + j * pitch + block)
+        for i in range(columns)
+        for j in range(rows)
+    ]
+    polygon = Polygon(outline.exterior.coords, [b.exterior.coords for b in blocks])
+    junctions = [np.array([x, y]) for x in lines_x for y in lines_y]
+    return polygon, caps, junctions, street / math.sqrt(2.0)
