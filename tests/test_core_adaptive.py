@@ -46,6 +46,7 @@ from incircu_plugin.core.tracing.settling import sag_bound
 from incircu_plugin.core.tracing.sites import radius_at
 from incircu_plugin.core.tracing.spans import FAN
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle, assert_within_tolerance, check_centerline
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -65,16 +66,11 @@ GAMBIA = geometry_cases.gambia()
 CASES = ANALYTIC + WAVY + [GAMBIA]
 
 
-def marked(cases):
-    """The cases as pytest parameters, those with many boundary vertices (seconds of oracle work) slow."""
-    return [pytest.param(c, id=c.name, marks=[pytest.mark.slow] if c.vertex_count > 300 else []) for c in cases]
-
-
 #: Largest ratio of output vertices to the vertices of both chains at the default tolerance.
 VERTEX_RATIO = 1.5
 
 
-@pytest.mark.parametrize("case", marked(CASES))
+@pytest.mark.parametrize("case", case_params(CASES, other_placements=True))
 def test_default_tolerance_bounds_the_distance_to_the_medial_axis(case):
     result = polygon_centerline(case.polygon, case.split_points)
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
@@ -92,6 +88,7 @@ def test_a_tight_tolerance_bounds_the_distance_to_the_medial_axis(case):
     assert_within_tolerance(result, case.chain_a, case.chain_b, case.polygon, tolerance)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("piece", [2, 5, 16])
 def test_a_line_simplified_in_pieces_stays_within_the_tolerance(monkeypatch, piece):
     # Long lines are simplified in pieces that share their end vertices (SIMPLIFY_PIECE points each).
@@ -161,6 +158,7 @@ def test_a_straight_channel_is_its_ends_and_the_two_ends_of_its_axis():
 NORWAY_FILE = geometry_cases.DATA_FOLDER / "norway_ne10m_aeqd.geojson"
 
 
+@pytest.mark.slow
 def test_an_event_between_two_nearly_collinear_segments_at_a_split_point_is_on_the_axis():
     # Norway's north-eastern split point is a vertex turning by about 3e-7 rad. Next to it the closed-form
     # event between the two segments meeting there is ill-conditioned: a probe 0.62 m beside the true junction
@@ -178,7 +176,7 @@ def test_an_event_between_two_nearly_collinear_segments_at_a_split_point_is_on_t
 OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + WAVY[:2]
 
 
-@pytest.mark.parametrize("case", marked(OPEN))
+@pytest.mark.parametrize("case", case_params(OPEN, other_placements=True))
 def test_open_mode_is_within_the_tolerance_away_from_the_end_gaps(case):
     line_a, line_b = geometry_cases.bank_pair(case, False, True)
     region = geometry_cases.channel_case("region", case.bank_a, case.bank_b, case.width).polygon
@@ -374,6 +372,7 @@ def test_a_walk_past_a_narrow_bay_of_the_other_bank_stays_on_the_axis(trace_stat
     assert trace_stats.predicted_events > 0
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("widths", [None, 1.0 / 2000.0], ids=["default", "tight"])
 def test_a_contact_walking_along_its_own_chain_before_the_other_takes_over_stays_on_the_axis(trace_stats, widths):
     # Near the meander's split points an interval's disks first touch the other chain at one end and the own
@@ -413,8 +412,8 @@ NOTCHED_CHANNEL = Polygon([(0.0, 0.0), (2.0, 0.0), (4.0, -2.0), (100.0, -2.0), (
     [
         (BENT_CHANNEL, [(0.0, 3.0), (100.0, 27.0)]),
         (BENT_CHANNEL, [(0.0, 8.5), (100.0, 21.0)]),
-        (NOTCHED_CHANNEL, [(0.0, 3.0), (100.0, 3.0)]),
-        (NOTCHED_CHANNEL, [(0.0, 2.5), (100.0, 5.0)]),
+        pytest.param(NOTCHED_CHANNEL, [(0.0, 3.0), (100.0, 3.0)], marks=pytest.mark.slow),
+        pytest.param(NOTCHED_CHANNEL, [(0.0, 2.5), (100.0, 5.0)], marks=pytest.mark.slow),
     ],
     ids=["bent low", "bent high", "notched fan", "notched fan, other end"],
 )
@@ -600,7 +599,10 @@ def test_intervals_touching_the_own_chain_on_one_side_of_their_span_are_settled_
         np.testing.assert_array_equal(line, probed)
 
 
-@pytest.mark.parametrize("spike", [(30.0, 9.0), (50.0, 9.5), (71.0, 8.5)])
+@pytest.mark.parametrize(
+    "spike",
+    [(30.0, 9.0), pytest.param((50.0, 9.5), marks=pytest.mark.slow), pytest.param((71.0, 8.5), marks=pytest.mark.slow)],
+)
 def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(spike):
     # The top bank is two slightly different lines with a thin spike pointing down between them: the bottom
     # edge's samples beside it touch the two lines, whose event lies between them, but the axis dips under the
@@ -610,9 +612,9 @@ def test_a_spike_of_the_other_bank_between_two_samples_is_not_settled_over(spike
     assert_adaptive_properties(Polygon(ring), [(0.0, 5.0), (100.0, 5.0)])
 
 
-@pytest.mark.parametrize("half_width", [5e-4, 1e-6])
+@pytest.mark.parametrize("half_width", [5e-4, pytest.param(1e-6, marks=pytest.mark.slow)])
 @pytest.mark.parametrize("spike", [False, True])
-@pytest.mark.parametrize("x", [2.3, 8.42])
+@pytest.mark.parametrize("x", [2.3, pytest.param(8.42, marks=pytest.mark.slow)])
 def test_the_axis_passes_under_a_needle_on_its_tips_parabola(half_width, spike, x):
     # A needle (two nearly parallel edges, a digitising spike) reaches three quarters across a channel 1 wide.
     # Each edge's line, extended, runs on past the tip, so a bottom sample on the far side of it lies on the

@@ -148,6 +148,7 @@ def test_features_of_different_sizes_and_places_together_equal_each_alone():
         assert_identical(outcome, expected, case.name)
 
 
+@pytest.mark.slow
 def test_a_batch_of_rivers_with_automatic_ends_equals_each_alone():
     # Rivers 19,712 to 19,967 of the seeded layer (seed 7): one batch of a 50,000-river run through qgis_process
     # (automatic ends), which skipped river 19,890 as crossing itself. Its automatic start lies on a zigzag cap,
@@ -308,6 +309,7 @@ def exactly(result):
     return shapely.to_wkb(result.line), result.radii.tobytes(), result.foot_a.tobytes(), result.foot_b.tobytes()
 
 
+@pytest.mark.slow
 def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_batch(monkeypatch):
     # Contacts tie exactly at many events; which foot wins must not depend on the order in which the spatial
     # index, the all-pairs test or a batch's larger index list the candidates. The batch is traced in one
@@ -327,6 +329,7 @@ def test_ties_are_broken_alike_alone_on_every_candidate_path_and_in_a_shuffled_b
         assert exactly(outcome) == expected[i], cases[i][0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("seed", [3, 29])
 def test_fuzzed_inputs_are_the_same_bytes_alone_in_a_batch_reversed_and_in_slices(seed):
     # The fuzz generator's inputs (channels with and without split points, bank lines, islands, rings, spikes,

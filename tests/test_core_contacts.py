@@ -22,7 +22,6 @@ from incircu_plugin.core.contacts import (
     _group_starts,
     _per_segment,
     first_contacts,
-    put_rows,
     solve,
     vertex_contact,
 )
@@ -143,13 +142,13 @@ def test_grouped_candidates_are_exactly_the_segments_whose_boxes_meet_each_box()
     centre = np.stack([centre, rng.uniform(0.0, 9.0, len(centre))], axis=1)
     reach = rng.uniform(2.0, 8.0, len(centre))[:, None]
     low, high = centre - reach, centre + reach
-    box, segment = boundary.candidates(low, high)
+    box, segment = boundary.candidates(low, high, None)
     # Each box's pairs consecutive: as many runs of equal boxes as boxes.
     assert np.count_nonzero(np.diff(box)) + 1 == len(np.unique(box))
     for index in range(len(centre)):
         meets = (boundary.low_x <= high[index, 0]) & (boundary.high_x >= low[index, 0])
         meets &= (boundary.low_y <= high[index, 1]) & (boundary.high_y >= low[index, 1])
-        alone = boundary.candidates(low[index : index + 1], high[index : index + 1])[1]
+        alone = boundary.candidates(low[index : index + 1], high[index : index + 1], None)[1]
         assert np.array_equal(np.sort(alone), np.flatnonzero(meets))
         assert np.array_equal(np.sort(segment[box == index]), np.flatnonzero(meets))
 
@@ -307,23 +306,6 @@ def test_boundary_segments_start_and_end_at_their_chains_vertices():
     assert boundary.segment_position.tolist() == [0.0, 1.0, 0.0, 2.0, 5.0]
     assert boundary.segment_end_position.tolist() == [1.0, 3.0, 2.0, 5.0, 6.0]
     assert boundary.start_site.tolist() == [5 + v for v in (0, 1, 3, 4, 5)]
-
-
-def test_put_rows_writes_the_rows_of_an_index_and_no_others():
-    array = np.arange(12.0).reshape(6, 2)
-    put_rows(array, np.array([4, 1]), np.array([[-1.0, -2.0], [-3.0, -4.0]]))
-    assert array.tolist() == [[0, 1], [-3, -4], [4, 5], [6, 7], [-1, -2], [10, 11]]
-    # Values that are not contiguous (a transposed array) are written row by row as well.
-    put_rows(array, np.array([0, 5]), np.array([[7.0, 8.0], [9.0, 10.0]]).T)
-    assert array[[0, 5]].tolist() == [[7, 9], [8, 10]]
-    # A mask, one row to repeat, and arrays that are not C-contiguous float64: as numpy's assignment.
-    put_rows(array, np.arange(6) == 2, np.array([[0.5, 0.25]]))
-    assert array[2].tolist() == [0.5, 0.25]
-    put_rows(array, np.array([1, 3]), np.array([1.5, 2.5]))
-    assert array[[1, 3]].tolist() == [[1.5, 2.5], [1.5, 2.5]]
-    for other in (np.arange(12).reshape(6, 2), np.asfortranarray(np.zeros((6, 2)))):
-        put_rows(other, np.array([4]), np.array([[3.0, 4.0]]))
-        assert other[4].tolist() == [3, 4]
 
 
 def test_subset_by_a_mask_is_subset_by_its_indices():
@@ -651,18 +633,3 @@ def test_without_points_the_solvers_keep_no_contact_point_and_the_same_contacts(
         for kept in (0, 1, 4):
             assert without[kept].tobytes() == with_points[kept].tobytes(), (solver.__name__, kept)
         assert without[4].dtype == np.int32
-
-
-@pytest.mark.parametrize("limit", [contacts.PACKED_LIMIT, 0])
-def test_stable_order_is_the_stable_argsort_packed_or_not(monkeypatch, limit):
-    """Many equal values (ties in input order), both through the packed sort and through the fallback."""
-    monkeypatch.setattr(contacts, "PACKED_LIMIT", limit)
-    values = np.random.default_rng(5).integers(0, 50, size=2000)
-    expected = np.argsort(values, kind="stable")
-    assert np.array_equal(contacts.stable_order(values, 50), expected)
-    assert len(contacts.stable_order(values[:0], 50)) == 0
-
-
-def test_stable_order_falls_back_where_the_packed_values_would_overflow():
-    values = np.array([2**61, 0, 2**61, 5, 0, 7, 2**61, 1])
-    assert np.array_equal(contacts.stable_order(values, 2**61 + 1), np.argsort(values, kind="stable"))

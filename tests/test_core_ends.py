@@ -199,6 +199,7 @@ def test_ignored_islands_do_not_move_the_automatic_ends():
     assert pair_error(found, [(0.0, 0.0), (3000.0, 0.0)]) <= FLAT_CAP_TOLERANCE * 300.0
 
 
+@pytest.mark.slow
 def test_ends_with_islands_are_those_of_the_outline():
     """A meandering river 5 km long and 300 wide strewn with 300 small islands gets the ends of its outline
     alone (which lie on the middles of its flat caps), so ignoring the islands or going around them starts

@@ -351,6 +351,7 @@ def assert_labels_equal_core(result, data, **options):
             assert row[column] == getattr(label, column), (name, column)
 
 
+@pytest.mark.slow
 def test_labels_of_real_reservoirs_in_lon_lat_equal_label_lines_row_by_row():
     lakes = reservoirs_lonlat()
     result = frame_labels(lakes)
@@ -390,6 +391,7 @@ def test_a_bad_label_row_reports_its_error_and_the_others_are_labelled():
     assert frame_labels(frame, clearance=0.6)["error"].notna().all()
 
 
+@pytest.mark.slow
 def test_dask_labels_are_lazy_and_equal_the_eager_run_of_each_partition_byte_for_byte():
     """Each partition is computed as the eager API computes that frame. (Rows traced in other batches may
     differ a little: the joint tracing's rounding moves the main stem by ~1e-9 of its extent, which can move

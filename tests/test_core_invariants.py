@@ -15,6 +15,7 @@ import pytest
 
 from incircu_plugin.core import lines_centerline, polygon_centerline
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle, check_centerline
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -35,6 +36,7 @@ WAVY = [
 ]
 CLOSED = ANALYTIC + WAVY + [geometry_cases.gambia()]
 
+
 #: Spacings as fractions of each case's width: coarse (fewer samples than vertices on some cases), the
 #: issue's benchmark setting, and the default rule.
 SPACING_FRACTIONS = [0.5, 0.1, None]
@@ -45,7 +47,7 @@ def spacing_for(case, fraction):
 
 
 @pytest.mark.parametrize("fraction", SPACING_FRACTIONS, ids=["w/2", "w/10", "default"])
-@pytest.mark.parametrize("case", CLOSED, ids=[c.name for c in CLOSED])
+@pytest.mark.parametrize("case", case_params(CLOSED))
 def test_closed_mode_invariants(case, fraction):
     result = polygon_centerline(case.polygon, case.split_points, spacing=spacing_for(case, fraction))
     check_centerline(result, case.chain_a, case.chain_b, case.polygon, case.split_points)
@@ -72,7 +74,7 @@ OPEN = [c for c in ANALYTIC if not c.name.startswith("annulus sector r=30")] + W
 
 
 @pytest.mark.parametrize("reverse", [(False, False), (False, True), (True, False), (True, True)], ids=str)
-@pytest.mark.parametrize("case", OPEN, ids=[c.name for c in OPEN])
+@pytest.mark.parametrize("case", case_params(OPEN))
 def test_open_mode_invariants(case, reverse):
     line_a, line_b = geometry_cases.bank_pair(case, *reverse)
     result = lines_centerline(line_a, line_b, spacing=0.1 * case.width)

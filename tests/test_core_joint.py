@@ -30,6 +30,7 @@ from incircu_plugin.core.tracing.joint import (
     trace_batch,
 )
 from tests.support import geometry_cases
+from tests.support.marks import is_slow_case
 from tests.support.oracle import assert_within_tolerance, check_centerline
 
 CLOSED = geometry_cases.analytic_cases() + [
@@ -70,12 +71,22 @@ def open_jobs():
 JOBS = closed_jobs() + open_jobs()
 
 
+def oracle_params():
+    """The jobs as parameters of the oracle check; slow: the 1/30 and 30 times scales, and at scale 1 the cases
+    :func:`~tests.support.marks.is_slow_case` counts slow in any placement but the unit frame."""
+    slow = {f"{case.name} x{factor:g}" for case in CLOSED for factor in (1.0 / 30.0, 30.0)}
+    slow |= {f"{case.name} x1" for case in CLOSED if is_slow_case(case, other_placements=True)}
+    return [
+        pytest.param(i, id=job[0], marks=[pytest.mark.slow] if job[0] in slow else []) for i, job in enumerate(JOBS)
+    ]
+
+
 @pytest.fixture(scope="module")
 def joint_results():
     return run_together([centerline_steps(*chains) for _, chains, _, _, _ in JOBS])
 
 
-@pytest.mark.parametrize("job", range(len(JOBS)), ids=[job[0] for job in JOBS])
+@pytest.mark.parametrize("job", oracle_params())
 def test_every_feature_of_a_joint_tracing_is_within_its_tolerance_of_its_axis(joint_results, job):
     name, (chain_a, chain_b), region, ends, gap = JOBS[job]
     result = joint_results[job]

@@ -15,6 +15,7 @@ import shapely
 
 from incircu_plugin.core import polygon_centerline
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -32,6 +33,7 @@ WAVY = [
 ]
 GAMBIA = geometry_cases.gambia()
 CASES = ANALYTIC + WAVY + [GAMBIA]
+
 
 _ORACLES = {}
 
@@ -61,7 +63,7 @@ def position_tolerance(case, radii):
 
 
 @pytest.mark.parametrize("fraction", [0.5, 0.1, 0.02], ids=["w/2", "w/10", "w/50"])
-@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+@pytest.mark.parametrize("case", case_params(CASES))
 def test_every_vertex_lies_on_the_medial_axis_between_the_chains(case, fraction):
     oracle = oracle_for(case)
     result = polygon_centerline(case.polygon, case.split_points, spacing=fraction * case.width)
@@ -144,6 +146,7 @@ def test_default_spacing_keeps_the_mean_deviation_below_a_thousandth_of_the_widt
     assert mean_deviation <= 1e-3 * case.width, f"mean deviation {mean_deviation:.3g}, width {case.width:.3g}"
 
 
+@pytest.mark.slow
 def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
     # The paper's Fig. 4: average distance to the medial axis against the number of points per chain.
     case = WAVY[0]
@@ -160,6 +163,7 @@ def test_more_samples_per_chain_bring_the_line_closer_to_the_medial_axis():
     assert means[-1] <= 1e-3 * case.width, report
 
 
+@pytest.mark.slow
 def test_the_fan_at_a_reflex_corner_traces_the_parabolic_arcs():
     # An L-shaped channel of width 10: around the inner corner (50, 10), a reflex vertex with a 90 degree
     # turn, the medial axis is two parabolic arcs (focus (50, 10), directrices y = 0 and x = 60) meeting at

@@ -15,6 +15,7 @@ import shapely
 from shapely.geometry import LineString
 
 from tests.support import geometry_cases
+from tests.support.marks import case_params
 from tests.support.oracle import MedialOracle, segment_distances
 
 ANALYTIC = geometry_cases.analytic_cases()
@@ -66,7 +67,7 @@ def test_oracle_target_is_the_analytic_axis(case):
     assert oracle.distance(axis).max() <= tolerance
 
 
-@pytest.mark.parametrize("case", ANALYTIC, ids=[c.name for c in ANALYTIC])
+@pytest.mark.parametrize("case", case_params(ANALYTIC))
 def test_oracle_target_points_are_equidistant_from_both_chains(case):
     oracle = MedialOracle(case.chain_a, case.chain_b)
     points = oracle.segments.reshape(-1, 2)

@@ -107,6 +107,7 @@ def test_random_bank_pairs_open_mode(drawn, reverse_a, reverse_b):
     assert_on_medial_axis(result, case.bank_a, case.bank_b, region)
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None, derandomize=True, database=None)
 @given(channels())
 def test_swapping_the_split_points_reverses_the_centerline(drawn):

@@ -133,7 +133,7 @@ RINGS = {
 }
 
 
-@pytest.mark.parametrize("spacing", [None, 0.3], ids=["adaptive", "fixed"])
+@pytest.mark.parametrize("spacing", [None, pytest.param(0.3, marks=pytest.mark.slow)], ids=["adaptive", "fixed"])
 @pytest.mark.parametrize("name", sorted(RINGS))
 def test_a_ring_gets_its_closed_loop(name, spacing):
     """A polygon around one hole gets the closed medial loop between its exterior ring and the hole: one closed
@@ -300,7 +300,7 @@ def test_a_thin_box_gets_the_finest_tolerance_float64_allows_with_a_note():
     assert {round(coords[0, 0], 6), round(coords[-1, 0], 6)} == {0.0, 2.0}
 
 
-@pytest.mark.parametrize("length", [2.0, 1e6])
+@pytest.mark.parametrize("length", [2.0, pytest.param(1e6, marks=pytest.mark.slow)])
 @pytest.mark.parametrize("relative", np.geomspace(1e-6, 1e-16, 21).tolist())
 @pytest.mark.parametrize(
     "options", [{}, {"tolerance": 1e-8}, {"spacing": 0.05}], ids=["automatic", "tolerance", "fixed"]

@@ -10,7 +10,7 @@ import shapely
 
 from incircu_plugin.core import find_ends
 from incircu_plugin.core import skeleton as skeleton_module
-from incircu_plugin.core.contacts import ranges
+from incircu_plugin.core._arrays import ranges
 from incircu_plugin.core.errors import InvalidGeometryError
 from incircu_plugin.core.skeleton import _delaunay_all, joint_skeletons
 from tests.support import geometry_cases

@@ -19,6 +19,7 @@ from incircu_plugin.core.widths import (
     Incircle,
     Transect,
     incircle_polygons,
+    measured_stretch,
     transects,
     vertex_chainages,
     width_statistics,
@@ -438,3 +439,26 @@ def test_unknown_transect_style_is_a_typed_error():
     result = polygon_centerline(shapely.box(0.0, 0.0, 100.0, 10.0), [(0.0, 5.0), (100.0, 5.0)])
     with pytest.raises(IncirCuError, match="Unknown transect style 'square'; use one of straight, nearest"):
         transects(result, 10.0, style="square")
+
+
+@pytest.mark.parametrize("offset", [0.01, 2.0])
+def test_the_measured_stretch_starts_where_the_incircle_spans_the_channel_in_copies_of_its_arguments(offset):
+    # Split points off the middle of a box's flat ends: near the middle the cap vertex's incircle touches both
+    # banks, farther off a bank and the end (the stretch then starts at the next vertex); either way the
+    # cross-sections begin half a width (20) from each end, and the arguments are left as they were.
+    tolerance = 0.2
+    ends = [(0.0, 20.0 - offset), (1000.0, 20.0 + offset)]
+    result = polygon_centerline(shapely.box(0.0, 0.0, 1000.0, 40.0), ends, tolerance=tolerance)
+    vertices = shapely.get_coordinates(result.line)
+    arguments = [vertices, result.radii, vertex_chainages(result), result.foot_a, result.foot_b]
+    before = [argument.copy() for argument in arguments]
+    stretch = measured_stretch(*arguments)
+    assert all(np.array_equal(argument, copy) for argument, copy in zip(arguments, before))
+    moved = [stretch.vertices, stretch.radii, stretch.chainages, stretch.foot_a, stretch.foot_b]
+    assert not any(np.shares_memory(new, old) for new, old in zip(moved, arguments))
+    assert stretch.feet[0] is stretch.foot_a and stretch.feet[1] is stretch.foot_b
+    assert not stretch.empty and stretch.low < stretch.high
+    first, last = np.searchsorted(stretch.chainages, [stretch.low, stretch.high])
+    assert stretch.vertices[first, 0] == pytest.approx(20.0, abs=2.0 * tolerance)
+    assert stretch.vertices[last, 0] == pytest.approx(980.0, abs=2.0 * tolerance)
+    assert stretch.radii[[first, last]] == pytest.approx([20.0, 20.0], abs=2.0 * tolerance)

@@ -74,17 +74,17 @@ def run_out_ends(result, region, move_ends=False, open_ends=False):
     radii = np.asarray(result.radii, dtype=float)
     original = [radii, np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float)]
     chainages = cumulative_lengths(vertices)
-    low, high, stretch, *moved = measured_stretch(vertices, radii, chainages, *original[1:])
-    if low > high:
+    stretch = measured_stretch(vertices, radii, chainages, *original[1:])
+    if stretch.empty:
         return result
-    first, last = (int(index) for index in np.searchsorted(moved[1], [low, high]))
+    first, last = (int(index) for index in np.searchsorted(stretch.chainages, [stretch.low, stretch.high]))
     if first >= last:
         return result
     # Where the stretch's end vertex was moved onto the segment where the cap ends, the run-out joins the next
     # vertex, on the axis (the moved one lies off it, on the line across the cap).
     joints = [
-        first + 1 if not np.array_equal(stretch[first], vertices[first]) else first,
-        last - 1 if not np.array_equal(stretch[last], vertices[last]) else last,
+        first + 1 if not np.array_equal(stretch.vertices[first], vertices[first]) else first,
+        last - 1 if not np.array_equal(stretch.vertices[last], vertices[last]) else last,
     ]
     # An automatic end in a tip (where the banks meet; its line has no end-cap vertex) keeps the exact axis:
     # it runs along the tip's middle into it, and a straight line from farther in would miss the tip.
@@ -108,7 +108,14 @@ def run_out_ends(result, region, move_ends=False, open_ends=False):
         ends.append(end if _runs_out(end, vertices[joint], rest, region) else None)
     if ends[0] is None and ends[1] is None:
         return result
-    # Each end: the run-out (the end, then the joint) or the exact axis to the stretch's end vertex.
+    return _with_run_outs(result, vertices, original, joints, ends)
+
+
+def _with_run_outs(result, vertices, original, joints, ends):
+    """``result`` with each end of ``ends`` that is not None joined straight to its joint (the exact axis to the
+    stretch's end vertex elsewhere); ``result`` itself when that line is not simple. ``original`` holds the radii
+    and both feet of ``vertices``; CRS units."""
+    radii = original[0]
     low_index = joints[0] if ends[0] is not None else 0
     high_index = joints[1] if ends[1] is not None else len(vertices) - 1
     pieces = [vertices[low_index : high_index + 1], *(value[low_index : high_index + 1] for value in original)]

@@ -349,9 +349,8 @@ class _Validated:
 
     The public functions check what they are given and call one another (a multipolygon's part is checked by
     ``multipolygon_centerlines``, ``polygon_centerline`` and ``split_polygon``), and a batch checks each
-    feature before asking for the ends of all (:func:`.ends.find_ends_together`); GEOS's validity test of a
-    river of about 300 vertices costs about 0.03 ms and the whole check about 0.045 ms, so each polygon is
-    tested once.
+    feature before asking for the ends of all (:func:`.ends.find_ends_together`); GEOS's validity test is most
+    of a check's cost (docs/core-notes.md), so each polygon is tested once.
     """
 
     polygons: ClassVar[weakref.WeakValueDictionary] = weakref.WeakValueDictionary()

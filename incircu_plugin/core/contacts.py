@@ -13,11 +13,12 @@ otherwise the trial parameter at most doubles, up to the best contact found so f
 """
 
 import math
-from dataclasses import dataclass, fields
-from functools import cache, partial
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
+from ._arrays import ArrayRecord, group_minima, put_rows, ranges, rows
 from .errors import InvalidGeometryError, Message
 from .polyline import ROUNDING_SPACINGS, coordinate_rounding, cumulative_lengths
 
@@ -41,14 +42,11 @@ TIE_TOLERANCE = 1e-10
 #: bound that of the candidate pairs).
 CHUNK = 16_384
 
-#: Most samples in one round of :func:`solve` (a block: the samples still pending, then fresh ones): the arrays
-#: of a block's (sample, segment) pairs stay in the processor's cache, which makes a solve about a fifth faster
-#: than one pass over a whole chunk; 4096 rather than 2048 halves the rounds' fixed cost per numpy call (10^6
-#: vertices: the rounds about 4 % faster). A block also holds at most about ``SOLVE_PAIRS`` pairs, judged from
-#: the pairs per sample of the round before that took fresh samples: a boundary with many vertices per width has
-#: hundreds of pairs per sample, and 4096 such samples would take hundreds of MiB (the first block's from the
-#: boundary's mean segment length). Each sample is solved from its own candidate pairs, so the blocks change no
-#: result.
+#: Most samples in one round of :func:`solve` (a block: the samples still pending, then fresh ones), so that a
+#: block's (sample, segment) pairs stay in the processor's cache; and most (sample, segment) pairs of a block,
+#: judged from the pairs per sample of the round before that took fresh samples (a boundary with many vertices
+#: per width has hundreds of pairs per sample). Each sample is solved from its own candidate pairs, so the blocks
+#: change no result. The measurements behind both: docs/core-notes.md.
 SOLVE_BLOCK = 4096
 SOLVE_PAIRS = 1 << 16
 
@@ -60,26 +58,19 @@ COARSE_LEVELS = 2
 #: Smallest trial radius of the coarse-to-fine solution, as a fraction of the global one.
 SMALLEST_TRIAL = 1.0 / 16.0
 
-#: Largest integer :func:`stable_order` packs a value and its index into (below ``2**63``).
-PACKED_LIMIT = 2**62
-
-#: Most consecutive samples whose candidate boxes share one spatial-index query (the grouping changes no
-#: pair). 4 instead of 2, and no box grouped with one it does not meet, cut the time of the queries at 10^6
-#: vertices by about 30 %; 8 instead of 4 (with blocks of 4096 samples) cut the candidate search by another
-#: 10 % at the same peak memory (with an ``STRtree``; with :class:`BoxGrid`, 4 and 16 are about 5 % slower).
+#: Most consecutive samples whose candidate boxes share one spatial-index query: consecutive boxes overlap along
+#: a chain, so one query serves several (the grouping changes no pair; measured in docs/core-notes.md).
 QUERY_GROUP = 8
 
-#: Consecutive segments that share one entry of the spatial index: a run's hits are filtered segment by
-#: segment. With :class:`BoxGrid`, runs of 8 made the candidate search at 10^6 vertices about 10 % faster
-#: than runs of 4 or 16.
+#: Consecutive segments that share one entry of the spatial index (a smaller index; a run's hits are filtered
+#: segment by segment).
 INDEX_RUN = 8
 
-#: Most cells of a :class:`BoxGrid`, and most (box, cell) entries, per box indexed (16 and 4 are about as fast
-#: at 10^6 vertices; more cells keep them fine where a boundary is sparse in a large extent).
+#: Most cells of a :class:`BoxGrid`, and most (box, cell) entries, per box indexed (more cells keep them fine
+#: where a boundary is sparse in a large extent).
 GRID_CELLS = 16
 
-#: Side of a :class:`BoxGrid`'s cells, in mean extents of its boxes (2 made the candidate search at 10^6
-#: vertices about 5 % faster than 1 or 4, and the layer's no slower).
+#: Side of a :class:`BoxGrid`'s cells, in mean extents of its boxes.
 GRID_CELL_SIDE = 2.0
 
 #: Most segments of a :class:`Boundary`: its sites (segments and vertices) are indexed with int32.
@@ -87,36 +78,6 @@ MAX_SEGMENTS = 2**30 - 1
 
 #: Most (box, segment) pairs that :meth:`Boundary.candidates` tests all at once instead of querying the index.
 ALL_PAIRS = 1 << 15
-
-
-class ArrayRecord:
-    """Mixin for a dataclass whose fields are arrays with one row per item (samples, points, intervals)."""
-
-    def subset(self, index):
-        """The items ``index`` (an index array, a mask or a slice)."""
-        columns = (getattr(self, name) for name in _field_names(type(self)))
-        if isinstance(index, np.ndarray) and index.dtype.kind in "iu":
-            return type(self)(*(rows(column, index) for column in columns))
-        if isinstance(index, np.ndarray) and index.dtype == bool:
-            # compress: numpy's indexing of a two-column array by a mask is several times slower (and it takes a
-            # short mask, which indexing refuses).
-            columns = list(columns)
-            if len(index) != len(columns[0]):
-                raise IndexError(f"a mask of {len(index)} items for {len(columns[0])} rows")
-            return type(self)(*(column.compress(index, axis=0) for column in columns))
-        return type(self)(*(column[index] for column in columns))
-
-    @classmethod
-    def concatenate(cls, parts):
-        """All items of ``parts``, one after the other."""
-        return cls(*(np.concatenate([getattr(part, name) for part in parts]) for name in _field_names(cls)))
-
-
-@cache
-def _field_names(record_type):
-    """The names of the fields of a dataclass, in their order (looked up once per class: the tracer's rounds
-    take subsets of small records thousands of times)."""
-    return tuple(field.name for field in fields(record_type))
 
 
 @dataclass(frozen=True)
@@ -456,75 +417,6 @@ def _group_starts(low, high):
     return np.flatnonzero((box - run_start) % QUERY_GROUP == 0)
 
 
-def rows(array, index):
-    """``array[index]`` for an integer array ``index``, gathered with :meth:`numpy.ndarray.take` (numpy's
-    indexing copies the rows of a two-column array several times slower; the method skips the Python layers
-    of :func:`numpy.take`, which small inputs, gathering a few rows thousands of times, feel)."""
-    return array.take(index, axis=0)
-
-
-def put_rows(array, index, values):
-    """``array[index] = values`` for an array ``array`` of shape (n, 2), an index array or mask ``index`` and
-    ``values`` of shape (m, 2): into a C-contiguous float64 ``array`` each row is written as one complex number
-    (numpy's indexed assignment of a two-column array's rows is about ten times slower; the bytes written are
-    the same), otherwise (or for one row to repeat) by numpy's assignment."""
-    values = np.asarray(values)
-    if array.dtype != np.float64 or not array.flags.c_contiguous or values.ndim != 2:
-        array[index] = values
-        return
-    array.view(np.complex128)[:, 0][index] = np.ascontiguousarray(values, dtype=float).view(np.complex128)[:, 0]
-
-
-def ranges(counts):
-    """For ``counts[i]`` items owned by ``i``: the owner of each item and its rank among the owner's items."""
-    owner = np.repeat(np.arange(len(counts)), counts)
-    # Each item's index less its owner's first item's, subtracted in place.
-    rank = np.arange(len(owner))
-    rank -= np.repeat(np.cumsum(counts) - counts, counts)
-    return owner, rank
-
-
-def stable_order(values, bound):
-    """Return ``np.argsort(values, kind="stable")`` of non-negative integers below ``bound``.
-
-    Each value is packed with its index into one integer (``value * n + index``, all distinct) and those are
-    sorted, several times faster than a stable argsort; when the packed integers could overflow 63 bits, the
-    stable argsort itself.
-
-    Parameters
-    ----------
-    values : ndarray of shape (n,) of int
-        Non-negative, below ``bound``.
-    bound : int
-        An upper bound of the values (exclusive).
-
-    Returns
-    -------
-    ndarray of shape (n,) of int
-    """
-    count = len(values)
-    if int(bound) * max(count, 1) > PACKED_LIMIT:
-        return np.argsort(values, kind="stable")
-    packed = values.astype(np.int64) * count + np.arange(count, dtype=np.int64)
-    packed.sort()
-    return packed % count
-
-
-def left_normal(vectors):
-    """The vectors turned a quarter turn counter-clockwise."""
-    # Filled column by column: the same values as stacking the two columns, with fewer Python layers.
-    turned = np.empty(vectors.shape)
-    np.negative(vectors[:, 1], out=turned[:, 0])
-    turned[:, 1] = vectors[:, 0]
-    return turned
-
-
-def rotate(vectors, angles):
-    """The vectors turned counter-clockwise by ``angles`` (radians)."""
-    cos, sin = np.cos(angles), np.sin(angles)
-    return np.stack([cos * vectors[:, 0] - sin * vectors[:, 1], sin * vectors[:, 0] + cos * vectors[:, 1]], axis=1)
-
-
 def vertex_contact(offset, height, b_along, b_across, scale, slide, on_line=0.0):
     """First contact ``t`` with a segment's vertex, inf when none.
 
@@ -631,17 +523,6 @@ def first_contacts(px, py, bx, by, scale, slide, boundary, segment, with_along=T
 def per_sample(value, chain):
     """``value`` for samples of the chains ``chain``: a scalar as is, an array per chain indexed by chain."""
     return np.full(len(chain), value, dtype=float) if np.ndim(value) == 0 else np.asarray(value)[chain]
-
-
-def group_minima(group, size, *values):
-    """Minimum of each of ``values`` per group id (each group's rows consecutive, ids below ``size``); inf for
-    empty groups. One array of ``size`` per array of ``values``."""
-    results = [np.full(size, np.inf) for _ in values]
-    if len(group):
-        starts = np.concatenate([[True], group[1:] != group[:-1]]).nonzero()[0]
-        for result, value in zip(results, values):
-            result[group[starts]] = np.minimum.reduceat(value, starts)
-    return results
 
 
 def _lowest_site_of_groups(picked, group, site):
@@ -850,8 +731,7 @@ def solve_coarse_to_fine(samples, index, boundary, trial_radius, max_t, min_t, r
     # Levels by the samples per feature (pair of chains; sorted by chain, each feature's samples are a run):
     # a joint tracing's chunk holds many small features, whose coarse levels would hold a few samples each,
     # cost rounds and interpolate across features. A feature of a few hundred samples is solved in one level:
-    # its trials from the typical width take fewer rounds than a coarse level costs (the layer of 400 rivers
-    # about 3 % faster than with one coarse level of stride COARSE_STRIDE, the rivers one by one about 4 %).
+    # its trials from the typical width take fewer rounds than a coarse level costs.
     feature = samples.chain[index] >> 1
     per_feature = count / (np.count_nonzero(feature[1:] != feature[:-1]) + 1) if count else 0
     stride = COARSE_STRIDE**COARSE_LEVELS if per_feature > COARSE_STRIDE ** (COARSE_LEVELS + 1) else 1

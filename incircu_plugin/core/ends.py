@@ -75,11 +75,7 @@ on where the ring starts or which way it turns.
 :func:`find_ends` on each (which runs the same code on a batch of one): the triangulations (one GEOS call per
 refinement round for all), the skeletons, the chain contraction, the double sweeps (see :mod:`.paths`) and
 the cap centring work on flat arrays of all polygons, each polygon numbered and summed on its own; only the
-results are Python per polygon. About 0.16 ms of CPU per 24-vertex rectangle in a batch of 1,000 (1.6 ms
-alone), 1.0 ms per 290-vertex river (2.7 ms alone), about 3.4 us per boundary vertex; GEOS takes about
-2.0 us of it (the Delaunay triangulation, reading and freeing its triangles about 1.6 us; simplifying the
-outline, moving it to its frame and the ring look-ups of the cap centring the rest). The triangles outside a
-river (about half of them) are dropped as soon as they are read.
+results are Python per polygon (costs: docs/core-notes.md).
 """
 
 from dataclasses import dataclass
@@ -90,8 +86,8 @@ import shapely
 from shapely.geometry import LineString, Point
 from shapely.ops import polylabel
 
+from ._arrays import ranges
 from .chains import extent_of, validate_polygon
-from .contacts import ranges
 from .errors import Cancelled, IncirCuError, InvalidGeometryError, Message
 from .paths import heaviest_paths
 from .polyline import counterclockwise, turns_between, typical_width
@@ -326,7 +322,7 @@ def _cancel_check(progress):
 
 
 @dataclass
-class _Frame:
+class _LocalPolygon:
     """A polygon moved to its local frame (origin at its box centre, unit bounding-box diagonal).
 
     Attributes
@@ -351,7 +347,7 @@ class _Frame:
 
 
 def _local_box(polygon, guide):
-    """Return the origin and scale of a polygon's local frame (see :class:`_Frame`) after validating it and its
+    """Return the origin and scale of a polygon's local frame (see :class:`_LocalPolygon`) after validating it and its
     guide; raise as :func:`find_ends`."""
     validate_polygon(polygon)
     _validate_guide(guide)
@@ -389,7 +385,7 @@ def _moved(geometries, origin, scale):
 
 
 def _frames(polygons, guides, boxes, every_island=False):
-    """Return the :class:`_Frame` of each polygon with a local box (None for the others); the polygons are moved
+    """Return the :class:`_LocalPolygon` of each polygon with a local box (None for the others); the polygons are moved
     all at once, the guides one by one.
 
     Parameters
@@ -416,7 +412,7 @@ def _frames(polygons, guides, boxes, every_island=False):
         origin, scale = boxes[index]
         guide = guides[index]
         local_guide = None if guide is None else _moved(guide, origin, scale)
-        frames[index] = _Frame(polygons[index], origin, scale, local[number], local_guide)
+        frames[index] = _LocalPolygon(polygons[index], origin, scale, local[number], local_guide)
     return frames
 
 
@@ -534,7 +530,7 @@ def _guide_weights(frame, skeleton, weights, own_nodes, own_edges):
 
     Parameters
     ----------
-    frame : _Frame
+    frame : _LocalPolygon
         The polygon and its guide, in its local frame.
     skeleton : Skeletons
         The batch's skeletons.
@@ -609,7 +605,7 @@ def _ends_of_trunks(frames, trunks):
 
     Parameters
     ----------
-    frames : list of _Frame or None
+    frames : list of _LocalPolygon or None
     trunks : list of tuple or None
         Per frame, ``(points, radii, junction, step, guided)`` in its local frame (see :func:`_joint_trunks`).
 

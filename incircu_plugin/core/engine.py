@@ -219,7 +219,7 @@ def _length_option(value, name):
 
 
 def _fixed_spacings(spacing, samples_per_chain, chains, lengths, width):
-    """The fixed sampling's spacing on each chain, CRS units (``width``: the defaults' width, see ``_Frame``)."""
+    """The fixed sampling's spacing on each chain, CRS units (``width``: the defaults' width, see ``_LocalChains``)."""
     if samples_per_chain is not None:
         if isinstance(samples_per_chain, bool) or not isinstance(samples_per_chain, Real):
             raise OptionError(Message("samples_not_whole", value=samples_per_chain))
@@ -347,7 +347,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
     fixed = spacing is not None or samples_per_chain is not None
     if fixed and tolerance is not None:
         raise OptionError(Message("tolerance_and_spacing"))
-    frame = _Frame([c1, c2])
+    frame = _LocalChains([c1, c2])
     _check_width(frame)
     report = reporter(progress)
     note = None
@@ -384,7 +384,7 @@ def clean_chains_steps(c1, c2, spacing=None, *, samples_per_chain=None, toleranc
     )
 
 
-class _Frame:
+class _LocalChains:
     """The chains in a local frame (shifted to their bounding box's centre) and what the samplers need."""
 
     def __init__(self, chains):

@@ -9,17 +9,9 @@ is located by bisection (to 1/4096 of the spacing) and added.
 
 import numpy as np
 
+from ._arrays import left_normal, rotate
 from .chains import COINCIDENCE_TOLERANCE
-from .contacts import (
-    CLEAR,
-    SKIPPED,
-    AxisPoints,
-    Samples,
-    left_normal,
-    rotate,
-    solve,
-    solve_in_chunks,
-)
+from .contacts import CLEAR, SKIPPED, AxisPoints, Samples, solve, solve_in_chunks
 from .polyline import turns_between
 
 #: Default spacing as a fraction of the typical width (see :func:`default_spacing`).

@@ -315,8 +315,8 @@ def _trimmed_stretch(xy, widths, trim):
     limit = trim * widths.max()
     wide = np.flatnonzero(widths >= limit)
     first, last = wide[0], wide[-1]
-    start = chainage[0] if first == 0 else _crossing(chainage, widths, first - 1, first, limit)
-    end = chainage[-1] if last == len(widths) - 1 else _crossing(chainage, widths, last, last + 1, limit)
+    start = chainage[0] if first == 0 else _chainage_at_width(chainage, widths, first - 1, first, limit)
+    end = chainage[-1] if last == len(widths) - 1 else _chainage_at_width(chainage, widths, last, last + 1, limit)
     values = np.column_stack([xy, widths])
     inner = widths[(chainage > start) & (chainage < end)]
     narrowest = min(limit, float(inner.min(initial=np.inf)))
@@ -326,7 +326,7 @@ def _trimmed_stretch(xy, widths, trim):
     return stations[:, :2], stations[:, 2]
 
 
-def _crossing(chainage, widths, i, j, limit):
+def _chainage_at_width(chainage, widths, i, j, limit):
     """Arc length between vertices ``i`` and ``j`` where the width (linear between them) equals ``limit``."""
     span = widths[j] - widths[i]
     fraction = 0.0 if span == 0 else min(max((limit - widths[i]) / span, 0.0), 1.0)

@@ -17,7 +17,8 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
-from .contacts import AxisPoints, rows
+from ._arrays import rows
+from .contacts import AxisPoints
 from .errors import IncirCuError, Message
 
 #: Relative distance (of the extent) under which two consecutive centres are one point.
@@ -49,7 +50,7 @@ class LineRequest:
     points : AxisPoints
         The axis points, in the chains' local frame (CRS units), in any order.
     frame : object
-        The chains in their local frame (the engine's ``_Frame``: ``chains``, ``ring``, ``closed``, ``side``,
+        The chains in their local frame (the engine's ``_LocalChains``: ``chains``, ``ring``, ``closed``, ``side``,
         ``lengths``, ``extent``, ``coincidence``, ``origin``).
     simplification : float or None
         Douglas-Peucker tolerance, CRS units; None: no simplification (the fixed sampling).
@@ -125,13 +126,13 @@ def lines_together(requests):
     for begin in range(0, len(requests), LINE_GROUP):
         group = requests[begin : begin + LINE_GROUP]
         try:
-            answers.extend(_lines(group))
+            answers.extend(_group_lines(group))
         except _NotExact:
-            answers.extend(_lines([request])[0] for request in group)
+            answers.extend(_group_lines([request])[0] for request in group)
     return answers
 
 
-def _lines(requests):
+def _group_lines(requests):
     """:func:`lines_together` on at most ``LINE_GROUP`` requests; raises :class:`_NotExact` (see
     :func:`_by_feature`)."""
     frames = [request.frame for request in requests]

@@ -22,7 +22,7 @@ import functools
 
 import numpy as np
 
-from .contacts import ranges, stable_order
+from ._arrays import ranges, stable_order
 from .skeleton import connected_labels
 
 #: Nodes or edges a sweep handles between two calls of the cancel check.

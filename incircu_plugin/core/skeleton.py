@@ -17,9 +17,8 @@ The samples are moved by ``JITTER`` of the step in a fixed pseudo-random pattern
 evenly spaced samples on straight parallel banks are exactly cocircular, which makes the GEOS triangulator
 quadratic (minutes on a 1 x 1e-5 box) and, rarely, fail. The pattern is a function of the sample index, so
 the result stays deterministic. GEOS inserts the points sorted by x, so the samples are also turned to put
-the shape's principal axis along x. Speed: about 4 us of CPU per sample (a third of it the triangulation),
-at most ``MAX_SAMPLES`` samples. Limit: a thin channel whose long reaches run across its principal axis (a
-tight meander) still makes the sweep slower, about 0.3 s for 20,000 samples.
+the shape's principal axis along x. Limit: a thin channel whose long reaches run across its principal axis
+(a tight meander) still makes GEOS's sweep slower (costs: docs/core-notes.md).
 """
 
 from dataclasses import dataclass
@@ -28,7 +27,7 @@ from typing import NamedTuple
 import numpy as np
 import shapely
 
-from .contacts import put_rows, ranges, rows, stable_order
+from ._arrays import put_rows, ranges, rows, stable_order
 from .errors import InvalidGeometryError, Message
 from .polyline import counterclockwise, typical_width
 
@@ -468,7 +467,7 @@ def _delaunay_all(samples, owner, local, steps, count):
             break
         moved = samples[mask] + jitter * steps[owner[mask], None] * pattern[mask]
         turned = _turned(moved, cosine[owner[mask]], sine[owner[mask]])
-        polygons, sizes = _runs(owner[mask])
+        polygons, sizes = _distinct_runs(owner[mask])
         found = _each_delaunay(_point_runs(turned, np.flatnonzero(mask), sizes))
         success = np.zeros(count, dtype=bool)
         success[polygons] = [item is not None for item in found]
@@ -483,7 +482,7 @@ def _delaunay_all(samples, owner, local, steps, count):
     return moved_all, corner_ids, triangle_owner, waiting
 
 
-def _runs(values):
+def _distinct_runs(values):
     """Return the distinct values of a sorted array and the length of each one's run."""
     starts = np.flatnonzero(np.insert(values[1:] != values[:-1], 0, True)) if len(values) else np.zeros(0, int)
     return values[starts], np.diff(np.append(starts, len(values)))
@@ -495,10 +494,9 @@ def _point_runs(points, ids, sizes):
     The Delaunay triangulation of a geometry is that of its distinct vertices (GEOS sorts them by x and y and
     drops repeated ones, whatever the geometry), and it keeps each input coordinate, z included, so a
     triangle's corners tell which points they are without a lookup. A line holds its vertices in one
-    coordinate sequence where a multipoint holds one point geometry per vertex: built through WKB (ISO type
-    with z), triangulated and freed, the lines of 113,000 samples in 400 polygons take about 155 ms of CPU
-    where multipoints took 180 ms, for the same triangles (GEOS 3.11 and 3.14). Every run has at least two
-    points (a polygon's boundary has three samples or more).
+    coordinate sequence where a multipoint holds one point geometry per vertex, which makes them cheaper to
+    build (through WKB, ISO type with z), triangulate and free, for the same triangles (measured in
+    docs/core-notes.md). Every run has at least two points (a polygon's boundary has three samples or more).
     """
     body = np.empty((len(points), 3))
     body[:, :2], body[:, 2] = points, ids

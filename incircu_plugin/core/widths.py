@@ -76,6 +76,38 @@ class Transect:
     chainage: float
 
 
+@dataclass
+class MeasuredStretch:
+    """A centerline's vertices with the measured stretch's first and last ones moved (see :func:`measured_stretch`).
+
+    Attributes
+    ----------
+    vertices, radii, chainages, foot_a, foot_b : ndarray
+        Copies of the arguments of :func:`measured_stretch` (vertices, incircle radii, chainages and the feet on
+        the two sides, CRS units), the stretch's first and last vertices moved as it says.
+    low, high : float
+        Chainages bounding the measured stretch (both included), CRS units; ``low > high`` when it is empty.
+    """
+
+    vertices: np.ndarray
+    radii: np.ndarray
+    chainages: np.ndarray
+    foot_a: np.ndarray
+    foot_b: np.ndarray
+    low: float = 1.0
+    high: float = 0.0
+
+    @property
+    def feet(self):
+        """``(foot_a, foot_b)``: the arrays themselves, written in place while the stretch is measured."""
+        return self.foot_a, self.foot_b
+
+    @property
+    def empty(self):
+        """Whether no chainage lies on the stretch."""
+        return self.low > self.high
+
+
 def vertex_chainages(result):
     """Return the distance of each centerline vertex from the start along the line.
 
@@ -188,19 +220,17 @@ def transects(result, interval, chains=None, style="nearest"):
     point the line first crosses the end cap (about half a width long), where the channel has no
     cross-section, so the stretch starts where the cap ends, however far the next vertex is (see
     :func:`measured_stretch`); at an open end it starts at the end. At a station between vertices ``i`` and
-    ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated linearly. The feet are the
-    nearest points to ``C`` of each chain (``chains``, else ``result.chains``) on its bank between the
-    stretch's end incircles: exact wherever the line is on the axis. A result without chains (a network's
-    branch) gets each foot at distance ``r`` from ``C`` towards the linearly interpolated foot of that side
-    (exact on straight banks, and on the circle of radius ``r`` around ``C`` in any case).
+    ``i + 1`` the centerline point ``C`` and the radius ``r`` are interpolated linearly.
 
-    That is the ``"nearest"`` style: the incircle's diameter, in two pieces meeting at ``C``, which bend there
-    and fan out where the banks are irregular. The ``"straight"`` style draws one straight line through ``C``,
-    square to the centerline's direction there smoothed over the local width (the chord between the line's
-    points at ``r`` before and after ``C``, closer alike near the measured stretch's ends), each half up to
-    where it first meets the chains (a bank, an island or, near an end, the cut): what a hydrologist surveys.
-    Its width is that line's length, at least the incircle's diameter. Without chains (a network's branch)
-    each half is ``r`` long.
+    A ``"nearest"`` transect is the incircle's diameter in two pieces meeting at ``C``: the feet are the nearest
+    points to ``C`` of each chain (``chains``, else ``result.chains``) on its bank between the stretch's end
+    incircles, exact wherever the line is on the axis; they bend at ``C`` and fan out where the banks are
+    irregular. A ``"straight"`` transect is one straight line through ``C``, square to the centerline's
+    direction there smoothed over the local width (the chord between the line's points at ``r`` before and
+    after ``C``, closer alike near the measured stretch's ends), each half up to where it first meets the
+    chains (a bank, an island or, near an end, the cut): what a hydrologist surveys; its width is at least the
+    incircle's diameter. A result without chains (a network's branch) gets each foot at distance ``r`` from
+    ``C``: towards the linearly interpolated foot of that side (``"nearest"``), or square to the line.
 
     Parameters
     ----------
@@ -237,6 +267,29 @@ def transects(result, interval, chains=None, style="nearest"):
     >>> [list(cut.line.coords) for cut in transects(result, 50.0, style="straight")]
     [[(50.0, 0.0), (50.0, 5.0), (50.0, 10.0)]]
     """
+    interval = _checked_interval(interval, style)
+    vertices = shapely.get_coordinates(result.line)
+    chainages = vertex_chainages(result)
+    length = float(chainages[-1])
+    radii = np.asarray(result.radii, dtype=float)
+    stretch = measured_stretch(vertices, radii, chainages, result.foot_a, result.foot_b)
+    stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
+    stations = stations[(stations >= stretch.low) & (stations <= stretch.high)]
+    if len(stations) == 0:
+        return []
+    feet, centres = _transect_feet(stretch, stations, result.chains if chains is None else chains, style)
+    lines = np.stack([feet[0], centres, feet[1]], axis=1)
+    widths = np.hypot(*(feet[0] - centres).T) + np.hypot(*(feet[1] - centres).T)
+    scale = max(length, float(np.max(stretch.radii, initial=0.0)), np.finfo(float).tiny)
+    valid = np.isfinite(widths) & (widths > 1e-12 * scale)
+    return [
+        Transect(line=LineString(line), width=float(width), chainage=float(station))
+        for line, width, station in zip(lines[valid], widths[valid], stations[valid])
+    ]
+
+
+def _checked_interval(interval, style):
+    """``interval`` as a positive finite float, CRS units, after checking ``style``; raise as :func:`transects`."""
     if style not in TRANSECT_STYLES:
         raise IncirCuError(Message("unknown_transect_style", style=style, choices=", ".join(TRANSECT_STYLES)))
     try:
@@ -245,38 +298,28 @@ def transects(result, interval, chains=None, style="nearest"):
         raise IncirCuError(Message("transect_interval_kind", value=interval)) from None
     if not (interval > 0.0 and np.isfinite(interval)):
         raise IncirCuError(Message("transect_interval_positive", value=interval))
-    vertices = shapely.get_coordinates(result.line)
-    chainages = vertex_chainages(result)
-    length = float(chainages[-1])
-    radii = np.asarray(result.radii, dtype=float)
-    foot_a, foot_b = np.asarray(result.foot_a, dtype=float), np.asarray(result.foot_b, dtype=float)
-    low, high, vertices, radii, chainages, foot_a, foot_b = measured_stretch(vertices, radii, chainages, foot_a, foot_b)
-    stations = interval * np.arange(int(np.floor(length / interval * (1.0 + 1e-12))) + 1)
-    stations = stations[(stations >= low) & (stations <= high)]
-    if len(stations) == 0:
-        return []
-    along = points_at(np.column_stack([vertices, radii, foot_a, foot_b]), chainages, stations)
+    return interval
+
+
+def _transect_feet(stretch, stations, chains, style):
+    """The two feet (each ``(m, 2)``) and the centres of the transects at ``stations`` on a
+    :class:`MeasuredStretch`, CRS units; ``chains`` may be None (a network's branch). See :func:`transects`."""
+    along = points_at(
+        np.column_stack([stretch.vertices, stretch.radii, stretch.foot_a, stretch.foot_b]), stretch.chainages, stations
+    )
     centres, radius = along[:, :2], along[:, 2]
-    chains = result.chains if chains is None else chains
     if style == "straight":
-        window = _window(stations, radius, low, high)
-        feet = _straight_feet(vertices, chainages, window, centres, radius, along[:, 3:5], chains)
+        window = _window(stations, radius, stretch.low, stretch.high)
+        feet = _straight_feet(stretch.vertices, stretch.chainages, window, centres, radius, along[:, 3:5], chains)
     elif chains is not None:
-        first_and_last = np.searchsorted(chainages, [low, high])
-        sides = zip(chains, ("first chain", "second chain"), (foot_a, foot_b))
+        first_and_last = np.searchsorted(stretch.chainages, [stretch.low, stretch.high])
+        sides = zip(chains, ("first chain", "second chain"), stretch.feet)
         feet = [
             _feet_on_banks(as_coordinates(chain, name), foot[first_and_last], centres) for chain, name, foot in sides
         ]
     else:
         feet = [_foot_towards(centres, radius, along[:, 3:5]), _foot_towards(centres, radius, along[:, 5:7])]
-    lines = np.stack([feet[0], centres, feet[1]], axis=1)
-    widths = np.hypot(*(feet[0] - centres).T) + np.hypot(*(feet[1] - centres).T)
-    scale = max(length, float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
-    valid = np.isfinite(widths) & (widths > 1e-12 * scale)
-    return [
-        Transect(line=LineString(line), width=float(width), chainage=float(station))
-        for line, width, station in zip(lines[valid], widths[valid], stations[valid])
-    ]
+    return feet, centres
 
 
 def _feet_on_banks(chain, ends, centres):
@@ -332,25 +375,10 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
     where the channel has no cross-section. Its end-cap vertices are those of :func:`end_cap_vertices`. The
     innermost one is where the line from the split point meets the axis (both samplings keep it: the adaptive
     line keeps the neighbours of its ends), so the stretch is found whatever the distance to the next vertex;
-    at an open end (positive radius) it starts at the end.
-
-    When that vertex's incircle spans the channel it also touches the end, and the foot recorded on one side
-    may be that contact rather than the bank. Such a foot (nearer to the end than the radius) is replaced by
-    the mirror image of the other foot across the line towards the next vertex: on the medial axis the two
-    contact directions are symmetric about the axis, so this is the bank's foot where the axis runs straight,
-    as it does along the chord to the next vertex. The stretch starts at that vertex.
-
-    Its incircle spans no bank when the split point lies a little off the middle of a flat end (the line
-    first runs along the end's normal, its incircles touching the end only): both feet are on the end. The
-    end cap then ends on the segment to the next vertex, where the end stops being nearer than both banks;
-    the banks there are the tangents at the next vertex's feet (exact on straight banks). That point becomes
-    the stretch's first vertex: its radius is the mean distance to the two tangents, its feet lie at that
-    distance in the directions of the next vertex's feet. When the next vertex is the other end's cap vertex
-    (a straight line carrying no bank), the feet lie at the radius square to the line. Farther off the middle
-    the incircle touches one bank and the end: the mirror image of the bank's foot falls on the end's foot
-    (within ``GENUINE_END_CONTACT`` of the radius), the line there bisects the bank and the end, and the
-    stretch starts at the next vertex, where the line bends onto the axis. The last vertex is found the same
-    way from the other end.
+    at an open end (positive radius) it starts at the end. What that vertex's incircle touches decides where
+    the stretch starts (:func:`_end_contacts`): both banks, that vertex; the end only, where the cap ends on
+    the segment to the next vertex (:func:`_move_to_cap_end`); a bank and the end, the next vertex. The last
+    vertex is found the same way from the other end. ``docs/core-notes.md`` gives the geometry of each case.
 
     Parameters
     ----------
@@ -365,94 +393,113 @@ def measured_stretch(vertices, radii, chainages, foot_a, foot_b):
 
     Returns
     -------
-    low, high : float
-        Chainages bounding the measured stretch (both included), CRS units; ``low > high`` when empty.
-    vertices, radii, chainages, foot_a, foot_b : ndarray
-        Copies of the arguments with the stretch's first and last vertices as described, CRS units.
+    MeasuredStretch
+        Copies of the arguments with the stretch's first and last vertices as described, and the stretch's
+        chainages ``low`` and ``high``.
     """
     count = len(vertices)
     slack = 1e-9 * max(float(chainages[-1]), float(np.max(radii, initial=0.0)), np.finfo(float).tiny)
-    vertices, radii, chainages = np.array(vertices, dtype=float), np.array(radii, dtype=float), np.array(chainages)
-    feet = np.array(foot_a, dtype=float), np.array(foot_b, dtype=float)
-    caps = end_cap_vertices(vertices, radii, chainages, *feet)
-
-    def contacts(index, end, towards):
-        """What the incircle of end-cap vertex ``index`` touches: ``"banks"`` (its feet then put on them),
-        ``"end"`` (both feet on the end) or ``"bank and end"``."""
-        distances = [float(np.hypot(*(foot[index] - end))) for foot in feet]
-        on_end = int(np.argmin(distances))
-        along = vertices[towards] - vertices[index]
-        norm = float(np.hypot(*along))
-        if distances[on_end] >= radii[index] or norm <= 0.0:
-            return "banks"
-        if max(distances) < radii[index]:
-            return "end"
-        along /= norm
-        other = feet[1 - on_end][index] - vertices[index]
-        mirrored = vertices[index] + 2.0 * float(other @ along) * along - other
-        if np.hypot(*(mirrored - feet[on_end][index])) < GENUINE_END_CONTACT * radii[index]:
-            return "bank and end"
-        feet[on_end][index] = mirrored
-        return "banks"
-
-    def cap_ends_between(index, end, towards):
-        """Move vertex ``index`` to where the end cap ends on the segment to vertex ``towards``."""
-        start, target = vertices[index].copy(), vertices[towards]
-        normals = [(foot[towards] - target) / radii[towards] for foot in feet]
-
-        def bank_distances(t):
-            point = start + t * (target - start)
-            return point, [radii[towards] - float((point - target) @ normal) for normal in normals]
-
-        # The end is nearer than a bank before the crossing and not after it (at ``towards``, outside the cap).
-        low, high = 0.0, 1.0
-        for _ in range(BISECTION_STEPS):
-            middle = 0.5 * (low + high)
-            point, distances = bank_distances(middle)
-            low, high = (middle, high) if np.hypot(*(point - end)) < max(distances) else (low, middle)
-        point, distances = bank_distances(high)
-        radius = 0.5 * sum(distances)
-        vertices[index] = point
-        radii[index] = radius
-        for foot, normal in zip(feet, normals):
-            foot[index] = point + radius * normal
-        chainages[index] = chainages[towards] - np.sign(towards - index) * float(np.hypot(*(target - point)))
-
-    def on_the_normal(index, towards):
-        """Give vertex ``index`` feet at its radius square to the segment to vertex ``towards``."""
-        along = vertices[towards] - vertices[index]
-        normal = np.array([-along[1], along[0]]) / max(float(np.hypot(*along)), np.finfo(float).tiny)
-        side = np.sign(float((feet[0][towards] - vertices[towards]) @ normal)) or 1.0
-        feet[0][index] = vertices[index] + side * radii[index] * normal
-        feet[1][index] = vertices[index] - side * radii[index] * normal
-
-    ends = [vertices[0].copy(), vertices[-1].copy()]
+    stretch = MeasuredStretch(
+        np.array(vertices, dtype=float),
+        np.array(radii, dtype=float),
+        np.array(chainages),
+        np.array(foot_a, dtype=float),
+        np.array(foot_b, dtype=float),
+    )
+    caps = end_cap_vertices(stretch.vertices, stretch.radii, stretch.chainages, *stretch.feet)
+    ends = [stretch.vertices[0].copy(), stretch.vertices[-1].copy()]
     first, last = 0, count - 1
-    if radii[0] <= slack:
+    if stretch.radii[0] <= slack:
         first = max(int(np.max(caps[0], initial=0)), 1)
-    if radii[-1] <= slack:
+    if stretch.radii[-1] <= slack:
         last = min(int(np.min(caps[1], initial=count - 1)), count - 2)
-    # The vertices of the stretch, if any, carry the banks' feet; an end-cap vertex whose incircle spans no
-    # bank moves to where the cap ends, on the segment to one of them; one that touches a bank and the end
-    # leaves the stretch to the next vertex.
     bounds = [first, last]
-    for side, (index, end, step) in enumerate(((first, ends[0], 1), (last, ends[1], -1))):
+    for side, (index, step) in enumerate(((first, 1), (last, -1))):
         towards = index + step
-        if radii[0 if step == 1 else -1] > slack or not 0 < towards < count - 1:
+        if stretch.radii[0 if step == 1 else -1] > slack or not 0 < towards < count - 1:
             continue
-        touches = contacts(index, end, towards)
+        touches = _end_contacts(stretch, index, ends[side], towards)
         if touches == "bank and end":
             bounds[side] = towards
         elif touches == "end" and first < towards < last:
-            cap_ends_between(index, end, towards)
+            _move_to_cap_end(stretch, index, ends[side], towards)
         elif touches == "end":
-            # No vertex between the two ends' caps: a straight channel whose line carries no bank; its
-            # incircles' feet lie square to it.
-            on_the_normal(index, towards)
+            # No vertex between the two ends' caps: a straight channel whose line carries no bank.
+            _feet_on_the_normal(stretch, index, towards)
     first, last = bounds
-    if first > last or chainages[first] > chainages[last]:
-        return 1.0, 0.0, vertices, radii, chainages, *feet
-    return float(chainages[first]), float(chainages[last]), vertices, radii, chainages, *feet
+    if first <= last and stretch.chainages[first] <= stretch.chainages[last]:
+        stretch.low, stretch.high = float(stretch.chainages[first]), float(stretch.chainages[last])
+    return stretch
+
+
+def _end_contacts(stretch, index, end, towards):
+    """What the incircle of end-cap vertex ``index`` touches: ``"banks"``, ``"end"`` (both feet on the end) or
+    ``"bank and end"``.
+
+    A foot nearer to ``end`` than the radius may be the incircle's contact with the end rather than with a
+    bank: it is replaced (in ``stretch``) by the mirror image of the other foot across the line towards vertex
+    ``towards``, the bank's foot where the axis runs straight (``"banks"``), unless that image falls on the
+    foot itself (within ``GENUINE_END_CONTACT`` of the radius): the incircle touches a bank and the end.
+    """
+    vertices, radii, feet = stretch.vertices, stretch.radii, stretch.feet
+    distances = [float(np.hypot(*(foot[index] - end))) for foot in feet]
+    on_end = int(np.argmin(distances))
+    along = vertices[towards] - vertices[index]
+    norm = float(np.hypot(*along))
+    if distances[on_end] >= radii[index] or norm <= 0.0:
+        return "banks"
+    if max(distances) < radii[index]:
+        return "end"
+    along /= norm
+    other = feet[1 - on_end][index] - vertices[index]
+    mirrored = vertices[index] + 2.0 * float(other @ along) * along - other
+    if np.hypot(*(mirrored - feet[on_end][index])) < GENUINE_END_CONTACT * radii[index]:
+        return "bank and end"
+    feet[on_end][index] = mirrored
+    return "banks"
+
+
+def _move_to_cap_end(stretch, index, end, towards):
+    """Move vertex ``index`` (in ``stretch``) to where the end cap ends on the segment to vertex ``towards``.
+
+    That is where ``end`` stops being nearer than both banks, the banks there being the tangents at the feet
+    of ``towards``; the moved vertex's radius is its mean distance to the two tangents, its feet lie at that
+    distance in the directions of the feet of ``towards``.
+    """
+    vertices, radii, feet = stretch.vertices, stretch.radii, stretch.feet
+    start, target = vertices[index].copy(), vertices[towards]
+    normals = [(foot[towards] - target) / radii[towards] for foot in feet]
+
+    def bank_distances(t):
+        point = start + t * (target - start)
+        return point, [radii[towards] - float((point - target) @ normal) for normal in normals]
+
+    # The end is nearer than a bank before the crossing and not after it (at ``towards``, outside the cap).
+    low, high = 0.0, 1.0
+    for _ in range(BISECTION_STEPS):
+        middle = 0.5 * (low + high)
+        point, distances = bank_distances(middle)
+        low, high = (middle, high) if np.hypot(*(point - end)) < max(distances) else (low, middle)
+    point, distances = bank_distances(high)
+    radius = 0.5 * sum(distances)
+    vertices[index] = point
+    radii[index] = radius
+    for foot, normal in zip(feet, normals):
+        foot[index] = point + radius * normal
+    stretch.chainages[index] = stretch.chainages[towards] - np.sign(towards - index) * float(
+        np.hypot(*(target - point))
+    )
+
+
+def _feet_on_the_normal(stretch, index, towards):
+    """Give vertex ``index`` (in ``stretch``) feet at its radius square to the segment to vertex ``towards``, on
+    the sides of the feet of ``towards``."""
+    vertices, radius, (foot_a, foot_b) = stretch.vertices, stretch.radii[index], stretch.feet
+    along = vertices[towards] - vertices[index]
+    normal = np.array([-along[1], along[0]]) / max(float(np.hypot(*along)), np.finfo(float).tiny)
+    side = np.sign(float((foot_a[towards] - vertices[towards]) @ normal)) or 1.0
+    foot_a[index] = vertices[index] + side * radius * normal
+    foot_b[index] = vertices[index] - side * radius * normal
 
 
 def _window(stations, radius, low, high):

@@ -3,7 +3,7 @@ the axis whose chords stay within the tolerance (docs/tracing.md)."""
 
 import numpy as np
 
-from ..contacts import left_normal, ranges, rows
+from .._arrays import left_normal, ranges, rows
 from .sites import by_kind
 from .spans import EDGE, FAN
 

@@ -4,7 +4,8 @@ there, and how a solved probe is judged: an event of its interval or not, an axi
 
 import numpy as np
 
-from ..contacts import CLEAR, SKIPPED, TIED, rows
+from .._arrays import rows
+from ..contacts import CLEAR, SKIPPED, TIED
 from .closed_form import crossing
 from .sites import radius_at
 from .spans import EDGE

@@ -6,7 +6,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..contacts import CLEAR, SKIPPED, TIED, Samples, rows
+from .._arrays import rows
+from ..contacts import CLEAR, SKIPPED, TIED, Samples
 from .intervals import Intervals, split_at_nodes
 from .options import Solution
 from .probes import skip_beside_convex_corners, solve_all

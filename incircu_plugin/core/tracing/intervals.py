@@ -4,7 +4,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..contacts import ArrayRecord
+from .._arrays import ArrayRecord
 
 
 @dataclass

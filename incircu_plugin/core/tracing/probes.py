@@ -3,7 +3,8 @@ chains, and the guard beside convex corners where the solver cannot see the firs
 
 import numpy as np
 
-from ..contacts import CHUNK, SKIPPED, put_rows, solve, solve_in_chunks
+from .._arrays import put_rows
+from ..contacts import CHUNK, SKIPPED, solve, solve_in_chunks
 from .options import Solution
 from .spans import EDGE
 

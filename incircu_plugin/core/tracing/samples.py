@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from ..contacts import CHUNK, AxisPoints, rows
+from .._arrays import rows
+from ..contacts import CHUNK, AxisPoints
 
 #: Types of the per-sample columns (indices fit int32, see :class:`.contacts.Boundary`).
 STORE_TYPES = {"span": np.int32, "u": float, "t": float, "centre": float, "emit": bool, "other_site": np.int32}

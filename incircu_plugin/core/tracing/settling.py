@@ -3,7 +3,7 @@ and the stations of the parabolas between samples touching one site (docs/tracin
 
 import numpy as np
 
-from ..contacts import left_normal, rows
+from .._arrays import left_normal, rows
 from .closed_form import parabola_stations
 from .events import EVENT_TOLERANCE, is_event
 from .probes import solve_probes

@@ -3,7 +3,7 @@ chains, their feet, and the closed-form radius of a disk on a span touching one 
 
 import numpy as np
 
-from ..contacts import put_rows, rows
+from .._arrays import put_rows, rows
 from .spans import EDGE
 
 

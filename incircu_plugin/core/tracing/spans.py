@@ -9,7 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..contacts import Samples, left_normal, put_rows, rows
+from .._arrays import left_normal, put_rows, rows
+from ..contacts import Samples
 from ..polyline import turns_between
 
 #: Span kinds: an edge (the parameter is the distance along it) or a reflex vertex's fan (the angle, radians).

@@ -6,7 +6,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..contacts import ranges, rows
+from .._arrays import ranges, rows
 from .closed_form import crossing
 from .events import trial_radius
 from .sites import radius_at
