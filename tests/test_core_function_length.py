@@ -18,15 +18,6 @@ LONGEST = 80
 #: The packages checked: the Processing layer, the plugin glue and the geometry core.
 PACKAGES = ("algorithms", "incircu_plugin")
 
-#: Functions still longer, as ``"path from the package:name"``, each in a module another change of issue 39 is
-#: reshaping (the public API: api.py, frames.py; the networks: network.py). Remove an entry once its function is
-#: shortened: :func:`test_the_allowed_long_functions_are_still_long` says when.
-ALLOWED = {
-    "core/api.py:polygon_centerline",
-    "core/frames.py:networks",
-    "core/network.py:polygon_network",
-}
-
 
 def function_lengths(folder):
     """Return ``{"path:line name": lines}`` (path from ``folder``) of every function of the ``.py`` files below
@@ -42,19 +33,9 @@ def function_lengths(folder):
 
 
 def long_functions(folder):
-    """Return ``"path:line name (n lines)"`` for every function below ``folder`` longer than :data:`LONGEST` lines
-    and not in :data:`ALLOWED`."""
-    return [
-        f"{place} ({lines} lines)"
-        for place, lines in function_lengths(folder).items()
-        if lines > LONGEST and _allowed_name(place) not in ALLOWED
-    ]
-
-
-def _allowed_name(place):
-    """``"path:name"`` of ``"path:line name"``."""
-    path, line_and_name = place.split(":", 1)
-    return f"{path}:{line_and_name.split(' ', 1)[1]}"
+    """Return ``"path:line name (n lines)"`` for every function below ``folder`` longer than :data:`LONGEST`
+    lines."""
+    return [f"{place} ({lines} lines)" for place, lines in function_lengths(folder).items() if lines > LONGEST]
 
 
 def test_the_check_finds_a_long_function_and_passes_one_of_80_lines(tmp_path):
@@ -68,9 +49,3 @@ def test_the_check_finds_a_long_function_and_passes_one_of_80_lines(tmp_path):
 @pytest.mark.parametrize("package", PACKAGES)
 def test_no_function_is_longer_than_80_lines(package):
     assert long_functions(REPOSITORY / package) == []
-
-
-def test_the_allowed_long_functions_are_still_long():
-    lengths = function_lengths(REPOSITORY / "incircu_plugin")
-    long = {_allowed_name(place) for place, lines in lengths.items() if lines > LONGEST}
-    assert ALLOWED <= long, f"no longer over {LONGEST} lines (or gone): remove from ALLOWED: {sorted(ALLOWED - long)}"

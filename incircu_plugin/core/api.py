@@ -77,10 +77,9 @@ def polygon_centerline(
 ):
     """Centerline of a polygon between two points of its boundary; of each polygon of an array.
 
-    Given an array-like of polygons (a list, a numpy array, a GeoSeries), every other argument is one value for
-    all or a sequence of one per polygon (``split_points``: None, or one sequence of points, or None, per
-    polygon); the polygons are computed in batches that share their tracing, and a polygon's result is the same,
-    to the last bit, as when it is computed alone.
+    Given an array-like of polygons (list, numpy array, GeoSeries), every other argument is one value for all
+    or one per polygon (``split_points``: None, or one sequence or None per polygon); the polygons share their
+    tracing in batches, and each result is the same, to the last bit, as the polygon's alone.
 
     Parameters
     ----------
@@ -90,35 +89,26 @@ def polygon_centerline(
         The ends of the centerline, on the exterior ring. None or empty: found by :func:`.ends.find_ends`.
         One point: it is the start, and the end is whichever of :func:`.ends.find_ends`' two ends lies
         farther from it (the far end of the main stem).
-    spacing : float, optional
-        Fixed sampling (the paper's): distance between samples along the boundary, CRS units. None or 0:
-        adaptive sampling (the default; what a user wants unless reproducing the paper).
-    samples_per_chain : int, optional
-        Fixed sampling with this many equidistant samples on each side.
+    spacing, samples_per_chain : float or int, optional
+        The paper's fixed sampling: distance between samples along the boundary (CRS units), or this many
+        equidistant samples on each side. None or 0: adaptive sampling (the default).
     tolerance : float, optional
         Adaptive sampling: largest distance between the line and the exact medial axis, CRS units; None
         or 0: the typical width / 200 (:func:`default_tolerance`).
     snap_tolerance : float, optional
-        Largest distance, CRS units, between a split point and the exterior ring; default ``1e-6`` of
-        the polygon's extent.
+        Largest distance between a split point and the exterior ring, CRS units; default 1e-6 of the extent.
     islands : {"main_channel", "ignore"}
-        ``"main_channel"``: the line goes around every island on the side of the wider channel (each island
-        joins the side of the boundary it is nearer to). ``"ignore"``: holes are dropped (filled), for the
-        automatic ends too.
+        ``"main_channel"``: the line passes every island on the side of the wider channel; ``"ignore"``: holes
+        are filled, for the automatic ends too.
     end_rule : {"main_stem", "longest_path"}
-        How automatic ends are chosen (see :mod:`.ends`): the skeleton path sweeping the largest channel
-        area (the main stem), or the longest one.
+        Automatic ends (:mod:`.ends`): the skeleton path sweeping the largest area, or the longest one.
     guide : LineString or MultiLineString, optional
-        A rough line of the river, CRS units (gaps, offsets, pieces outside the polygon and tributaries are
-        fine): without split points, the ends are those of the skeleton path that best covers it. Ignored
-        when split points are given.
+        A rough line of the river, CRS units (gaps, offsets and tributaries are fine): without split points,
+        the ends are those of the skeleton path that best covers it.
     end_cap : {"axis", "runout"}
-        How the line crosses each end cap (the stretch of the outline between the banks at a split point):
-        ``"axis"``, the exact medial axis to the end (where the end is cut at a slant, it leaves the end square
-        to the cut and bends onto the channel's axis); ``"runout"``, straight from where the incircle first
-        spans the channel from bank to bank to the end: the split point itself, or, for automatic ends, the
-        point where the axis continued straight meets the outline (see :func:`.caps.run_out_ends`; the
-        run-out is not on the medial axis).
+        How the line crosses each end cap: ``"axis"``, the exact medial axis to the end; ``"runout"``, straight
+        from where the incircle first spans the channel to the split point, or for automatic ends to where
+        the axis continued meets the outline (:func:`.caps.run_out_ends`; not on the medial axis).
     progress : callable, optional
         See :func:`centerline_from_chains`; for an array, called with the fraction of all polygons done.
 
@@ -144,16 +134,8 @@ def polygon_centerline(
     >>> round(many[0].line.length, 6), type(many[1]).__name__
     (100.0, 'InvalidGeometryError')
     """
-    options = {
-        "spacing": spacing,
-        "samples_per_chain": samples_per_chain,
-        "tolerance": tolerance,
-        "snap_tolerance": snap_tolerance,
-        "islands": islands,
-        "end_rule": end_rule,
-        "guide": guide,
-        "end_cap": end_cap,
-    }
+    options = {"spacing": spacing, "samples_per_chain": samples_per_chain, "tolerance": tolerance, "guide": guide}
+    options.update(snap_tolerance=snap_tolerance, islands=islands, end_rule=end_rule, end_cap=end_cap)
     return one_or_many(_polygon_centerline_steps, polygon, split_points, options, progress)
 
 

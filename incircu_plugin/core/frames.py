@@ -426,17 +426,12 @@ def networks(
         Every vertex is a candidate split point (reprojected to ``data``'s CRS).
     connect_touching : bool
         Gates between touching features.
-    min_arm_ratio, min_arm_length : float, optional
-        See :func:`.network.polygon_network`; passed only when given (``min_arm_length`` in CRS units,
-        metres when geographic).
-    islands : {"main_channel", "ignore", "channels"}
-    tolerance, spacing : float, optional
-        As for :func:`centerlines`.
-    snap_tolerance : float
+    min_arm_ratio, min_arm_length, islands
+        See :func:`.network.polygon_network` (``min_arm_length`` in metres when geographic; passed when given).
+    tolerance, spacing, snap_tolerance : float, optional
         As for :func:`centerlines`.
     end_cap : {"runout", "axis"}
-        How a branch crosses the end cap at an end on the outline, as the algorithm's ``END_CAP`` (default, as
-        there, the straight run-out; junctions are left as they are).
+        At an end on the outline, as the algorithm's ``END_CAP`` (default, as there, the straight run-out).
     nodes : bool
         Also return the node frame.
 
@@ -458,9 +453,6 @@ def networks(
     >>> branches[["source", "from_node", "to_node", "from_point"]].values.tolist()
     [[0, 0, 1, 'gate'], [1, 0, 2, 'gate']]
     """
-    import geopandas
-    import pandas
-
     from .layers import layer_networks
 
     if hasattr(data, "npartitions"):
@@ -469,11 +461,7 @@ def networks(
     crs = geometry.crs
     geographic = crs is not None and crs.is_geographic
     options = {"islands": islands, "spacing": spacing, "end_cap": end_cap}
-    given = (
-        ("tolerance", tolerance),
-        ("min_arm_ratio", min_arm_ratio),
-        ("min_arm_length", min_arm_length),
-    )
+    given = (("tolerance", tolerance), ("min_arm_ratio", min_arm_ratio), ("min_arm_length", min_arm_length))
     options.update({name: value for name, value in given if value is not None})
     points = None if split_points is None else _coordinates_in(split_points, crs)
     layer = layer_networks(
@@ -484,7 +472,16 @@ def networks(
         snap_tolerance=snap_tolerance or None,
         **options,
     )
-    labels = list(geometry.index)
+    branches = _branch_frame(layer, list(geometry.index), crs)
+    return (branches, _node_frame(layer, crs)) if nodes else branches
+
+
+def _branch_frame(layer, labels, crs):
+    """The branch frame of :func:`networks` from a :class:`.layers.LayerNetworks` (``labels``: the features'
+    index labels)."""
+    import geopandas
+    import pandas
+
     rows = [
         {**{name: branch.get(name) for name in NETWORK_COLUMNS}, "source": labels[branch["feature"]]}
         for branch in layer.branches
@@ -497,9 +494,14 @@ def networks(
     columns = {
         name: pandas.Series([row.get(name) for row in rows], dtype=dtype) for name, dtype in NETWORK_COLUMNS.items()
     }
-    branches = geopandas.GeoDataFrame(columns, geometry=geopandas.GeoSeries(shapes, crs=crs), crs=crs)
-    if not nodes:
-        return branches
+    return geopandas.GeoDataFrame(columns, geometry=geopandas.GeoSeries(shapes, crs=crs), crs=crs)
+
+
+def _node_frame(layer, crs):
+    """The node frame of :func:`networks`, indexed by node id."""
+    import geopandas
+    import pandas
+
     node_frame = geopandas.GeoDataFrame(
         {
             "degree": pandas.Series([node["degree"] for node in layer.nodes], dtype="Int64"),
@@ -510,4 +512,4 @@ def networks(
         crs=crs,
     )
     node_frame.index.name = "node"
-    return branches, node_frame
+    return node_frame

@@ -220,38 +220,25 @@ def polygon_network(
     polygon : Polygon
         A valid polygon, CRS units; holes are islands.
     split_points : sequence of Point or (x, y), optional
-        Points within ``snap_tolerance`` of the exterior ring. Two or more: the ends of the network. The
-        first one starts chain 0, the others follow counter-clockwise whatever their order; with two points
-        the branch runs from the first to the second, as :func:`polygon_centerline`'s line. None, none or
-        one: the ends of the arms are found automatically (:func:`.arms.find_arm_ends`); one given point
-        replaces the automatic end nearest to it when within that arm's width, and is added otherwise; it
-        comes first.
-    min_arm_ratio : float
-        Automatic ends only: shortest reach of an arm beyond the incircle of the junction it leaves, in
-        widths of that junction (see :mod:`.arms`).
-    min_arm_length : float, optional
-        Automatic ends only: shortest reach of an arm beyond its junction's incircle, CRS units.
+        Points within ``snap_tolerance`` of the exterior ring. Two or more: the ends (the first starts chain 0,
+        the others follow counter-clockwise; two give :func:`polygon_centerline`'s line). None or one: arm ends
+        found automatically (:func:`.arms.find_arm_ends`), one given point replacing the nearest within its
+        arm's width (else added), first.
+    min_arm_ratio, min_arm_length : float, optional
+        Automatic ends only: shortest reach of an arm beyond its junction's incircle, in widths of that
+        junction and in CRS units (see :mod:`.arms`).
     gates : sequence of Point or (x, y), optional
-        Ends shared with a touching polygon (see :func:`.touching.touching_gates`), on the exterior ring: each
-        replaces the automatic end nearest to it when within that arm's width and is an end otherwise;
-        with two or more split points they are ends besides those.
-    spacing : float, optional
-        Distance between boundary samples, CRS units; None: the engine's default (the same for every run).
-    snap_tolerance : float, optional
-        Largest distance, CRS units, between a split point and the ring; default ``1e-6`` of the extent.
+        Ends shared with a touching polygon (:func:`.touching.touching_gates`), on the exterior ring: ends
+        besides the split points, or replacing the nearest automatic end within its arm's width.
+    spacing, snap_tolerance : float, optional
+        As for :func:`polygon_centerline` (one spacing for every run), CRS units.
     islands : {"main_channel", "ignore", "channels"}
-        As in :func:`polygon_centerline`, or ``"channels"``: every island whose bounding-box diagonal is at
-        least ``CHANNEL_ISLAND_RATIO`` times the local width (its own typical width plus twice its distance
-        to the nearest other ring) is a chain of its own, so the network has a loop around it (a junction upstream and
-        one downstream, exact; branches of kind ``"loop"`` along it); smaller islands are passed on the side
-        of the wider channel. Every run is traced (``k`` instead of ``k - 1``), and a loop run round every
-        channel island with another near it gives the branches between two islands: a road area whose city
-        blocks are holes gives its street network (one branch per street segment between two crossings).
-    end_cap : {"axis", "runout"}
-        How a branch crosses the end cap at an end on the outline, as in :func:`polygon_centerline` (the
-        branches' junction ends are left as they are).
-    progress : callable, optional
-        Called with the fraction done; returning False raises :class:`Cancelled`.
+        As in :func:`polygon_centerline`, or ``"channels"``: an island at least ``CHANNEL_ISLAND_RATIO`` times
+        the local width across is a chain of its own, so the network loops round it (branches of kind
+        ``"loop"``; smaller ones are passed on the wider side): a road area whose blocks are holes gives its
+        street network, one branch per street segment between two crossings (see :func:`_channel_islands`).
+    end_cap, progress
+        As in :func:`polygon_centerline` (``end_cap`` leaves the ends at junctions as they are).
     **engine_options
         Passed to :func:`centerline_from_chains` (e.g. ``samples_per_chain``).
 
@@ -279,6 +266,43 @@ def polygon_network(
     channel_islands, polygon = _channel_islands(polygon) if islands == "channels" else ([], polygon)
     if islands == "channels":
         islands = "main_channel"
+    split_points, sources = _network_ends(
+        polygon, split_points, gates, islands, channel_islands, min_arm_ratio, min_arm_length
+    )
+    order = _ring_order(polygon, split_points, snap_tolerance)
+    points = [_as_xy(split_points[index]) for index in order]
+    chains = _bridged_chains(polygon, points, snap_tolerance, islands)
+    junctions = _Junctions(_Boundary(chains, extent_of(*chains, *channel_islands), channel_islands))
+    pieces = _traced_pieces(chains, junctions, _runs(chains, spacing, progress, engine_options, channel_islands))
+    branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
+    if end_cap == "runout":
+        region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
+        branches = [replace(branch, result=run_out_ends(branch.result, region)) for branch in branches]
+    return _network_result(branches, centres, radii, chains, order, sources, (spikes,) if spikes else ())
+
+
+def _network_result(branches, centres, radii, chains, order, sources, notes):
+    """The :class:`NetworkResult` of a network's branches, junctions (``centres``, ``radii``) and chains
+    (in ring order; ``order[m]`` is the end chain ``m`` starts at)."""
+    k = len(chains)
+    snapped = np.empty((k, 2))
+    snapped[order] = np.array([chain[0] for chain in chains])
+    return NetworkResult(
+        branches=tuple(branches),
+        split_points=snapped,
+        chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
+        junctions=centres,
+        junction_radii=radii,
+        chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
+        end_sources=tuple(sources),
+        ends_from=ends_from(sources),
+        notes=notes,
+    )
+
+
+def _network_ends(polygon, split_points, gates, islands, channel_islands, min_arm_ratio, min_arm_length):
+    """The ends of a network (the given split points, the gates, then the automatic arm ends when fewer than two
+    points are given) and the source of each (``"split_point"``, ``"gate"``, ``"automatic"``)."""
     split_points = [] if split_points is None else list(split_points)
     given = len(split_points)
     gates = [] if gates is None else list(gates)
@@ -291,16 +315,14 @@ def polygon_network(
             # The arms of a polygon with channel islands go round them too (a road grid's streets).
             region = Polygon(polygon.exterior, channel_islands)
         split_points = with_automatic_ends(region, split_points, min_arm_ratio, min_arm_length, every_island)
-    sources += ["automatic"] * (len(split_points) - len(sources))
-    order = _ring_order(polygon, split_points, snap_tolerance)
-    points = [_as_xy(split_points[index]) for index in order]
-    chains = _bridged_chains(polygon, points, snap_tolerance, islands)
+    return split_points, sources + ["automatic"] * (len(split_points) - len(sources))
+
+
+def _traced_pieces(chains, junctions, runs):
+    """The pieces of the network's branches from its traced ``runs`` (one per chain, then the loop runs; None
+    for a run not traced), cut where their feet change chain (at the junctions, located together)."""
     k = len(chains)
-    extent = extent_of(*chains, *channel_islands)
-    boundary = _Boundary(chains, extent, channel_islands)
-    junctions = _Junctions(boundary)
-    pieces = []
-    runs = _runs(chains, spacing, progress, engine_options, channel_islands)
+    boundary = junctions.boundary
     traced = [(i, run) for i, run in enumerate(runs) if run is not None]
     feet = [np.asarray(result.foot_b, dtype=float) for _, (result, _) in traced]
     on_ring = np.split(boundary.chain_at(np.concatenate(feet)), np.cumsum([len(f) for f in feet])[:-1])
@@ -309,27 +331,12 @@ def polygon_network(
         for (i, (result, bridged)), ring_labels in zip(traced, on_ring)
     ]
     junctions.locate_ahead([request for run in labelled for request in _label_changes(*run)])
+    pieces = []
     for i, result, labels in labelled:
         pieces.extend(
             _run_pieces(result, i, labels, junctions) if i < k else _loop_pieces(result, i, labels, junctions)
         )
-    branches, centres, radii = _assemble(pieces, junctions, order, loops=len(channel_islands))
-    if end_cap == "runout":
-        region = polygon if islands == "main_channel" else Polygon(polygon.exterior)
-        branches = [replace(branch, result=run_out_ends(branch.result, region)) for branch in branches]
-    snapped = np.empty((k, 2))
-    snapped[order] = np.array([chain[0] for chain in chains])
-    return NetworkResult(
-        branches=tuple(branches),
-        split_points=snapped,
-        chains=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
-        junctions=centres,
-        junction_radii=radii,
-        chain_nodes=tuple((order[m], order[(m + 1) % k]) for m in range(k)),
-        end_sources=tuple(sources),
-        ends_from=ends_from(sources),
-        notes=(spikes,) if spikes else (),
-    )
+    return pieces
 
 
 def ends_from(sources):
