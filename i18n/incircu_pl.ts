@@ -9,12 +9,12 @@
         <translation>Linie środkowe</translation>
     </message>
     <message>
-        <location filename="../algorithms/dependencies.py" line="158"/>
+        <location filename="../algorithms/dependencies.py" line="159"/>
         <source>IncirCu needs the Python package Shapely 2, which is not installed.</source>
         <translation>IncirCu wymaga pakietu Pythona Shapely 2, który nie jest zainstalowany.</translation>
     </message>
     <message>
-        <location filename="../algorithms/dependencies.py" line="166"/>
+        <location filename="../algorithms/dependencies.py" line="167"/>
         <source>IncirCu needs Shapely 2.0 or newer, but Shapely {} is installed.</source>
         <translation>IncirCu wymaga Shapely 2.0 lub nowszego, a zainstalowany jest Shapely {}.</translation>
     </message>
@@ -24,27 +24,27 @@
         <translation>{} musi być warstwą typu {}, a '{}' zawiera geometrie typu {}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="68"/>
+        <location filename="../algorithms/running.py" line="69"/>
         <source>the feature has no geometry</source>
         <translation>obiekt nie ma geometrii</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="167"/>
+        <location filename="../algorithms/running.py" line="147"/>
         <source>Feature {} skipped: {}</source>
         <translation>Obiekt {} pominięty: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="175"/>
+        <location filename="../algorithms/running.py" line="155"/>
         <source>Feature {}: {}</source>
         <translation>Obiekt {}: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="196"/>
+        <location filename="../algorithms/running.py" line="176"/>
         <source>{} (part {})</source>
         <translation>{} (część {})</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="240"/>
+        <location filename="../algorithms/running.py" line="214"/>
         <source>unexpected {}: {} (please report this with the feature)</source>
         <translation>nieoczekiwany błąd {}: {} (prosimy zgłosić go wraz z obiektem)</translation>
     </message>
@@ -79,7 +79,7 @@
         <translation>brak</translation>
     </message>
     <message>
-        <location filename="../algorithms/running.py" line="105"/>
+        <location filename="../algorithms/running.py" line="106"/>
         <source>Z values are ignored: &apos;{}&apos; has Z, but the centerline is computed in the plane and written without Z (its M values, when stored, are the local width).</source>
         <translation>Wartości Z są pomijane: '{}' ma współrzędną Z, ale linia środkowa jest obliczana na płaszczyźnie i zapisywana bez Z (jej wartości M, jeśli są zapisywane, to lokalna szerokość).</translation>
     </message>
@@ -477,42 +477,42 @@
         <translation>Nie można wyznaczyć końców poligonu: {error}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="283"/>
+        <location filename="../incircu_plugin/core/errors.py" line="288"/>
         <source>The polygon&apos;s outline could not be triangulated to find its ends automatically.</source>
         <translation>Nie udało się striangulować obrysu poligonu, by automatycznie wyznaczyć jego końce.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="286"/>
+        <location filename="../incircu_plugin/core/errors.py" line="291"/>
         <source>The guide line does not come near the polygon; its ends were found automatically.</source>
         <translation>Linia prowadząca nie przebiega w pobliżu poligonu; jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="289"/>
+        <location filename="../incircu_plugin/core/errors.py" line="294"/>
         <source>The shape is not elongated; its automatically found ends are arbitrary.</source>
         <translation>Kształt nie jest wydłużony; jego automatycznie wyznaczone końce są przypadkowe.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="320"/>
+        <location filename="../incircu_plugin/core/errors.py" line="325"/>
         <source>The computed centerline has a NaN or infinite coordinate; none is returned.</source>
         <translation>Obliczona linia środkowa ma współrzędną NaN lub nieskończoną; nie zwrócono jej.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="341"/>
+        <location filename="../incircu_plugin/core/errors.py" line="346"/>
         <source>A network needs at least 2 split points on the boundary, got {count}.</source>
         <translation>Sieć potrzebuje co najmniej 2 punktów podziału na obrysie, podano: {count}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="344"/>
+        <location filename="../incircu_plugin/core/errors.py" line="349"/>
         <source>Two split points snap to the same place {point} of the boundary.</source>
         <translation>Dwa punkty podziału przyciągają się do tego samego miejsca {point} obrysu.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="347"/>
+        <location filename="../incircu_plugin/core/errors.py" line="352"/>
         <source>The split points could not be placed in order on the boundary with its islands.</source>
         <translation>Nie udało się uporządkować punktów podziału na obrysie z jego wyspami.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="360"/>
+        <location filename="../incircu_plugin/core/errors.py" line="365"/>
         <source>A branch of the network has fewer than 2 vertices; try a smaller spacing.</source>
         <translation>Gałąź sieci ma mniej niż 2 wierzchołki; spróbuj mniejszego odstępu.</translation>
     </message>
@@ -577,37 +577,37 @@
         <translation>Automatycznie wyznaczone końce pokrywają się w punkcie {point}: kształt nie ma wyraźnych końców. Podaj dwa punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="314"/>
+        <location filename="../incircu_plugin/core/errors.py" line="319"/>
         <source>The island at {point} cannot be joined to a bank without crossing another island; use the option to ignore islands.</source>
         <translation>Wyspy w punkcie {point} nie da się połączyć z brzegiem bez przecięcia innej wyspy; użyj opcji pomijania wysp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="323"/>
+        <location filename="../incircu_plugin/core/errors.py" line="328"/>
         <source>The computed centerline crosses itself, so none is returned. This happens where the shape has no single axis near the ends (a compact shape, or a split point in a corner): move the split points to the middle of the ends, or change the spacing.</source>
         <translation>Obliczona linia środkowa przecina samą siebie, więc jej nie zwrócono. Dzieje się tak, gdy kształt nie ma jednej osi przy końcach (zwarty kształt lub punkt podziału w narożniku): przesuń punkty podziału na środek końców albo zmień odstęp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="329"/>
+        <location filename="../incircu_plugin/core/errors.py" line="334"/>
         <source>The computed centerline crosses itself at {point}, so none is returned. This happens where the shape has no single axis near the ends (a compact shape, or a split point in a corner): move the split points to the middle of the ends, or change the spacing.</source>
         <translation>Obliczona linia środkowa przecina samą siebie w punkcie {point}, więc jej nie zwrócono. Dzieje się tak, gdy kształt nie ma jednej osi przy końcach (zwarty kształt lub punkt podziału w narożniku): przesuń punkty podziału na środek końców albo zmień odstęp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="335"/>
+        <location filename="../incircu_plugin/core/errors.py" line="340"/>
         <source>The computed centerline leaves the polygon at {point} ({outside:.6g} outside), so none is returned. Give split points, or change the tolerance.</source>
         <translation>Obliczona linia środkowa wychodzi poza poligon w punkcie {point} (o {outside:.6g}), więc jej nie zwrócono. Podaj punkty podziału albo zmień tolerancję.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="350"/>
+        <location filename="../incircu_plugin/core/errors.py" line="355"/>
         <source>The junction near {point} could not be located: its circle holds another chain out of order. Move the split points farther out along the arms.</source>
         <translation>Nie udało się wyznaczyć węzła w pobliżu punktu {point}: jego okrąg obejmuje inny łańcuch poza kolejnością. Przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="355"/>
+        <location filename="../incircu_plugin/core/errors.py" line="360"/>
         <source>The junction near {point} could not be located: its circle touches a chain at several places or a split point itself. Move the split points farther out along the arms.</source>
         <translation>Nie udało się wyznaczyć węzła w pobliżu punktu {point}: jego okrąg dotyka łańcucha w kilku miejscach lub samego punktu podziału. Przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="363"/>
+        <location filename="../incircu_plugin/core/errors.py" line="368"/>
         <source>The network found is not a tree with one end at each of the {k} split points ({branches} branches, {ends} ends, {weak} junctions of degree below 3); a split point may lie on a junction&apos;s circle: move the split points farther out along the arms.</source>
         <translation>Wyznaczona sieć nie jest drzewem z jednym końcem w każdym z {k} punktów podziału (gałęzie: {branches}, końce: {ends}, węzły stopnia mniejszego niż 3: {weak}); punkt podziału może leżeć na okręgu węzła: przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
@@ -722,22 +722,22 @@
         <translation>Na tym poligonie automatycznie znaleziono tylko tyle końców ramion: {count}; podaj jego końce jako punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="292"/>
+        <location filename="../incircu_plugin/core/errors.py" line="297"/>
         <source>The shape is star-like, with no dominant trunk; its automatic ends are the tips of its two farthest-apart arms.</source>
         <translation>Kształt jest gwiaździsty, bez dominującego głównego nurtu; jego automatyczne końce to końcówki dwóch najbardziej od siebie oddalonych ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="297"/>
+        <location filename="../incircu_plugin/core/errors.py" line="302"/>
         <source>The shape is not elongated, with no dominant trunk; its automatic ends lie across its centre, along its longest axis.</source>
         <translation>Kształt nie jest wydłużony i nie ma dominującego głównego nurtu; jego automatyczne końce leżą po przeciwnych stronach środka, wzdłuż jego najdłuższej osi.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="302"/>
+        <location filename="../incircu_plugin/core/errors.py" line="307"/>
         <source>The polygon is a ring around one island: its centerline is the closed loop around the island, from and back to the ring&apos;s narrowest place. Give two split points for a line between them.</source>
         <translation>Poligon jest pierścieniem wokół jednej wyspy: jego linia środkowa to zamknięta pętla wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego. Podaj dwa punkty podziału, by otrzymać linię między nimi.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="307"/>
+        <location filename="../incircu_plugin/core/errors.py" line="312"/>
         <source>The polygon is a ring around one island: its centerline is the closed loop around the island, from and back to the ring&apos;s narrowest place; the one split point given is not used. Give two split points for a line between them.</source>
         <translation>Poligon jest pierścieniem wokół jednej wyspy: jego linia środkowa to zamknięta pętla wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego; podany jeden punkt podziału nie jest używany. Podaj dwa punkty podziału, by otrzymać linię między nimi.</translation>
     </message>
@@ -775,6 +775,11 @@
         <location filename="../incircu_plugin/core/errors.py" line="83"/>
         <source>{name} has {given} values for {count} geometries; give one value or one per geometry.</source>
         <translation>{name} ma {given} wartości dla {count} geometrii; podaj jedną wartość albo po jednej na geometrię.</translation>
+    </message>
+    <message>
+        <location filename="../incircu_plugin/core/errors.py" line="283"/>
+        <source>The boundary this feature shares with the features it touches could not be computed ({reason}): it is not connected to them. Repair it first (e.g. QGIS &apos;{fix_geometries}&apos;).</source>
+        <translation>Nie udało się wyznaczyć granicy, którą ten obiekt dzieli z obiektami, których dotyka ({reason}): nie jest z nimi połączony. Najpierw go napraw (np. narzędziem QGIS „{fix_geometries}”).</translation>
     </message>
 </context>
 <context>
@@ -1182,122 +1187,122 @@
 <context>
     <name>PolygonNetworkAlgorithm</name>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="47"/>
+        <location filename="../algorithms/polygon_network.py" line="50"/>
         <source>Centerline network of polygons</source>
         <translation>Sieć linii środkowych poligonów</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="50"/>
+        <location filename="../algorithms/polygon_network.py" line="53"/>
         <source>The medial-axis tree between the arm ends of a confluence, a delta or a road junction.</source>
         <translation>Drzewo osi środkowej między końcami ramion zlewiska, delty lub skrzyżowania dróg.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="54"/>
+        <location filename="../algorithms/polygon_network.py" line="57"/>
         <source>Network branches</source>
         <translation>Gałęzie sieci</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="57"/>
+        <location filename="../algorithms/polygon_network.py" line="60"/>
         <source>network,confluence,delta,junction,crossing,medial axis,skeleton,river,road,width</source>
         <translation>sieć,zlewisko,delta,węzeł,skrzyżowanie,oś środkowa,szkielet,rzeka,droga,szerokość</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="88"/>
+        <location filename="../algorithms/polygon_network.py" line="91"/>
         <source>Polygon layer</source>
         <translation>Warstwa poligonowa</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="97"/>
+        <location filename="../algorithms/polygon_network.py" line="100"/>
         <source>Split points</source>
         <translation>Punkty podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="108"/>
+        <location filename="../algorithms/polygon_network.py" line="111"/>
         <source>Split point id field</source>
         <translation>Pole identyfikatora punktu podziału</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="108"/>
+        <location filename="../algorithms/polygon_network.py" line="111"/>
         <source>Attribute naming each split point in from_point, to_point and the chains; default: its feature id.</source>
         <translation>Atrybut nazywający każdy punkt podziału w from_point, to_point i łańcuchach; domyślnie: identyfikator obiektu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="191"/>
+        <location filename="../algorithms/polygon_network.py" line="194"/>
         <source>Number of branches</source>
         <translation>Liczba gałęzi</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="191"/>
+        <location filename="../algorithms/polygon_network.py" line="194"/>
         <source>Number of branch features written.</source>
         <translation>Liczba zapisanych obiektów gałęzi.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="88"/>
+        <location filename="../algorithms/polygon_network.py" line="91"/>
         <source>Polygons with several arms (confluences, deltas, road junctions); each part gets its network. Z values are ignored: the network is computed in the plane.</source>
         <translation>Poligony z kilkoma ramionami (zlewiska, delty, skrzyżowania dróg); każda część dostaje swoją sieć. Wartości Z są pomijane: sieć jest obliczana na płaszczyźnie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="194"/>
+        <location filename="../algorithms/polygon_network.py" line="197"/>
         <source>centerline network</source>
         <translation>sieć linii środkowych</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="60"/>
+        <location filename="../algorithms/polygon_network.py" line="63"/>
         <source>Zero-width spikes of the outline (going out and back along themselves) are removed first, with a warning naming where.</source>
         <translation>Kolce obrysu o zerowej szerokości (wychodzące i wracające po sobie) są najpierw usuwane, z ostrzeżeniem wskazującym miejsce.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="97"/>
+        <location filename="../algorithms/polygon_network.py" line="100"/>
         <source>The ends of the network, within &apos;Split point snapping tolerance&apos; of a part&apos;s exterior ring, typically one across each arm&apos;s end. A part with two or more uses exactly these; a part with none or one gets its arm ends automatically (the one given replaces the automatic end nearest to it, when within that arm&apos;s width). Another CRS is reprojected to the polygon layer&apos;s.</source>
         <translation>Końce sieci, w odległości nie większej niż 'Tolerancja przyciągania punktów podziału' od pierścienia zewnętrznego części, zwykle po jednym w poprzek końca każdego ramienia. Część z dwoma lub więcej używa dokładnie ich; część bez punktu lub z jednym dostaje końce ramion automatycznie (podany punkt zastępuje najbliższy mu koniec automatyczny, jeśli leży w obrębie szerokości tego ramienia). Inny układ współrzędnych jest przeliczany do układu warstwy poligonowej.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="121"/>
+        <location filename="../algorithms/polygon_network.py" line="124"/>
         <source>{pass_through}: no branch crosses an island; each island belongs to the chain it is nearer to, so the branches go round it on the side of the wider channel. {ignore}: holes are filled before computing. {channels}: every island at least as long as the river around it is wide (its own width plus twice its distance to the nearest bank or island) gets a branch on each side, so the network has a loop around it with exact junctions up- and downstream (branches of kind &apos;loop&apos;); smaller islands are passed on the side of the wider channel.</source>
         <translation>{pass_through}: żadna gałąź nie przecina wyspy; każda wyspa należy do łańcucha, do którego jest bliżej, więc gałęzie omijają ją po stronie szerszego koryta. {ignore}: otwory są wypełniane przed obliczeniem. {channels}: każda wyspa co najmniej tak długa, jak szeroka jest rzeka wokół niej (jej własna szerokość plus dwukrotna odległość do najbliższego brzegu lub wyspy), dostaje gałąź z każdej strony, więc sieć ma wokół niej pętlę z dokładnymi węzłami powyżej i poniżej (gałęzie rodzaju 'loop'); mniejsze wyspy są omijane po stronie szerszego koryta.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="133"/>
+        <location filename="../algorithms/polygon_network.py" line="136"/>
         <source>the split point (junctions are left as they are)</source>
         <translation>punktu podziału (węzły pozostają bez zmian)</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="134"/>
+        <location filename="../algorithms/polygon_network.py" line="137"/>
         <source>Minimum arm length, in junction widths</source>
         <translation>Minimalna długość ramienia, w szerokościach węzła</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="134"/>
+        <location filename="../algorithms/polygon_network.py" line="137"/>
         <source>Automatic ends: an arm is kept when it reaches beyond the circle of the junction it leaves by at least this many widths of that junction (1: bank bumps, digitising steps and bays shallower than the river is wide make no branch; a tributary does).</source>
         <translation>Końce automatyczne: ramię zostaje, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej tyle szerokości tego węzła (1: garby brzegu, schodki digitalizacji i zatoki płytsze niż szerokość rzeki nie tworzą gałęzi; dopływ tworzy).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="148"/>
+        <location filename="../algorithms/polygon_network.py" line="151"/>
         <source>Minimum arm length</source>
         <translation>Minimalna długość ramienia</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="148"/>
+        <location filename="../algorithms/polygon_network.py" line="151"/>
         <source>Automatic ends: an arm is kept only when it also reaches at least this far beyond its junction&apos;s circle, layer units (metres for a layer in degrees); 0 = no such limit. For generalisation.</source>
         <translation>Końce automatyczne: ramię zostaje tylko wtedy, gdy sięga też co najmniej tak daleko poza okrąg swojego węzła, w jednostkach warstwy (metry dla warstwy w stopniach); 0 = bez takiego ograniczenia. Do generalizacji.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="164"/>
+        <location filename="../algorithms/polygon_network.py" line="167"/>
         <source>Line layer, one feature per branch: input attributes plus source_fid (the polygon&apos;s feature id, to join the branch back to it), from_point, to_point (split point ids, &apos;gate&apos;, &apos;auto&apos; or &apos;junction&apos;), from_node, to_node (node ids shared by the branches that meet, also across polygons whose ends coincide), kind (arm, inner or loop), right_chain, left_chain (each chain named &apos;a-b&apos; after the ends at its ends, counter-clockwise), length, width_min, width_mean, width_max (incircle diameters over the vertices with a positive width; layer units, metres for a layer in degrees) and n_vertices.</source>
         <translation>Warstwa liniowa, jeden obiekt na gałąź: atrybuty wejściowe oraz source_fid (identyfikator obiektu poligonu, do połączenia gałęzi z nim), from_point, to_point (identyfikatory punktów podziału, 'gate', 'auto' lub 'junction'), from_node, to_node (identyfikatory węzłów wspólne dla spotykających się gałęzi, także między poligonami o wspólnych końcach), kind (arm, inner lub loop), right_chain, left_chain (każdy łańcuch nazwany 'a-b' od końców na jego krańcach, przeciwnie do ruchu wskazówek zegara), length, width_min, width_mean, width_max (średnice okręgów wpisanych w wierzchołkach o dodatniej szerokości; jednostki warstwy, metry dla warstwy w stopniach) i n_vertices.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="178"/>
+        <location filename="../algorithms/polygon_network.py" line="181"/>
         <source>Network nodes</source>
         <translation>Węzły sieci</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="178"/>
+        <location filename="../algorithms/polygon_network.py" line="181"/>
         <source>Optional point layer: every end and junction with its node id, degree (number of branch ends), radius (the junction&apos;s circle; 0 at an end) and kind (end or junction).</source>
         <translation>Opcjonalna warstwa punktowa: każdy koniec i węzeł z identyfikatorem węzła, stopniem (liczbą końców gałęzi), promieniem (okręgu węzła; 0 na końcu) i rodzajem (end lub junction).</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_network.py" line="60"/>
+        <location filename="../algorithms/polygon_network.py" line="63"/>
         <source>Computes, for each polygon (each part of a multipart polygon), lines down the middle of its arms (the arms of a confluence, a lake, a delta or a road junction), joined where the arms meet. The ends cut the outline into pieces, the chains; each line runs through the centres of circles touching two chains, a path of the shape&apos;s medial axis (the line of the centres of all circles touching two sides): a tree with one end at each arm and junctions where a circle touches three chains, without side branches. The ends are the &apos;Split points&apos; on the outline when a part has two or more; otherwise they are found automatically (one given split point replaces the automatic end nearest to it): an arm counts when it reaches beyond the circle of the junction it leaves by at least &apos;Minimum arm length, in junction widths&apos; (bank noise and small bays do not). Each branch is one line feature with its node ids (from_node, to_node, shared by the branches that meet), its kind, the ids of the split points at its ends (&apos;gate&apos; at a gate, &apos;auto&apos; at an automatic end, &apos;junction&apos; at a junction), the chains on its right and left, its length and widths; the M value of each vertex is the local width. Two split points give exactly the polygon centerline. Islands (holes) are passed on the side of the wider channel, or ignored. Geographic layers are computed in a local metric projection; distances are then in metres. A polygon that cannot be processed is skipped with a warning naming its id and the reason.</source>
         <translation>Wyznacza dla każdego poligonu (każdej części poligonu wieloczęściowego) linie biegnące środkiem jego ramion (ramion zlewiska, jeziora, delty lub skrzyżowania dróg), połączone tam, gdzie ramiona się spotykają. Końce dzielą obrys na odcinki, łańcuchy; każda linia biegnie przez środki okręgów stykających się z dwoma łańcuchami, po fragmencie osi środkowej kształtu (linii środków wszystkich okręgów stykających się z dwoma bokami): drzewo z jednym końcem w każdym ramieniu i węzłami tam, gdzie okrąg styka się z trzema łańcuchami, bez bocznych odgałęzień. Końcami są 'Punkty podziału' na obrysie, gdy część ma ich dwa lub więcej; w przeciwnym razie są wyznaczane automatycznie (jeden podany punkt podziału zastępuje najbliższy mu koniec automatyczny): ramię się liczy, gdy sięga poza okrąg węzła, od którego odchodzi, o co najmniej 'Minimalna długość ramienia, w szerokościach węzła' (szum brzegu i małe zatoki nie sięgają). Każda gałąź to jeden obiekt liniowy z identyfikatorami węzłów (from_node, to_node, wspólnymi dla gałęzi, które się spotykają), rodzajem, identyfikatorami punktów podziału na końcach ('gate' przy bramie, 'auto' przy końcu automatycznym, 'junction' w węźle), łańcuchami po prawej i lewej, długością i szerokościami; wartość M każdego wierzchołka to lokalna szerokość. Dwa punkty podziału dają dokładnie linię środkową poligonu. Wyspy (otwory) są omijane po stronie szerszego koryta albo pomijane. Warstwy geograficzne są liczone w lokalnym odwzorowaniu metrycznym; odległości są wtedy w metrach. Poligon, którego nie da się przetworzyć, jest pomijany z ostrzeżeniem podającym jego identyfikator i przyczynę.</translation>
     </message>
