@@ -254,13 +254,31 @@ def run_group(root, run_id):
     return None
 
 
+def outside_other_runs(group, run_id):
+    """Return the place (group, index) for the outputs of run ``run_id`` that QGIS loaded into ``group``.
+
+    The top of ``group``; or, when ``group`` is (inside) the group of another run, just above the outermost such
+    group. From QGIS 3.44 (and in the desktop before) QGIS loads a run's outputs above the layer panel's current
+    node, which after a run is that run's group or one of its layers: a later run must not go into it.
+    """
+    place, index = group, 0
+    node = group
+    while node is not None and QgsLayerTree.isGroup(node):
+        parent = node.parent()
+        if parent is not None and node.customProperty(RUN_PROPERTY) not in (None, run_id):
+            place, index = parent, parent.children().index(node)
+        node = parent
+    return place, index
+
+
 def order_run_layers(project, run_id, group_name=None):
     """Keep the loaded outputs of one run together in the layer tree, lowest rank on top.
 
     With ``group_name`` they go into a group of that name made for the run at the top of the group QGIS loaded
-    the first of them into (the tree's root, or Processing's results group): a later run's group comes above.
-    Without, they are ordered at the place of the topmost. Every post-processor calls this after styling its
-    layer, so the order is right once the last output of the run is loaded, whatever order QGIS loads them in.
+    the first of them into (the tree's root, Processing's results group, the group of the panel's current node):
+    a later run's group comes above. Without, they are ordered at the place of the topmost. Never inside another
+    run's group (:func:`outside_other_runs`). Every post-processor calls this after styling its layer, so the order
+    is right once the last output of the run is loaded, whatever order QGIS loads them in.
     """
     root = project.layerTreeRoot()
     nodes = [
@@ -273,17 +291,19 @@ def order_run_layers(project, run_id, group_name=None):
     if group_name:
         group = run_group(root, run_id)
         if group is None:
-            group = nodes[0].parent().insertGroup(0, group_name)
+            place, index = outside_other_runs(nodes[0].parent(), run_id)
+            group = place.insertGroup(index, group_name)
             group.setCustomProperty(RUN_PROPERTY, run_id)
-        by_parent = {id(group): (group, nodes)}
+        by_parent = {id(group): (group, 0, nodes)}
     else:
         by_parent = {}
         for node in nodes:
-            by_parent.setdefault(id(node.parent()), (node.parent(), []))[1].append(node)
-    for parent, members in by_parent.values():
+            place, index = outside_other_runs(node.parent(), run_id)
+            by_parent.setdefault(id(place), (place, index, []))[2].append(node)
+    for parent, first, members in by_parent.values():
         children = parent.children()
         inside = [node for node in members if node in children]
-        top = min((children.index(node) for node in inside), default=0)
+        top = min((children.index(node) for node in inside), default=first)
         ordered = sorted(members, key=lambda node: int(node.layer().customProperty(RANK_PROPERTY)))
         if len(inside) == len(members) and [children[top + offset] for offset in range(len(ordered))] == ordered:
             continue

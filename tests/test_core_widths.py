@@ -355,7 +355,8 @@ def assert_straight_and_inside(cut, polygon, tolerance):
     """A straight transect: its three points on one line, inside the polygon, its width its length."""
     start, middle, end = np.asarray(cut.line.coords)
     across = end - start
-    off_line = abs(float(np.cross(across, middle - start))) / float(np.hypot(*across))
+    aside = middle - start
+    off_line = abs(float(across[0] * aside[1] - across[1] * aside[0])) / float(np.hypot(*across))
     assert off_line <= tolerance
     assert cut.width == pytest.approx(float(np.hypot(*across)), abs=tolerance)
     assert polygon.buffer(tolerance).covers(cut.line)

@@ -24,7 +24,7 @@ SAMPLES = REPOSITORY / "scripts" / "data"
 
 
 @pytest.fixture
-def dialog_run(provider, qgis_parent, qgis_iface, monkeypatch):
+def dialog_run(provider, qgis_parent, qgis_iface, layer_panel, monkeypatch):
     """Open an algorithm's toolbox dialog, set parameters, press Run and wait; return the dialog on its log."""
     from processing.gui.AlgorithmDialog import AlgorithmDialog
     from processing.tools.dataobjects import createContext
@@ -164,7 +164,7 @@ def test_layer_tree_keeps_each_run_together_newest_on_top(dialog_run, artifacts)
     assert view.grab().save(str(artifacts / "issue42_D_layer_tree_two_runs.png"))
 
 
-def test_styles_at_world_scale_leave_the_reservoirs_visible(provider, artifacts):
+def test_styles_at_world_scale_leave_the_reservoirs_visible(provider, artifacts, layer_panel):
     from processing.gui.Postprocessing import handleAlgorithmResults
     from processing.tools import dataobjects
     from qgis.core import (

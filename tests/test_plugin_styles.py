@@ -195,6 +195,39 @@ def test_label_outputs_are_named_and_grouped_per_run(provider, layer_panel):
     project.clear()
 
 
+def test_outputs_loaded_into_an_earlier_runs_group_go_above_it(provider):
+    """QGIS (3.44; the desktop before) loads outputs above the layer panel's current node, which after a run is
+    that run's group: the outputs of the next run, grouped or alone, go just above that group, not into it."""
+    from incircu.algorithms.styles import RANK_PROPERTY, RUN_PROPERTY, order_run_layers
+
+    project = QgsProject.instance()
+    project.clear()
+
+    def load(run, rank, group):
+        layer = QgsVectorLayer("LineString?crs=EPSG:2180", f"{run} {rank}", "memory")
+        layer.setCustomProperty(RUN_PROPERTY, run)
+        layer.setCustomProperty(RANK_PROPERTY, rank)
+        project.addMapLayer(layer, False)
+        group.insertLayer(0, layer)
+
+    mine = project.layerTreeRoot().insertGroup(0, "mine")
+    earlier = mine.insertGroup(0, "earlier run")
+    earlier.setCustomProperty(RUN_PROPERTY, "earlier")
+    for rank in (1, 0):
+        load("earlier", rank, earlier)
+    for rank in (0, 1):
+        load("later", rank, earlier)
+    order_run_layers(project, "later", "later run")
+    load("alone", 0, earlier)
+    order_run_layers(project, "alone")
+
+    assert [node.name() for node in project.layerTreeRoot().children()] == ["mine"], "the user's group is kept"
+    assert [node.name() for node in mine.children()] == ["later run", "alone 0", "earlier run"]
+    assert [node.name() for node in mine.children()[0].children()] == ["later 0", "later 1"]
+    assert [node.name() for node in earlier.children()] == ["earlier 0", "earlier 1"]
+    project.clear()
+
+
 @pytest.mark.parametrize("algorithm_name", sorted(CASES))
 def test_loaded_outputs_are_styled_named_and_ordered(provider, artifacts, layer_panel, algorithm_name):
     parameters, inputs, centerline_name = CASES[algorithm_name]
