@@ -224,10 +224,7 @@ class PolygonCenterlineAlgorithm(IncirCuAlgorithm):
         """The :class:`.running.FeatureTask` of one polygon feature, in its own working frame."""
         if not run.has_geometry(feature):
             return run.skip_task(feature, no_geometry())
-        geometry = feature.geometry()
-        frame = run.frame.around(geometry)
-        snap_tolerance = options.snap_tolerance(feature)
-        candidates, _ = split_points.near(geometry, snap_tolerance, frame)
+        geometry, frame, snap_tolerance, candidates, _ = run.located(feature, options, split_points)
         core_geometry = None
         if gates is not None:
             # The gates are split points; the geometry carries them as vertices, so the line ends there.

@@ -239,10 +239,7 @@ class PolygonNetworkAlgorithm(IncirCuAlgorithm):
 
         if not run.has_geometry(feature):
             return run.skip_task(feature, no_geometry())
-        geometry = feature.geometry()
-        frame = run.frame.around(geometry)
-        snap_tolerance = options.snap_tolerance(feature)
-        candidates, ids = split_points.near(geometry, snap_tolerance, frame)
+        geometry, frame, snap_tolerance, candidates, ids = run.located(feature, options, split_points)
         core_geometry, core_gates, layer_gates, extent = None, [], [], 0.0
         if gates is not None:
             core_geometry, core_gates, layer_gates = gates.of(feature.id(), frame)

@@ -219,6 +219,15 @@ class FeatureRun:
             part_index,
         )
 
+    def located(self, feature, options, split_points):
+        """A polygon feature's geometry, its working frame, its snap tolerance (``options.snap_tolerance``) and
+        the split points near it in that frame with their ids (``split_points``: a ``SplitPoints``)."""
+        geometry = feature.geometry()
+        frame = self.frame.around(geometry)
+        snap_tolerance = options.snap_tolerance(feature)
+        candidates, ids = split_points.near(geometry, snap_tolerance, frame)
+        return geometry, frame, snap_tolerance, candidates, ids
+
     @staticmethod
     def skip_task(feature, reason):
         """A :class:`FeatureTask` skipping ``feature`` for ``reason`` (warned in input order)."""
