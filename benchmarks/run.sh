@@ -95,6 +95,13 @@ fi
 # Outside polygons (glyphs, Natural Earth countries and reservoirs): share with a line and time against the
 # peers; adds its marked section.
 "$PYTHON" "$BENCH_DIR/bench_outside.py" $QUICK
+# One feature alone and in an array, against pygeoops; same bytes alone, as one array, reversed and in 8 slices
+# (issue 39); adds its marked section.
+if [ -n "$QUICK" ]; then
+  "$PYTHON" "$BENCH_DIR/bench_calls.py" --repeats 1 --identity 100 --write
+else
+  "$PYTHON" "$BENCH_DIR/bench_calls.py" --write
+fi
 # Networks: cost against the centerline, arms found against pygeoops, SFCGAL (and GRASS); adds its section.
 if [ -n "$QUICK" ]; then
   "$PYTHON" "$BENCH_DIR/bench_network.py" --peers --repeats 1 --write
