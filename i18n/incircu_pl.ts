@@ -227,559 +227,559 @@
         <translation>punkt podziału</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="47"/>
+        <location filename="../incircu_plugin/core/errors.py" line="49"/>
         <source>a network needs at least 2</source>
         <translation>sieć potrzebuje co najmniej 2</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="49"/>
+        <location filename="../incircu_plugin/core/errors.py" line="51"/>
         <source>Unknown island mode {mode!r}; use one of {choices}.</source>
         <translation>Nieznany tryb wysp {mode!r}; użyj jednego z: {choices}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="50"/>
+        <location filename="../incircu_plugin/core/errors.py" line="52"/>
         <source>Unknown end rule {rule!r}; use one of {choices}.</source>
         <translation>Nieznana reguła końców {rule!r}; użyj jednej z: {choices}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="51"/>
+        <location filename="../incircu_plugin/core/errors.py" line="53"/>
         <source>{name} must be a number (a length in {units}), got {value!r}.</source>
         <translation>{name} musi być liczbą (długością w: {units}), podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="54"/>
+        <location filename="../incircu_plugin/core/errors.py" line="56"/>
         <source>{name} must be a positive, finite length in {units} (or 0 for automatic), got {value!r}.</source>
         <translation>{name} musi być dodatnią, skończoną długością w: {units} (lub 0 = automatycznie), podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="57"/>
+        <location filename="../incircu_plugin/core/errors.py" line="59"/>
         <source>{name} must be a non-negative, finite distance in {units} (or None), got {value!r}.</source>
         <translation>{name} musi być nieujemną, skończoną odległością w: {units} (lub None), podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="60"/>
+        <location filename="../incircu_plugin/core/errors.py" line="62"/>
         <source>{name} must be a number, got {kind} {value!r}.</source>
         <translation>{name} musi być liczbą, podano {kind} {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="75"/>
+        <location filename="../incircu_plugin/core/errors.py" line="77"/>
         <source>samples_per_chain must be a whole number, got {value!r}.</source>
         <translation>samples_per_chain musi być liczbą całkowitą, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="76"/>
+        <location filename="../incircu_plugin/core/errors.py" line="78"/>
         <source>The number of samples per chain must be at least 1, got {value!r}.</source>
         <translation>Liczba próbek na łańcuch musi wynosić co najmniej 1, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="86"/>
+        <location filename="../incircu_plugin/core/errors.py" line="88"/>
         <source>Give either a tolerance (adaptive sampling) or a spacing / sample count (fixed sampling).</source>
         <translation>Podaj tolerancję (próbkowanie adaptacyjne) albo odstęp lub liczbę próbek (próbkowanie stałe), nie oba.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="107"/>
+        <location filename="../incircu_plugin/core/errors.py" line="109"/>
         <source>A circle needs at least 1 segment per quarter, got {value!r}.</source>
         <translation>Okrąg potrzebuje co najmniej 1 odcinka na ćwiartkę, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="110"/>
+        <location filename="../incircu_plugin/core/errors.py" line="112"/>
         <source>The transect interval must be a distance, got {value!r}.</source>
         <translation>Odstęp przekrojów musi być odległością, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="113"/>
+        <location filename="../incircu_plugin/core/errors.py" line="115"/>
         <source>The transect interval must be a positive distance, got {value!r}.</source>
         <translation>Odstęp przekrojów musi być dodatnią odległością, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="116"/>
+        <location filename="../incircu_plugin/core/errors.py" line="118"/>
         <source>{guides} guides were given for {polygons} polygons.</source>
         <translation>Podano linii prowadzących: {guides}, a poligonów: {polygons}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="128"/>
+        <location filename="../incircu_plugin/core/errors.py" line="130"/>
         <source>The polygon is null (no geometry).</source>
         <translation>Poligon jest pusty (brak geometrii).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="129"/>
+        <location filename="../incircu_plugin/core/errors.py" line="131"/>
         <source>The polygon is empty.</source>
         <translation>Poligon jest pusty.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="130"/>
+        <location filename="../incircu_plugin/core/errors.py" line="132"/>
         <source>Expected a polygon or multipolygon, got a {kind}.</source>
         <translation>Oczekiwano poligonu lub multipoligonu, podano {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="131"/>
+        <location filename="../incircu_plugin/core/errors.py" line="133"/>
         <source>Expected a single polygon, got a {kind}.</source>
         <translation>Oczekiwano pojedynczego poligonu, podano {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="132"/>
+        <location filename="../incircu_plugin/core/errors.py" line="134"/>
         <source>The polygon is not valid: {reason}. Repair it first (e.g. QGIS &apos;{fix_geometries}&apos;).</source>
         <translation>Poligon jest nieprawidłowy: {reason}. Najpierw go napraw (np. narzędziem QGIS „{fix_geometries}”).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="135"/>
+        <location filename="../incircu_plugin/core/errors.py" line="137"/>
         <source>The {name} is null (no geometry).</source>
         <translation>Obiekt „{name}” nie ma geometrii.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="136"/>
+        <location filename="../incircu_plugin/core/errors.py" line="138"/>
         <source>The {name} is empty.</source>
         <translation>Obiekt „{name}” jest pusty.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="137"/>
+        <location filename="../incircu_plugin/core/errors.py" line="139"/>
         <source>The {name} must be a single line, not a {kind}.</source>
         <translation>Obiekt „{name}” musi być pojedynczą linią, a nie {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="138"/>
+        <location filename="../incircu_plugin/core/errors.py" line="140"/>
         <source>The {name} must be an (n, 2) array of numbers.</source>
         <translation>Obiekt „{name}” musi być tablicą liczb (n, 2).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="139"/>
+        <location filename="../incircu_plugin/core/errors.py" line="141"/>
         <source>The {name} must be an (n, 2) coordinate array.</source>
         <translation>Obiekt „{name}” musi być tablicą współrzędnych (n, 2).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="140"/>
+        <location filename="../incircu_plugin/core/errors.py" line="142"/>
         <source>The {name} has a NaN or infinite coordinate: {value}.</source>
         <translation>Obiekt „{name}” ma współrzędną NaN lub nieskończoną: {value}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="157"/>
+        <location filename="../incircu_plugin/core/errors.py" line="159"/>
         <source>The polygon&apos;s size ({size:.3g}) is absurd for its coordinates&apos; units; reproject or rescale it.</source>
         <translation>Rozmiar poligonu ({size:.3g}) jest niedorzeczny dla jednostek jego współrzędnych; przelicz go do innego układu lub przeskaluj.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="160"/>
+        <location filename="../incircu_plugin/core/errors.py" line="162"/>
         <source>The boundary has {count:,} segments, more than this engine can index.</source>
         <translation>Obrys ma {count:,} odcinków, więcej niż ten silnik może zindeksować.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="163"/>
+        <location filename="../incircu_plugin/core/errors.py" line="165"/>
         <source>A guide must be a line or multiline, got a {kind}.</source>
         <translation>Linia prowadząca musi być linią lub multilinią, podano {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="164"/>
+        <location filename="../incircu_plugin/core/errors.py" line="166"/>
         <source>The guide line has a NaN or infinite coordinate.</source>
         <translation>Linia prowadząca ma współrzędną NaN lub nieskończoną.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="165"/>
+        <location filename="../incircu_plugin/core/errors.py" line="167"/>
         <source>Island {index} is empty or has a NaN or infinite coordinate.</source>
         <translation>Wyspa {index} jest pusta lub ma współrzędną NaN lub nieskończoną.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="168"/>
+        <location filename="../incircu_plugin/core/errors.py" line="170"/>
         <source>Island {index} has fewer than 3 distinct points.</source>
         <translation>Wyspa {index} ma mniej niż 3 różne punkty.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="169"/>
+        <location filename="../incircu_plugin/core/errors.py" line="171"/>
         <source>Cannot centre a projection on a null geometry.</source>
         <translation>Nie można wyśrodkować odwzorowania na braku geometrii.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="170"/>
+        <location filename="../incircu_plugin/core/errors.py" line="172"/>
         <source>Cannot centre a projection on an empty geometry.</source>
         <translation>Nie można wyśrodkować odwzorowania na pustej geometrii.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="171"/>
+        <location filename="../incircu_plugin/core/errors.py" line="173"/>
         <source>Cannot centre a projection on a geometry with a NaN or infinite coordinate.</source>
         <translation>Nie można wyśrodkować odwzorowania na geometrii ze współrzędną NaN lub nieskończoną.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="182"/>
+        <location filename="../incircu_plugin/core/errors.py" line="184"/>
         <source>Unknown CRS {crs!r}: {error}</source>
         <translation>Nieznany układ współrzędnych {crs!r}: {error}</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="183"/>
+        <location filename="../incircu_plugin/core/errors.py" line="185"/>
         <source>{name} is not a geographic CRS.</source>
         <translation>{name} nie jest układem geograficznym.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="185"/>
+        <location filename="../incircu_plugin/core/errors.py" line="187"/>
         <source>The {name} has fewer than 2 distinct points.</source>
         <translation>Obiekt „{name}” ma mniej niż 2 różne punkty.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="186"/>
+        <location filename="../incircu_plugin/core/errors.py" line="188"/>
         <source>The {name} folds back over itself at {point}.</source>
         <translation>Obiekt „{name}” zawraca na sobie w punkcie {point}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="187"/>
+        <location filename="../incircu_plugin/core/errors.py" line="189"/>
         <source>The {name} crosses itself at {point}.</source>
         <translation>Obiekt „{name}” przecina sam siebie w punkcie {point}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="188"/>
+        <location filename="../incircu_plugin/core/errors.py" line="190"/>
         <source>The two lines cross or touch at {point}; they must bound a region between them.</source>
         <translation>Obie linie przecinają się lub stykają w punkcie {point}; muszą ograniczać obszar między sobą.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="196"/>
+        <location filename="../incircu_plugin/core/errors.py" line="198"/>
         <source>The two lines enclose no area between them (they lie on one line).</source>
         <translation>Obie linie nie ograniczają żadnego obszaru (leżą na jednej prostej).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="199"/>
+        <location filename="../incircu_plugin/core/errors.py" line="201"/>
         <source>The chains are too close together or too short to carry a centerline.</source>
         <translation>Łańcuchy są zbyt blisko siebie lub zbyt krótkie, by wyznaczyć linię środkową.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="243"/>
+        <location filename="../incircu_plugin/core/errors.py" line="245"/>
         <source>A polygon needs exactly 2 split points on its boundary, got {count}.</source>
         <translation>Poligon potrzebuje dokładnie 2 punktów podziału na obrysie, podano: {count}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="246"/>
+        <location filename="../incircu_plugin/core/errors.py" line="248"/>
         <source>Both split points snap to the same place {point} of the boundary.</source>
         <translation>Oba punkty podziału przyciągają się do tego samego miejsca {point} obrysu.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="249"/>
+        <location filename="../incircu_plugin/core/errors.py" line="251"/>
         <source>Split points must be a sequence of two points (or a MultiPoint), got a {kind}.</source>
         <translation>Punkty podziału muszą być ciągiem dwóch punktów (lub multipunktem), podano {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="252"/>
+        <location filename="../incircu_plugin/core/errors.py" line="254"/>
         <source>Split point {index} is an empty point.</source>
         <translation>Punkt podziału {index} jest pusty.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="253"/>
+        <location filename="../incircu_plugin/core/errors.py" line="255"/>
         <source>Split point {index} must be a point, not a {kind}.</source>
         <translation>Punkt podziału {index} musi być punktem, a nie {kind}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="258"/>
+        <location filename="../incircu_plugin/core/errors.py" line="260"/>
         <source>Split point {index} must be an (x, y) pair of numbers, got {value!r}.</source>
         <translation>Punkt podziału {index} musi być parą liczb (x, y), podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="261"/>
+        <location filename="../incircu_plugin/core/errors.py" line="263"/>
         <source>A split point has a NaN or infinite coordinate.</source>
         <translation>Punkt podziału ma współrzędną NaN lub nieskończoną.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="266"/>
+        <location filename="../incircu_plugin/core/errors.py" line="268"/>
         <source>The ends of the polygon cannot be found: {error}.</source>
         <translation>Nie można wyznaczyć końców poligonu: {error}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="288"/>
+        <location filename="../incircu_plugin/core/errors.py" line="290"/>
         <source>The polygon&apos;s outline could not be triangulated to find its ends automatically.</source>
         <translation>Nie udało się striangulować obrysu poligonu, by automatycznie wyznaczyć jego końce.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="291"/>
+        <location filename="../incircu_plugin/core/errors.py" line="293"/>
         <source>The guide line does not come near the polygon; its ends were found automatically.</source>
         <translation>Linia prowadząca nie przebiega w pobliżu poligonu; jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="294"/>
+        <location filename="../incircu_plugin/core/errors.py" line="296"/>
         <source>The shape is not elongated; its automatically found ends are arbitrary.</source>
         <translation>Kształt nie jest wydłużony; jego automatycznie wyznaczone końce są przypadkowe.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="325"/>
+        <location filename="../incircu_plugin/core/errors.py" line="327"/>
         <source>The computed centerline has a NaN or infinite coordinate; none is returned.</source>
         <translation>Obliczona linia środkowa ma współrzędną NaN lub nieskończoną; nie zwrócono jej.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="346"/>
+        <location filename="../incircu_plugin/core/errors.py" line="348"/>
         <source>A network needs at least 2 split points on the boundary, got {count}.</source>
         <translation>Sieć potrzebuje co najmniej 2 punktów podziału na obrysie, podano: {count}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="349"/>
+        <location filename="../incircu_plugin/core/errors.py" line="351"/>
         <source>Two split points snap to the same place {point} of the boundary.</source>
         <translation>Dwa punkty podziału przyciągają się do tego samego miejsca {point} obrysu.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="352"/>
+        <location filename="../incircu_plugin/core/errors.py" line="354"/>
         <source>The split points could not be placed in order on the boundary with its islands.</source>
         <translation>Nie udało się uporządkować punktów podziału na obrysie z jego wyspami.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="365"/>
+        <location filename="../incircu_plugin/core/errors.py" line="367"/>
         <source>A branch of the network has fewer than 2 vertices; try a smaller spacing.</source>
         <translation>Gałąź sieci ma mniej niż 2 wierzchołki; spróbuj mniejszego odstępu.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="79"/>
+        <location filename="../incircu_plugin/core/errors.py" line="81"/>
         <source>A spacing of {spacing:.6g} would need about {planned:.3g} samples (at most {limit:.3g}); use a larger spacing.</source>
         <translation>Odstęp {spacing:.6g} wymagałby około {planned:.3g} próbek (najwyżej {limit:.3g}); użyj większego odstępu.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="141"/>
+        <location filename="../incircu_plugin/core/errors.py" line="143"/>
         <source>The {name} has a coordinate of magnitude {magnitude:.3g}, beyond {limit:.0e}: products of such coordinates overflow float64. Use a projected CRS in metres, or scale the data down.</source>
         <translation>Obiekt „{name}” ma współrzędną rzędu {magnitude:.3g}, powyżej {limit:.0e}: iloczyny takich współrzędnych przekraczają zakres float64. Użyj odwzorowanego układu w metrach albo zmniejsz skalę danych.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="146"/>
+        <location filename="../incircu_plugin/core/errors.py" line="148"/>
         <source>The {name} is {extent:.3g} across, under {limit:.0e}: products of its lengths underflow float64. Scale the data up (use smaller units).</source>
         <translation>Obiekt „{name}” ma rozmiar {extent:.3g}, poniżej {limit:.0e}: iloczyny jego długości wychodzą poza zakres float64. Powiększ skalę danych (użyj mniejszych jednostek).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="151"/>
+        <location filename="../incircu_plugin/core/errors.py" line="153"/>
         <source>The {name} is {extent:.3g} across at coordinates of magnitude {magnitude:.3g}: float64 cannot resolve a shape smaller than {limit:.0e} of its distance from the origin. Shift the data nearer the origin (subtract an offset) or use a local projected CRS.</source>
         <translation>Obiekt „{name}” ma rozmiar {extent:.3g} przy współrzędnych rzędu {magnitude:.3g}: float64 nie rozróżni kształtu mniejszego niż {limit:.0e} jego odległości od początku układu. Przesuń dane bliżej początku układu (odejmij przesunięcie) albo użyj lokalnego układu odwzorowanego.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="174"/>
+        <location filename="../incircu_plugin/core/errors.py" line="176"/>
         <source>The projection centre ({longitude!r}, {latitude!r}) is not a longitude and a latitude in degrees.</source>
         <translation>Środek odwzorowania ({longitude!r}, {latitude!r}) nie jest długością i szerokością geograficzną w stopniach.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="178"/>
+        <location filename="../incircu_plugin/core/errors.py" line="180"/>
         <source>A point could not be projected (a NaN or infinite coordinate, or a latitude beyond 90 degrees).</source>
         <translation>Nie udało się przeliczyć punktu (współrzędna NaN lub nieskończona albo szerokość geograficzna ponad 90 stopni).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="202"/>
+        <location filename="../incircu_plugin/core/errors.py" line="204"/>
         <source>The first line is {length:.6g} long, {ratio:.3g} times the second one ({other:.6g} {units}): it runs on beyond the other, where the region between them is closed by the straight gap between their ends, and the centerline follows that gap there. Cut the lines to where they face each other.</source>
         <translation>Pierwsza linia ma długość {length:.6g}, {ratio:.3g} razy więcej niż druga ({other:.6g} {units}): biegnie dalej niż druga, tam obszar między nimi zamyka prosty odcinek między ich końcami, a linia środkowa biegnie wzdłuż niego. Przytnij linie do odcinków leżących naprzeciw siebie.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="208"/>
+        <location filename="../incircu_plugin/core/errors.py" line="210"/>
         <source>The second line is {length:.6g} long, {ratio:.3g} times the first one ({other:.6g} {units}): it runs on beyond the other, where the region between them is closed by the straight gap between their ends, and the centerline follows that gap there. Cut the lines to where they face each other.</source>
         <translation>Druga linia ma długość {length:.6g}, {ratio:.3g} razy więcej niż pierwsza ({other:.6g} {units}): biegnie dalej niż pierwsza, tam obszar między nimi zamyka prosty odcinek między ich końcami, a linia środkowa biegnie wzdłuż niego. Przytnij linie do odcinków leżących naprzeciw siebie.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="233"/>
+        <location filename="../incircu_plugin/core/errors.py" line="235"/>
         <source>Split point {point} is {distance:.6g} {units} away from the polygon&apos;s boundary; the snap tolerance is {tolerance:.6g} {units}. Move the point onto the boundary or raise the tolerance.</source>
         <translation>Punkt podziału {point} leży {distance:.6g} {units} od obrysu poligonu; tolerancja przyciągania wynosi {tolerance:.6g} {units}. Przesuń punkt na obrys albo zwiększ tolerancję.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="238"/>
+        <location filename="../incircu_plugin/core/errors.py" line="240"/>
         <source>{subject} has {count} {points} within the snap tolerance ({tolerance:.6g} {units}) of its exterior ring; {needed}.</source>
         <translation>{subject}: liczba punktów podziału w granicach tolerancji przyciągania ({tolerance:.6g} {units}) od pierścienia zewnętrznego wynosi {count}; {needed}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="254"/>
+        <location filename="../incircu_plugin/core/errors.py" line="256"/>
         <source>Split point {index} is the number {value!r}: give a sequence of points, such as [(x1, y1), (x2, y2)].</source>
         <translation>Punkt podziału {index} jest liczbą {value!r}: podaj ciąg punktów, np. [(x1, y1), (x2, y2)].</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="262"/>
+        <location filename="../incircu_plugin/core/errors.py" line="264"/>
         <source>The ends found automatically coincide at {point}: the shape has no clear ends. Give two split points.</source>
         <translation>Automatycznie wyznaczone końce pokrywają się w punkcie {point}: kształt nie ma wyraźnych końców. Podaj dwa punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="319"/>
+        <location filename="../incircu_plugin/core/errors.py" line="321"/>
         <source>The island at {point} cannot be joined to a bank without crossing another island; use the option to ignore islands.</source>
         <translation>Wyspy w punkcie {point} nie da się połączyć z brzegiem bez przecięcia innej wyspy; użyj opcji pomijania wysp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="328"/>
+        <location filename="../incircu_plugin/core/errors.py" line="330"/>
         <source>The computed centerline crosses itself, so none is returned. This happens where the shape has no single axis near the ends (a compact shape, or a split point in a corner): move the split points to the middle of the ends, or change the spacing.</source>
         <translation>Obliczona linia środkowa przecina samą siebie, więc jej nie zwrócono. Dzieje się tak, gdy kształt nie ma jednej osi przy końcach (zwarty kształt lub punkt podziału w narożniku): przesuń punkty podziału na środek końców albo zmień odstęp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="334"/>
+        <location filename="../incircu_plugin/core/errors.py" line="336"/>
         <source>The computed centerline crosses itself at {point}, so none is returned. This happens where the shape has no single axis near the ends (a compact shape, or a split point in a corner): move the split points to the middle of the ends, or change the spacing.</source>
         <translation>Obliczona linia środkowa przecina samą siebie w punkcie {point}, więc jej nie zwrócono. Dzieje się tak, gdy kształt nie ma jednej osi przy końcach (zwarty kształt lub punkt podziału w narożniku): przesuń punkty podziału na środek końców albo zmień odstęp.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="340"/>
+        <location filename="../incircu_plugin/core/errors.py" line="342"/>
         <source>The computed centerline leaves the polygon at {point} ({outside:.6g} outside), so none is returned. Give split points, or change the tolerance.</source>
         <translation>Obliczona linia środkowa wychodzi poza poligon w punkcie {point} (o {outside:.6g}), więc jej nie zwrócono. Podaj punkty podziału albo zmień tolerancję.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="355"/>
+        <location filename="../incircu_plugin/core/errors.py" line="357"/>
         <source>The junction near {point} could not be located: its circle holds another chain out of order. Move the split points farther out along the arms.</source>
         <translation>Nie udało się wyznaczyć węzła w pobliżu punktu {point}: jego okrąg obejmuje inny łańcuch poza kolejnością. Przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="360"/>
+        <location filename="../incircu_plugin/core/errors.py" line="362"/>
         <source>The junction near {point} could not be located: its circle touches a chain at several places or a split point itself. Move the split points farther out along the arms.</source>
         <translation>Nie udało się wyznaczyć węzła w pobliżu punktu {point}: jego okrąg dotyka łańcucha w kilku miejscach lub samego punktu podziału. Przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="368"/>
+        <location filename="../incircu_plugin/core/errors.py" line="370"/>
         <source>The network found is not a tree with one end at each of the {k} split points ({branches} branches, {ends} ends, {weak} junctions of degree below 3); a split point may lie on a junction&apos;s circle: move the split points farther out along the arms.</source>
         <translation>Wyznaczona sieć nie jest drzewem z jednym końcem w każdym z {k} punktów podziału (gałęzie: {branches}, końce: {ends}, węzły stopnia mniejszego niż 3: {weak}); punkt podziału może leżeć na okręgu węzła: przesuń punkty podziału dalej wzdłuż ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="44"/>
-        <source>it needs 2 (or fewer, to find the missing ends automatically)</source>
-        <translation>potrzebne są 2 (albo mniej, by brakujące końce wyznaczyć automatycznie)</translation>
-    </message>
-    <message>
-        <location filename="../incircu_plugin/core/errors.py" line="89"/>
+        <location filename="../incircu_plugin/core/errors.py" line="91"/>
         <source>The tolerance {tolerance:.6g} ({units}) you set is below {relative:g} of the shape&apos;s extent ({extent:.6g} {units}): float64 cannot place vertices that finely. Use at least {least:.3g} ({units}), or 0 for the automatic tolerance.</source>
         <translation>Ustawiona tolerancja {tolerance:.6g} ({units}) jest mniejsza niż {relative:g} rozmiaru kształtu ({extent:.6g} {units}): float64 nie umieści wierzchołków tak dokładnie. Użyj co najmniej {least:.3g} ({units}) albo 0, by tolerancję dobrać automatycznie.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="95"/>
+        <location filename="../incircu_plugin/core/errors.py" line="97"/>
         <source>The shape is {width:.3g} {units} wide, {relative:.3g} of its extent ({extent:.6g} {units}): its automatic tolerance (the width / 200) is finer than float64 can place vertices, so the finest possible, {finest:.3g} {units} ({minimum:g} of the extent), is used.</source>
         <translation>Kształt ma szerokość {width:.3g} {units}, {relative:.3g} swojego rozmiaru ({extent:.6g} {units}): jego automatyczna tolerancja (szerokość / 200) jest drobniejsza, niż float64 potrafi rozmieścić wierzchołki, więc użyto najmniejszej możliwej, {finest:.3g} {units} ({minimum:g} rozmiaru).</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="101"/>
+        <location filename="../incircu_plugin/core/errors.py" line="103"/>
         <source>The shape is {width:.3g} {units} wide (its area over its length), {relative:.3g} of its extent ({extent:.6g} {units}), under the {minimum:g} at which float64 can still tell its two sides apart: no centerline can be traced. At this width its sides are the centerline: use one of them.</source>
         <translation>Kształt ma szerokość {width:.3g} {units} (pole przez długość), {relative:.3g} swojego rozmiaru ({extent:.6g} {units}), poniżej {minimum:g}, przy których float64 jeszcze odróżnia jego dwa boki: nie da się wyznaczyć linii środkowej. Przy tej szerokości jego boki są linią środkową: użyj jednego z nich.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="117"/>
+        <location filename="../incircu_plugin/core/errors.py" line="119"/>
         <source>Unknown end cap {cap!r}; use one of {choices}.</source>
         <translation>Nieznany rodzaj końców linii {cap!r}; użyj jednego z: {choices}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="118"/>
+        <location filename="../incircu_plugin/core/errors.py" line="120"/>
         <source>Unknown transect style {style!r}; use one of {choices}.</source>
         <translation>Nieznany kształt przekroju poprzecznego {style!r}; użyj jednego z: {choices}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="121"/>
+        <location filename="../incircu_plugin/core/errors.py" line="123"/>
         <source>min_arm_ratio must be a finite number &gt;= 0, got {value!r}.</source>
         <translation>min_arm_ratio musi być skończoną liczbą &gt;= 0, podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="124"/>
+        <location filename="../incircu_plugin/core/errors.py" line="126"/>
         <source>min_arm_length must be a finite length &gt;= 0 ({units}), got {value!r}.</source>
         <translation>min_arm_length musi być skończoną długością &gt;= 0 ({units}), podano {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="191"/>
+        <location filename="../incircu_plugin/core/errors.py" line="193"/>
         <source>The two chains cross or touch at {point}; they must bound a region between them, meeting at most at shared end points.</source>
         <translation>Oba łańcuchy przecinają się lub stykają w punkcie {point}; muszą ograniczać obszar między sobą, spotykając się co najwyżej we wspólnych punktach końcowych.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="215"/>
+        <location filename="../incircu_plugin/core/errors.py" line="217"/>
         <source>A zero-width spike was removed from {places} before the centerline was computed.</source>
         <translation>Przed obliczeniem linii środkowej usunięto kolec o zerowej szerokości: {places}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="218"/>
+        <location filename="../incircu_plugin/core/errors.py" line="220"/>
         <source>{count} zero-width spikes were removed from {places} before the centerline was computed.</source>
         <translation>Przed obliczeniem linii środkowej usunięto kolce o zerowej szerokości (liczba: {count}): {places}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="221"/>
+        <location filename="../incircu_plugin/core/errors.py" line="223"/>
         <source>the exterior ring at {point} ({length:.6g} {units} long)</source>
         <translation>pierścień zewnętrzny w punkcie {point} (długość {length:.6g} {units})</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="224"/>
+        <location filename="../incircu_plugin/core/errors.py" line="226"/>
         <source>island {number} at {point} ({length:.6g} {units} long)</source>
         <translation>wyspa {number} w punkcie {point} (długość {length:.6g} {units})</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="225"/>
+        <location filename="../incircu_plugin/core/errors.py" line="227"/>
         <source>the first line at {point} ({length:.6g} {units} long)</source>
         <translation>pierwsza linia w punkcie {point} (długość {length:.6g} {units})</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="226"/>
+        <location filename="../incircu_plugin/core/errors.py" line="228"/>
         <source>the second line at {point} ({length:.6g} {units} long)</source>
         <translation>druga linia w punkcie {point} (długość {length:.6g} {units})</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="229"/>
+        <location filename="../incircu_plugin/core/errors.py" line="231"/>
         <source>{first}; {second}</source>
         <translation>{first}; {second}</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="230"/>
+        <location filename="../incircu_plugin/core/errors.py" line="232"/>
         <source>{first}; {second}; {third}</source>
         <translation>{first}; {second}; {third}</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="231"/>
+        <location filename="../incircu_plugin/core/errors.py" line="233"/>
         <source>{first}; {second}; {third}; and {more} more</source>
         <translation>{first}; {second}; {third} i jeszcze {more}</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="267"/>
+        <location filename="../incircu_plugin/core/errors.py" line="269"/>
         <source>The polygon is too thin or too small to find its ends automatically; give two split points.</source>
         <translation>Poligon jest zbyt cienki lub zbyt mały, by automatycznie wyznaczyć jego końce; podaj dwa punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="270"/>
+        <location filename="../incircu_plugin/core/errors.py" line="272"/>
         <source>The polygon is {width:.3g} {units} wide (its area over half its perimeter), {relative:.3g} of its extent ({extent:.6g} {units}), under the {minimum:g} at which its ends can be found automatically in float64; give two split points.</source>
         <translation>Poligon ma szerokość {width:.3g} {units} (pole przez połowę obwodu), {relative:.3g} swojego rozmiaru ({extent:.6g} {units}), poniżej {minimum:g}, przy których jego końce można w float64 wyznaczyć automatycznie; podaj dwa punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="276"/>
+        <location filename="../incircu_plugin/core/errors.py" line="278"/>
         <source>The polygon is too thin or too small to find its arms automatically.</source>
         <translation>Poligon jest zbyt cienki lub zbyt mały, by automatycznie wyznaczyć jego ramiona.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="279"/>
+        <location filename="../incircu_plugin/core/errors.py" line="281"/>
         <source>Only {count} arm end was found automatically on this polygon; give its ends as split points.</source>
         <translation>Na tym poligonie automatycznie znaleziono tylko tyle końców ramion: {count}; podaj jego końce jako punkty podziału.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="297"/>
+        <location filename="../incircu_plugin/core/errors.py" line="299"/>
         <source>The shape is star-like, with no dominant trunk; its automatic ends are the tips of its two farthest-apart arms.</source>
         <translation>Kształt jest gwiaździsty, bez dominującego głównego nurtu; jego automatyczne końce to końcówki dwóch najbardziej od siebie oddalonych ramion.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="302"/>
+        <location filename="../incircu_plugin/core/errors.py" line="304"/>
         <source>The shape is not elongated, with no dominant trunk; its automatic ends lie across its centre, along its longest axis.</source>
         <translation>Kształt nie jest wydłużony i nie ma dominującego głównego nurtu; jego automatyczne końce leżą po przeciwnych stronach środka, wzdłuż jego najdłuższej osi.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="307"/>
+        <location filename="../incircu_plugin/core/errors.py" line="309"/>
         <source>The polygon is a ring around one island: its centerline is the closed loop around the island, from and back to the ring&apos;s narrowest place. Give two split points for a line between them.</source>
         <translation>Poligon jest pierścieniem wokół jednej wyspy: jego linia środkowa to zamknięta pętla wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego. Podaj dwa punkty podziału, by otrzymać linię między nimi.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="312"/>
+        <location filename="../incircu_plugin/core/errors.py" line="314"/>
         <source>The polygon is a ring around one island: its centerline is the closed loop around the island, from and back to the ring&apos;s narrowest place; the one split point given is not used. Give two split points for a line between them.</source>
         <translation>Poligon jest pierścieniem wokół jednej wyspy: jego linia środkowa to zamknięta pętla wokół wyspy, od najwęższego miejsca pierścienia i z powrotem do niego; podany jeden punkt podziału nie jest używany. Podaj dwa punkty podziału, by otrzymać linię między nimi.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="61"/>
+        <location filename="../incircu_plugin/core/errors.py" line="63"/>
         <source>The label option {name} must be a number ({what}), not {value!r}.</source>
         <translation>Opcja etykiety {name} musi być liczbą ({what}), a nie {value!r}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="64"/>
+        <location filename="../incircu_plugin/core/errors.py" line="66"/>
         <source>The label option {name} is {value!r}; it must be {what}.</source>
         <translation>Opcja etykiety {name} ma wartość {value!r}; musi to być {what}.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="67"/>
+        <location filename="../incircu_plugin/core/errors.py" line="69"/>
         <source>a share of the widest width, at least 0 and under 1</source>
         <translation>ułamek największej szerokości, co najmniej 0 i poniżej 1</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="70"/>
+        <location filename="../incircu_plugin/core/errors.py" line="72"/>
         <source>a share of the local width, at least 0 and under 0.5 (the middle)</source>
         <translation>ułamek lokalnej szerokości, co najmniej 0 i poniżej 0,5 (środek)</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="73"/>
+        <location filename="../incircu_plugin/core/errors.py" line="75"/>
         <source>a share of the local width, at least 0</source>
         <translation>ułamek lokalnej szerokości, co najmniej 0</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="74"/>
+        <location filename="../incircu_plugin/core/errors.py" line="76"/>
         <source>a ratio, at least 0</source>
         <translation>stosunek, co najmniej 0</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="83"/>
+        <location filename="../incircu_plugin/core/errors.py" line="85"/>
         <source>{name} has {given} values for {count} geometries; give one value or one per geometry.</source>
         <translation>{name} ma {given} wartości dla {count} geometrii; podaj jedną wartość albo po jednej na geometrię.</translation>
     </message>
     <message>
-        <location filename="../incircu_plugin/core/errors.py" line="283"/>
+        <location filename="../incircu_plugin/core/errors.py" line="285"/>
         <source>The boundary this feature shares with the features it touches could not be computed ({reason}): it is not connected to them. Repair it first (e.g. QGIS &apos;{fix_geometries}&apos;).</source>
         <translation>Nie udało się wyznaczyć granicy, którą ten obiekt dzieli z obiektami, których dotyka ({reason}): nie jest z nimi połączony. Najpierw go napraw (np. narzędziem QGIS „{fix_geometries}”).</translation>
+    </message>
+    <message>
+        <location filename="../incircu_plugin/core/errors.py" line="44"/>
+        <source>it needs 2 (or fewer, to find the missing ends automatically); with 3 or more ends (a confluence, or a reach touching 3 others) it is a network: compute its centerline network instead</source>
+        <translation>potrzebne są 2 (albo mniej, by brakujące końce wyznaczyć automatycznie); przy 3 lub więcej końcach (zlewisko albo odcinek stykający się z 3 innymi) to sieć: wyznacz zamiast tego sieć osi</translation>
     </message>
 </context>
 <context>
@@ -1124,22 +1124,22 @@
         <translation>Dla poligonów bez punktów podziału. {main_stem}: droga wewnątrz kształtu obejmująca największą powierzchnię koryta (długość razy szerokość), więc szeroka rzeka główna wygrywa z dłuższą, lecz wąską odnogą. {longest_path}: końce dwóch najdłuższych ramion.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="298"/>
+        <location filename="../algorithms/polygon_centerline.py" line="295"/>
         <source>0: a millionth of the polygon&apos;s size</source>
         <translation>0: jedna milionowa rozmiaru poligonu</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="277"/>
+        <location filename="../algorithms/polygon_centerline.py" line="274"/>
         <source>{} Its ends were found automatically.</source>
         <translation>{} Jego końce wyznaczono automatycznie.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="300"/>
+        <location filename="../algorithms/polygon_centerline.py" line="297"/>
         <source>{} holds no point.</source>
         <translation>{} nie zawiera żadnego punktu.</translation>
     </message>
     <message>
-        <location filename="../algorithms/polygon_centerline.py" line="301"/>
+        <location filename="../algorithms/polygon_centerline.py" line="298"/>
         <source>no split point lies within {} of its outline, the {}; the nearest is {:.6g} {} away.</source>
         <translation>żaden punkt podziału nie leży w odległości {} od jego obrysu, czyli w granicach {}; najbliższy jest w odległości {:.6g} {}.</translation>
     </message>

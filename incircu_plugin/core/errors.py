@@ -42,7 +42,9 @@ MESSAGES = {
     "split_point_one": QT_TRANSLATE_NOOP("IncirCuCore", "split point"),
     "split_point_many": QT_TRANSLATE_NOOP("IncirCuCore", "split points"),
     "needs_two_or_fewer": QT_TRANSLATE_NOOP(
-        "IncirCuCore", "it needs 2 (or fewer, to find the missing ends automatically)"
+        "IncirCuCore",
+        "it needs 2 (or fewer, to find the missing ends automatically); with 3 or more ends (a confluence, or a "
+        "reach touching 3 others) it is a network: compute its centerline network instead"
     ),
     "network_needs_two": QT_TRANSLATE_NOOP("IncirCuCore", "a network needs at least 2"),
     # Options.
