@@ -75,7 +75,7 @@ def per_geometry(value, count, name):
     return values
 
 
-def compute(make_steps, geometries, per_element, shared, progress=None, batch_features=None):
+def compute(make_steps, geometries, per_element, progress=None, batch_features=None):
     """The outcome of ``make_steps(geometry, **options)`` run for each of ``geometries``, in batches.
 
     Parameters
@@ -87,8 +87,6 @@ def compute(make_steps, geometries, per_element, shared, progress=None, batch_fe
         One element per feature: a geometry, or a tuple of positional arguments.
     per_element : dict
         Keywords with one value per feature (lists of ``len(geometries)``).
-    shared : dict
-        Keywords with one value for all.
     progress : callable, optional
         Called with the fraction done (0 to 1); when it returns False, :class:`.errors.Cancelled` is raised.
     batch_features : int, optional
@@ -109,7 +107,7 @@ def compute(make_steps, geometries, per_element, shared, progress=None, batch_fe
             arguments = geometries[index] if isinstance(geometries[index], tuple) else (geometries[index],)
             try:
                 generators.append(
-                    make_steps(*arguments, **{name: values[index] for name, values in per_element.items()}, **shared)
+                    make_steps(*arguments, **{name: values[index] for name, values in per_element.items()})
                 )
                 positions.append(index)
             except Exception as error:  # noqa: BLE001 - a feature's error is its outcome
@@ -130,10 +128,14 @@ def one_or_many(make_steps, geometry, split_points, options, progress, point_set
     if not is_many(geometry):
         return run_alone(make_steps(geometry, split_points, **options, progress=progress))
     geometries = list(geometry)
-    per_element = {name: per_geometry(value, len(geometries), name) for name, value in options.items()}
-    for name, value in (("split_points", split_points), *((name, options.get(name)) for name in point_sets)):
-        per_element[name] = point_sets_per_geometry(value, len(geometries), name)
-    return compute(make_steps, geometries, per_element, {}, progress, batch_features)
+    per_element = {
+        name: point_sets_per_geometry(value, len(geometries), name)
+        if name in point_sets
+        else per_geometry(value, len(geometries), name)
+        for name, value in options.items()
+    }
+    per_element["split_points"] = point_sets_per_geometry(split_points, len(geometries))
+    return compute(make_steps, geometries, per_element, progress, batch_features)
 
 
 def point_sets_per_geometry(points, count, name="split_points"):

@@ -303,7 +303,7 @@ def lines_centerline(
         return run_alone(_lines_centerline_steps(line_a, line_b, **options, progress=progress))
     lines_a, lines_b = _lines_per_pair(line_a, line_b)
     per_element = {name: per_geometry(value, len(lines_a), name) for name, value in options.items()}
-    return compute(_lines_centerline_steps, list(zip(lines_a, lines_b)), per_element, {}, progress)
+    return compute(_lines_centerline_steps, list(zip(lines_a, lines_b)), per_element, progress)
 
 
 def _nonempty_many(line):
