@@ -1,12 +1,13 @@
-"""Centerlines computed as steps, so that many features can share one adaptive tracing.
+"""The private step protocol: centerlines computed as steps, so that many features can share one tracing.
 
 Tracing one small feature costs a few dozen rounds of numpy calls on arrays of a few hundred items: the
-calls' overhead, not the arithmetic, sets the time. The public functions are therefore written as
-generators (``*_steps``) that do all their per-feature work in Python and *yield* a :class:`TraceRequest`
+calls' overhead, not the arithmetic, sets the time. The public functions' work is therefore written as private
+generators (``api._polygon_centerline_steps`` and the others) that do all their per-feature work in Python and
+*yield* a :class:`TraceRequest`
 where they need the axis points of a pair of chains; the driver sends the :class:`.contacts.AxisPoints`
 back, and then a :class:`.lines.LineRequest` to have those points made into its line. :func:`run_alone`
-answers each request at once (what ``polygon_centerline`` and the other plain
-functions do); :func:`run_together` advances many generators side by side and answers all their pending
+answers each request at once (what a public function given one geometry does); :func:`run_together`
+(what it does with an array, :mod:`._many`) advances many generators side by side and answers all their pending
 requests with one tracing (:func:`.tracing.trace_together`), and makes all their lines at once
 (:func:`.lines.lines_together`), so a layer of small features pays the rounds' overhead once per batch
 instead of once per feature. A polygon without split points first yields

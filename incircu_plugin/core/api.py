@@ -156,7 +156,8 @@ def _polygon_centerline_steps(
     """:func:`polygon_centerline` as steps (see :mod:`._steps`): a generator yielding an
     :class:`._steps.EndsRequest` when it has no split points, then the adaptive tracing's
     :class:`._steps.TraceRequest`, and returning the :class:`PolygonCenterlineResult`; raises as
-    :func:`polygon_centerline` does. Run it with :func:`centerlines_together` or :func:`._steps.run_alone`.
+    :func:`polygon_centerline` does. Run it with :func:`._steps.run_together` (what an array runs) or
+    :func:`._steps.run_alone`.
     """
     validate_polygon(polygon)
     check_island_mode(islands)
